@@ -1,0 +1,22 @@
+# pb_warnings(target): the warning set every probebench target compiles with.
+function(pb_warnings target)
+    target_compile_options(${target} PRIVATE -Wall -Wextra -Wno-unused-parameter)
+endfunction()
+
+# pb_library(name dir [deps...]): a library from every .cpp in `dir` (an INTERFACE library
+# while it has none), so adding a source file never means editing a CMakeLists.txt.
+function(pb_library name dir)
+    file(GLOB _src CONFIGURE_DEPENDS ${dir}/*.cpp)
+    if(_src)
+        add_library(${name} STATIC ${_src})
+        target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR}/renderer
+                                                  ${PROJECT_SOURCE_DIR})
+        target_link_libraries(${name} PUBLIC ${ARGN})
+        pb_warnings(${name})
+    else()
+        add_library(${name} INTERFACE)
+        target_include_directories(${name} INTERFACE ${PROJECT_SOURCE_DIR}/renderer
+                                                     ${PROJECT_SOURCE_DIR})
+        target_link_libraries(${name} INTERFACE ${ARGN})
+    endif()
+endfunction()

@@ -1,0 +1,123 @@
+#include "image/Image.h"
+
+#include "core/Error.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#define STB_IMAGE_WRITE_STATIC
+#include <stb_image_write.h>
+#define STB_IMAGE_IMPLEMENTATION
+#define STB_IMAGE_STATIC
+#define STBI_ONLY_PNG
+#include <stb_image.h>
+
+namespace pb::image {
+
+void writeFileAtomic(const std::string& path, const void* bytes, std::size_t size) {
+    namespace fs = std::filesystem;
+    fs::path target(path);
+    if (target.has_parent_path() && !fs::is_directory(target.parent_path()))
+        throw fileError(path, "folder does not exist");
+    std::string tmp = path + ".tmp." + std::to_string(::getpid());
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) throw fileError(path, "cannot open for writing");
+        out.write(static_cast<const char*>(bytes), std::streamsize(size));
+        out.flush();
+        if (!out) {
+            out.close();
+            fs::remove(tmp);
+            throw fileError(path, "write failed (disk full?)");
+        }
+    }
+    std::error_code ec;
+    fs::rename(tmp, target, ec);
+    if (ec) {
+        fs::remove(tmp);
+        throw fileError(path, "cannot rename temporary file: " + ec.message());
+    }
+}
+
+void writePng(const std::string& path, const Image8& img) {
+    if (img.width <= 0 || img.height <= 0) throw fileError(path, "empty image");
+    std::vector<unsigned char> encoded;
+    auto sink = [](void* ctx, void* data, int size) {
+        auto* v = static_cast<std::vector<unsigned char>*>(ctx);
+        v->insert(v->end(), (unsigned char*)data, (unsigned char*)data + size);
+    };
+    if (!stbi_write_png_to_func(sink, &encoded, img.width, img.height, 4, img.pixels.data(),
+                                img.width * 4))
+        throw fileError(path, "PNG encoding failed");
+    writeFileAtomic(path, encoded.data(), encoded.size());
+}
+
+void writePfm(const std::string& path, const ImageF& img) {
+    if (img.width <= 0 || img.height <= 0) throw fileError(path, "empty image");
+    std::ostringstream header;
+    header << "PF\n" << img.width << " " << img.height << "\n-1.0\n"; // negative: little endian
+    std::string bytes = header.str();
+    size_t headerSize = bytes.size();
+    bytes.resize(headerSize + size_t(img.width) * img.height * 3 * sizeof(float));
+    float* dst = reinterpret_cast<float*>(bytes.data() + headerSize);
+    // PFM stores rows bottom to top.
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x)
+            for (int c = 0; c < 3; ++c) {
+                float v = c < img.channels ? img.at(x, img.height - 1 - y, c) : 0.0f;
+                std::memcpy(dst++, &v, sizeof(float));
+            }
+    writeFileAtomic(path, bytes.data(), bytes.size());
+}
+
+Image8 readPng(const std::string& path) {
+    int w = 0, h = 0, n = 0;
+    unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 4);
+    if (!data) throw fileError(path, std::string("cannot read PNG: ") + stbi_failure_reason());
+    Image8 img;
+    img.width = w;
+    img.height = h;
+    img.pixels.assign(data, data + size_t(w) * h * 4);
+    stbi_image_free(data);
+    return img;
+}
+
+ImageF readPfm(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw fileError(path, "cannot open");
+    std::string magic;
+    int w = 0, h = 0;
+    float scale = 0;
+    in >> magic >> w >> h >> scale;
+    in.get();
+    if (!in || (magic != "PF" && magic != "Pf") || w <= 0 || h <= 0 || w > 65536 || h > 65536)
+        throw fileError(path, "not a PFM file");
+    int ch = magic == "PF" ? 3 : 1;
+    std::vector<float> raw(size_t(w) * h * ch);
+    in.read(reinterpret_cast<char*>(raw.data()), std::streamsize(raw.size() * sizeof(float)));
+    if (!in) throw fileError(path, "truncated PFM data");
+    if (scale > 0) // big endian
+        for (float& f : raw) {
+            uint32_t u;
+            std::memcpy(&u, &f, 4);
+            u = __builtin_bswap32(u);
+            std::memcpy(&f, &u, 4);
+        }
+    ImageF img;
+    img.width = w;
+    img.height = h;
+    img.channels = ch;
+    img.pixels.resize(raw.size());
+    for (int y = 0; y < h; ++y)
+        std::memcpy(&img.pixels[size_t(h - 1 - y) * w * ch], &raw[size_t(y) * w * ch],
+                    size_t(w) * ch * sizeof(float));
+    return img;
+}
+
+} // namespace pb::image

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages probebench needs (only the missing ones), as root.
+# Sourced by run.sh and test.sh; the package list lives here and nowhere else.
+PB_PACKAGES=(
+    build-essential cmake pkg-config git python3
+    libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
+    libglm-dev libglfw3-dev xvfb xauth
+    libtinygltf-dev libembree-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev
+    libcli11-dev python3-glad libgtest-dev libbenchmark-dev
+)
+
+pb_install_deps() {
+    local missing=()
+    for p in "${PB_PACKAGES[@]}"; do
+        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
+            || missing+=("$p")
+    done
+    [ ${#missing[@]} -eq 0 ] && return 0
+    if [ "$(id -u)" -ne 0 ]; then
+        echo "probebench: missing Debian packages. Install them with:" >&2
+        echo "  sudo apt-get install -y ${missing[*]}" >&2
+        return 1
+    fi
+    echo "==> installing ${#missing[@]} missing packages: ${missing[*]}"
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -q && apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+pb_build() {
+    local build_dir=${PB_BUILD_DIR:-build}
+    echo "==> configuring and building (Release) into $build_dir/"
+    cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "$@" \
+        && cmake --build "$build_dir" -j"$(nproc)"
+}
