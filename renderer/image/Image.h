@@ -27,7 +27,4 @@ void writePfm(const std::string& path, const ImageF& img); // colour PFM (RGB), 
 Image8 readPng(const std::string& path);
 ImageF readPfm(const std::string& path);
 
-// Writes `bytes` to `path` atomically (temporary file in the same folder + rename).
-void writeFileAtomic(const std::string& path, const void* bytes, std::size_t size);
-
 } // namespace pb::image

@@ -1,14 +1,13 @@
 #include "image/Image.h"
 
 #include "core/Error.h"
+#include "core/FileIO.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_STATIC
@@ -19,31 +18,6 @@
 #include <stb_image.h>
 
 namespace pb::image {
-
-void writeFileAtomic(const std::string& path, const void* bytes, std::size_t size) {
-    namespace fs = std::filesystem;
-    fs::path target(path);
-    if (target.has_parent_path() && !fs::is_directory(target.parent_path()))
-        throw fileError(path, "folder does not exist");
-    std::string tmp = path + ".tmp." + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw fileError(path, "cannot open for writing");
-        out.write(static_cast<const char*>(bytes), std::streamsize(size));
-        out.flush();
-        if (!out) {
-            out.close();
-            fs::remove(tmp);
-            throw fileError(path, "write failed (disk full?)");
-        }
-    }
-    std::error_code ec;
-    fs::rename(tmp, target, ec);
-    if (ec) {
-        fs::remove(tmp);
-        throw fileError(path, "cannot rename temporary file: " + ec.message());
-    }
-}
 
 void writePng(const std::string& path, const Image8& img) {
     if (img.width <= 0 || img.height <= 0) throw fileError(path, "empty image");
