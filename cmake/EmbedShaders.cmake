@@ -3,9 +3,10 @@
 function(pb_embed_shaders target dir)
     file(GLOB _files CONFIGURE_DEPENDS ${dir}/*.vert ${dir}/*.frag ${dir}/*.glsl)
     set(_out ${CMAKE_CURRENT_BINARY_DIR}/embedded_shaders.cpp)
+    string(REPLACE ";" "," _joined "${_files}") # a list cannot cross the command line as is
     add_custom_command(
         OUTPUT ${_out}
-        COMMAND ${CMAKE_COMMAND} -DOUT=${_out} -DFILES="${_files}"
+        COMMAND ${CMAKE_COMMAND} -DOUT=${_out} -DFILES=${_joined}
                 -P ${PROJECT_SOURCE_DIR}/cmake/EmbedShadersScript.cmake
         DEPENDS ${_files} ${PROJECT_SOURCE_DIR}/cmake/EmbedShadersScript.cmake
         COMMENT "Embedding shaders")

@@ -1,4 +1,5 @@
 # Script mode: writes OUT, a C++ file defining pb::shaders::embeddedSources().
+string(REPLACE "," ";" FILES "${FILES}")
 set(_body "")
 foreach(_f ${FILES})
     get_filename_component(_name ${_f} NAME)

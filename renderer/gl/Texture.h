@@ -1,0 +1,44 @@
+#pragma once
+// Immutable-storage textures (2D and 2D array) with the sampling state set at creation.
+#include "gl/GlObject.h"
+#include "gl/TextureFormat.h"
+
+namespace pb::gl {
+
+enum class Filter { Nearest, Linear, LinearMipmap };
+enum class Wrap { Clamp, Repeat };
+
+struct TextureDesc {
+    TextureFormat format = TextureFormat::RGBA8;
+    int width = 1, height = 1;
+    int layers = 0;   // 0 = GL_TEXTURE_2D, >= 1 = GL_TEXTURE_2D_ARRAY
+    int levels = 1;   // mip levels; 0 = full chain
+    Filter filter = Filter::Linear;
+    Wrap wrap = Wrap::Clamp;
+    bool depthCompare = false; // shadow sampler (depth formats)
+};
+
+class Texture {
+public:
+    Texture() = default;
+    explicit Texture(const TextureDesc& desc);
+
+    // Uploads one mip level of the whole texture (all layers for arrays). `data` holds texels
+    // in the format's transfer format/type, or 4x4 blocks for compressed formats.
+    void upload(const void* data, int level = 0);
+    void uploadLayer(int layer, const void* data, int level = 0);
+    void generateMipmaps();
+    void bind(int unit) const;
+
+    GLenum target() const { return desc_.layers > 0 ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D; }
+    const TextureDesc& desc() const { return desc_; }
+    GLuint id() const { return id_.id(); }
+    std::size_t bytes() const;
+    explicit operator bool() const { return bool(id_); }
+
+private:
+    TextureId id_;
+    TextureDesc desc_;
+};
+
+} // namespace pb::gl
