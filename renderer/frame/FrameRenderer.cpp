@@ -1,0 +1,67 @@
+#include "frame/FrameRenderer.h"
+
+#include "core/Error.h"
+#include "frame/GBufferDump.h"
+#include "frame/Readback.h"
+#include "passes/CompositePass.h"
+#include "passes/DirectLightingPass.h"
+#include "passes/GBufferPass.h"
+#include "passes/ShadowPass.h"
+
+#include <glm/gtc/constants.hpp>
+
+namespace pb::render {
+
+FrameSettings defaultFrameSettings(const scene::Scene& scene) {
+    FrameSettings s;
+    s.exposure = scene.exposure;
+    s.ambientIrradiance = scene.sky.radiance * (0.25f * glm::pi<float>());
+    return s;
+}
+
+FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& settings)
+    : gpu_(scene), settings_(settings) {
+    passes_.push_back(std::make_unique<ShadowPass>());
+    passes_.push_back(std::make_unique<GBufferPass>());
+    passes_.push_back(std::make_unique<DirectLightingPass>());
+    passes_.push_back(std::make_unique<CompositePass>());
+}
+
+FrameRenderer::~FrameRenderer() = default;
+
+void FrameRenderer::render(const RenderView& view) {
+    if (!targets_ || targets_->gbuffer.width() != view.width ||
+        targets_->gbuffer.height() != view.height)
+        targets_ = std::make_unique<FrameTargets>(view.width, view.height);
+    lastView_ = view;
+    FrameContext ctx{gpu_, view, settings_, programs_, *targets_, {}};
+    for (auto& pass : passes_) pass->execute(ctx);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glUseProgram(0);
+}
+
+image::Image8 FrameRenderer::readOutput() const {
+    if (!targets_) throw Error("readOutput before any frame was rendered");
+    return readRgba8(targets_->output);
+}
+
+image::ImageF FrameRenderer::readRadiance() const {
+    if (!targets_) throw Error("readRadiance before any frame was rendered");
+    return readFloat(targets_->radiance);
+}
+
+void FrameRenderer::dumpGBuffer(const std::string& dir) {
+    if (!targets_) throw Error("dumpGBuffer before any frame was rendered");
+    writeGBufferDump(dir, *targets_, lastView_, programs_);
+}
+
+void FrameRenderer::presentToWindow(int w, int h) const {
+    if (!targets_) return;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->outputFbo.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    glBlitFramebuffer(0, 0, targets_->output.desc().width, targets_->output.desc().height, 0, 0,
+                      w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+} // namespace pb::render

@@ -1,0 +1,46 @@
+#pragma once
+// Builds the pass list and runs frames: shadow -> gbuffer -> direct -> composite. Owns the
+// scene's GPU resources, the program cache and the render targets (re-created when the
+// resolution changes). Requires a current GL context (platforms/).
+#include "image/Image.h"
+#include "passes/FrameContext.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pb::render {
+
+// Defaults derived from the scene: its exposure, and a constant ambient of a quarter of the
+// sky's irradiance (a crude stand-in for sky visibility until the GI passes fill it).
+FrameSettings defaultFrameSettings(const scene::Scene& scene);
+
+class FrameRenderer {
+public:
+    FrameRenderer(const scene::Scene& scene, const FrameSettings& settings);
+    ~FrameRenderer();
+
+    void render(const RenderView& view);
+
+    image::Image8 readOutput() const;     // tonemapped sRGB, 8-bit
+    image::ImageF readRadiance() const;   // linear HDR radiance (RGBA, alpha = 1)
+    // Writes every GBuffer channel (PNG for colours and normals, PFM for HDR and depth).
+    void dumpGBuffer(const std::string& dir);
+    // Copies the output to the default framebuffer of a window of size w x h.
+    void presentToWindow(int w, int h) const;
+
+    const std::vector<std::unique_ptr<Pass>>& passes() const { return passes_; }
+    FrameSettings& settings() { return settings_; }
+    gl::ProgramCache& programs() { return programs_; }
+    const FrameTargets* targets() const { return targets_.get(); }
+
+private:
+    GpuScene gpu_;
+    FrameSettings settings_;
+    gl::ProgramCache programs_;
+    std::unique_ptr<FrameTargets> targets_;
+    std::vector<std::unique_ptr<Pass>> passes_;
+    RenderView lastView_;
+};
+
+} // namespace pb::render

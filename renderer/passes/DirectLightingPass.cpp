@@ -1,0 +1,58 @@
+#include "passes/DirectLightingPass.h"
+
+#include <cmath>
+#include <string>
+
+namespace pb::render {
+
+namespace {
+std::string at(const char* name, int i) { return std::string(name) + "[" + std::to_string(i) + "]"; }
+
+void setLights(const gl::Program& prog, const scene::Scene& s, const RenderView& view) {
+    int count = std::min<int>(int(s.lights.size()), DirectLightingPass::kMaxLights);
+    prog.set("u_lightCount", count);
+    for (int i = 0; i < count; ++i) {
+        const scene::Light& l = s.lights[size_t(i)];
+        float type = l.type == scene::LightType::Directional ? 0.0f
+                     : l.type == scene::LightType::Point     ? 1.0f
+                                                             : 2.0f;
+        prog.set(at("u_lightPosType", i), glm::vec4(view.toRel(l.position), type));
+        prog.set(at("u_lightDirRange", i), glm::vec4(glm::normalize(l.direction), l.range));
+        prog.set(at("u_lightColor", i), glm::vec4(l.color * l.intensity, 0.0f));
+        prog.set(at("u_lightCone", i),
+                 glm::vec4(std::cos(l.outerConeAngle), std::cos(l.innerConeAngle), 0, 0));
+    }
+}
+} // namespace
+
+void DirectLightingPass::execute(FrameContext& frame) {
+    const scene::Scene& s = frame.scene.scene();
+    frame.targets.radianceFbo.bind();
+    const gl::Program& prog = frame.programs.get("fullscreen.vert", "lighting_direct.frag");
+    prog.use();
+    frame.targets.gbuffer.bindForReading(prog, 0);
+    int shadowUnit = gbufferDepthUnit(0) + 1;
+    prog.set("u_shadowMap", shadowUnit);
+    prog.set("u_relFromClip", frame.view.relFromClip);
+    prog.set("u_skyRadiance", s.sky.radiance);
+    prog.set("u_ambientIrradiance", frame.settings.ambientIrradiance);
+    bool sun = frame.shadow.enabled;
+    prog.set("u_sunEnabled", sun ? 1 : 0);
+    prog.set("u_toSun", glm::normalize(s.sun.toSun));
+    prog.set("u_sunIrradiance", s.sun.color * s.sun.intensity);
+    if (sun) {
+        frame.shadow.map->bind(shadowUnit);
+        prog.set("u_shadowFromRel", frame.shadow.shadowFromRel);
+        prog.set("u_shadowTexel", frame.shadow.texel);
+        prog.set("u_shadowNormalOffset", frame.shadow.normalOffset);
+    }
+    setLights(prog, s, frame.view);
+    drawFullscreenTriangle(frame.targets);
+    for (int u = 0; u <= shadowUnit; ++u) {
+        glActiveTexture(GL_TEXTURE0 + u);
+        glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+}
+
+} // namespace pb::render

@@ -1,0 +1,15 @@
+#pragma once
+// Deferred lighting into the linear radiance target: sun with shadows, punctual lights,
+// emissive, and albedo x indirect irradiance (constant ambient until GI provides it).
+#include "passes/FrameContext.h"
+
+namespace pb::render {
+
+class DirectLightingPass : public Pass {
+public:
+    const char* name() const override { return "direct"; }
+    void execute(FrameContext& frame) override;
+    static constexpr int kMaxLights = 16; // must match MAX_LIGHTS in lighting_direct.frag
+};
+
+} // namespace pb::render

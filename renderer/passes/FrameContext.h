@@ -1,0 +1,60 @@
+#pragma once
+// What the passes of one frame share: the scene, the view, the targets, and results one pass
+// hands to the next (the shadow map for the lighting). Passes read settings; they never keep
+// per-frame state of their own beyond GPU resources.
+#include "gl/ProgramCache.h"
+#include "gl/Texture.h"
+#include "passes/GBufferLayout.h"
+#include "passes/GpuScene.h"
+#include "passes/RenderView.h"
+
+#include <glm/glm.hpp>
+#include <memory>
+
+namespace pb::render {
+
+struct FrameSettings {
+    float exposure = 1.0f;                 // linear scale before tonemapping
+    glm::vec3 ambientIrradiance{0.0f};     // the indirect input until GI passes fill it
+    int shadowMapSize = 2048;
+};
+
+struct ShadowResult {
+    bool enabled = false;
+    const gl::Texture* map = nullptr;
+    glm::mat4 shadowFromRel{1.0f};
+    float normalOffset = 0.0f;
+    glm::vec2 texel{0.0f};
+};
+
+// Render targets for one output resolution.
+struct FrameTargets {
+    FrameTargets(int width, int height);
+    GBuffer gbuffer;
+    gl::Texture radiance;        // RGBA16F linear radiance (lighting output)
+    gl::Framebuffer radianceFbo;
+    gl::Texture output;          // RGBA8 sRGB-encoded tonemapped image
+    gl::Framebuffer outputFbo;
+    gl::VertexArrayId emptyVao;  // core profiles reject draws without a VAO
+};
+
+struct FrameContext {
+    const GpuScene& scene;
+    const RenderView& view;
+    const FrameSettings& settings;
+    gl::ProgramCache& programs;
+    FrameTargets& targets;
+    ShadowResult shadow;
+};
+
+class Pass {
+public:
+    virtual ~Pass() = default;
+    virtual const char* name() const = 0;
+    virtual void execute(FrameContext& frame) = 0;
+};
+
+// Draws the viewport-covering triangle of shaders/fullscreen.vert.
+void drawFullscreenTriangle(const FrameTargets& targets);
+
+} // namespace pb::render

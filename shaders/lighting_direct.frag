@@ -1,0 +1,89 @@
+// Deferred direct lighting: sun (shadow-mapped), punctual lights, emissive, and the indirect
+// irradiance input (a constant ambient until the GI passes fill it). Output: linear radiance.
+#include "common_octahedral.glsl"
+in vec2 v_uv;
+out vec4 out_radiance;
+uniform sampler2D u_gbuffer_albedo;
+uniform sampler2D u_gbuffer_normal;
+uniform sampler2D u_gbuffer_emissive;
+uniform sampler2D u_gbuffer_depth;
+uniform sampler2DShadow u_shadowMap;
+uniform mat4 u_relFromClip;        // inverse of the camera's clip-from-camera-relative matrix
+uniform mat4 u_shadowFromRel;      // camera-relative world -> shadow texture space [0,1]^3
+uniform int u_sunEnabled;
+uniform vec3 u_toSun;
+uniform vec3 u_sunIrradiance;      // colour * intensity
+uniform float u_shadowNormalOffset; // world units, about 1.5 shadow texels
+uniform vec2 u_shadowTexel;
+uniform vec3 u_skyRadiance;
+uniform vec3 u_ambientIrradiance;
+#define MAX_LIGHTS 16
+uniform int u_lightCount;
+uniform vec4 u_lightPosType[MAX_LIGHTS];   // xyz camera-relative position, w: 0 dir, 1 point, 2 spot
+uniform vec4 u_lightDirRange[MAX_LIGHTS];  // xyz direction the light travels, w: range (0 = inf)
+uniform vec4 u_lightColor[MAX_LIGHTS];     // rgb colour * intensity
+uniform vec4 u_lightCone[MAX_LIGHTS];      // x: cos outer, y: cos inner
+
+const float PI = 3.14159265358979;
+
+float sunShadow(vec3 rel, vec3 n) {
+    vec4 s = u_shadowFromRel * vec4(rel + n * u_shadowNormalOffset, 1.0);
+    vec3 p = s.xyz / s.w;
+    if (p.x <= 0.0 || p.x >= 1.0 || p.y <= 0.0 || p.y >= 1.0 || p.z >= 1.0) return 1.0;
+    float lit = 0.0;
+    for (int y = -1; y <= 1; ++y)
+        for (int x = -1; x <= 1; ++x)
+            lit += texture(u_shadowMap, vec3(p.xy + vec2(x, y) * u_shadowTexel, p.z));
+    return lit / 9.0;
+}
+
+vec3 punctualIrradiance(vec3 rel, vec3 n) {
+    vec3 e = vec3(0.0);
+    for (int i = 0; i < MAX_LIGHTS; ++i) {
+        if (i >= u_lightCount) break;
+        vec3 l;
+        float atten = 1.0;
+        if (u_lightPosType[i].w == 0.0) {
+            l = -u_lightDirRange[i].xyz;
+        } else {
+            vec3 d = u_lightPosType[i].xyz - rel;
+            float dist2 = max(dot(d, d), 1e-8);
+            l = d * inversesqrt(dist2);
+            atten = 1.0 / dist2;
+            float range = u_lightDirRange[i].w;
+            if (range > 0.0) {
+                float r = sqrt(dist2) / range;
+                atten *= clamp(1.0 - r * r * r * r, 0.0, 1.0);
+            }
+            if (u_lightPosType[i].w == 2.0) {
+                float cd = dot(-l, u_lightDirRange[i].xyz);
+                atten *= smoothstep(u_lightCone[i].x, u_lightCone[i].y, cd);
+            }
+        }
+        e += u_lightColor[i].rgb * atten * max(dot(n, l), 0.0);
+    }
+    return e;
+}
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    float depth = texelFetch(u_gbuffer_depth, px, 0).r;
+    if (depth >= 1.0) {
+        out_radiance = vec4(u_skyRadiance, 1.0);
+        return;
+    }
+    vec4 clip = vec4(v_uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+    vec4 relH = u_relFromClip * clip;
+    vec3 rel = relH.xyz / relH.w;
+    vec3 albedo = texelFetch(u_gbuffer_albedo, px, 0).rgb;
+    vec3 n = octDecode(texelFetch(u_gbuffer_normal, px, 0).xy);
+    vec3 emissive = texelFetch(u_gbuffer_emissive, px, 0).rgb;
+
+    vec3 irradiance = u_ambientIrradiance + punctualIrradiance(rel, n);
+    if (u_sunEnabled != 0) {
+        float ndl = max(dot(n, u_toSun), 0.0);
+        if (ndl > 0.0) irradiance += u_sunIrradiance * ndl * sunShadow(rel, n);
+    }
+    // Lambert: outgoing radiance = albedo / pi * irradiance.
+    out_radiance = vec4(emissive + albedo / PI * irradiance, 1.0);
+}
