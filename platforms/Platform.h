@@ -41,6 +41,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
+// The backend cannot run on this machine at all (its library is not installed, or there is no
+// X display for glfw), as opposed to failing on the way. Tests skip on it outside CI.
+class PlatformUnavailable : public PlatformError {
+public:
+    using PlatformError::PlatformError;
+};
+
 class Platform {
 public:
     virtual ~Platform() = default;
