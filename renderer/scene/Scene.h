@@ -47,8 +47,9 @@ struct Material {
     AlphaMode alphaMode = AlphaMode::Opaque;
     float alphaCutoff = 0.5f;
     // BLEND with base alpha 0 draws nothing (e.g. space_ship_hallway's "Glass"): the
-    // renderer skips it and the bake lets rays pass through it.
-    bool invisible() const { return alphaMode == AlphaMode::Blend && baseColor.a <= 0.0f; }
+    // renderer skips it and the bake lets rays pass through it. "0" is below one 8-bit step:
+    // that Glass actually stores alpha 0.0017.
+    bool invisible() const { return alphaMode == AlphaMode::Blend && baseColor.a < 1.0f / 255.0f; }
 };
 
 // Triangle list, always indexed (non-indexed glTF primitives get 0..n-1).
