@@ -1,0 +1,157 @@
+// loadGltf: tinygltf parses the file, the Gltf* parts check and convert what it found.
+#include "core/FileIO.h"
+#include "scene/DefaultView.h"
+#include "scene/GltfContext.h"
+#include "scene/GltfMaterials.h"
+#include "scene/GltfMeshes.h"
+#include "scene/GltfNodes.h"
+#include "scene/SceneLoader.h"
+
+#include <cstring>
+#include <filesystem>
+#include <limits>
+
+namespace pb::scene {
+
+namespace {
+
+// Extensions this loader implements; a file that requires any other cannot be drawn right.
+const char* const kSupportedRequired[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
+                                          "KHR_mesh_quantization"};
+
+// tinygltf reports several problems as several lines; pb::Error messages are one line.
+std::string oneLine(const std::string& text) {
+    std::string out;
+    bool pendingBreak = false;
+    for (char c : text) {
+        if (c == '\n' || c == '\r') {
+            pendingBreak = true;
+            continue;
+        }
+        if (pendingBreak && !out.empty()) out += "; ";
+        pendingBreak = false;
+        out += c;
+    }
+    return out;
+}
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        if (end > start) out.push_back(text.substr(start, end - start));
+        start = end + 1;
+    }
+    return out;
+}
+
+// tinygltf hands an image that lives in a bufferView to the decoder without checking that
+// the bufferView lies inside its buffer; this check runs first (user data: the Model being
+// filled, whose buffers and bufferViews are parsed before images).
+bool checkedImageLoader(tinygltf::Image* image, const int index, std::string* err,
+                        std::string* warn, int width, int height, const unsigned char* bytes,
+                        int size, void* userData) {
+    const auto* model = static_cast<const tinygltf::Model*>(userData);
+    if (image->bufferView >= 0) {
+        const size_t bvIndex = size_t(image->bufferView);
+        bool inside = bvIndex < model->bufferViews.size();
+        if (inside) {
+            const tinygltf::BufferView& bv = model->bufferViews[bvIndex];
+            inside = bv.buffer >= 0 && size_t(bv.buffer) < model->buffers.size();
+            if (inside) {
+                const size_t bufferSize = model->buffers[size_t(bv.buffer)].data.size();
+                inside = bv.byteOffset <= bufferSize && bv.byteLength <= bufferSize - bv.byteOffset;
+            }
+        }
+        if (!inside) {
+            if (err)
+                *err += "image " + std::to_string(index) +
+                        ": its bufferView reaches past the end of its buffer\n";
+            return false;
+        }
+    }
+    return tinygltf::LoadImageData(image, index, err, warn, width, height, bytes, size, nullptr);
+}
+
+void parseWithTinygltf(const std::string& path, tinygltf::Model& model,
+                       std::vector<std::string>& warnings) {
+    const std::vector<unsigned char> bytes = readFileBytes(path); // "path: file not found" etc.
+    if (bytes.size() > std::numeric_limits<unsigned int>::max())
+        throw fileError(path, "larger than 4 GiB, which tinygltf cannot read");
+    std::string baseDir = std::filesystem::path(path).parent_path().string();
+    if (baseDir.empty()) baseDir.assign(".");
+
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(&checkedImageLoader, &model);
+    std::string err, warn;
+    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    const auto size = static_cast<unsigned int>(bytes.size());
+    const bool ok =
+        binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, baseDir)
+               : loader.LoadASCIIFromString(&model, &err, &warn,
+                                            reinterpret_cast<const char*>(bytes.data()), size,
+                                            baseDir);
+    if (!ok) {
+        if (err.empty()) err = warn.empty() ? "not a valid glTF file" : warn;
+        throw fileError(path, oneLine(err));
+    }
+    // tinygltf also reports fixable oddities in `err` while still succeeding.
+    for (const std::string& line : lines(err + "\n" + warn))
+        warnings.push_back(path + ": " + line);
+}
+
+void checkRequiredExtensions(const std::string& path, const tinygltf::Model& model) {
+    for (const std::string& ext : model.extensionsRequired) {
+        bool supported = false;
+        for (const char* s : kSupportedRequired)
+            supported = supported || ext == s;
+        if (!supported) throw fileError(path, "requires unsupported glTF extension " + ext);
+    }
+}
+
+void emitGroupedWarnings(gltf::Context& ctx) {
+    for (const auto& [reason, count] : ctx.skippedPrimitives) {
+        std::string text =
+            ctx.path + ": skipped " + std::to_string(count) + " primitive(s): " + reason;
+        if (reason == "mode is not TRIANGLES") {
+            text += " (modes";
+            for (int mode : ctx.skippedModes)
+                text.append(" ").append(std::to_string(mode));
+            text += ")";
+        }
+        ctx.scene.warnings.push_back(text);
+    }
+    if (ctx.regeneratedNormals > 0)
+        ctx.scene.warnings.push_back(ctx.path + ": zero or non-finite normals in " +
+                                     std::to_string(ctx.regeneratedNormals) +
+                                     " primitive(s); smooth normals generated instead");
+    for (std::string& w : ctx.otherWarnings)
+        ctx.scene.warnings.push_back(std::move(w));
+}
+
+} // namespace
+
+Scene loadGltf(const std::string& path, const SceneOptions& options) {
+    Scene scene;
+    scene.name = std::filesystem::path(path).stem().string();
+    scene.sourcePath = path;
+
+    tinygltf::Model model;
+    parseWithTinygltf(path, model, scene.warnings);
+    checkRequiredExtensions(path, model);
+
+    gltf::Context ctx{path, model, scene};
+    // "default" comes first and is reserved before glTF cameras are named; its pose needs the
+    // bounds, known once the nodes are walked.
+    scene.views.push_back(View{"default"});
+    gltf::convertMaterials(ctx);
+    gltf::traverseNodes(ctx, options.dynamicNodes);
+    if (scene.materials.empty()) gltf::defaultMaterial(ctx);
+    emitGroupedWarnings(ctx);
+    scene.views.front() = makeDefaultView(scene.staticWorldBounds());
+    return scene;
+}
+
+} // namespace pb::scene
