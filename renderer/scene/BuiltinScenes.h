@@ -1,0 +1,12 @@
+#pragma once
+// The procedural scenes behind makeBuiltinScene(). Each fills in geometry, lights, sky,
+// exposure and its named views; makeBuiltinScene() adds the "default" view in front.
+#include "scene/Scene.h"
+
+namespace pb::scene {
+
+Scene makeCornellScene();
+Scene makeRoomsScene();
+Scene makeCourtyardScene();
+
+} // namespace pb::scene
