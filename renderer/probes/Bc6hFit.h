@@ -48,15 +48,24 @@ void fitSubset(const BlockTarget& t, std::uint16_t mask, int anchor, int subset,
 class PartitionEstimator {
 public:
     explicit PartitionEstimator(const BlockTarget& t);
-    float score(int partition) const;
+    // Scores of the 32 partitions; +inf for those whose score cannot be below `limit` (a
+    // cheap lower bound rules them out before the eigenvalue work).
+    void scores(float limit, float out[32]) const;
 
 private:
-    float texel_[16][9];  // per texel: centred value and its second moments
+    float texel_[9][16];  // per texel: centred value and its second moments
     float total_[9] = {};
 };
 
-// Quantises continuous endpoints for enc.mode, clamping deltas the mode cannot represent.
-void quantizeEndpoints(const Lines& lines, Encoding& enc);
+// Quantises continuous endpoints for enc.mode, clamping deltas the mode cannot represent;
+// returns false when it had to clamp.
+bool quantizeEndpoints(const Lines& lines, Encoding& enc);
+
+// Nearest epb-bit values of the continuous endpoints, no delta constraint applied (what
+// quantizeEndpoints starts from; shared by all modes of one precision).
+void quantizeAbsolute(const Lines& lines, int epb, int regions, int out[4][3]);
+// Whether enc's absolute endpoints fit its mode's delta bits.
+bool deltasRepresentable(const Encoding& enc);
 
 // Chooses the best index of every texel for enc's endpoints, fixes the anchors (swapping a
 // subset's endpoints when that is representable, otherwise restricting the anchor index) and
