@@ -11,7 +11,7 @@ vec3 acesFit(vec3 x) {
 }
 void main() {
     vec3 hdr = texelFetch(u_radiance, ivec2(gl_FragCoord.xy), 0).rgb * u_exposure;
-    // NaN/Inf never reach the 8-bit image as undefined bytes: map them to magenta-free black.
+    // NaN/Inf never reach the 8-bit image as undefined bytes: they become black.
     if (any(isnan(hdr)) || any(isinf(hdr))) hdr = vec3(0.0);
     out_color = vec4(linearToSrgb(acesFit(max(hdr, vec3(0.0)))), 1.0);
 }

@@ -16,7 +16,8 @@ uniform vec3 u_sunIrradiance;      // colour * intensity
 uniform float u_shadowNormalOffset; // world units, about 1.5 shadow texels
 uniform vec2 u_shadowTexel;
 uniform vec3 u_skyRadiance;
-uniform vec3 u_ambientIrradiance;
+uniform vec3 u_ambientUp;          // indirect irradiance for an upward normal...
+uniform vec3 u_ambientDown;        // ...and a downward one
 #define MAX_LIGHTS 16
 uniform int u_lightCount;
 uniform vec4 u_lightPosType[MAX_LIGHTS];   // xyz camera-relative position, w: 0 dir, 1 point, 2 spot
@@ -79,7 +80,7 @@ void main() {
     vec3 n = octDecode(texelFetch(u_gbuffer_normal, px, 0).xy);
     vec3 emissive = texelFetch(u_gbuffer_emissive, px, 0).rgb;
 
-    vec3 irradiance = u_ambientIrradiance + punctualIrradiance(rel, n);
+    vec3 irradiance = mix(u_ambientDown, u_ambientUp, n.y * 0.5 + 0.5) + punctualIrradiance(rel, n);
     if (u_sunEnabled != 0) {
         float ndl = max(dot(n, u_toSun), 0.0);
         if (ndl > 0.0) irradiance += u_sunIrradiance * ndl * sunShadow(rel, n);

@@ -15,7 +15,8 @@ namespace pb::render {
 FrameSettings defaultFrameSettings(const scene::Scene& scene) {
     FrameSettings s;
     s.exposure = scene.exposure;
-    s.ambientIrradiance = scene.sky.radiance * (0.25f * glm::pi<float>());
+    s.ambientUp = scene.sky.radiance * (0.25f * glm::pi<float>());
+    s.ambientDown = s.ambientUp * 0.3f; // light bounced off the ground is dimmer than the sky
     return s;
 }
 

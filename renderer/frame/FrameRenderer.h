@@ -11,8 +11,9 @@
 
 namespace pb::render {
 
-// Defaults derived from the scene: its exposure, and a constant ambient of a quarter of the
-// sky's irradiance (a crude stand-in for sky visibility until the GI passes fill it).
+// Defaults derived from the scene: its exposure, and an ambient of a quarter of the sky's
+// irradiance from above, less from below (a crude stand-in for sky visibility until the GI
+// passes fill the indirect input).
 FrameSettings defaultFrameSettings(const scene::Scene& scene);
 
 class FrameRenderer {

@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "frame/Readback.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 

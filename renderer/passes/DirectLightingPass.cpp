@@ -35,7 +35,8 @@ void DirectLightingPass::execute(FrameContext& frame) {
     prog.set("u_shadowMap", shadowUnit);
     prog.set("u_relFromClip", frame.view.relFromClip);
     prog.set("u_skyRadiance", s.sky.radiance);
-    prog.set("u_ambientIrradiance", frame.settings.ambientIrradiance);
+    prog.set("u_ambientUp", frame.settings.ambientUp);
+    prog.set("u_ambientDown", frame.settings.ambientDown);
     bool sun = frame.shadow.enabled;
     prog.set("u_sunEnabled", sun ? 1 : 0);
     prog.set("u_toSun", glm::normalize(s.sun.toSun));

@@ -15,7 +15,10 @@ namespace pb::render {
 
 struct FrameSettings {
     float exposure = 1.0f;                 // linear scale before tonemapping
-    glm::vec3 ambientIrradiance{0.0f};     // the indirect input until GI passes fill it
+    // The indirect input until the GI passes fill it: a hemispherical ambient, irradiance for
+    // an upward normal and for a downward one, blended by the normal's Y.
+    glm::vec3 ambientUp{0.0f};
+    glm::vec3 ambientDown{0.0f};
     int shadowMapSize = 2048;
 };
 

@@ -3,6 +3,7 @@
 // names) and the debug dumps are all generated from kGBufferChannels, so adding a channel is
 // one line here plus its use in the shaders.
 #include "gl/Framebuffer.h"
+#include "gl/Program.h"
 #include "gl/ShaderSource.h"
 #include "gl/Texture.h"
 
@@ -48,7 +49,7 @@ public:
     const gl::Texture& depth() const { return depth_; }
     const gl::Framebuffer& framebuffer() const { return fbo_; }
     // Binds every channel (firstUnit + i) and the depth texture, and sets the u_gbuffer_* samplers.
-    void bindForReading(const class gl::Program& program, int firstUnit) const;
+    void bindForReading(const gl::Program& program, int firstUnit) const;
     int width() const { return width_; }
     int height() const { return height_; }
 

@@ -1,0 +1,32 @@
+#include "SceneOptions.h"
+
+#include <iostream>
+
+namespace pb::app {
+
+void addSceneOptions(CLI::App& cmd, SceneArgs& a) {
+    std::string names;
+    for (const auto& n : scene::builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
+    cmd.add_option("--scene", a.scene,
+                   "Built-in scene name (" + names + ") or path to a .gltf/.glb file")
+        ->capture_default_str();
+    cmd.add_option("--sun", a.sun,
+                   "Override the sun: 'off' or DIRX,DIRY,DIRZ[,INTENSITY] (direction towards the "
+                   "sun, intensity = irradiance on a surface facing it)");
+    cmd.add_option("--sky", a.sky, "Override the constant sky radiance: R,G,B (linear)");
+    cmd.add_option("--dynamic", a.dynamicNodes,
+                   "Mark the glTF node NAME (and its mesh) dynamic: not baked, lit by the dynamic "
+                   "GI path (repeatable)");
+}
+
+scene::Scene loadSceneWithOverrides(const SceneArgs& a) {
+    scene::SceneOptions opts;
+    opts.dynamicNodes = a.dynamicNodes;
+    scene::Scene s = scene::loadScene(a.scene, opts);
+    if (!a.sun.empty()) scene::applySunOverride(s, a.sun);
+    if (!a.sky.empty()) scene::applySkyOverride(s, a.sky);
+    for (const auto& w : s.warnings) std::cerr << "warning: " << w << "\n";
+    return s;
+}
+
+} // namespace pb::app

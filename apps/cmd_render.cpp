@@ -1,0 +1,149 @@
+// probebench render: one frame of a scene to PNG (and optionally PFM and GBuffer dumps), or an
+// interactive window with --platform glfw.
+#include "CommandRegistry.h"
+#include "FlyCamera.h"
+#include "PlatformOptions.h"
+#include "SceneOptions.h"
+#include "core/Error.h"
+#include "frame/FrameRenderer.h"
+#include "gl/DebugOutput.h"
+#include "image/Image.h"
+
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+
+namespace pb::app {
+namespace {
+
+struct RenderArgs {
+    SceneArgs scene;
+    platform::PlatformOptions platform;
+    std::string view;
+    std::string camera;
+    int width = 1280, height = 720;
+    std::string out, outHdr, dumpDir;
+    float exposure = 0.0f; // 0 = the scene's
+    int frames = 0;        // glfw: frames before closing (0 = until ESC)
+};
+
+void ensureParentFolder(const std::string& path) {
+    auto parent = std::filesystem::path(path).parent_path();
+    if (parent.empty()) return;
+    std::error_code ec;
+    std::filesystem::create_directories(parent, ec);
+    if (ec) throw fileError(path, "cannot create its folder: " + ec.message());
+}
+
+scene::View chooseView(const scene::Scene& s, const RenderArgs& a) {
+    if (!a.camera.empty()) return scene::parseCameraSpec(a.camera);
+    if (a.view.empty()) return s.views.front();
+    if (const scene::View* v = s.findView(a.view)) return *v;
+    std::string names;
+    for (const auto& v : s.views) names += (names.empty() ? "" : ", ") + v.name;
+    throw Error("--view '" + a.view + "': scene '" + s.name + "' has no such view (views: " +
+                names + ")");
+}
+
+int runInteractive(platform::Platform& p, render::FrameRenderer& r, const scene::Scene& s,
+                   const scene::View& start, int maxFrames) {
+    FlyCamera cam(start, s.worldBounds());
+    platform::InputState input;
+    auto last = std::chrono::steady_clock::now();
+    std::cout << "window open: WASD move, Q/E down/up, Shift faster, drag to look, ESC quits\n";
+    for (int frame = 0; maxFrames <= 0 || frame < maxFrames; ++frame) {
+        input = {};
+        p.pollEvents(input);
+        if (input.quit) break;
+        auto now = std::chrono::steady_clock::now();
+        cam.update(input, std::chrono::duration<double>(now - last).count());
+        last = now;
+        int w = 0, h = 0;
+        p.framebufferSize(w, h);
+        if (w <= 0 || h <= 0) continue;
+        r.render(render::makeRenderView(cam.view(), s.worldBounds(), w, h));
+        r.presentToWindow(w, h);
+        p.swapBuffers();
+    }
+    return 0;
+}
+
+int run(RenderArgs& a) {
+    if (a.width < 1 || a.height < 1 || a.width > 16384 || a.height > 16384)
+        throw Error("--width/--height must be in 1..16384");
+    if (a.out.empty() && a.platform.name != "glfw")
+        throw Error("--out is required (the PNG to write)");
+    scene::Scene s = loadSceneWithOverrides(a.scene);
+    scene::View view = chooseView(s, a);
+
+    a.platform.width = a.width;
+    a.platform.height = a.height;
+    auto platform = platform::createPlatform(a.platform);
+    // Every GL error is a failure: the command exits non-zero and writes nothing.
+    gl::DebugOutput debug;
+    const std::uint64_t glMark = debug.mark();
+    render::FrameSettings settings = render::defaultFrameSettings(s);
+    if (a.exposure > 0) settings.exposure = a.exposure;
+    render::FrameRenderer renderer(s, settings);
+    std::cout << "scene: " << s.name << ", " << s.triangleCount() << " triangles, "
+              << s.instances.size() << " instances; view '" << view.name << "'\n"
+              << "platform: " << platform->description() << "\n";
+
+    if (platform->isWindowed() && a.out.empty())
+        return runInteractive(*platform, renderer, s, view, a.frames);
+
+    auto t0 = std::chrono::steady_clock::now();
+    renderer.render(render::makeRenderView(view, s.worldBounds(), a.width, a.height));
+    glFinish();
+    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                    .count();
+    // Read everything back before writing anything: a failure leaves no partial output.
+    image::Image8 ldr = renderer.readOutput();
+    image::ImageF hdr;
+    if (!a.outHdr.empty()) hdr = renderer.readRadiance();
+    if (auto errors = debug.errorsSince(glMark); !errors.empty())
+        throw Error("the GL reported " + std::to_string(errors.size()) +
+                    " error(s) while rendering; nothing written:\n" +
+                    gl::DebugOutput::format(errors));
+    ensureParentFolder(a.out);
+    image::writePng(a.out, ldr);
+    if (!a.outHdr.empty()) {
+        ensureParentFolder(a.outHdr);
+        image::writePfm(a.outHdr, hdr);
+    }
+    if (!a.dumpDir.empty()) renderer.dumpGBuffer(a.dumpDir);
+    std::cout << "rendered " << a.width << "x" << a.height << " in " << ms
+              << " ms (one frame, includes shader compilation)\n"
+              << "wrote " << a.out << (a.outHdr.empty() ? "" : " and " + a.outHdr)
+              << (a.dumpDir.empty() ? "" : ", GBuffer channels in " + a.dumpDir) << "\n";
+    if (platform->isWindowed()) return runInteractive(*platform, renderer, s, view, a.frames);
+    return 0;
+}
+
+const RegisterCommand reg{{"render", "Render a scene to an image (or a window with --platform glfw)",
+                           20, [](CLI::App& cmd) {
+                               auto a = std::make_shared<RenderArgs>();
+                               addSceneOptions(cmd, a->scene);
+                               addPlatformOptions(cmd, a->platform);
+                               cmd.add_option("--view", a->view,
+                                              "Named view of the scene (default: its first)");
+                               cmd.add_option("--camera", a->camera,
+                                              "Camera px,py,pz,tx,ty,tz[,fovdeg] (overrides --view)");
+                               cmd.add_option("--width", a->width, "Image width in pixels")
+                                   ->capture_default_str();
+                               cmd.add_option("--height", a->height, "Image height in pixels")
+                                   ->capture_default_str();
+                               cmd.add_option("--out", a->out, "PNG to write (8-bit sRGB, tonemapped)");
+                               cmd.add_option("--out-hdr", a->outHdr,
+                                              "PFM to write (linear HDR radiance before exposure)");
+                               cmd.add_option("--dump-gbuffer", a->dumpDir,
+                                              "Folder to write every GBuffer channel to");
+                               cmd.add_option("--exposure", a->exposure,
+                                              "Linear exposure scale (default: the scene's)");
+                               cmd.add_option("--frames", a->frames,
+                                              "glfw: close the window after N frames (0 = on ESC)");
+                               return [a] { return run(*a); };
+                           }}};
+
+} // namespace
+} // namespace pb::app

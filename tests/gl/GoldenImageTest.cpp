@@ -1,0 +1,70 @@
+// Golden images of the built-in scenes: render in-process on EGL and compare with
+// tests/golden/<scene>_<view>.png. On failure actual/expected/diff PNGs land in
+// build/test-output/<test>/. To accept new goldens after an intended change:
+//   PB_UPDATE_GOLDENS=1 build/tests/gl_tests --gtest_filter='Golden*'
+// (then look at the images and commit them; tests/README.md).
+#include "frame/FrameRenderer.h"
+#include "gl/GlTestFixture.h"
+#include "scene/SceneLoader.h"
+#include "support/ImageCompare.h"
+#include "support/TestEnv.h"
+
+#include <cstdlib>
+#include <tuple>
+
+namespace fs = std::filesystem;
+using namespace pb;
+
+namespace {
+
+struct GoldenCase {
+    const char* scene;
+    const char* view;
+};
+
+// Tolerance: llvmpipe is deterministic for one build, but LLVM's code generation differs
+// between CPUs (AVX2 vs AVX-512) and Mesa versions; a few LSBs on edges are allowed.
+const test::ImageTolerance kGoldenTolerance{3, 0.002, 0.25};
+
+class Golden : public test::GlTest, public ::testing::WithParamInterface<GoldenCase> {};
+
+TEST_P(Golden, MatchesReference) {
+    const GoldenCase& c = GetParam();
+    scene::Scene s = scene::makeBuiltinScene(c.scene);
+    const scene::View* view = s.findView(c.view);
+    ASSERT_NE(view, nullptr) << "scene " << c.scene << " lost its view " << c.view;
+    render::FrameRenderer renderer(s, render::defaultFrameSettings(s));
+    renderer.render(render::makeRenderView(*view, s.worldBounds(), 320, 180));
+    image::Image8 actual = renderer.readOutput();
+    checkNoGlErrors("rendering");
+
+    fs::path golden = test::goldenDir() / (std::string(c.scene) + "_" + c.view + ".png");
+    const char* update = std::getenv("PB_UPDATE_GOLDENS");
+    if (update && std::string(update) == "1") {
+        image::writePng(golden.string(), actual);
+        GTEST_SKIP() << "golden written: " << golden;
+    }
+    ASSERT_TRUE(fs::exists(golden)) << "no golden image " << golden
+                                    << " (create it with PB_UPDATE_GOLDENS=1, see tests/README.md)";
+    image::Image8 expected = image::readPng(golden.string());
+    test::ImageDiff d = test::compareImages(actual, expected, kGoldenTolerance);
+    bool ok = test::withinTolerance(d, kGoldenTolerance);
+    if (!ok) {
+        fs::path dir = test::outputDir();
+        test::writeFailureImages(dir, actual, expected);
+        ADD_FAILURE() << d.describe() << "; actual/expected/diff images in " << dir;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Builtin, Golden,
+                         ::testing::Values(GoldenCase{"cornell", "default"},
+                                           GoldenCase{"cornell", "front"},
+                                           GoldenCase{"rooms", "default"},
+                                           GoldenCase{"rooms", "doorway"},
+                                           GoldenCase{"courtyard", "default"},
+                                           GoldenCase{"courtyard", "interior"}),
+                         [](const auto& info) {
+                             return std::string(info.param.scene) + "_" + info.param.view;
+                         });
+
+} // namespace

@@ -1,0 +1,19 @@
+#pragma once
+// Runs build/probebench (or any command) the way a user would, capturing output and exit code.
+#include <string>
+#include <vector>
+
+namespace pb::test {
+
+struct CommandResult {
+    int exitCode = -1;    // -1 when the process died from a signal (a crash)
+    bool crashed = false;
+    std::string output;   // stdout and stderr together
+};
+
+// Runs `args` (args[0] is the program) through /bin/sh with each argument quoted.
+CommandResult runCommand(const std::vector<std::string>& args);
+// Shorthand: the probebench binary with these arguments.
+CommandResult runProbebench(const std::vector<std::string>& args);
+
+} // namespace pb::test
