@@ -1,0 +1,195 @@
+#include "probes/Baker.h"
+
+#include "core/Error.h"
+#include "probes/GeometryPass.h"
+#include "probes/NestingBlend.h"
+#include "probes/ParallelFor.h"
+#include "probes/RadiancePass.h"
+#include "probes/RayDirections.h"
+#include "probes/RayScene.h"
+
+#include <chrono>
+
+namespace pb::probes {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Flat probe numbering over all volumes.
+struct ProbeIndex {
+    std::vector<std::size_t> first; // first flat index of each volume, plus the total
+    explicit ProbeIndex(const std::vector<ProbeVolume>& vols) {
+        first.push_back(0);
+        for (const auto& v : vols) first.push_back(first.back() + std::size_t(v.probeCount()));
+    }
+    std::size_t total() const { return first.back(); }
+    std::pair<int, int> locate(std::size_t flat) const {
+        std::size_t v = 0;
+        while (flat >= first[v + 1]) ++v;
+        return {int(v), int(flat - first[v])};
+    }
+};
+
+void checkRequest(const BakeRequest& r) {
+    if (r.volumes.empty()) throw Error("bake: no probe volumes");
+    if (r.scenarios.empty()) throw Error("bake: no lighting scenario");
+    if (r.settings.raysPerProbe < 1 || r.settings.raysPerProbe > 65536)
+        throw Error("--rays: must be in [1, 65536] (got " +
+                    std::to_string(r.settings.raysPerProbe) + ")");
+    if (r.settings.bounces < 1 || r.settings.bounces > 64)
+        throw Error("--bounces: must be in [1, 64] (got " + std::to_string(r.settings.bounces) +
+                    ")");
+    if (!(r.settings.backfaceThreshold >= 0.0f && r.settings.backfaceThreshold <= 1.0f))
+        throw Error("backface threshold must be in [0, 1]");
+}
+
+} // namespace
+
+ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats* statsOut,
+                    const BakeProgressFn& progress) {
+    checkRequest(req);
+    const auto t0 = Clock::now();
+    const std::vector<int> parents = validateVolumes(req.volumes, "volumes");
+    const BakeSettings& cfg = req.settings;
+    const int threads = resolveThreadCount(req.threads);
+    RayScene rs(scene);
+
+    ProbeSet set;
+    set.inputHash = bakeInputHash(scene, req);
+    set.settings = cfg;
+    set.volumes = req.volumes;
+    set.scenarios = req.scenarios;
+    for (const ProbeVolume& v : set.volumes) {
+        set.states.emplace_back(size_t(v.probeCount()));
+        set.visibility.push_back(ProbeTexture::make(visibilityShape(v.counts)));
+    }
+
+    const ProbeIndex index(set.volumes);
+    const std::size_t stages = 1 + req.scenarios.size() * size_t(cfg.bounces);
+    std::size_t doneBefore = 0;
+    auto report = [&](const std::string& stage) {
+        return [&, stage](std::size_t done) {
+            if (progress) progress({stage, doneBefore + done, stages * index.total()});
+        };
+    };
+    std::vector<RayCounters> counters(static_cast<size_t>(threads));
+
+    // 1. Geometry.
+    {
+        const auto dirs = passDirections(cfg.raysPerProbe, geometryStream(cfg.seed));
+        const ProbeConvolution conv(dirs);
+        std::vector<GeometryScratch> scratch(static_cast<size_t>(threads));
+        std::vector<std::vector<float>> vis(static_cast<size_t>(threads),
+                                            std::vector<float>(kVisibilityInterior *
+                                                               kVisibilityInterior * 2));
+        parallelFor(index.total(), threads, [&](std::size_t flat, int t) {
+            auto [v, p] = index.locate(flat);
+            const ProbeVolume& vol = set.volumes[size_t(v)];
+            glm::ivec3 c = vol.probeCoords(p);
+            float* out = vis[size_t(t)].data();
+            ProbeState& st = set.states[size_t(v)][size_t(p)];
+            bakeProbeGeometry(rs, vol, c, dirs, conv, cfg, scratch[size_t(t)], st, out,
+                              counters[size_t(t)].primary);
+            if (!st.valid) return;
+            float* tile = tileOrigin(set.visibility[size_t(v)], c, kVisibilityTile);
+            const int pitch = set.visibility[size_t(v)].shape.width;
+            for (int y = 0; y < kVisibilityInterior; ++y)
+                for (int x = 0; x < kVisibilityInterior; ++x)
+                    for (int ch = 0; ch < 2; ++ch)
+                        tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 2 + size_t(ch)] =
+                            out[(y * kVisibilityInterior + x) * 2 + ch];
+        }, report("geometry"));
+        doneBefore += index.total();
+        for (ProbeTexture& t : set.visibility) fillAllBorders(t, kVisibilityInterior);
+    }
+
+    // 2. Radiance, per scenario and pass.
+    for (size_t s = 0; s < req.scenarios.size(); ++s) {
+        const Scenario& sc = req.scenarios[s];
+        std::vector<ProbeTexture> prev;
+        for (int pass = 1; pass <= cfg.bounces; ++pass) {
+            std::vector<ProbeTexture> cur;
+            for (const ProbeVolume& v : set.volumes)
+                cur.push_back(ProbeTexture::make(irradianceShape(v.counts)));
+            std::vector<SamplerVolume> prevViews, curViews;
+            std::vector<ProbeTexture*> targets;
+            for (size_t v = 0; v < set.volumes.size(); ++v) {
+                if (!prev.empty())
+                    prevViews.push_back({&set.volumes[v], set.states[v].data(), &prev[v],
+                                         &set.visibility[v], parents[v] < 0});
+                curViews.push_back({&set.volumes[v], set.states[v].data(), &cur[v],
+                                    &set.visibility[v], parents[v] < 0});
+                targets.push_back(&cur[v]);
+            }
+            const ProbeSampler prevSampler(prevViews);
+            const ProbeSampler* previous = prev.empty() ? nullptr : &prevSampler;
+            const auto dirs = passDirections(cfg.raysPerProbe, radianceStream(cfg.seed, int(s), pass));
+            const ProbeConvolution conv(dirs);
+            std::vector<RadianceScratch> scratch(static_cast<size_t>(threads));
+            std::vector<std::vector<float>> irr(
+                size_t(threads), std::vector<float>(kIrradianceInterior * kIrradianceInterior * 3));
+            std::string stage = sc.name + " pass " + std::to_string(pass) + "/" +
+                                std::to_string(cfg.bounces);
+            parallelFor(index.total(), threads, [&](std::size_t flat, int t) {
+                auto [v, p] = index.locate(flat);
+                const ProbeVolume& vol = set.volumes[size_t(v)];
+                const ProbeState& st = set.states[size_t(v)][size_t(p)];
+                glm::ivec3 c = vol.probeCoords(p);
+                float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
+                const int pitch = cur[size_t(v)].shape.width;
+                for (int y = 0; y < kIrradianceTile; ++y)
+                    for (int x = 0; x < kIrradianceTile; ++x)
+                        tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
+                if (!st.valid) return;
+                float* out = irr[size_t(t)].data();
+                bakeProbeRadiance(rs, sc, scene.lights, vol.localToWorldRotation(),
+                                  vol.toWorld(vol.gridLocal(c) + st.offset), dirs, conv, previous,
+                                  scratch[size_t(t)], out, counters[size_t(t)]);
+                for (int y = 0; y < kIrradianceInterior; ++y)
+                    for (int x = 0; x < kIrradianceInterior; ++x)
+                        for (int ch = 0; ch < 3; ++ch)
+                            tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 + size_t(ch)] =
+                                out[(y * kIrradianceInterior + x) * 3 + ch];
+            }, report(stage));
+            doneBefore += index.total();
+            for (ProbeTexture& t : cur) fillAllBorders(t, kIrradianceInterior);
+            blendNestedRings(set.volumes, parents, curViews, targets);
+            prev = std::move(cur);
+        }
+        set.irradiance.push_back(std::move(prev));
+    }
+    const double traceSeconds = since(t0);
+
+    // 3. Storage format.
+    const auto tq = Clock::now();
+    std::vector<ProbeTexture*> all;
+    for (auto& t : set.visibility) all.push_back(&t);
+    for (auto& sc : set.irradiance)
+        for (auto& t : sc) all.push_back(&t);
+    parallelFor(all.size(), threads,
+                [&](std::size_t i, int) { quantise(*all[i], cfg.format); });
+
+    if (statsOut) {
+        BakeStats st;
+        st.probes = set.probeCount();
+        st.invalidProbes = set.invalidCount();
+        for (const auto& vs : set.states)
+            for (const ProbeState& p : vs) st.relocatedProbes += p.offset != glm::vec3(0.0f);
+        for (const RayCounters& c : counters) {
+            st.primaryRays += c.primary;
+            st.shadowRays += c.shadow;
+        }
+        st.triangles = rs.triangleCount();
+        st.traceSeconds = traceSeconds;
+        st.quantiseSeconds = since(tq);
+        st.seconds = since(t0);
+        st.threads = threads;
+        *statsOut = st;
+    }
+    return set;
+}
+
+} // namespace pb::probes

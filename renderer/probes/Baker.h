@@ -1,0 +1,49 @@
+#pragma once
+// The probe bake: Embree on all cores, every probe independent (same inputs + seed give
+// identical bytes for any thread count).
+//
+//   1. geometry pass (once): relocation, classification, visibility  (GeometryPass.h)
+//   2. per scenario, passes 1..bounces: irradiance of every valid probe (RadiancePass.h),
+//      octahedral borders, nested-ring blend (NestingBlend.h); pass b reads pass b-1
+//   3. quantise to the storage format (the sampler then sees what the GPU will sample)
+#include "probes/ProbeSet.h"
+#include "scene/Scene.h"
+
+#include <functional>
+#include <string>
+
+namespace pb::probes {
+
+struct BakeRequest {
+    std::vector<ProbeVolume> volumes;
+    std::vector<Scenario> scenarios;
+    BakeSettings settings;
+    int threads = 0; // 0 = all cores; never changes the result
+};
+
+struct BakeProgress {
+    std::string stage;    // e.g. "geometry", "day pass 2/2"
+    std::size_t done = 0; // probes finished over all stages
+    std::size_t total = 0;
+};
+using BakeProgressFn = std::function<void(const BakeProgress&)>;
+
+struct BakeStats {
+    std::size_t probes = 0, invalidProbes = 0, relocatedProbes = 0;
+    std::uint64_t primaryRays = 0, shadowRays = 0;
+    std::size_t triangles = 0;
+    double seconds = 0.0;         // whole bake, wall clock
+    double traceSeconds = 0.0;    // geometry + radiance passes (quantisation excluded)
+    double quantiseSeconds = 0.0; // encoding to the storage format
+    int threads = 1;
+};
+
+// Throws pb::Error for invalid volumes, no scenario, rays < 1 or bounces < 1.
+ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& request,
+                    BakeStats* stats = nullptr, const BakeProgressFn& progress = {});
+
+// Everything the result depends on: scene geometry, materials, lights, volumes, scenarios,
+// settings, the file format version and the bake's algorithm version.
+std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& request);
+
+} // namespace pb::probes

@@ -1,0 +1,40 @@
+#pragma once
+// 64-bit FNV-1a: the probe file's checksum and the bake cache's input hash. Not
+// cryptographic; it catches truncation, bit flips and changed inputs, which is all we need.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <type_traits>
+
+namespace pb::probes {
+
+class Hasher {
+public:
+    void bytes(const void* data, std::size_t size) {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i) {
+            h_ ^= p[i];
+            h_ *= 0x100000001b3ull;
+        }
+    }
+    template <class T> void pod(const T& v) {
+        static_assert(std::is_trivially_copyable_v<T>);
+        bytes(&v, sizeof(T));
+    }
+    void str(const std::string& s) {
+        pod(std::uint64_t(s.size()));
+        bytes(s.data(), s.size());
+    }
+    std::uint64_t value() const { return h_; }
+
+private:
+    std::uint64_t h_ = 0xcbf29ce484222325ull;
+};
+
+inline std::uint64_t fnv1a64(const void* data, std::size_t size) {
+    Hasher h;
+    h.bytes(data, size);
+    return h.value();
+}
+
+} // namespace pb::probes

@@ -1,0 +1,128 @@
+#include "probes/MemoryReport.h"
+
+#include "core/Error.h"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+
+namespace pb::probes {
+namespace {
+
+ProbeBytes bytesOf(const glm::ivec3& c, StorageFormat f) {
+    return {storedBytes(irradianceShape(c), f), storedBytes(visibilityShape(c), f)};
+}
+
+void add(ProbeBytes& a, const ProbeBytes& b) {
+    a.irradiance += b.irradiance;
+    a.visibility += b.visibility;
+}
+
+nlohmann::json bytesJson(const ProbeBytes& b, std::size_t probes) {
+    return {{"irradiance", b.irradiance},
+            {"visibility", b.visibility},
+            {"total", b.total()},
+            {"per_probe", probes ? b.total() / probes : 0}};
+}
+
+nlohmann::json volumeJson(const VolumeMemory& v) {
+    return {{"name", v.name},
+            {"counts", {v.counts.x, v.counts.y, v.counts.z}},
+            {"probes", v.probes},
+            {"uncompressed", bytesJson(v.uncompressed, v.probes)},
+            {"bc6h", bytesJson(v.bc6h, v.probes)},
+            {"stored", bytesJson(v.stored, v.probes)}};
+}
+
+} // namespace
+
+std::string formatBytes(std::size_t bytes) {
+    char buf[64];
+    if (bytes < 1024) std::snprintf(buf, sizeof buf, "%zu B", bytes);
+    else if (bytes < 1024 * 1024) std::snprintf(buf, sizeof buf, "%.2f KiB", double(bytes) / 1024.0);
+    else std::snprintf(buf, sizeof buf, "%.2f MiB", double(bytes) / (1024.0 * 1024.0));
+    return buf;
+}
+
+MemoryReport memoryReport(const std::vector<ProbeVolume>& volumes, StorageFormat format) {
+    MemoryReport r;
+    r.format = format;
+    r.total.name = "total";
+    for (const ProbeVolume& v : volumes) {
+        VolumeMemory m;
+        m.name = v.name;
+        m.counts = v.counts;
+        m.probes = std::size_t(v.probeCount());
+        m.uncompressed = bytesOf(v.counts, StorageFormat::Rgba16f);
+        m.bc6h = bytesOf(v.counts, StorageFormat::Bc6h);
+        m.stored = bytesOf(v.counts, format);
+        r.total.probes += m.probes;
+        add(r.total.uncompressed, m.uncompressed);
+        add(r.total.bc6h, m.bc6h);
+        add(r.total.stored, m.stored);
+        r.volumes.push_back(m);
+    }
+    return r;
+}
+
+glm::ivec3 parseGrid(const std::string& text) {
+    std::smatch m;
+    static const std::regex re(R"(^\s*(\d{1,5})\s*[xX]\s*(\d{1,5})\s*[xX]\s*(\d{1,5})\s*$)");
+    if (!std::regex_match(text, m, re))
+        throw Error("--grid: expected NXxNYxNZ such as 32x8x32 (got '" + text + "')");
+    glm::ivec3 c(std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3]));
+    for (int a = 0; a < 3; ++a)
+        if (c[a] < 1 || c[a] > kMaxProbesPerAxis)
+            throw Error("--grid: every axis needs 1.." + std::to_string(kMaxProbesPerAxis) +
+                        " probes (got '" + text + "')");
+    return c;
+}
+
+std::string formatMemoryReport(const MemoryReport& r) {
+    std::ostringstream s;
+    auto line = [&](const VolumeMemory& v) {
+        char buf[512];
+        std::size_t p = v.probes ? v.probes : 1;
+        std::snprintf(buf, sizeof buf,
+                      "%-16s %-12s %8zu  %10s (%zu+%zu B/probe)  %10s (%zu+%zu B/probe)\n",
+                      v.name.c_str(),
+                      v.counts.x ? (std::to_string(v.counts.x) + "x" + std::to_string(v.counts.y) +
+                                    "x" + std::to_string(v.counts.z))
+                                       .c_str()
+                                 : "",
+                      v.probes, formatBytes(v.uncompressed.total()).c_str(),
+                      v.uncompressed.irradiance / p, v.uncompressed.visibility / p,
+                      formatBytes(v.bc6h.total()).c_str(), v.bc6h.irradiance / p,
+                      v.bc6h.visibility / p);
+        s << buf;
+    };
+    s << "probe memory, one scenario resident (irradiance + visibility)\n";
+    char head[256];
+    std::snprintf(head, sizeof head, "%-16s %-12s %8s  %-36s %s\n", "volume", "grid", "probes",
+                  "uncompressed (rgba16f + rg16f)", "bc6h");
+    s << head;
+    for (const VolumeMemory& v : r.volumes) line(v);
+    VolumeMemory t = r.total;
+    t.counts = glm::ivec3(0);
+    line(t);
+    s << "  irradiance " << formatBytes(r.total.uncompressed.irradiance) << " + visibility "
+      << formatBytes(r.total.uncompressed.visibility) << " uncompressed; "
+      << formatBytes(r.total.bc6h.irradiance) << " + " << formatBytes(r.total.bc6h.visibility)
+      << " bc6h\n";
+    if (r.format != StorageFormat::Rgba16f && r.format != StorageFormat::Bc6h)
+        s << "  stored as " << formatName(r.format) << ": " << formatBytes(r.total.stored.total())
+          << "\n";
+    return s.str();
+}
+
+nlohmann::json memoryReportJson(const MemoryReport& r) {
+    nlohmann::json vols = nlohmann::json::array();
+    for (const VolumeMemory& v : r.volumes) vols.push_back(volumeJson(v));
+    nlohmann::json total = volumeJson(r.total);
+    total.erase("name");
+    total.erase("counts");
+    return {{"format", formatName(r.format)}, {"volumes", vols}, {"total", total}};
+}
+
+} // namespace pb::probes

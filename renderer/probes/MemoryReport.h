@@ -1,0 +1,38 @@
+#pragma once
+// GPU memory of baked probes, per volume and in total, for ONE scenario resident (the GPU
+// loads only the active scenario's irradiance; visibility is shared): uncompressed =
+// rgba16f + rg16f, BC6H = both textures BC6H, plus the stored format of a probe file.
+#include "probes/ProbeSet.h"
+
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+#include <vector>
+
+namespace pb::probes {
+
+struct VolumeMemory {
+    std::string name;
+    glm::ivec3 counts{0};
+    std::size_t probes = 0;
+    ProbeBytes uncompressed; // rgba16f irradiance + rg16f visibility
+    ProbeBytes bc6h;
+    ProbeBytes stored;       // in `format`
+};
+
+struct MemoryReport {
+    StorageFormat format = StorageFormat::Rgba16f;
+    std::vector<VolumeMemory> volumes;
+    VolumeMemory total;
+};
+
+MemoryReport memoryReport(const std::vector<ProbeVolume>& volumes,
+                          StorageFormat format = StorageFormat::Rgba16f);
+// "32x8x32" -> counts; throws pb::Error naming --grid otherwise.
+glm::ivec3 parseGrid(const std::string& text);
+
+std::string formatMemoryReport(const MemoryReport& r);
+nlohmann::json memoryReportJson(const MemoryReport& r);
+// "12.00 MiB", "320 B", ...
+std::string formatBytes(std::size_t bytes);
+
+} // namespace pb::probes

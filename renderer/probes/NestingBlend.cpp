@@ -1,0 +1,42 @@
+#include "probes/NestingBlend.h"
+
+#include "probes/Octahedral.h"
+
+namespace pb::probes {
+
+void blendNestedRings(const std::vector<ProbeVolume>& volumes, const std::vector<int>& parents,
+                      const std::vector<SamplerVolume>& views,
+                      std::vector<ProbeTexture*>& targets) {
+    ProbeSampler sampler(views);
+    SampleOptions noFade;
+    noFade.edgeFade = false;
+    for (int v : parentFirstOrder(parents)) {
+        const int parent = parents[size_t(v)];
+        const ProbeVolume& vol = volumes[size_t(v)];
+        if (parent < 0 || vol.edgeBlend <= 0.0f) continue;
+        const glm::mat3 rot = vol.localToWorldRotation();
+        const ProbeState* states = views[size_t(v)].states;
+        ProbeTexture& tex = *targets[size_t(v)];
+        for (int i = 0; i < vol.probeCount(); ++i) {
+            glm::ivec3 c = vol.probeCoords(i);
+            bool ring = false;
+            for (int a = 0; a < 3; ++a) ring = ring || c[a] == 0 || c[a] == vol.counts[a] - 1;
+            if (!ring || !states[i].valid) continue;
+            glm::vec3 pos = vol.toWorld(vol.gridLocal(c) + states[i].offset);
+            float* tile = tileOrigin(tex, c, kIrradianceTile);
+            for (int y = 0; y < kIrradianceInterior; ++y)
+                for (int x = 0; x < kIrradianceInterior; ++x) {
+                    glm::vec3 dir = rot * octTexelDirection(x, y, kIrradianceInterior);
+                    IrradianceSample s = sampler.sampleVolume(parent, pos, dir, dir, noFade);
+                    if (!(s.weight > 0.0f)) continue;
+                    float* t = tile + (size_t(y + 1) * tex.shape.width + size_t(x + 1)) *
+                                          size_t(tex.shape.channels);
+                    for (int ch = 0; ch < 3; ++ch)
+                        t[ch] += (s.irradiance[ch] - t[ch]) * vol.edgeBlend;
+                }
+            fillOctahedralBorder(tile, tex.shape.width, tex.shape.channels, kIrradianceInterior);
+        }
+    }
+}
+
+} // namespace pb::probes

@@ -1,0 +1,22 @@
+#pragma once
+// Nested volumes: after each bounce pass, every child's outermost probe ring (probes with an
+// index 0 or count-1 on some axis) is blended towards its parent's irradiance at the same
+// places, so the lighting has no seam where the smaller volume takes over:
+//     texel = mix(texel, E_parent, child.edgeBlend)
+// E_parent = the CPU sampler on the parent volume alone at the (relocated) probe position,
+// normal = view = the texel's direction, no edge fade. Where the parent has nothing (weight
+// 0: all its probes there invalid) the child's own value stays. Invalid child probes are
+// left alone. Parents are blended before their children, so a chain of nesting cascades.
+#include "probes/ProbeSampler.h"
+
+#include <vector>
+
+namespace pb::probes {
+
+// `volumes` is the sampler's view of the current pass (irradiance textures writable through
+// `targets`, one per volume, the same textures the views point to); parents[i] = -1 for roots.
+void blendNestedRings(const std::vector<ProbeVolume>& volumes, const std::vector<int>& parents,
+                      const std::vector<SamplerVolume>& views,
+                      std::vector<ProbeTexture*>& targets);
+
+} // namespace pb::probes

@@ -1,0 +1,70 @@
+#include "probes/ParallelFor.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace pb::probes {
+
+int resolveThreadCount(int requested) {
+    if (requested > 0) return requested;
+    return std::max(1, int(std::thread::hardware_concurrency()));
+}
+
+void parallelFor(std::size_t count, int threads,
+                 const std::function<void(std::size_t, int)>& body,
+                 const std::function<void(std::size_t)>& tick) {
+    threads = std::max(1, std::min<int>(threads, int(std::max<std::size_t>(count, 1))));
+    const std::size_t chunk =
+        std::max<std::size_t>(1, std::min<std::size_t>(16, count / (std::size_t(threads) * 8) + 1));
+    std::atomic<std::size_t> next{0}, done{0};
+    std::atomic<bool> failed{false};
+    std::exception_ptr error;
+    std::mutex m;
+    std::condition_variable cv;
+    int running = threads;
+
+    auto worker = [&](int t) {
+        try {
+            while (!failed.load(std::memory_order_relaxed)) {
+                std::size_t begin = next.fetch_add(chunk);
+                if (begin >= count) break;
+                std::size_t end = std::min(count, begin + chunk);
+                for (std::size_t i = begin; i < end; ++i) body(i, t);
+                done.fetch_add(end - begin, std::memory_order_relaxed);
+            }
+        } catch (...) {
+            std::lock_guard<std::mutex> lock(m);
+            if (!error) error = std::current_exception();
+            failed = true;
+        }
+        std::lock_guard<std::mutex> lock(m);
+        --running;
+        cv.notify_all();
+    };
+
+    std::vector<std::thread> pool;
+    for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
+    if (tick) {
+        // The calling thread only reports progress; `threads` workers do the work.
+        pool.emplace_back(worker, 0);
+        std::unique_lock<std::mutex> lock(m);
+        while (running > 0) {
+            cv.wait_for(lock, std::chrono::milliseconds(100));
+            lock.unlock();
+            tick(done.load());
+            lock.lock();
+        }
+    } else {
+        worker(0);
+    }
+    for (auto& th : pool) th.join();
+    if (error) std::rethrow_exception(error);
+}
+
+} // namespace pb::probes

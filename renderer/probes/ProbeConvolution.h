@@ -1,0 +1,44 @@
+#pragma once
+// Turns one probe's ray results into its texels, with weights computed once per pass (all
+// probes of a pass share the directions, see RayDirections.h).
+//
+// Irradiance texel t (direction n_t, octahedral texel centre) from rays (d_r, L_r):
+//     E_t = pi * sum_r max(0, n_t.d_r) L_r / sum_r max(0, n_t.d_r)
+// Normalising by the weight sum (not by N/4) makes a uniform radiance L give exactly pi*L
+// for any ray count: E is irradiance in the scene's linear units.
+// Visibility texel t, with w = max(0, n_t.d_r)^kVisibilityPower and distances already
+// clamped and divided by the volume's maxDistance (misses count as 1):
+//     mean = sum w d / sum w,   meanSq = sum w d^2 / sum w
+// A texel whose weights are all zero (only possible with very few rays) takes the ray
+// nearest to its direction. Weights are kept sparse: zeros and normalised weights below
+// kWeightPrune are dropped (relative effect < rays * 1e-7, far below half-float precision).
+#include <glm/glm.hpp>
+#include <vector>
+
+namespace pb::probes {
+
+constexpr int kVisibilityPower = 50;
+constexpr float kWeightPrune = 1e-7f;
+
+class ProbeConvolution {
+public:
+    explicit ProbeConvolution(const std::vector<glm::vec3>& localDirs);
+    int rays() const { return rays_; }
+    // radiance: SoA arrays of rays() floats; out: interior texels, row-major, RGB per texel.
+    void irradiance(const float* r, const float* g, const float* b, float* outRgb) const;
+    // dist01: rays() normalised distances; out: interior texels, (mean, meanSq) per texel.
+    void visibility(const float* dist01, float* outMeanMeanSq) const;
+
+private:
+    struct Sparse { // compressed rows: texel t uses entries [start[t], start[t+1])
+        std::vector<int> start, ray;
+        std::vector<float> weight;
+    };
+    int rays_;
+    Sparse irr_; // weights include pi / sum
+    Sparse vis_; // weights include 1 / sum
+    static void build(const std::vector<glm::vec3>& dirs, int interior, float scale, bool power,
+                      Sparse& out);
+};
+
+} // namespace pb::probes

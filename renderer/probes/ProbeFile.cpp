@@ -1,0 +1,189 @@
+#include "probes/ProbeFile.h"
+
+#include "core/Error.h"
+#include "core/FileIO.h"
+#include "probes/BinaryIO.h"
+#include "probes/Hash.h"
+
+#include <cstring>
+
+namespace pb::probes {
+namespace {
+
+constexpr std::size_t kFixedHeader = 8 + 4 + 8; // magic, version, file size
+
+void writeTexture(ByteWriter& w, const ProbeTexture& t) {
+    w.pod(std::uint64_t(t.stored.size()));
+    w.raw(t.stored.data(), t.stored.size());
+}
+
+void readTexture(ByteReader& r, ProbeTexture& t, const TextureShape& shape, StorageFormat f,
+                 const std::string& path, const char* what) {
+    auto size = r.pod<std::uint64_t>(what);
+    if (size != storedBytes(shape, f))
+        throw fileError(path, std::string("corrupt ") + what + " size (" + std::to_string(size) +
+                                  " bytes, expected " + std::to_string(storedBytes(shape, f)) + ")");
+    const std::uint8_t* p = r.take(std::size_t(size), what);
+    t.shape = shape;
+    t.stored.assign(p, p + size);
+    decodeStored(t, f);
+}
+
+} // namespace
+
+std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
+    ByteWriter w;
+    w.raw(kProbeFileMagic, sizeof(kProbeFileMagic));
+    w.pod(kProbeFileVersion);
+    w.pod(std::uint64_t(0)); // file size, patched below
+    w.pod(set.inputHash);
+    const BakeSettings& b = set.settings;
+    w.pod(std::uint32_t(b.format));
+    w.pod(std::int32_t(b.raysPerProbe));
+    w.pod(std::int32_t(b.bounces));
+    w.pod(b.seed);
+    w.pod(std::uint8_t(b.relocate));
+    w.pod(b.backfaceThreshold);
+    w.pod(std::uint32_t(kIrradianceTile));
+    w.pod(std::uint32_t(kVisibilityTile));
+
+    w.pod(std::uint32_t(set.volumes.size()));
+    for (const ProbeVolume& v : set.volumes) {
+        w.str(v.name);
+        w.str(v.parent);
+        w.pod(v.center);
+        w.pod(glm::vec4(v.rotation.x, v.rotation.y, v.rotation.z, v.rotation.w));
+        w.pod(v.halfExtents);
+        w.pod(v.counts);
+        w.pod(v.edgeBlend);
+    }
+    w.pod(std::uint32_t(set.scenarios.size()));
+    for (const Scenario& s : set.scenarios) {
+        w.str(s.name);
+        w.pod(std::uint8_t(s.sun.enabled));
+        w.pod(s.sun.toSun);
+        w.pod(s.sun.color);
+        w.pod(s.sun.intensity);
+        w.pod(s.sky.radiance);
+    }
+    for (const auto& states : set.states)
+        for (const ProbeState& p : states) {
+            w.pod(p.offset);
+            w.pod(p.backfaceRatio);
+            w.pod(std::uint8_t(p.valid));
+        }
+    for (const ProbeTexture& t : set.visibility) writeTexture(w, t);
+    for (const auto& sc : set.irradiance)
+        for (const ProbeTexture& t : sc) writeTexture(w, t);
+
+    std::uint64_t total = w.data().size() + sizeof(std::uint64_t);
+    std::memcpy(w.data().data() + 12, &total, sizeof(total));
+    w.pod(fnv1a64(w.data().data(), w.data().size()));
+    return std::move(w.data());
+}
+
+ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string& path) {
+    if (bytes.size() < kFixedHeader ||
+        std::memcmp(bytes.data(), kProbeFileMagic, sizeof(kProbeFileMagic)) != 0)
+        throw fileError(path, "not a probebench probe file (bad magic)");
+    ByteReader r(bytes.data(), bytes.size(), path);
+    r.take(sizeof(kProbeFileMagic), "magic");
+    auto version = r.pod<std::uint32_t>("version");
+    if (version != kProbeFileVersion)
+        throw fileError(path, "probe file version " + std::to_string(version) +
+                                  ", this build reads version " +
+                                  std::to_string(kProbeFileVersion) + " (re-bake it)");
+    auto declared = r.pod<std::uint64_t>("file size");
+    if (declared != bytes.size())
+        throw fileError(path, "file is truncated or padded (" + std::to_string(bytes.size()) +
+                                  " bytes, header says " + std::to_string(declared) + ")");
+    if (bytes.size() < kFixedHeader + 8)
+        throw fileError(path, "file is truncated (no checksum)");
+    std::uint64_t stored;
+    std::memcpy(&stored, bytes.data() + bytes.size() - 8, 8);
+    if (fnv1a64(bytes.data(), bytes.size() - 8) != stored)
+        throw fileError(path, "checksum mismatch: the file is corrupted (re-bake it)");
+    ByteReader body(bytes.data(), bytes.size() - 8, path);
+    body.take(kFixedHeader, "header");
+
+    ProbeSet set;
+    set.inputHash = body.pod<std::uint64_t>("input hash");
+    auto format = body.pod<std::uint32_t>("format");
+    if (!isKnownFormat(format))
+        throw fileError(path, "unknown storage format " + std::to_string(format));
+    BakeSettings& b = set.settings;
+    b.format = StorageFormat(format);
+    b.raysPerProbe = body.pod<std::int32_t>("rays");
+    b.bounces = body.pod<std::int32_t>("bounces");
+    b.seed = body.pod<std::uint64_t>("seed");
+    b.relocate = body.pod<std::uint8_t>("relocate") != 0;
+    b.backfaceThreshold = body.pod<float>("backface threshold");
+    if (body.pod<std::uint32_t>("tile") != std::uint32_t(kIrradianceTile) ||
+        body.pod<std::uint32_t>("tile") != std::uint32_t(kVisibilityTile))
+        throw fileError(path, "unsupported probe tile sizes");
+
+    auto volumeCount = body.pod<std::uint32_t>("volume count");
+    if (volumeCount == 0 || volumeCount > 4096)
+        throw fileError(path, "corrupt volume count " + std::to_string(volumeCount));
+    for (std::uint32_t i = 0; i < volumeCount; ++i) {
+        ProbeVolume v;
+        v.name = body.str("volume name");
+        v.parent = body.str("volume parent");
+        v.center = body.pod<glm::vec3>("volume center");
+        auto q = body.pod<glm::vec4>("volume rotation");
+        v.rotation = glm::quat(q.w, q.x, q.y, q.z);
+        v.halfExtents = body.pod<glm::vec3>("volume extents");
+        v.counts = body.pod<glm::ivec3>("volume counts");
+        v.edgeBlend = body.pod<float>("volume edge blend");
+        set.volumes.push_back(v);
+    }
+    validateVolumes(set.volumes, path);
+    auto scenarioCount = body.pod<std::uint32_t>("scenario count");
+    if (scenarioCount == 0 || scenarioCount > 256)
+        throw fileError(path, "corrupt scenario count " + std::to_string(scenarioCount));
+    for (std::uint32_t i = 0; i < scenarioCount; ++i) {
+        Scenario s;
+        s.name = body.str("scenario name");
+        s.sun.enabled = body.pod<std::uint8_t>("sun") != 0;
+        s.sun.toSun = body.pod<glm::vec3>("sun direction");
+        s.sun.color = body.pod<glm::vec3>("sun colour");
+        s.sun.intensity = body.pod<float>("sun intensity");
+        s.sky.radiance = body.pod<glm::vec3>("sky");
+        set.scenarios.push_back(s);
+    }
+    for (const ProbeVolume& v : set.volumes) {
+        std::vector<ProbeState> states(static_cast<size_t>(v.probeCount()));
+        for (ProbeState& p : states) {
+            p.offset = body.pod<glm::vec3>("probe offset");
+            p.backfaceRatio = body.pod<float>("probe ratio");
+            p.valid = body.pod<std::uint8_t>("probe validity") != 0;
+        }
+        set.states.push_back(std::move(states));
+    }
+    for (const ProbeVolume& v : set.volumes) {
+        set.visibility.emplace_back();
+        readTexture(body, set.visibility.back(), visibilityShape(v.counts), b.format, path,
+                    "visibility");
+    }
+    for (std::uint32_t s = 0; s < scenarioCount; ++s) {
+        set.irradiance.emplace_back();
+        for (const ProbeVolume& v : set.volumes) {
+            set.irradiance.back().emplace_back();
+            readTexture(body, set.irradiance.back().back(), irradianceShape(v.counts), b.format,
+                        path, "irradiance");
+        }
+    }
+    if (body.remaining() != 0)
+        throw fileError(path, "corrupt: " + std::to_string(body.remaining()) +
+                                  " unexpected bytes before the checksum");
+    return set;
+}
+
+void writeProbeFile(const std::string& path, const ProbeSet& set) {
+    std::vector<std::uint8_t> bytes = serializeProbeSet(set);
+    writeFileAtomic(path, bytes.data(), bytes.size());
+}
+
+ProbeSet readProbeFile(const std::string& path) { return parseProbeSet(readFileBytes(path), path); }
+
+} // namespace pb::probes

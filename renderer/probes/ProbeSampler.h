@@ -1,0 +1,84 @@
+#pragma once
+// The CPU reference of the DDGI irradiance lookup (plain C++/GLM, float math). The GPU apply
+// pass must reproduce it to 1e-3 relative; README.md "Sampler" spells out every step in the
+// order this file executes them, with the constants below.
+//
+// Volume choice: among the volumes whose INFLUENCE region contains the point, the one with
+// the smallest box volume wins (ties: the first in the file). A child's influence region is
+// its box; a root's is its box grown by kEdgeFadeCells cells per axis, over which its weight
+// fades linearly from 1 (box face) to 0. Children need no fade: the bake blends their outer
+// probe ring towards the parent (NestingBlend.h).
+// Outside every volume the result is irradiance 0 with weight 0: the caller decides the
+// fallback (e.g. ambient). All probes invalid, or all weights zero, also give weight 0 and
+// irradiance 0 - never NaN.
+#include "probes/ProbeSet.h"
+
+#include <vector>
+
+namespace pb::probes {
+
+constexpr float kBiasNormalWeight = 0.2f; // surface bias = (0.2 n + 0.8 v) * 0.25 * minCell
+constexpr float kBiasViewWeight = 0.8f;
+constexpr float kBiasScale = 0.25f;
+constexpr float kWrapBias = 0.2f;          // backface weight ((dot(dirToProbe,n)+1)/2)^2 + 0.2
+constexpr float kChebyshevFloor = 0.05f;   // lower bound of the (cubed) Chebyshev weight
+constexpr float kVarianceFloor = 1e-3f;    // in normalised distance units (maxDistance^2)
+constexpr float kCrushThreshold = 0.2f;    // w < 0.2 -> w * w^2 / 0.2^2
+constexpr float kMinTrilinear = 1e-3f;     // lower bound of the trilinear weight
+constexpr float kEdgeFadeCells = 0.5f;     // fade width of root volumes, in cells
+
+// One volume as the sampler sees it (the bake points these at its working textures).
+struct SamplerVolume {
+    const ProbeVolume* volume = nullptr;
+    const ProbeState* states = nullptr;        // probeCount() entries
+    const ProbeTexture* irradiance = nullptr;  // RGBA, irradianceShape(counts)
+    const ProbeTexture* visibility = nullptr;  // RG, visibilityShape(counts)
+    bool root = true;
+};
+
+struct IrradianceSample {
+    glm::vec3 irradiance{0.0f}; // E (already multiplied by the edge fade when enabled)
+    float weight = 0.0f;        // edge fade in [0,1]; 0 when nothing contributed
+    int volume = -1;            // the volume used, -1 outside all
+    int probes = 0;             // probes that contributed (valid, inside the grid)
+};
+
+struct SampleOptions {
+    bool edgeFade = true; // the bake turns it off: hits near a root's face keep full weight
+};
+
+class ProbeSampler {
+public:
+    ProbeSampler(const ProbeSet& set, int scenario);
+    explicit ProbeSampler(const std::vector<SamplerVolume>& volumes);
+
+    // pos: world point; normal: world surface normal; view: unit vector from the surface
+    // TOWARDS the viewer (use the normal when there is none). Vectors need not be unit.
+    IrradianceSample sample(const glm::vec3& pos, const glm::vec3& normal, const glm::vec3& view,
+                            SampleOptions opt = {}) const;
+    IrradianceSample sampleVolume(int volume, const glm::vec3& pos, const glm::vec3& normal,
+                                  const glm::vec3& view, SampleOptions opt = {}) const;
+    int selectVolume(const glm::vec3& pos) const;
+    std::size_t volumeCount() const { return frames_.size(); }
+
+private:
+    struct Frame {
+        SamplerVolume src;
+        glm::mat3 toLocal;
+        glm::vec3 center, half, cell, invCell, fadeWidth;
+        glm::ivec3 counts;
+        float minCell, invMaxDistance, boxVolume;
+    };
+    std::vector<Frame> frames_;
+    void init(const std::vector<SamplerVolume>& volumes);
+    bool influences(const Frame& f, const glm::vec3& local) const;
+};
+
+// GL_LINEAR with CLAMP_TO_EDGE on one layer of `t` at continuous texel coordinates (x, y)
+// (texel i spans [i, i+1), its centre is i + 0.5): out receives t.shape.channels floats.
+void bilinearFetch(const ProbeTexture& t, float x, float y, int layer, float* out);
+
+// Continuous texel coordinates of direction `localDir` in probe `c`'s tile.
+glm::vec2 tileCoord(const glm::ivec3& c, const glm::vec3& localDir, int interior);
+
+} // namespace pb::probes

@@ -1,0 +1,52 @@
+#pragma once
+// Everything a probe file holds: the volumes, per-probe state (relocation offset, validity),
+// visibility per volume (geometry only, shared by every scenario) and irradiance per
+// scenario and volume. The bake produces it, ProbeFile writes/reads it, the CPU sampler and
+// the GPU pass consume it.
+#include "probes/ProbeLayout.h"
+#include "probes/ProbeVolume.h"
+#include "probes/Scenario.h"
+#include "probes/StorageFormat.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pb::probes {
+
+// What the bake was asked to do (all part of the input hash).
+struct BakeSettings {
+    int raysPerProbe = 256;
+    int bounces = 2;
+    std::uint64_t seed = 1;
+    StorageFormat format = StorageFormat::Rgba16f;
+    bool relocate = true;             // move probes up to kMaxRelocation cell out of geometry
+    float backfaceThreshold = 0.25f;  // back-face hit ratio above which a probe is invalid
+};
+
+// Relocation never moves a probe further than this fraction of its cell along any axis.
+constexpr float kMaxRelocation = 0.45f;
+
+struct ProbeState {
+    glm::vec3 offset{0.0f};   // relocation, world units along the volume's LOCAL axes
+    bool valid = true;        // false: inside geometry (excluded by the sampler)
+    float backfaceRatio = 0;  // diagnostic: share of rays that hit single-sided back faces
+};
+
+struct ProbeSet {
+    std::uint64_t inputHash = 0;
+    BakeSettings settings;
+    std::vector<ProbeVolume> volumes;
+    std::vector<std::vector<ProbeState>> states; // [volume][probe]
+    std::vector<ProbeTexture> visibility;        // [volume]
+    std::vector<Scenario> scenarios;
+    std::vector<std::vector<ProbeTexture>> irradiance; // [scenario][volume]
+
+    StorageFormat format() const { return settings.format; }
+    // -1 when absent.
+    int findScenario(const std::string& name) const;
+    std::size_t probeCount() const;
+    std::size_t invalidCount() const;
+};
+
+} // namespace pb::probes

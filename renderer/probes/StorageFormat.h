@@ -1,0 +1,43 @@
+#pragma once
+// How probe textures are stored in the file and on the GPU, what that costs, and the
+// quantisation the sampler must see (it samples the values the GPU would decode).
+//
+//   rgba16f: irradiance GL_RGBA16F (8 B/texel), visibility GL_RG16F (4 B/texel)  [default]
+//   rgba32f: irradiance GL_RGBA32F (16 B/texel), visibility GL_RG32F (8 B/texel)
+//   bc6h:    both GL_COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT (16 B per 4x4 block = 1 B/texel);
+//            visibility in R,G with B = 0; irradiance alpha reads back as 1.
+// Half floats: values are clamped to [0, 65504] and NaN becomes 0 before packing (BC6H
+// unsigned does the same), so no texel is ever inf/NaN.
+#include "probes/ProbeLayout.h"
+
+#include <cstdint>
+#include <string>
+
+namespace pb::probes {
+
+enum class StorageFormat : std::uint32_t { Rgba16f = 0, Rgba32f = 1, Bc6h = 2 };
+
+const char* formatName(StorageFormat f);
+// "rgba16f" | "rgba32f" | "bc6h"; throws pb::Error naming `option` otherwise.
+StorageFormat parseStorageFormat(const std::string& text, const std::string& option = "--format");
+bool isKnownFormat(std::uint32_t raw);
+
+struct ProbeBytes {
+    std::size_t irradiance = 0, visibility = 0;
+    std::size_t total() const { return irradiance + visibility; }
+};
+// Bytes per probe (border texels included): rgba16f 512 + 1024, rgba32f 1024 + 2048,
+// bc6h 64 + 256 - the reference talk's figures.
+ProbeBytes bytesPerProbe(StorageFormat f);
+std::size_t storedBytes(const TextureShape& s, StorageFormat f);
+
+// Encodes t.texels into t.stored in format `f`, then replaces t.texels by the decoded values
+// (what GL will sample). Deterministic.
+void quantise(ProbeTexture& t, StorageFormat f);
+// Fills t.texels from t.stored (t.shape set). Throws pb::Error when the size is wrong.
+void decodeStored(ProbeTexture& t, StorageFormat f);
+
+// Half-float round trip of one value with the clamping above (what RGBA16F stores).
+float quantiseHalf(float v);
+
+} // namespace pb::probes
