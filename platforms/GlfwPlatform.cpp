@@ -1,4 +1,5 @@
 #include "platforms/GlfwPlatform.h"
+#include "platforms/EsSemantics.h"
 #include "platforms/GlEntryPoints.h"
 
 #include <glad/gl.h>
@@ -90,6 +91,10 @@ GlfwPlatform::GlfwPlatform(const PlatformOptions& options) {
                             " found no GL entry points");
     }
     claimGlEntryPoints(this);
+    // Mesa's windows (GLX and EGL) are sRGB-capable, so on desktop GL this also sRGB-encodes
+    // writes to the window; a presenter blitting a display-ready image must disable
+    // GL_FRAMEBUFFER_SRGB for that blit (README.md).
+    if (api_ == GlApi::GLCore) enableEsSemantics();
 }
 
 GlfwPlatform::~GlfwPlatform() {

@@ -1,5 +1,6 @@
 #include "platforms/OsMesaPlatform.h"
 #include "platforms/DynamicLibrary.h"
+#include "platforms/EsSemantics.h"
 #include "platforms/GlEntryPoints.h"
 
 // glad first: it stands in for <GL/gl.h>, which osmesa.h would otherwise pull in.
@@ -89,6 +90,7 @@ OsMesaPlatform::OsMesaPlatform(const PlatformOptions& options) {
         throw PlatformError("osmesa: gladLoadGL found no GL entry points");
     }
     claimGlEntryPoints(this);
+    enableEsSemantics();
     description_ = "OSMesa (" + api.soname + "), OpenGL core " + std::to_string(major) + "." +
                    std::to_string(minor) + " context, " + std::to_string(kBufferSize) + "x" +
                    std::to_string(kBufferSize) + " private buffer";

@@ -47,12 +47,13 @@ GLuint compile(GLenum stage, const char* source) {
     return shader;
 }
 
-// Clears an RGBA8 FBO, draws one triangle into it and reads every pixel back.
-std::vector<std::uint8_t> renderTestImage() {
+// Clears an FBO (RGBA8 unless told), draws one triangle into it and reads every pixel back.
+std::vector<std::uint8_t> renderTestImage(GLenum internalFormat = GL_RGBA8) {
     GLuint tex = 0, fbo = 0, vao = 0;
     glGenTextures(1, &tex);
     glBindTexture(GL_TEXTURE_2D, tex);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, kSize, kSize, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat), kSize, kSize, 0, GL_RGBA,
+                 GL_UNSIGNED_BYTE, nullptr);
     glGenFramebuffers(1, &fbo);
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
@@ -131,6 +132,13 @@ TEST_P(PlatformTest, ContextAndCapsAreSane) {
 
 TEST_P(PlatformTest, ClearsAndDrawsIntoAnFbo) {
     expectTestImage(renderTestImage());
+}
+
+// ES always sRGB-encodes writes to an sRGB attachment; desktop core only with
+// GL_FRAMEBUFFER_SRGB, which the osmesa backend enables (platforms/EsSemantics.h).
+TEST_P(PlatformTest, EncodesWritesToSrgbTargetsAsOnEs) {
+    const auto pixels = renderTestImage(GL_SRGB8_ALPHA8);
+    expectPixel(pixels, 4, 4, {255, 188, 0, 255}); // 0.5 linear is 188 in sRGB
 }
 
 TEST_P(PlatformTest, DebugOutputCatchesABadCall) {
