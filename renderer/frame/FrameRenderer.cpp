@@ -21,7 +21,7 @@ FrameSettings defaultFrameSettings(const scene::Scene& scene) {
 }
 
 FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& settings)
-    : gpu_(scene), settings_(settings) {
+    : gpu_(scene), settings_(settings), quirks_(gl::detectDriverQuirks()) {
     passes_.push_back(std::make_unique<ShadowPass>());
     passes_.push_back(std::make_unique<GBufferPass>());
     passes_.push_back(std::make_unique<DirectLightingPass>());
@@ -35,7 +35,7 @@ void FrameRenderer::render(const RenderView& view) {
         targets_->gbuffer.height() != view.height)
         targets_ = std::make_unique<FrameTargets>(view.width, view.height);
     lastView_ = view;
-    FrameContext ctx{gpu_, view, settings_, programs_, *targets_, {}};
+    FrameContext ctx{gpu_, view, settings_, programs_, *targets_, quirks_, {}};
     for (auto& pass : passes_) pass->execute(ctx);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glUseProgram(0);
@@ -60,8 +60,10 @@ void FrameRenderer::presentToWindow(int w, int h) const {
     if (!targets_) return;
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->outputFbo.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    if (quirks_.windowBlitNeedsSrgbOff) glDisable(GL_FRAMEBUFFER_SRGB);
     glBlitFramebuffer(0, 0, targets_->output.desc().width, targets_->output.desc().height, 0, 0,
                       w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    if (quirks_.windowBlitNeedsSrgbOff) glEnable(GL_FRAMEBUFFER_SRGB);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -39,6 +39,7 @@ private:
     GpuScene gpu_;
     FrameSettings settings_;
     gl::ProgramCache programs_;
+    gl::DriverQuirks quirks_;
     std::unique_ptr<FrameTargets> targets_;
     std::vector<std::unique_ptr<Pass>> passes_;
     RenderView lastView_;

@@ -2,6 +2,7 @@
 // What the passes of one frame share: the scene, the view, the targets, and results one pass
 // hands to the next (the shadow map for the lighting). Passes read settings; they never keep
 // per-frame state of their own beyond GPU resources.
+#include "gl/DriverQuirks.h"
 #include "gl/ProgramCache.h"
 #include "gl/Texture.h"
 #include "passes/GBufferLayout.h"
@@ -47,6 +48,7 @@ struct FrameContext {
     const FrameSettings& settings;
     gl::ProgramCache& programs;
     FrameTargets& targets;
+    const gl::DriverQuirks& quirks;
     ShadowResult shadow;
 };
 

@@ -128,6 +128,32 @@ TEST_P(PlatformParity, EglMatchesOsmesa) {
     EXPECT_TRUE(withinTolerance(d, tol)) << d.describe();
 }
 
+// The window backend renders the same frame (under Xvfb here: GLX on llvmpipe, desktop GL 4.5).
+TEST(RenderCli, GlfwWindowMatchesEgl) {
+    if (runCommand({"sh", "-c", "command -v xvfb-run"}).exitCode != 0) {
+        if (underCi()) FAIL() << "xvfb-run missing under CI (test.sh installs xvfb)";
+        GTEST_SKIP() << "xvfb-run not installed";
+    }
+    fs::path dir = outputDir();
+    std::vector<std::string> args{"render", "--scene", "courtyard", "--width", "240",
+                                  "--height", "135", "--frames", "2"};
+    auto egl = args;
+    egl.insert(egl.end(), {"--platform", "egl", "--out", (dir / "egl.png").string()});
+    std::vector<std::string> glfw{"xvfb-run", "-a", binaryPath().string()};
+    glfw.insert(glfw.end(), args.begin(), args.end());
+    glfw.insert(glfw.end(), {"--platform", "glfw", "--out", (dir / "glfw.png").string()});
+    auto r1 = runProbebench(egl);
+    auto r2 = runCommand(glfw);
+    ASSERT_EQ(r1.exitCode, 0) << r1.output;
+    ASSERT_EQ(r2.exitCode, 0) << r2.output;
+    auto a = pb::image::readPng((dir / "egl.png").string());
+    auto b = pb::image::readPng((dir / "glfw.png").string());
+    ImageTolerance tol{1, 0.0, 1.0};
+    ImageDiff d = compareImages(a, b, tol);
+    if (!withinTolerance(d, tol)) writeFailureImages(dir, a, b);
+    EXPECT_TRUE(withinTolerance(d, tol)) << d.describe();
+}
+
 INSTANTIATE_TEST_SUITE_P(Builtin, PlatformParity,
                          ::testing::Values("cornell", "rooms", "courtyard"));
 

@@ -21,6 +21,9 @@ struct GoldenCase {
     const char* scene;
     const char* view;
 };
+[[maybe_unused]] void PrintTo(const GoldenCase& c, std::ostream* os) {
+    *os << c.scene << "/" << c.view;
+}
 
 // Tolerance: llvmpipe is deterministic for one build, but LLVM's code generation differs
 // between CPUs (AVX2 vs AVX-512) and Mesa versions; a few LSBs on edges are allowed.
