@@ -26,7 +26,8 @@ int signExtend(int value, int bits) {
 void decodeBc6hUf16Block(const std::uint8_t* block, float out[48]) {
     const int mode = modeFromBlock(block);
     if (mode < 0) {
-        for (int i = 0; i < 48; ++i) out[i] = 0.0f; // reserved mode: black, as specified
+        for (int i = 0; i < 48; ++i)
+            out[i] = 0.0f; // reserved mode: black, as specified
         return;
     }
     const ModeInfo& info = modeInfo(mode);
@@ -84,8 +85,10 @@ std::vector<float> decodeBc6hUf16(const std::uint8_t* blocks, int width, int hei
             decodeBc6hUf16Block(blocks + (static_cast<std::size_t>(by) * bw + bx) * 16, texels);
             for (int y = 0; y < 4; ++y) {
                 float* row = rgb.data() + ((static_cast<std::size_t>(by) * 4 + y) * width +
-                                           static_cast<std::size_t>(bx) * 4) * 3;
-                for (int i = 0; i < 12; ++i) row[i] = texels[y * 12 + i];
+                                           static_cast<std::size_t>(bx) * 4) *
+                                              3;
+                for (int i = 0; i < 12; ++i)
+                    row[i] = texels[y * 12 + i];
             }
         }
     }

@@ -30,9 +30,12 @@ struct QualitySettings {
 
 QualitySettings settingsFor(Bc6hQuality q) {
     switch (q) {
-    case Bc6hQuality::Fast: return {1, 2, 0, 0, 0.0f, 0.0f, 0};
-    case Bc6hQuality::Normal: return {2, 2, 3, 2, 48.0f, 1.0f, 0};
-    case Bc6hQuality::High: return {4, 0, 8, 4, 0.0f, 0.0f, 2};
+    case Bc6hQuality::Fast:
+        return {1, 2, 0, 0, 0.0f, 0.0f, 0};
+    case Bc6hQuality::Normal:
+        return {2, 2, 3, 2, 48.0f, 1.0f, 0};
+    case Bc6hQuality::High:
+        return {4, 0, 8, 4, 0.0f, 0.0f, 2};
     }
     return {2, 2, 3, 2, 48.0f, 1.0f, 0};
 }
@@ -43,7 +46,8 @@ template <class Less> void sortIndices(int* a, int n, Less less) {
     for (int i = 1; i < n; ++i) {
         const int v = a[i];
         int j = i;
-        for (; j > 0 && less(v, a[j - 1]); --j) a[j] = a[j - 1];
+        for (; j > 0 && less(v, a[j - 1]); --j)
+            a[j] = a[j - 1];
         a[j] = v;
     }
 }
@@ -104,7 +108,8 @@ void tryTwoRegions(const BlockTarget& t, const QualitySettings& s, Encoding& bes
                                           : std::numeric_limits<float>::infinity(),
                      score);
     int order[32];
-    for (int p = 0; p < 32; ++p) order[p] = p;
+    for (int p = 0; p < 32; ++p)
+        order[p] = p;
     sortIndices(order, 32, [&](int a, int b) { return score[a] < score[b]; });
     if (score[order[0]] * s.pruneMargin >= best.error) return;
 
@@ -139,8 +144,8 @@ void encodeBlock(const float* texels, const QualitySettings& s, std::uint8_t out
 
 } // namespace
 
-std::vector<std::uint8_t> encodeBc6hUf16(const float* rgb, int width, int height,
-                                         int strideFloats, Bc6hQuality q) {
+std::vector<std::uint8_t> encodeBc6hUf16(const float* rgb, int width, int height, int strideFloats,
+                                         Bc6hQuality q) {
     if (width <= 0 || height <= 0 || width % 4 != 0 || height % 4 != 0)
         throw Error("BC6H encode: size " + std::to_string(width) + "x" + std::to_string(height) +
                     " is not a positive multiple of 4");

@@ -28,7 +28,7 @@ void prepareTarget(const float* texels /*16 x 3*/, BlockTarget& out);
 struct Encoding {
     int mode = kFirstSingleRegionMode;
     int partition = 0;
-    int ep[4][3] = {};             // quantised endpoints, absolute epb-bit values
+    int ep[4][3] = {}; // quantised endpoints, absolute epb-bit values
     std::uint8_t index[16] = {};
     float error = std::numeric_limits<float>::infinity();
 };
@@ -53,7 +53,7 @@ public:
     void scores(float limit, float out[32]) const;
 
 private:
-    float texel_[9][16];  // per texel: centred value and its second moments
+    float texel_[9][16]; // per texel: centred value and its second moments
     float total_[9] = {};
 };
 

@@ -54,7 +54,8 @@ using Layout = std::array<FieldBit, 82>;
 
 int leadingNumber(std::string_view s) {
     int v = 0;
-    for (std::size_t i = 0; i < s.size() && s[i] >= '0' && s[i] <= '9'; ++i) v = v * 10 + (s[i] - '0');
+    for (std::size_t i = 0; i < s.size() && s[i] >= '0' && s[i] <= '9'; ++i)
+        v = v * 10 + (s[i] - '0');
     return v;
 }
 
@@ -65,7 +66,8 @@ Layout parseLayout(int mode) {
     const ModeInfo& info = kModes[mode];
     int pos = 0;
     const int modeBits = info.code < 2 ? 2 : 5;
-    for (; pos < modeBits; ++pos) out[pos] = {kModeField, static_cast<std::uint8_t>(pos)};
+    for (; pos < modeBits; ++pos)
+        out[pos] = {kModeField, static_cast<std::uint8_t>(pos)};
     std::string_view text = kLayouts[mode];
     while (!text.empty()) {
         const std::size_t end = text.find(' ');
@@ -108,7 +110,9 @@ const std::uint8_t kAnchor2[32] = {
 const int kWeights3[8] = {0, 9, 18, 27, 37, 46, 55, 64};
 const int kWeights4[16] = {0, 4, 9, 13, 17, 21, 26, 30, 34, 38, 43, 47, 51, 55, 60, 64};
 
-const ModeInfo& modeInfo(int mode) { return kModes[mode]; }
+const ModeInfo& modeInfo(int mode) {
+    return kModes[mode];
+}
 
 int modeFromBlock(const std::uint8_t block[16]) {
     int code = block[0] & 3;
@@ -121,7 +125,8 @@ int modeFromBlock(const std::uint8_t block[16]) {
 const FieldBit* headerLayout(int mode) {
     static const std::array<Layout, kModeCount> layouts = [] {
         std::array<Layout, kModeCount> all{};
-        for (int m = 0; m < kModeCount; ++m) all[m] = parseLayout(m);
+        for (int m = 0; m < kModeCount; ++m)
+            all[m] = parseLayout(m);
         return all;
     }();
     return layouts[mode].data();

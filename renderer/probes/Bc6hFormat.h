@@ -15,11 +15,11 @@ constexpr int kModeCount = 14;
 constexpr int kFirstSingleRegionMode = 10;
 
 struct ModeInfo {
-    int code;        // value of the low 2 (codes 0, 1) or 5 bits of the block
-    int regions;     // 1 or 2
+    int code;         // value of the low 2 (codes 0, 1) or 5 bits of the block
+    int regions;      // 1 or 2
     bool transformed; // endpoints 1..3 are signed deltas from endpoint 0
-    int epb;         // endpoint precision in bits
-    int delta[3];    // delta bits per channel (transformed modes)
+    int epb;          // endpoint precision in bits
+    int delta[3];     // delta bits per channel (transformed modes)
 };
 
 const ModeInfo& modeInfo(int mode);
@@ -37,7 +37,9 @@ struct FieldBit {
 };
 // 82 entries for two-region modes, 65 for single-region modes.
 const FieldBit* headerLayout(int mode);
-inline int headerBits(int regions) { return regions == 2 ? 82 : 65; }
+inline int headerBits(int regions) {
+    return regions == 2 ? 82 : 65;
+}
 
 // Two-region partitions 0..31 (the first half of the BPTC two-subset table): bit t set means
 // texel t (= x + 4y) belongs to subset 1. Anchor = the texel of subset 1 whose index has one
@@ -61,7 +63,9 @@ inline int interpolate(int e0, int e1, int weight) {
 }
 
 // Final unsigned scale: maps 0..0xFFFF onto the half-float bit patterns 0..0x7BFF (0..65504).
-inline int finishUnsigned(int interpolated) { return (interpolated * 31) >> 6; }
+inline int finishUnsigned(int interpolated) {
+    return (interpolated * 31) >> 6;
+}
 
 // What the encoder does to its input (and the error report to the reference): BC6H unsigned
 // has no sign, NaN or infinity, so NaN and negatives become 0 and anything above the largest
@@ -84,16 +88,20 @@ struct Bits128 {
     }
     void setBit(int pos, int value) {
         if (!value) return;
-        if (pos < 64) lo |= std::uint64_t{1} << pos;
-        else hi |= std::uint64_t{1} << (pos - 64);
+        if (pos < 64)
+            lo |= std::uint64_t{1} << pos;
+        else
+            hi |= std::uint64_t{1} << (pos - 64);
     }
     int bits(int pos, int count) const {
         int v = 0;
-        for (int i = 0; i < count; ++i) v |= bit(pos + i) << i;
+        for (int i = 0; i < count; ++i)
+            v |= bit(pos + i) << i;
         return v;
     }
     void setBits(int pos, int count, int value) {
-        for (int i = 0; i < count; ++i) setBit(pos + i, (value >> i) & 1);
+        for (int i = 0; i < count; ++i)
+            setBit(pos + i, (value >> i) & 1);
     }
 };
 

@@ -108,7 +108,8 @@ std::vector<float> gpuDecode(const std::vector<std::uint8_t>& blocks, int width,
 
     std::vector<float> rgb(static_cast<std::size_t>(width) * height * 3);
     for (std::size_t t = 0; t < rgb.size() / 3; ++t)
-        for (int c = 0; c < 3; ++c) rgb[t * 3 + c] = rgba[t * 4 + c];
+        for (int c = 0; c < 3; ++c)
+            rgb[t * 3 + c] = rgba[t * 4 + c];
     return rgb;
 }
 
@@ -131,13 +132,12 @@ void expectSameDecode(const std::vector<std::uint8_t>& blocks, int width, int he
         if (++mismatches <= 8) {
             const int t = static_cast<int>(i / 3), x = t % width, y = t / width;
             const int block = (y / 4) * (width / 4) + x / 4;
-            first << "  texel (" << x << "," << y << ") channel " << i % 3 << ": cpu "
-                  << cpu[i] << " gpu " << gpu[i] << " (block " << block << ", byte0 0x"
-                  << std::hex << int(blocks[block * 16]) << std::dec << ")\n";
+            first << "  texel (" << x << "," << y << ") channel " << i % 3 << ": cpu " << cpu[i]
+                  << " gpu " << gpu[i] << " (block " << block << ", byte0 0x" << std::hex
+                  << int(blocks[block * 16]) << std::dec << ")\n";
         }
     }
-    EXPECT_EQ(mismatches, 0u) << "of " << cpu.size() << " channel values differ:\n"
-                              << first.str();
+    EXPECT_EQ(mismatches, 0u) << "of " << cpu.size() << " channel values differ:\n" << first.str();
 }
 
 class Bc6hGlTest : public GlBackendTest {
@@ -171,10 +171,12 @@ TEST_P(Bc6hGlTest, EncoderOutputDecodesIdenticallyOnGpu) {
                 p[1] = d * d;
                 p[2] = 0.0f;
             } else if (region % 4 == 2) { // noise over 7 decades
-                for (int c = 0; c < 3; ++c) p[c] = std::pow(10.0f, -3.0f + 7.0f * u(rng));
+                for (int c = 0; c < 3; ++c)
+                    p[c] = std::pow(10.0f, -3.0f + 7.0f * u(rng));
             } else { // zeros, maxima and values the encoder clamps
                 const float special[] = {0.0f, -1.0f, 65504.0f, 1e9f, 1e-7f, 6e-5f};
-                for (int c = 0; c < 3; ++c) p[c] = special[(x + 2 * y + c) % 6];
+                for (int c = 0; c < 3; ++c)
+                    p[c] = special[(x + 2 * y + c) % 6];
             }
         }
     }
@@ -195,7 +197,8 @@ TEST_P(Bc6hGlTest, RandomBlocksOfEveryModeDecodeIdenticallyOnGpu) {
     std::mt19937 rng(2024);
     std::vector<std::uint8_t> blocks(static_cast<std::size_t>(count) * 16);
     for (int b = 0; b < count; ++b) {
-        for (int i = 0; i < 16; ++i) blocks[b * 16 + i] = static_cast<std::uint8_t>(rng());
+        for (int i = 0; i < 16; ++i)
+            blocks[b * 16 + i] = static_cast<std::uint8_t>(rng());
         const int code = codes[b / blocksPerCode];
         const int bits = code < 2 ? 2 : 5;
         blocks[b * 16] = static_cast<std::uint8_t>((blocks[b * 16] & ~((1 << bits) - 1)) | code);

@@ -23,7 +23,8 @@ struct BlockBuilder {
     // `count` bits of `value`, least significant first, at block bit `pos`.
     void put(int pos, int count, int value) {
         for (int i = 0; i < count; ++i)
-            if ((value >> i) & 1) bytes[(pos + i) / 8] |= static_cast<std::uint8_t>(1u << ((pos + i) % 8));
+            if ((value >> i) & 1)
+                bytes[(pos + i) / 8] |= static_cast<std::uint8_t>(1u << ((pos + i) % 8));
     }
     // One bit: bit `bit` of `value`.
     void putBit(int pos, int value, int bit) { put(pos, 1, (value >> bit) & 1); }
@@ -86,7 +87,7 @@ TEST(Bc6hDecode, Mode12Delta9Bit) {
     b.put(25, 10, 2047 & 1023);
     b.put(35, 9, -200 & 511); // R1 = 1500 - 200 = 1300
     b.putBit(44, 1500, 10);
-    b.put(45, 9, 255);        // G1 = 3 + 255 = 258 (largest positive delta)
+    b.put(45, 9, 255); // G1 = 3 + 255 = 258 (largest positive delta)
     b.putBit(54, 3, 10);
     b.put(55, 9, -256 & 511); // B1 = 2047 - 256 = 1791 (most negative delta)
     b.putBit(64, 2047, 10);
@@ -106,10 +107,10 @@ TEST(Bc6hDecode, Mode13Delta8BitReversedHighBitsAndWrap) {
     b.put(35, 8, -128 & 255); // R1 = 2100 - 128 = 1972
     b.putBit(43, 2100, 11);
     b.putBit(44, 2100, 10);
-    b.put(45, 8, 100);        // G1 = (4090 + 100) mod 4096 = 94: deltas wrap
+    b.put(45, 8, 100); // G1 = (4090 + 100) mod 4096 = 94: deltas wrap
     b.putBit(53, 4090, 11);
     b.putBit(54, 4090, 10);
-    b.put(55, 8, 5);          // B1 = 1105
+    b.put(55, 8, 5); // B1 = 1105
     b.putBit(63, 1100, 11);
     b.putBit(64, 1100, 10);
     b.putIndices(65, 4, kRamp16);
@@ -127,11 +128,14 @@ TEST(Bc6hDecode, Mode14Delta4Bit16BitBase) {
     b.put(15, 10, g0 & 1023);
     b.put(25, 10, b0 & 1023);
     b.put(35, 4, -8 & 15);
-    for (int k = 0; k < 6; ++k) b.putBit(39 + k, r0, 15 - k);
+    for (int k = 0; k < 6; ++k)
+        b.putBit(39 + k, r0, 15 - k);
     b.put(45, 4, 7);
-    for (int k = 0; k < 6; ++k) b.putBit(49 + k, g0, 15 - k);
+    for (int k = 0; k < 6; ++k)
+        b.putBit(49 + k, g0, 15 - k);
     b.put(55, 4, -1 & 15);
-    for (int k = 0; k < 6; ++k) b.putBit(59 + k, b0, 15 - k);
+    for (int k = 0; k < 6; ++k)
+        b.putBit(59 + k, b0, 15 - k);
     b.putIndices(65, 4, kRamp16);
     expectTexels(b, {{0, 226.0f, 0.00494384765625f, 65504.0f},
                      {3, 225.875f, 0.00494384765625f, 65504.0f},
@@ -223,7 +227,8 @@ TEST(Bc6hDecode, ReservedModesDecodeToBlack) {
         b.bytes[0] = static_cast<std::uint8_t>((0xA5 & ~31) | code);
         float out[48];
         decodeBc6hUf16Block(b.bytes.data(), out);
-        for (float v : out) EXPECT_EQ(v, 0.0f) << "code " << code;
+        for (float v : out)
+            EXPECT_EQ(v, 0.0f) << "code " << code;
     }
 }
 
@@ -232,7 +237,8 @@ TEST(Bc6hDecode, TextureLayoutIsRowMajorBlocks) {
     std::array<std::uint8_t, 32> data{};
     BlockBuilder white;
     white.put(0, 5, 3);
-    for (int f = 0; f < 6; ++f) white.put(5 + 10 * f, 10, 1023);
+    for (int f = 0; f < 6; ++f)
+        white.put(5 + 10 * f, 10, 1023);
     data[0] = 3; // mode 11 with zero endpoints
     std::copy(white.bytes.begin(), white.bytes.end(), data.begin() + 16);
     const std::vector<float> rgb = decodeBc6hUf16(data.data(), 8, 4);
