@@ -12,8 +12,10 @@
 // clamp to 65504. The decoder is bit-exact to the specification (all 14 modes, both region
 // counts, unquantisation and the final *31/64 scale), so CPU-measured error is the GPU's.
 //
-// Neither function touches GL; both are deterministic (same input -> same bytes on every
-// machine) and thread-compatible (no shared state).
+// Neither function touches GL. Both are deterministic (no threads, no randomness: the same
+// input gives the same bytes for a given build; builds that contract float math into FMA,
+// e.g. -std=gnu++20 on an FMA target, may pick different but equally valid blocks) and
+// thread-compatible (no shared mutable state), so callers may encode slices in parallel.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
