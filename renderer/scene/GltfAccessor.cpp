@@ -6,6 +6,21 @@ namespace pb::scene::gltf {
 
 namespace {
 
+std::string typeName(int type) {
+    switch (type) {
+    case TINYGLTF_TYPE_SCALAR:
+        return "SCALAR";
+    case TINYGLTF_TYPE_VEC2:
+        return "VEC2";
+    case TINYGLTF_TYPE_VEC3:
+        return "VEC3";
+    case TINYGLTF_TYPE_VEC4:
+        return "VEC4";
+    default:
+        return "type " + std::to_string(type);
+    }
+}
+
 // a + b <= limit without overflow.
 bool fits(std::size_t a, std::size_t b, std::size_t limit) {
     return a <= limit && b <= limit - a;
@@ -67,7 +82,8 @@ AccessorView viewAccessor(const Context& ctx, int index, const std::string& what
         ctx.fail(what + " refers to missing accessor " + std::to_string(index));
     const tinygltf::Accessor& a = m.accessors[size_t(index)];
     if (a.sparse.isSparse) ctx.fail(name + ": sparse accessors are not supported");
-    if (a.type != type) ctx.fail(name + ": wrong type " + std::to_string(a.type));
+    if (a.type != type)
+        ctx.fail(name + ": type is " + typeName(a.type) + ", expected " + typeName(type));
     bool known = false;
     for (int ct : componentTypes)
         known = known || ct == a.componentType;

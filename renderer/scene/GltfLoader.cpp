@@ -80,8 +80,9 @@ void parseWithTinygltf(const std::string& path, tinygltf::Model& model,
     const std::vector<unsigned char> bytes = readFileBytes(path); // "path: file not found" etc.
     if (bytes.size() > std::numeric_limits<unsigned int>::max())
         throw fileError(path, "larger than 4 GiB, which tinygltf cannot read");
-    std::string baseDir = std::filesystem::path(path).parent_path().string();
-    if (baseDir.empty()) baseDir.assign(".");
+    std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    if (dir.empty()) dir = ".";
+    const std::string baseDir = dir.string();
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(&checkedImageLoader, &model);
@@ -131,9 +132,7 @@ void emitGroupedWarnings(gltf::Context& ctx) {
         ctx.scene.warnings.push_back(std::move(w));
 }
 
-} // namespace
-
-Scene loadGltf(const std::string& path, const SceneOptions& options) {
+Scene loadGltfUnchecked(const std::string& path, const SceneOptions& options) {
     Scene scene;
     scene.name = std::filesystem::path(path).stem().string();
     scene.sourcePath = path;
@@ -150,8 +149,24 @@ Scene loadGltf(const std::string& path, const SceneOptions& options) {
     gltf::traverseNodes(ctx, options.dynamicNodes);
     if (scene.materials.empty()) gltf::defaultMaterial(ctx);
     emitGroupedWarnings(ctx);
-    scene.views.front() = makeDefaultView(scene.staticWorldBounds());
+    scene.views.front() = makeDefaultView(scene);
     return scene;
+}
+
+} // namespace
+
+Scene loadGltf(const std::string& path, const SceneOptions& options) {
+    // Whatever tinygltf, its JSON parser or an allocation throws still becomes the one-line
+    // "path: problem" error the command line prints.
+    try {
+        return loadGltfUnchecked(path, options);
+    } catch (const Error&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw fileError(path, "out of memory (absurd sizes in the file?)");
+    } catch (const std::exception& e) {
+        throw fileError(path, oneLine(e.what()));
+    }
 }
 
 } // namespace pb::scene

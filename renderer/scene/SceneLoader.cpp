@@ -57,7 +57,7 @@ Scene makeBuiltinScene(const std::string& name) {
         s.materials.push_back(Material{});
         s.materials.back().name = "default";
     }
-    s.views.insert(s.views.begin(), makeDefaultView(s.staticWorldBounds()));
+    s.views.insert(s.views.begin(), makeDefaultView(s));
     return s;
 }
 
@@ -73,7 +73,7 @@ Scene loadScene(const std::string& nameOrPath, const SceneOptions& options) {
                 throw Error("--dynamic: no node named '" + node + "' in built-in scene '" +
                             nameOrPath + "'");
         }
-        if (!options.dynamicNodes.empty()) s.views.front() = makeDefaultView(s.staticWorldBounds());
+        if (!options.dynamicNodes.empty()) s.views.front() = makeDefaultView(s);
         return s;
     }
     if (!hasGltfExtension(nameOrPath))
