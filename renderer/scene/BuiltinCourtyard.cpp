@@ -31,7 +31,7 @@ Scene makeCourtyardScene() {
     b.box("hall_wall_east_south", {-7 - wt, -0.1f, 0.6f}, {-7, 5, 5}, plaster);
     b.box("hall_lintel", {-7 - wt, 2.4f, -0.6f}, {-7, 5, 0.6f}, plaster);
     b.box("hall_roof", {-12, 5, -6}, {-7, 5.3f, 5}, brick);
-    b.box("hall_column", {-10.0f, -0.1f, -2.5f}, {-9.6f, 5, -2.1f}, stone);
+    b.box("hall_column", {-10.4f, -0.1f, 1.5f}, {-10.0f, 5, 1.9f}, stone);
     // Courtyard furniture.
     b.box("fountain", {-1.2f, -0.1f, -1.2f}, {1.2f, 0.6f, 1.2f}, stone);
     b.box("obelisk", {-0.25f, 0.6f, -0.25f}, {0.25f, 4.0f, 0.25f}, stone, 45.0f);

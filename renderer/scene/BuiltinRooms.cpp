@@ -44,16 +44,16 @@ Scene makeRoomsScene() {
 
     // Sunlit room: a table and a tall cabinet. Dark room: a sofa and a pillar.
     b.box("table", {-2.2f, 0, -1.6f}, {-1.0f, 0.75f, -0.8f}, orange, 10.0f);
-    b.box("cabinet", {-3.9f, 0, -2.4f}, {-3.3f, 1.9f, -1.9f}, wall);
+    b.box("cabinet", {-3.95f, 0, -0.6f}, {-3.45f, 1.9f, 0.6f}, wall);
     b.box("sofa", {1.5f, 0, -2.4f}, {3.3f, 0.8f, -1.6f}, blue);
-    b.box("pillar", {2.0f, -e, 1.3f}, {2.3f, h + e, 1.6f}, wall);
+    b.box("pillar", {1.8f, -e, -1.0f}, {2.1f, h + e, -0.7f}, wall);
 
     // Travelling (0.4, -0.55, -0.75): through the window the beam lands on the sunlit floor
     // at x in [-2.75, -0.67], z in [-0.36, 1.27], short of the partition at x = -0.025.
     s.sun.toSun = glm::normalize(glm::vec3(-0.4f, 0.55f, 0.75f));
     s.sun.intensity = 3.0f;
     s.exposure = 1.5f;
-    b.view("sunlit_room", {-3.7f, 1.6f, -2.2f}, {-1.5f, 0.5f, 1.0f}, 70.0f);
+    b.view("sunlit_room", {-0.6f, 1.6f, -2.2f}, {-2.8f, 0.9f, 2.5f}, 70.0f); // window, sun patch
     b.view("dark_room", {3.8f, 1.6f, 2.2f}, {0.5f, 0.6f, -1.0f}, 70.0f);
     // From the dark room through the doorway at the sunlit patch on the other side.
     b.view("doorway", {3.0f, 1.6f, 0.0f}, {-1.7f, 0.0f, 0.5f}, 60.0f);
