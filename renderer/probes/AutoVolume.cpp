@@ -3,6 +3,7 @@
 #include "core/Error.h"
 
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 namespace pb::probes {
@@ -30,19 +31,29 @@ AutoVolume fitAutoVolume(const scene::Bounds& b, float spacing, long long maxPro
     if (!(extent > 0.0f) || !std::isfinite(extent))
         throw Error("--volumes auto: the scene's static geometry has no extent");
     size += glm::vec3(2e-3f * extent);
-    if (!(spacing > 0.0f))
-        spacing = float(std::cbrt(double(size.x) * size.y * size.z / double(kAutoTargetProbes)));
-    spacing = std::max(spacing, extent / float(kMaxProbesPerAxis - 1));
-
-    AutoVolume out;
     float requested = spacing;
-    long long requestedProbes = product(countsFor(glm::max(size, glm::vec3(spacing)), spacing));
+    if (!(requested > 0.0f)) {
+        // About kAutoTargetProbes probes, counting thin axes (widened to one spacing) right.
+        requested = float(std::cbrt(double(size.x) * size.y * size.z / kAutoTargetProbes));
+        for (int it = 0; it < 16; ++it) {
+            glm::vec3 s = glm::max(size, glm::vec3(requested));
+            requested = float(std::cbrt(double(s.x) * s.y * s.z / kAutoTargetProbes));
+        }
+    }
+    spacing = std::max(requested, extent / float(kMaxProbesPerAxis - 1));
     while (product(countsFor(glm::max(size, glm::vec3(spacing)), spacing)) > maxProbes)
         spacing *= 1.01f;
+
+    AutoVolume out;
     if (spacing != requested) {
+        double wanted = 1.0;
+        for (int a = 0; a < 3; ++a)
+            wanted *= std::ceil(double(std::max(size[a], requested)) / requested) + 1.0;
         std::ostringstream s;
-        s << "--volumes auto: spacing " << requested << " would need " << requestedProbes
-          << " probes; using spacing " << spacing << " to stay within " << maxProbes;
+        s << "--volumes auto: spacing " << requested << " would need " << std::fixed
+          << std::setprecision(0) << wanted << std::defaultfloat << " probes; using spacing "
+          << spacing << " (" << product(countsFor(glm::max(size, glm::vec3(spacing)), spacing))
+          << " probes, the limit is " << maxProbes << ")";
         out.note = s.str();
     }
     size = glm::max(size, glm::vec3(spacing));

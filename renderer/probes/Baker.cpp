@@ -9,6 +9,7 @@
 #include "probes/RayScene.h"
 
 #include <chrono>
+#include <cmath>
 
 namespace pb::probes {
 namespace {
@@ -33,6 +34,26 @@ struct ProbeIndex {
     }
 };
 
+QuantisationError measureQuantisation(const std::vector<float>& before, const ProbeTexture& after,
+                                      QuantisationError e) {
+    const int ch = after.shape.channels, used = ch == 4 ? 3 : ch; // irradiance alpha is 1
+    float peak = 0.0f;
+    for (float v : before) peak = std::max(peak, std::abs(v));
+    const double floor = std::max(1e-3 * peak, 1e-12);
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < before.size(); i += std::size_t(ch))
+        for (int c = 0; c < used; ++c) {
+            double a = before[i + std::size_t(c)], b = after.texels[i + std::size_t(c)];
+            double rel = std::abs(b - a) / std::max(std::abs(a), floor);
+            e.maxRelative = std::max(e.maxRelative, rel);
+            sum += rel;
+            ++n;
+        }
+    e.meanRelative = n ? sum / double(n) : 0.0;
+    return e;
+}
+
 void checkRequest(const BakeRequest& r) {
     if (r.volumes.empty()) throw Error("bake: no probe volumes");
     if (r.scenarios.empty()) throw Error("bake: no lighting scenario");
@@ -56,6 +77,9 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     const BakeSettings& cfg = req.settings;
     const int threads = resolveThreadCount(req.threads);
     RayScene rs(scene);
+    const double buildSeconds = since(t0);
+    const auto tTrace = Clock::now();
+    if (req.recordRays) rs.startRecording();
 
     ProbeSet set;
     set.inputHash = bakeInputHash(scene, req);
@@ -161,16 +185,27 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         }
         set.irradiance.push_back(std::move(prev));
     }
-    const double traceSeconds = since(t0);
+    const double traceSeconds = since(tTrace);
+    if (req.recordRays) *req.recordRays = rs.stopRecording();
 
     // 3. Storage format.
     const auto tq = Clock::now();
     std::vector<ProbeTexture*> all;
-    for (auto& t : set.visibility) all.push_back(&t);
-    for (auto& sc : set.irradiance)
-        for (auto& t : sc) all.push_back(&t);
-    parallelFor(all.size(), threads,
-                [&](std::size_t i, int) { quantise(*all[i], cfg.format); });
+    std::vector<QuantisationError> errors;
+    for (size_t v = 0; v < set.visibility.size(); ++v) {
+        all.push_back(&set.visibility[v]);
+        errors.push_back({set.volumes[v].name, "visibility"});
+    }
+    for (size_t s = 0; s < set.irradiance.size(); ++s)
+        for (size_t v = 0; v < set.irradiance[s].size(); ++v) {
+            all.push_back(&set.irradiance[s][v]);
+            errors.push_back({set.volumes[v].name, "irradiance " + set.scenarios[s].name});
+        }
+    parallelFor(all.size(), threads, [&](std::size_t i, int) {
+        std::vector<float> before = all[i]->texels;
+        quantise(*all[i], cfg.format);
+        errors[i] = measureQuantisation(before, *all[i], errors[i]);
+    });
 
     if (statsOut) {
         BakeStats st;
@@ -183,10 +218,12 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
             st.shadowRays += c.shadow;
         }
         st.triangles = rs.triangleCount();
+        st.buildSeconds = buildSeconds;
         st.traceSeconds = traceSeconds;
         st.quantiseSeconds = since(tq);
         st.seconds = since(t0);
         st.threads = threads;
+        st.quantisation = std::move(errors);
         *statsOut = st;
     }
     return set;

@@ -7,6 +7,7 @@
 //      octahedral borders, nested-ring blend (NestingBlend.h); pass b reads pass b-1
 //   3. quantise to the storage format (the sampler then sees what the GPU will sample)
 #include "probes/ProbeSet.h"
+#include "probes/RayScene.h"
 #include "scene/Scene.h"
 
 #include <functional>
@@ -19,6 +20,9 @@ struct BakeRequest {
     std::vector<Scenario> scenarios;
     BakeSettings settings;
     int threads = 0; // 0 = all cores; never changes the result
+    // Benchmark instrumentation (not an input): when set, receives every ray the passes
+    // traced, so bench_bake can replay exactly the same rays against bare Embree.
+    std::vector<RecordedRay>* recordRays = nullptr;
 };
 
 struct BakeProgress {
@@ -28,14 +32,23 @@ struct BakeProgress {
 };
 using BakeProgressFn = std::function<void(const BakeProgress&)>;
 
+// What storing in the chosen format cost, per texture: relative error of each channel,
+// |stored - baked| / max(|baked|, 1e-3 * the texture's largest value).
+struct QuantisationError {
+    std::string volume, texture; // texture: "visibility" or "irradiance <scenario>"
+    double maxRelative = 0.0, meanRelative = 0.0;
+};
+
 struct BakeStats {
     std::size_t probes = 0, invalidProbes = 0, relocatedProbes = 0;
     std::uint64_t primaryRays = 0, shadowRays = 0;
     std::size_t triangles = 0;
     double seconds = 0.0;         // whole bake, wall clock
-    double traceSeconds = 0.0;    // geometry + radiance passes (quantisation excluded)
+    double buildSeconds = 0.0;    // Embree BVH build
+    double traceSeconds = 0.0;    // geometry + radiance passes (all the ray tracing)
     double quantiseSeconds = 0.0; // encoding to the storage format
     int threads = 1;
+    std::vector<QuantisationError> quantisation;
 };
 
 // Throws pb::Error for invalid volumes, no scenario, rays < 1 or bounces < 1.

@@ -13,8 +13,8 @@
 
 namespace pb::probes {
 
-// `volumes` is the sampler's view of the current pass (irradiance textures writable through
-// `targets`, one per volume, the same textures the views point to); parents[i] = -1 for roots.
+// `views` point at the current pass's textures; `targets` are the same irradiance textures,
+// writable (one per volume); parents[i] = -1 for roots.
 void blendNestedRings(const std::vector<ProbeVolume>& volumes, const std::vector<int>& parents,
                       const std::vector<SamplerVolume>& views,
                       std::vector<ProbeTexture*>& targets);

@@ -7,18 +7,6 @@ namespace {
 float signNotZero(float a) { return a >= 0.0f ? 1.0f : -1.0f; }
 } // namespace
 
-glm::vec2 octEncode(const glm::vec3& d) {
-    float l1 = std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
-    float u = d.x / l1, v = d.z / l1;
-    if (d.y < 0.0f) {
-        float fu = (1.0f - std::abs(v)) * signNotZero(u);
-        float fv = (1.0f - std::abs(u)) * signNotZero(v);
-        u = fu;
-        v = fv;
-    }
-    return {u, v};
-}
-
 glm::vec3 octDecode(const glm::vec2& e) {
     glm::vec3 d(e.x, 1.0f - std::abs(e.x) - std::abs(e.y), e.y);
     if (d.y < 0.0f) {
@@ -35,11 +23,6 @@ glm::vec2 octTexelCentreUv(int i, int j, int interior) {
 
 glm::vec3 octTexelDirection(int i, int j, int interior) {
     return octDecode(octTexelCentreUv(i, j, interior));
-}
-
-glm::vec2 octInteriorCoord(const glm::vec3& dir, int interior) {
-    glm::vec2 uv = octEncode(dir);
-    return (uv * 0.5f + 0.5f) * float(interior);
 }
 
 void fillOctahedralBorder(float* tile, int rowPitch, int channels, int interior) {

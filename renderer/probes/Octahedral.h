@@ -10,11 +10,23 @@
 //   decode: (x,y,z) = (u, 1-|u|-|v|, v);  if y < 0: (x,z) = ((1-|v|)*s(u), (1-|u|)*s(v));
 //           normalise.     s(a) = a >= 0 ? +1 : -1
 // u runs along the texture's x (columns), v along its y (rows, row 0 first in memory).
+#include <cmath>
 #include <glm/glm.hpp>
 
 namespace pb::probes {
 
-glm::vec2 octEncode(const glm::vec3& dir); // dir need not be normalised (must not be zero)
+// dir need not be normalised (must not be zero).
+inline glm::vec2 octEncode(const glm::vec3& d) {
+    const float l1 = std::abs(d.x) + std::abs(d.y) + std::abs(d.z);
+    float u = d.x / l1, v = d.z / l1;
+    if (d.y < 0.0f) {
+        const float fu = (1.0f - std::abs(v)) * (u >= 0.0f ? 1.0f : -1.0f);
+        const float fv = (1.0f - std::abs(u)) * (v >= 0.0f ? 1.0f : -1.0f);
+        u = fu;
+        v = fv;
+    }
+    return {u, v};
+}
 glm::vec3 octDecode(const glm::vec2& uv);  // unit vector
 
 // Texel (i, j) of an interior of `interior` x `interior` texels has its CENTRE at
@@ -26,7 +38,9 @@ glm::vec3 octTexelDirection(int i, int j, int interior);
 // Continuous position of `dir` inside a tile, in texels, measured from the tile's first
 // INTERIOR texel's left/top edge: in [0, interior]. Add the 1-texel border and the tile origin
 // to get texture coordinates (see ProbeLayout.h).
-glm::vec2 octInteriorCoord(const glm::vec3& dir, int interior);
+inline glm::vec2 octInteriorCoord(const glm::vec3& dir, int interior) {
+    return (octEncode(dir) * 0.5f + 0.5f) * float(interior);
+}
 
 // Fills the 1-texel border of one tile of (interior+2)^2 texels from the mirrored interior
 // edge so bilinear filtering wraps the octahedron seamlessly:

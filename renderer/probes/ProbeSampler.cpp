@@ -7,23 +7,93 @@
 
 namespace pb::probes {
 
-void bilinearFetch(const ProbeTexture& t, float x, float y, int layer, float* out) {
-    const int w = t.shape.width, h = t.shape.height, ch = t.shape.channels;
-    float a = x - 0.5f, b = y - 0.5f;
-    float fa = std::floor(a), fb = std::floor(b);
-    float ax = a - fa, by = b - fb;
-    int x0 = int(fa), y0 = int(fb);
+namespace {
+
+// floor() for the texel math: an int conversion (libm's floor is a call without SSE4.1).
+constexpr std::size_t kIrrTileFloats = kIrradianceTile * kIrradianceTile * 3;
+constexpr std::size_t kVisTileFloats = kVisibilityTile * kVisibilityTile * 2;
+
+inline int floorToInt(float v) {
+    int i = int(v);
+    return float(i) > v ? i - 1 : i;
+}
+
+// GL_LINEAR + CLAMP_TO_EDGE on one layer, CH channels read (of t.shape.channels).
+template <int CH>
+inline void bilinear(const ProbeTexture& t, float x, float y, int layer, float* out) {
+    const int w = t.shape.width, h = t.shape.height, stride = t.shape.channels;
+    const float a = x - 0.5f, b = y - 0.5f;
+    int x0 = floorToInt(a), y0 = floorToInt(b);
+    const float ax = a - float(x0), by = b - float(y0);
     int x1 = std::min(std::max(x0 + 1, 0), w - 1), y1 = std::min(std::max(y0 + 1, 0), h - 1);
     x0 = std::min(std::max(x0, 0), w - 1);
     y0 = std::min(std::max(y0, 0), h - 1);
-    const float* t00 = t.at(x0, y0, layer);
-    const float* t10 = t.at(x1, y0, layer);
-    const float* t01 = t.at(x0, y1, layer);
-    const float* t11 = t.at(x1, y1, layer);
-    for (int c = 0; c < ch; ++c) {
+    const float* base = t.texels.data() + std::size_t(layer) * std::size_t(h) * std::size_t(w) *
+                                              std::size_t(stride);
+    const float* r0 = base + std::size_t(y0) * std::size_t(w) * std::size_t(stride);
+    const float* r1 = base + std::size_t(y1) * std::size_t(w) * std::size_t(stride);
+    const float* t00 = r0 + x0 * stride;
+    const float* t10 = r0 + x1 * stride;
+    const float* t01 = r1 + x0 * stride;
+    const float* t11 = r1 + x1 * stride;
+    for (int c = 0; c < CH; ++c) {
         float top = t00[c] + (t10[c] - t00[c]) * ax;
         float bottom = t01[c] + (t11[c] - t01[c]) * ax;
         out[c] = top + (bottom - top) * by;
+    }
+}
+
+// GL_LINEAR inside one tile of T x T texels, CH floats each, at tile-local continuous texel
+// coordinates. Valid coordinates (octahedral interior + 1) keep x0, y0 in [0, T-2]; the clamp
+// only guards against NaN input.
+template <int CH, int T>
+inline void tileBilinear(const float* tile, float lx, float ly, float* out) {
+    const float a = lx - 0.5f, b = ly - 0.5f;
+    int x0 = floorToInt(a), y0 = floorToInt(b);
+    const float ax = a - float(x0), by = b - float(y0);
+    x0 = std::min(std::max(x0, 0), T - 2);
+    y0 = std::min(std::max(y0, 0), T - 2);
+    const float* t00 = tile + (y0 * T + x0) * CH;
+    const float* t01 = t00 + T * CH;
+    for (int c = 0; c < CH; ++c) {
+        float top = t00[c] + (t00[CH + c] - t00[c]) * ax;
+        float bottom = t01[c] + (t01[CH + c] - t01[c]) * ax;
+        out[c] = top + (bottom - top) * by;
+    }
+}
+
+// Hints the two texel rows a tileBilinear at (lx, ly) will read into the cache.
+template <int CH, int T> inline void prefetchTexels(const float* tile, glm::vec2 l) {
+    int y0 = std::min(std::max(floorToInt(l.y - 0.5f), 0), T - 2);
+    int x0 = std::min(std::max(floorToInt(l.x - 0.5f), 0), T - 2);
+    const float* p = tile + (y0 * T + x0) * CH;
+    __builtin_prefetch(p);
+    __builtin_prefetch(p + T * CH);
+}
+
+// Tile-major copy of a texture array: probe after probe, `channels` of its channels.
+std::vector<float> copyTiles(const ProbeVolume& v, const ProbeTexture& t, int tile, int channels) {
+    std::vector<float> out(std::size_t(v.probeCount()) * std::size_t(tile * tile * channels));
+    float* dst = out.data();
+    for (int p = 0; p < v.probeCount(); ++p) {
+        glm::ivec3 c = v.probeCoords(p);
+        for (int y = 0; y < tile; ++y)
+            for (int x = 0; x < tile; ++x) {
+                const float* src = t.at(c.x * tile + x, c.z * tile + y, c.y);
+                for (int ch = 0; ch < channels; ++ch) *dst++ = src[ch];
+            }
+    }
+    return out;
+}
+
+} // namespace
+
+void bilinearFetch(const ProbeTexture& t, float x, float y, int layer, float* out) {
+    switch (t.shape.channels) {
+    case 1: bilinear<1>(t, x, y, layer, out); break;
+    case 2: bilinear<2>(t, x, y, layer, out); break;
+    case 3: bilinear<3>(t, x, y, layer, out); break;
+    default: bilinear<4>(t, x, y, layer, out); break;
     }
 }
 
@@ -55,12 +125,19 @@ void ProbeSampler::init(const std::vector<SamplerVolume>& volumes) {
         f.half = v.halfExtents;
         f.cell = v.cellSize();
         f.counts = v.counts;
-        for (int a = 0; a < 3; ++a) f.invCell[a] = v.counts[a] > 1 ? 1.0f / f.cell[a] : 0.0f;
+        for (int a = 0; a < 3; ++a) {
+            bool grid = v.counts[a] > 1;
+            f.invCell[a] = grid ? 1.0f / f.cell[a] : 0.0f;
+            f.gridOrigin[a] = grid ? -v.halfExtents[a] : 0.0f;
+            f.gridStep[a] = grid ? f.cell[a] : 0.0f;
+        }
         f.fadeWidth = sv.root ? kEdgeFadeCells * f.cell : glm::vec3(0.0f);
         f.minCell = v.minCellSize();
         f.invMaxDistance = 1.0f / v.maxDistance();
         f.boxVolume = v.boxVolume();
-        frames_.push_back(f);
+        f.irradianceTiles = copyTiles(v, *sv.irradiance, kIrradianceTile, 3);
+        f.visibilityTiles = copyTiles(v, *sv.visibility, kVisibilityTile, 2);
+        frames_.push_back(std::move(f));
     }
 }
 
@@ -136,40 +213,61 @@ IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const 
             alpha[a] = 0.0f;
             continue;
         }
-        float g = std::floor((p[a] + f.half[a]) * f.invCell[a]);
-        base[a] = int(std::min(std::max(g, 0.0f), float(f.counts[a] - 2)));
+        // Clamp in float first: a far-away point must not overflow the int conversion.
+        float g = std::min(std::max((p[a] + f.half[a]) * f.invCell[a], 0.0f),
+                           float(f.counts[a] - 2));
+        base[a] = floorToInt(g);
         float gb = (biased[a] + f.half[a]) * f.invCell[a] - float(base[a]);
         alpha[a] = std::min(std::max(gb, 0.0f), 1.0f);
     }
 
-    // 4. The 8 surrounding probes.
+    // 4. The 8 surrounding probes. First their positions and texel addresses, prefetching the
+    //    tiles (the loads are the cost of a lookup), then the weights in corner order.
     const ProbeVolume& vol = *f.src.volume;
-    const glm::vec2 irrCoordInTile = octInteriorCoord(n, kIrradianceInterior);
-    glm::vec3 sumE(0.0f);
-    float sumW = 0.0f;
+    const glm::vec2 irrCoord = octInteriorCoord(n, kIrradianceInterior) + 1.0f;
+    struct Corner {
+        glm::ivec3 off;
+        glm::vec3 probe, toPoint;
+        float dist;
+        glm::vec2 visCoord;
+        const float *visTile, *irrTile;
+    };
+    Corner corners[8];
+    int used = 0;
     for (int corner = 0; corner < 8; ++corner) {
-        glm::ivec3 off(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-        glm::ivec3 c = base + off;
+        Corner& k = corners[used];
+        k.off = glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+        const glm::ivec3 c = base + k.off;
         if (c.x >= f.counts.x || c.y >= f.counts.y || c.z >= f.counts.z) continue;
         const int index = vol.probeIndex(c);
         const ProbeState& st = f.src.states[index];
         if (!st.valid) continue;
-        const glm::vec3 probe = vol.gridLocal(c) + st.offset;
+        k.probe = f.gridOrigin + glm::vec3(c) * f.gridStep + st.offset;
+        k.toPoint = biased - k.probe;
+        k.dist = glm::length(k.toPoint);
+        const glm::vec3 dir = k.dist > 0.0f ? k.toPoint / k.dist : n;
+        k.visCoord = octInteriorCoord(dir, kVisibilityInterior) + 1.0f;
+        k.visTile = f.visibilityTiles.data() + std::size_t(index) * kVisTileFloats;
+        k.irrTile = f.irradianceTiles.data() + std::size_t(index) * kIrrTileFloats;
+        prefetchTexels<2, kVisibilityTile>(k.visTile, k.visCoord);
+        prefetchTexels<3, kIrradianceTile>(k.irrTile, irrCoord);
+        ++used;
+    }
+    glm::vec3 sumE(0.0f);
+    float sumW = 0.0f;
+    for (int i = 0; i < used; ++i) {
+        const Corner& k = corners[i];
 
         // 4a. Wrap shading: probes behind the surface count less (never zero).
-        glm::vec3 dirToProbe = safeNormalize(probe - p, n);
+        glm::vec3 dirToProbe = safeNormalize(k.probe - p, n);
         float t = (glm::dot(dirToProbe, n) + 1.0f) * 0.5f;
         float w = t * t + kWrapBias;
 
         // 4b. Chebyshev visibility from the probe towards the biased point.
-        glm::vec3 toPoint = biased - probe;
-        float dist = glm::length(toPoint);
-        glm::vec3 dir = dist > 0.0f ? toPoint / dist : n;
-        glm::vec2 vc = tileCoord(c, dir, kVisibilityInterior);
         float vis[2];
-        bilinearFetch(*f.src.visibility, vc.x, vc.y, c.y, vis);
+        tileBilinear<2, kVisibilityTile>(k.visTile, k.visCoord.x, k.visCoord.y, vis);
         float mean = vis[0], meanSq = vis[1];
-        float d01 = dist * f.invMaxDistance;
+        float d01 = k.dist * f.invMaxDistance;
         if (d01 > mean) {
             float variance = std::max(meanSq - mean * mean, kVarianceFloor);
             float dd = d01 - mean;
@@ -181,14 +279,13 @@ IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const 
         if (w < kCrushThreshold) w *= (w * w) / (kCrushThreshold * kCrushThreshold);
 
         // 4d. Trilinear.
-        float tri = (off.x ? alpha.x : 1.0f - alpha.x) * (off.y ? alpha.y : 1.0f - alpha.y) *
-                    (off.z ? alpha.z : 1.0f - alpha.z);
+        float tri = (k.off.x ? alpha.x : 1.0f - alpha.x) * (k.off.y ? alpha.y : 1.0f - alpha.y) *
+                    (k.off.z ? alpha.z : 1.0f - alpha.z);
         w *= std::max(tri, kMinTrilinear);
 
         // 4e. Irradiance of this probe in the normal's direction.
-        float irr[4];
-        bilinearFetch(*f.src.irradiance, float(c.x * kIrradianceTile + 1) + irrCoordInTile.x,
-                      float(c.z * kIrradianceTile + 1) + irrCoordInTile.y, c.y, irr);
+        float irr[3];
+        tileBilinear<3, kIrradianceTile>(k.irrTile, irrCoord.x, irrCoord.y, irr);
         sumE += w * glm::vec3(irr[0], irr[1], irr[2]);
         sumW += w;
         ++out.probes;

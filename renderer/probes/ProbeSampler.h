@@ -27,7 +27,11 @@ constexpr float kCrushThreshold = 0.2f;    // w < 0.2 -> w * w^2 / 0.2^2
 constexpr float kMinTrilinear = 1e-3f;     // lower bound of the trilinear weight
 constexpr float kEdgeFadeCells = 0.5f;     // fade width of root volumes, in cells
 
-// One volume as the sampler sees it (the bake points these at its working textures).
+// One volume as the sampler sees it (the bake points these at its working textures). The
+// sampler copies the textures at construction into a tile-major layout (a probe's tile
+// contiguous): the values and the filtering are those of the GL layout - a fetch never leaves
+// its tile thanks to the borders - but the copy avoids the 4 KiB row-pitch cache aliasing of
+// wide volumes. Later changes to the textures are not seen: build a new sampler.
 struct SamplerVolume {
     const ProbeVolume* volume = nullptr;
     const ProbeState* states = nullptr;        // probeCount() entries
@@ -66,6 +70,9 @@ private:
         SamplerVolume src;
         glm::mat3 toLocal;
         glm::vec3 center, half, cell, invCell, fadeWidth;
+        glm::vec3 gridOrigin, gridStep; // probe (i,j,k) at gridOrigin + (i,j,k) * gridStep
+        std::vector<float> irradianceTiles; // per probe: 8x8 texels, RGB
+        std::vector<float> visibilityTiles; // per probe: 16x16 texels, mean + meanSq
         glm::ivec3 counts;
         float minCell, invMaxDistance, boxVolume;
     };

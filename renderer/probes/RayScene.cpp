@@ -3,7 +3,9 @@
 #include "core/Error.h"
 
 #include <array>
+#include <atomic>
 #include <cmath>
+#include <mutex>
 
 namespace pb::probes {
 namespace {
@@ -68,7 +70,7 @@ scene::Bounds staticBakeBounds(const scene::Scene& s) {
     return b;
 }
 
-RayScene::RayScene(const scene::Scene& s) {
+RayScene::RayScene(const scene::Scene& s) : recorder_(std::make_unique<Recorder>()) {
     device_ = rtcNewDevice(nullptr);
     if (!device_) throw Error("Embree: cannot create a device");
     rtcSetDeviceErrorFunction(device_, embreeError, nullptr);
@@ -133,6 +135,46 @@ RayScene::RayScene(const scene::Scene& s) {
     epsilon_ = std::max(1e-5f * extent + 1e-6f * far, 1e-6f);
 }
 
+struct RayScene::Recorder {
+    std::atomic<bool> on{false};
+    std::atomic<unsigned> session{0};
+    std::mutex mutex;
+    std::vector<std::unique_ptr<std::vector<RecordedRay>>> perThread;
+};
+
+void RayScene::startRecording() {
+    std::lock_guard<std::mutex> lock(recorder_->mutex);
+    recorder_->perThread.clear();
+    ++recorder_->session;
+    recorder_->on = true;
+}
+
+std::vector<RecordedRay> RayScene::stopRecording() {
+    std::lock_guard<std::mutex> lock(recorder_->mutex);
+    recorder_->on = false;
+    ++recorder_->session;
+    std::vector<RecordedRay> all;
+    for (auto& v : recorder_->perThread) all.insert(all.end(), v->begin(), v->end());
+    recorder_->perThread.clear();
+    return all;
+}
+
+void RayScene::record(const RecordedRay& r) const {
+    // Each thread appends to its own buffer (looked up once per session).
+    thread_local const void* owner = nullptr;
+    thread_local unsigned session = 0;
+    thread_local std::vector<RecordedRay>* buffer = nullptr;
+    unsigned current = recorder_->session.load();
+    if (owner != this || session != current) {
+        std::lock_guard<std::mutex> lock(recorder_->mutex);
+        recorder_->perThread.push_back(std::make_unique<std::vector<RecordedRay>>());
+        buffer = recorder_->perThread.back().get();
+        owner = this;
+        session = current;
+    }
+    buffer->push_back(r);
+}
+
 RayHit RayScene::intersect(const glm::vec3& o, const glm::vec3& d, float tnear,
                            float tfar) const {
     RTCIntersectContext ctx;
@@ -152,6 +194,7 @@ RayHit RayScene::intersect(const glm::vec3& o, const glm::vec3& d, float tnear,
     rh.ray.flags = 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    if (recorder_->on.load(std::memory_order_relaxed)) record({o, d, tnear, tfar, false});
     rtcIntersect1(scene_, &ctx, &rh);
     RayHit out;
     if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
@@ -178,6 +221,7 @@ bool RayScene::occluded(const glm::vec3& o, const glm::vec3& d, float tnear, flo
     r.mask = 0xFFFFFFFFu;
     r.id = 0;
     r.flags = 0;
+    if (recorder_->on.load(std::memory_order_relaxed)) record({o, d, tnear, tfar, true});
     rtcOccluded1(scene_, &ctx, &r);
     return r.tfar < 0.0f; // Embree sets tfar to -inf on a hit
 }

@@ -12,6 +12,7 @@
 
 #include <embree3/rtcore.h>
 #include <limits>
+#include <memory>
 #include <vector>
 
 namespace pb::probes {
@@ -38,6 +39,13 @@ struct RayHit {
     bool hit() const { return t >= 0.0f; }
 };
 
+// One traced ray, for replaying a bake's exact rays against bare Embree (bench_bake).
+struct RecordedRay {
+    glm::vec3 origin, dir;
+    float tnear, tfar;
+    bool shadow; // rtcOccluded1 (else rtcIntersect1)
+};
+
 class RayScene {
 public:
     explicit RayScene(const scene::Scene& scene);
@@ -57,12 +65,20 @@ public:
         return normals_[geomID][primID];
     }
     const scene::Bounds& bounds() const { return bounds_; }
+
+    // Benchmark instrumentation: while recording, every intersect/occluded call (from any
+    // thread) is logged. Off by default; costs one relaxed atomic load per ray when off.
+    void startRecording();
+    std::vector<RecordedRay> stopRecording();
     std::size_t triangleCount() const { return triangles_; }
     // Offset for secondary rays leaving a surface: relative to the scene size, since scenes
     // range from centimetres to hundreds of metres.
     float epsilon() const { return epsilon_; }
 
 private:
+    struct Recorder;
+    void record(const RecordedRay& r) const;
+    std::unique_ptr<Recorder> recorder_;
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
     std::vector<SurfaceInfo> surfaces_;

@@ -176,7 +176,7 @@ TEST(VolumeAuto, CapsTheProbeCountWithAMessage) {
     AutoVolume a = fitAutoVolume(b, 0.05f, 10000);
     EXPECT_LE(a.volume.probeCount(), 10000);
     EXPECT_GT(a.spacing, 0.05f);
-    EXPECT_NE(a.note.find("would need"), std::string::npos) << a.note;
+    EXPECT_NE(a.note.find("spacing 0.05 would need"), std::string::npos) << a.note;
     AutoVolume d = fitAutoVolume(b, 0.0f); // default spacing: about 4096 probes
     EXPECT_GT(d.volume.probeCount(), 2000);
     EXPECT_LT(d.volume.probeCount(), 9000);
@@ -189,6 +189,9 @@ TEST(VolumeAuto, FlatOrEmptyScenes) {
     AutoVolume a = fitAutoVolume(flat, 2.0f);
     EXPECT_GE(a.volume.halfExtents.y * 2.0f, 2.0f - 1e-4f); // widened to one spacing
     EXPECT_EQ(volumeProblem(a.volume), "");
+    AutoVolume d = fitAutoVolume(flat, 0.0f); // default spacing still aims at ~4096 probes
+    EXPECT_LT(d.volume.probeCount(), 9000);
+    EXPECT_EQ(d.volume.counts.y, 2);
     EXPECT_THROW(fitAutoVolume(pb::scene::Bounds{}, 1.0f), pb::Error);
 }
 

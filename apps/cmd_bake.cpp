@@ -1,0 +1,252 @@
+// probebench bake: probe volumes -> Embree bake -> probe data file (cached by input hash).
+#include "CommandRegistry.h"
+#include "SceneOptions.h"
+#include "core/Error.h"
+#include "probes/AutoVolume.h"
+#include "probes/Baker.h"
+#include "probes/MemoryReport.h"
+#include "probes/ProbeFile.h"
+#include "probes/RayScene.h"
+#include "probes/VolumeFile.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <unistd.h>
+
+namespace pb::app {
+namespace {
+
+using namespace pb::probes;
+
+struct BakeArgs {
+    SceneArgs scene;
+    std::string volumes = "auto";
+    float spacing = 0.0f;
+    int rays = 256, bounces = 2, threads = 0;
+    std::vector<std::string> scenarios;
+    std::string format = "rgba16f";
+    std::uint64_t seed = 1;
+    std::string out;
+    bool json = false, force = false, noRelocate = false;
+    float backfaceThreshold = 0.25f;
+};
+
+// A bar on a terminal, one line per finished stage otherwise (logs, CI).
+class Progress {
+public:
+    Progress() : tty_(::isatty(::fileno(stderr)) != 0) {}
+    void operator()(const BakeProgress& p) {
+        if (p.stage != stage_) finishStage();
+        stage_ = p.stage;
+        if (!tty_ || p.total == 0) return;
+        const int width = 30;
+        int filled = int(double(p.done) / double(p.total) * width);
+        std::fprintf(stderr, "\r[%-*s] %3d%%  %-24s", width, std::string(size_t(filled), '#').c_str(),
+                     int(100.0 * double(p.done) / double(p.total)), stage_.c_str());
+        std::fflush(stderr);
+    }
+    void finishStage() {
+        if (stage_.empty()) return;
+        if (!tty_) std::fprintf(stderr, "bake: %s done\n", stage_.c_str());
+        stage_.clear();
+    }
+    void done() {
+        finishStage();
+        if (tty_) std::fprintf(stderr, "\r%-70s\r", "");
+    }
+
+private:
+    bool tty_;
+    std::string stage_;
+};
+
+BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s) {
+    BakeRequest r;
+    std::vector<ScenarioSpec> fileScenarios;
+    if (a.volumes == "auto") {
+        AutoVolume fit = fitAutoVolume(staticBakeBounds(s), a.spacing);
+        if (!fit.note.empty()) std::cerr << "note: " << fit.note << "\n";
+        r.volumes.push_back(fit.volume);
+    } else {
+        if (a.spacing > 0.0f) throw Error("--spacing applies to --volumes auto only");
+        VolumeFile vf = loadVolumeFile(a.volumes);
+        r.volumes = vf.volumes;
+        fileScenarios = vf.scenarios;
+    }
+    r.scenarios = resolveScenarios(a.scenarios, fileScenarios, s);
+    r.settings.raysPerProbe = a.rays;
+    r.settings.bounces = a.bounces;
+    r.settings.seed = a.seed;
+    r.settings.format = parseStorageFormat(a.format);
+    r.settings.relocate = !a.noRelocate;
+    r.settings.backfaceThreshold = a.backfaceThreshold;
+    r.threads = a.threads;
+    return r;
+}
+
+nlohmann::json volumesJson(const ProbeSet& set) {
+    nlohmann::json out = nlohmann::json::array();
+    for (size_t v = 0; v < set.volumes.size(); ++v) {
+        const ProbeVolume& vol = set.volumes[v];
+        std::size_t invalid = 0, moved = 0;
+        for (const ProbeState& p : set.states[v]) {
+            invalid += p.valid ? 0 : 1;
+            moved += p.offset != glm::vec3(0.0f) ? 1 : 0;
+        }
+        out.push_back({{"name", vol.name},
+                       {"parent", vol.parent},
+                       {"counts", {vol.counts.x, vol.counts.y, vol.counts.z}},
+                       {"center", {vol.center.x, vol.center.y, vol.center.z}},
+                       {"half_extents", {vol.halfExtents.x, vol.halfExtents.y, vol.halfExtents.z}},
+                       {"probes", vol.probeCount()},
+                       {"invalid", invalid},
+                       {"relocated", moved}});
+    }
+    return out;
+}
+
+void printSummary(const BakeArgs& a, const ProbeSet& set, const BakeStats* st, bool upToDate) {
+    MemoryReport mem = memoryReport(set.volumes, set.format());
+    if (a.json) {
+        nlohmann::json j{{"file", a.out},
+                         {"up_to_date", upToDate},
+                         {"input_hash", set.inputHash},
+                         {"format", formatName(set.format())},
+                         {"rays_per_probe", set.settings.raysPerProbe},
+                         {"bounces", set.settings.bounces},
+                         {"seed", set.settings.seed},
+                         {"probes", set.probeCount()},
+                         {"invalid_probes", set.invalidCount()},
+                         {"volumes", volumesJson(set)},
+                         {"memory", memoryReportJson(mem)}};
+        nlohmann::json sc = nlohmann::json::array();
+        for (const Scenario& s : set.scenarios) sc.push_back(s.name);
+        j["scenarios"] = sc;
+        if (st) {
+            double rays = double(st->primaryRays + st->shadowRays);
+            j["relocated_probes"] = st->relocatedProbes;
+            j["rays"] = st->primaryRays;
+            j["shadow_rays"] = st->shadowRays;
+            j["seconds"] = st->seconds;
+            j["bvh_seconds"] = st->buildSeconds;
+            j["trace_seconds"] = st->traceSeconds;
+            j["encode_seconds"] = st->quantiseSeconds;
+            j["rays_per_second"] = st->seconds > 0 ? rays / st->seconds : 0.0;
+            j["threads"] = st->threads;
+            j["triangles"] = st->triangles;
+            nlohmann::json q = nlohmann::json::array();
+            for (const auto& e : st->quantisation)
+                q.push_back({{"volume", e.volume}, {"texture", e.texture},
+                             {"max_relative_error", e.maxRelative},
+                             {"mean_relative_error", e.meanRelative}});
+            j["quantisation"] = q;
+        }
+        std::cout << j.dump(2) << "\n";
+        return;
+    }
+    if (upToDate) std::cout << a.out << ": up to date (input hash matches; --force re-bakes)\n";
+    std::cout << "probes: " << set.probeCount() << " in " << set.volumes.size() << " volume(s), "
+              << set.invalidCount() << " invalid";
+    if (st) std::cout << ", " << st->relocatedProbes << " relocated";
+    std::cout << "\n";
+    if (st) {
+        double rays = double(st->primaryRays + st->shadowRays);
+        std::printf("rays: %llu (%d per probe per pass) + %llu shadow rays, %d thread(s), %zu "
+                    "triangles\n",
+                    (unsigned long long)st->primaryRays, set.settings.raysPerProbe,
+                    (unsigned long long)st->shadowRays, st->threads, st->triangles);
+        std::printf("time: %.2f s (BVH %.2f s, tracing %.2f s, %s encoding %.2f s), %.2f M "
+                    "rays/s\n",
+                    st->seconds, st->buildSeconds, st->traceSeconds, formatName(set.format()),
+                    st->quantiseSeconds, st->seconds > 0 ? rays / st->seconds * 1e-6 : 0.0);
+        double worst = 0.0;
+        for (const auto& e : st->quantisation) worst = std::max(worst, e.maxRelative);
+        if (set.format() == StorageFormat::Bc6h)
+            for (const auto& e : st->quantisation)
+                std::printf("bc6h error %-12s %-20s max %.4f mean %.5f (relative)\n",
+                            e.volume.c_str(), e.texture.c_str(), e.maxRelative, e.meanRelative);
+        else
+            std::printf("%s quantisation: max relative error %.2g\n", formatName(set.format()),
+                        worst);
+    }
+    std::cout << "memory (one scenario resident): " << formatBytes(mem.total.uncompressed.total())
+              << " uncompressed, " << formatBytes(mem.total.bc6h.total()) << " bc6h; file holds "
+              << set.scenarios.size() << " scenario(s) as " << formatName(set.format()) << "\n";
+    if (!upToDate) std::cout << "wrote " << a.out << "\n";
+}
+
+int run(const BakeArgs& a) {
+    if (a.out.empty()) throw Error("--out is required (the probe file to write)");
+    scene::Scene s = loadSceneWithOverrides(a.scene);
+    BakeRequest req = buildRequest(a, s);
+    const std::uint64_t hash = bakeInputHash(s, req);
+    if (!a.force && std::filesystem::exists(a.out)) {
+        try {
+            ProbeSet old = readProbeFile(a.out);
+            if (old.inputHash == hash) {
+                printSummary(a, old, nullptr, true);
+                return 0;
+            }
+        } catch (const Error& e) {
+            std::cerr << "note: re-baking, the existing file is unusable: " << e.what() << "\n";
+        }
+    }
+    long long probes = 0;
+    for (const ProbeVolume& v : req.volumes) probes += v.probeCount();
+    if (!a.json)
+        std::cout << "bake: scene '" << s.name << "', " << req.volumes.size() << " volume(s), "
+                  << probes << " probes, " << req.settings.raysPerProbe << " rays, "
+                  << req.settings.bounces << " bounce(s), " << req.scenarios.size()
+                  << " scenario(s), " << formatName(req.settings.format) << std::endl;
+    Progress progress;
+    BakeStats stats;
+    ProbeSet set = bakeProbes(s, req, &stats, [&](const BakeProgress& p) { progress(p); });
+    progress.done();
+    writeProbeFile(a.out, set);
+    printSummary(a, set, &stats, false);
+    return 0;
+}
+
+const RegisterCommand reg{{
+    "bake",
+    "Bake DDGI probes (irradiance + visibility) for a scene with Embree into a probe file",
+    30,
+    [](CLI::App& cmd) -> std::function<int()> {
+        auto a = std::make_shared<BakeArgs>();
+        addSceneOptions(cmd, a->scene);
+        cmd.add_option("--volumes", a->volumes,
+                       "Probe volumes: a TOML file (see renderer/probes/README.md) or 'auto' (one "
+                       "volume fitted to the static scene bounds)")
+            ->capture_default_str();
+        cmd.add_option("--spacing", a->spacing,
+                       "Probe spacing for --volumes auto, scene units (default: about 4096 probes)");
+        cmd.add_option("--rays", a->rays, "Rays per probe per pass (spherical Fibonacci)")
+            ->capture_default_str();
+        cmd.add_option("--bounces", a->bounces, "Bounce passes (1 = direct light at the hits)")
+            ->capture_default_str();
+        cmd.add_option("--scenario", a->scenarios,
+                       "Lighting scenario to bake, repeatable: day, night or a [[scenario]] of the "
+                       "volumes file (default: day)");
+        cmd.add_option("--format", a->format, "Storage: rgba16f, rgba32f or bc6h")
+            ->capture_default_str();
+        cmd.add_option("--seed", a->seed, "Seed of the per-pass ray rotations")
+            ->capture_default_str();
+        cmd.add_option("--threads", a->threads, "Worker threads (0 = all cores; never changes "
+                                                "the result)")
+            ->capture_default_str();
+        cmd.add_option("--backface-threshold", a->backfaceThreshold,
+                       "Back-face hit ratio above which a probe is invalid")
+            ->capture_default_str();
+        cmd.add_flag("--no-relocate", a->noRelocate, "Do not move probes out of geometry");
+        cmd.add_option("--out", a->out, "Probe file to write (reused when its inputs match)")
+            ->required();
+        cmd.add_flag("--force", a->force, "Bake even when --out is up to date");
+        cmd.add_flag("--json", a->json, "Print the summary as JSON on stdout");
+        return [a] { return run(*a); };
+    },
+}};
+
+} // namespace
+} // namespace pb::app
