@@ -7,6 +7,7 @@
 #include "scene/GltfNodes.h"
 #include "scene/SceneLoader.h"
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <limits>
@@ -89,6 +90,13 @@ void parseWithTinygltf(const std::string& path, tinygltf::Model& model,
     std::string err, warn;
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     const auto size = static_cast<unsigned int>(bytes.size());
+    if (binary && size >= 12) { // tinygltf only says "Invalid glTF binary." for a cut-off file
+        std::uint32_t declared;
+        std::memcpy(&declared, bytes.data() + 8, 4);
+        if (declared > size)
+            throw fileError(path, "truncated GLB: its header declares " + std::to_string(declared) +
+                                      " bytes, the file has " + std::to_string(size));
+    }
     const bool ok =
         binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, baseDir)
                : loader.LoadASCIIFromString(&model, &err, &warn,
@@ -96,6 +104,9 @@ void parseWithTinygltf(const std::string& path, tinygltf::Model& model,
                                             baseDir);
     if (!ok) {
         if (err.empty()) err = warn.empty() ? "not a valid glTF file" : warn;
+        // nlohmann's "[json.exception.parse_error.101] parse error at line ..." -> say what it is.
+        if (err.rfind("[json.exception", 0) == 0)
+            err = "malformed JSON: " + err.substr(err.find(']') + 2);
         throw fileError(path, oneLine(err));
     }
     // tinygltf also reports fixable oddities in `err` while still succeeding.
@@ -132,6 +143,16 @@ void emitGroupedWarnings(gltf::Context& ctx) {
         ctx.scene.warnings.push_back(std::move(w));
 }
 
+// Finite vertices can still end up absurdly far out (1e38, or a node scaled by 1e30); float
+// maths on such bounds overflows, and nothing could be drawn there anyway. 1e10 m leaves room
+// for geo-referenced scenes far from the origin.
+void checkExtent(const std::string& path, const Bounds& b) {
+    if (b.empty()) return;
+    for (int a = 0; a < 3; ++a)
+        if (!(std::abs(b.min[a]) <= 1e10f) || !(std::abs(b.max[a]) <= 1e10f))
+            throw fileError(path, "absurd world coordinates (beyond 1e10) after node transforms");
+}
+
 Scene loadGltfUnchecked(const std::string& path, const SceneOptions& options) {
     Scene scene;
     scene.name = std::filesystem::path(path).stem().string();
@@ -149,6 +170,7 @@ Scene loadGltfUnchecked(const std::string& path, const SceneOptions& options) {
     gltf::traverseNodes(ctx, options.dynamicNodes);
     if (scene.materials.empty()) gltf::defaultMaterial(ctx);
     emitGroupedWarnings(ctx);
+    checkExtent(path, scene.worldBounds());
     scene.views.front() = makeDefaultView(scene);
     return scene;
 }

@@ -92,6 +92,10 @@ bool convertPrimitive(Context& ctx, int meshIndex, size_t primIndex, Primitive& 
         if (out.uvs.size() != vertexCount)
             ctx.fail("TEXCOORD_0 of " + mesh + " has " + std::to_string(out.uvs.size()) +
                      " elements, POSITION " + std::to_string(vertexCount));
+        for (size_t i = 0; i < out.uvs.size(); ++i)
+            if (!std::isfinite(out.uvs[i].x) || !std::isfinite(out.uvs[i].y))
+                ctx.fail("NaN or infinite TEXCOORD_0 (vertex " + std::to_string(i) + ") in " +
+                         mesh);
     }
 
     if (src.material >= 0 && size_t(src.material) >= ctx.model.materials.size())

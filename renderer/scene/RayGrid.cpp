@@ -40,6 +40,8 @@ RayGrid::RayGrid(const Scene& scene) {
             bounds_.extend(t.v0 + t.e2);
         }
     }
+    const glm::vec3 size = bounds_.size();
+    if (!std::isfinite(size.x + size.y + size.z)) tris_.clear(); // loaders reject such scenes
     if (!tris_.empty()) build();
 }
 

@@ -49,7 +49,7 @@ TEST(GltfBadInput, MissingFile) {
 TEST(GltfBadInput, MalformedJson) {
     const auto path = pb::test::outputDir() / "broken.gltf";
     writeText(path, "{\"asset\": {\"version\": \"2.0\"}, \"nodes\": [");
-    expectLoadError(path.string(), "parse error");
+    expectLoadError(path.string(), "malformed JSON: parse error at line 1");
 }
 
 TEST(GltfBadInput, NotGltfAtAll) {
@@ -69,7 +69,7 @@ TEST(GltfBadInput, TruncatedGlb) {
     const auto dir = pb::test::outputDir();
     const std::string path = goodTriangle().write(dir, "short", true);
     std::filesystem::resize_file(path, std::filesystem::file_size(path) - 16);
-    expectLoadError(path, "");
+    expectLoadError(path, "truncated GLB");
 }
 
 TEST(GltfBadInput, IndexOutOfRange) {
@@ -91,6 +91,18 @@ TEST(GltfBadInput, NanAndInfinitePositions) {
         expectLoadError(w.write(dir, std::isnan(bad) ? "nan" : "inf"),
                         "NaN or infinite position (vertex 1) in mesh 'tri'");
     }
+}
+
+TEST(GltfBadInput, NanTexCoord) {
+    GltfWriter w;
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    w.addMesh({{"attributes",
+                {{"POSITION", w.addVec3(pb::test::triangleXY())},
+                 {"TEXCOORD_0", w.addVec2({{0, 0}, {nan, 0}, {0, 1}})}}}},
+              "tri");
+    w.addNode({{"mesh", 0}});
+    expectLoadError(w.write(pb::test::outputDir(), "nanuv"),
+                    "NaN or infinite TEXCOORD_0 (vertex 1) in mesh 'tri'");
 }
 
 TEST(GltfBadInput, CyclicNodesAndSecondParents) {
@@ -181,4 +193,8 @@ TEST(GltfBadInput, DanglingReferences) {
     GltfWriter e = goodTriangle();
     e.doc["nodes"][0]["rotation"] = {0, 0, 0, 0};
     expectLoadError(e.write(dir, "quat"), "zero quaternion");
+
+    GltfWriter f = goodTriangle();
+    f.doc["nodes"][0]["scale"] = {1e30, 1, 1};
+    expectLoadError(f.write(dir, "huge"), "absurd world coordinates");
 }
