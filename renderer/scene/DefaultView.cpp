@@ -105,7 +105,7 @@ View makeDefaultView(const Bounds& b) {
 // The bounds rule first; when its eye is in or against geometry, or something blocks the
 // view, nearby poses in a fixed order: other heights, sideways, nearer the centre, then the
 // opposite direction and the other horizontal axis. The first pose that sees well wins, else
-// the best-scoring one; the search is deterministic and costs a few ms even for 0.2 M tris.
+// the best-scoring one. Deterministic; 10-25 ms for 0.2 M triangles, mostly building the grid.
 View makeDefaultView(const Scene& scene) {
     const Bounds b = scene.staticWorldBounds();
     const View simple = makeDefaultView(b);
