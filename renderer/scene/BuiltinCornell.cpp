@@ -34,7 +34,8 @@ Scene makeCornellScene() {
     s.sun.enabled = false;
     s.sky.radiance = glm::vec3(0.0f);
     s.exposure = 1.0f;
-    b.view("front", {0.0f, 1.0f, 0.95f}, {0.0f, 1.0f, -1.0f}, 60.0f);
+    // The classic framing from inside the (closed) front wall: wide enough to see the light.
+    b.view("front", {0.0f, 0.95f, 0.95f}, {0.0f, 1.15f, -1.0f}, 80.0f);
     b.view("corner", {0.85f, 1.8f, 0.85f}, {-0.4f, 0.4f, -0.5f}, 70.0f);
     return s;
 }
