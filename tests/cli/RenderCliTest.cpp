@@ -35,7 +35,7 @@ void expectCleanFailure(const CommandResult& r, const std::string& mustName, con
 
 TEST(RenderCli, BuiltinSceneWritesPngOfRequestedSize) {
     fs::path dir = outputDir();
-    auto r = runProbebench({"render", "--scene", "cornell", "--width", "160", "--height", "90",
+    auto r = runProbebench({"render", "--scene", "courtyard", "--width", "160", "--height", "90",
                             "--out", (dir / "c.png").string(), "--out-hdr",
                             (dir / "c.pfm").string()});
     ASSERT_EQ(r.exitCode, 0) << r.output;
