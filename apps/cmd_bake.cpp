@@ -10,7 +10,6 @@
 #include "probes/VolumeFile.h"
 
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <unistd.h>
@@ -182,16 +181,13 @@ int run(const BakeArgs& a) {
     scene::Scene s = loadSceneWithOverrides(a.scene);
     BakeRequest req = buildRequest(a, s);
     const std::uint64_t hash = bakeInputHash(s, req);
-    if (!a.force && std::filesystem::exists(a.out)) {
-        try {
-            ProbeSet old = readProbeFile(a.out);
-            if (old.inputHash == hash) {
-                printSummary(a, old, nullptr, true);
-                return 0;
-            }
-        } catch (const Error& e) {
-            std::cerr << "note: re-baking, the existing file is unusable: " << e.what() << "\n";
+    if (!a.force) {
+        std::string why;
+        if (std::optional<ProbeSet> cached = readCachedProbeFile(a.out, hash, &why)) {
+            printSummary(a, *cached, nullptr, true);
+            return 0;
         }
+        if (why.rfind("unusable", 0) == 0) std::cerr << "note: re-baking, the old file is " << why << "\n";
     }
     long long probes = 0;
     for (const ProbeVolume& v : req.volumes) probes += v.probeCount();

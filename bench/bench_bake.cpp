@@ -18,6 +18,7 @@
 #include "scene/SceneLoader.h"
 
 #include <benchmark/benchmark.h>
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -133,27 +134,39 @@ void BM_BakeVsEmbree(benchmark::State& state) {
 }
 BENCHMARK(BM_BakeVsEmbree)->Iterations(1)->UseManualTime()->Unit(benchmark::kSecond);
 
+// range(0) = 0: points in random order (every lookup touches new probes, as scattered bake
+// hits do); 1: the same points sorted along x (neighbouring lookups share probes).
 void BM_SamplerLookup(benchmark::State& state) {
     Setup& s = setup();
     ProbeSampler sampler(s.baked, 0);
     const ProbeVolume& v = s.baked.volumes[0];
     std::uint64_t rng = 42;
-    std::vector<glm::vec3> points(4096), normals(4096);
-    for (size_t i = 0; i < points.size(); ++i) {
+    const size_t n = 1 << 16;
+    std::vector<glm::vec3> points(n), normals(n);
+    for (size_t i = 0; i < n; ++i) {
         points[i] = v.toWorld((glm::vec3(uniformFloat(rng), uniformFloat(rng), uniformFloat(rng)) *
                                    2.0f - 1.0f) * v.halfExtents);
         normals[i] = glm::normalize(glm::vec3(uniformFloat(rng), uniformFloat(rng),
                                               uniformFloat(rng)) - 0.5f);
     }
+    if (state.range(0) == 1) {
+        glm::vec3 cell = v.cellSize();
+        auto key = [&](const glm::vec3& p) {
+            glm::ivec3 c = glm::ivec3((v.toLocal(p) + v.halfExtents) / cell);
+            return (c.y * 64 + c.z) * 64 + c.x;
+        };
+        std::sort(points.begin(), points.end(),
+                  [&](const glm::vec3& a, const glm::vec3& b) { return key(a) < key(b); });
+    }
     size_t i = 0;
     for (auto _ : state) {
         IrradianceSample r = sampler.sample(points[i], normals[i], normals[i]);
         benchmark::DoNotOptimize(r);
-        i = (i + 1) & 4095;
+        i = (i + 1) & (n - 1);
     }
     state.SetItemsProcessed(state.iterations());
 }
-BENCHMARK(BM_SamplerLookup);
+BENCHMARK(BM_SamplerLookup)->Arg(0)->Arg(1);
 
 } // namespace
 

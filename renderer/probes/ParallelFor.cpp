@@ -65,6 +65,7 @@ void parallelFor(std::size_t count, int threads,
     }
     for (auto& th : pool) th.join();
     if (error) std::rethrow_exception(error);
+    if (tick) tick(done.load()); // the final count, however fast the work was
 }
 
 } // namespace pb::probes

@@ -6,6 +6,7 @@
 #include "probes/Hash.h"
 
 #include <cstring>
+#include <filesystem>
 
 namespace pb::probes {
 namespace {
@@ -185,5 +186,25 @@ void writeProbeFile(const std::string& path, const ProbeSet& set) {
 }
 
 ProbeSet readProbeFile(const std::string& path) { return parseProbeSet(readFileBytes(path), path); }
+
+std::optional<ProbeSet> readCachedProbeFile(const std::string& path, std::uint64_t inputHash,
+                                            std::string* why) {
+    auto say = [&](const std::string& s) {
+        if (why) *why = s;
+    };
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) {
+        say("no file yet");
+        return std::nullopt;
+    }
+    try {
+        ProbeSet set = readProbeFile(path);
+        if (set.inputHash == inputHash) return set;
+        say("inputs changed");
+    } catch (const Error& e) {
+        say(std::string("unusable: ") + e.what());
+    }
+    return std::nullopt;
+}
 
 } // namespace pb::probes

@@ -12,6 +12,7 @@
 #include "probes/ProbeSet.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace pb::probes {
@@ -25,5 +26,11 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
 
 void writeProbeFile(const std::string& path, const ProbeSet& set);
 ProbeSet readProbeFile(const std::string& path);
+
+// The bake cache: the probe set at `path` when it exists, reads cleanly and was baked from
+// inputs with hash `inputHash`; otherwise nothing, with `why` saying so (missing, stale, or
+// the read error) - a damaged file is re-baked, never trusted.
+std::optional<ProbeSet> readCachedProbeFile(const std::string& path, std::uint64_t inputHash,
+                                            std::string* why = nullptr);
 
 } // namespace pb::probes

@@ -142,3 +142,22 @@ TEST(ProbeFormat, HalfQuantisationClampsInsteadOfOverflowing) {
     EXPECT_EQ(quantiseHalf(NAN), 0.0f);
     EXPECT_NEAR(quantiseHalf(3.14159265f), 3.14159265f, 2e-3f);
 }
+
+TEST(ProbeFile, CacheReusesOnlyAnIntactFileWithTheSameInputs) {
+    ProbeSet set = smallBake(StorageFormat::Rgba16f);
+    auto path = (pb::test::outputDir() / "cache.pbp").string();
+    std::string why;
+    EXPECT_FALSE(readCachedProbeFile(path, set.inputHash, &why));
+    EXPECT_EQ(why, "no file yet");
+    writeProbeFile(path, set);
+    auto hit = readCachedProbeFile(path, set.inputHash, &why);
+    ASSERT_TRUE(hit);
+    EXPECT_EQ(hit->inputHash, set.inputHash);
+    EXPECT_FALSE(readCachedProbeFile(path, set.inputHash + 1, &why));
+    EXPECT_EQ(why, "inputs changed");
+    std::vector<std::uint8_t> bytes = serializeProbeSet(set);
+    bytes[bytes.size() / 2] ^= 1;
+    pb::writeFileAtomic(path, bytes.data(), bytes.size());
+    EXPECT_FALSE(readCachedProbeFile(path, set.inputHash, &why));
+    EXPECT_NE(why.find("checksum"), std::string::npos) << why;
+}

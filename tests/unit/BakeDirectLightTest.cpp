@@ -1,0 +1,110 @@
+// Direct light at bake hits (renderer/probes/DirectLight.h) against the analytic formulas,
+// and the work-sharing loop the bake runs on.
+#include "ProbeTestScenes.h"
+#include "probes/DirectLight.h"
+#include "probes/ParallelFor.h"
+
+#include <atomic>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <stdexcept>
+
+using namespace pb::probes;
+using namespace pb::test;
+
+namespace {
+
+Scenario noSun() {
+    Scenario s;
+    s.name = "test";
+    s.sun.enabled = false;
+    return s;
+}
+
+pb::scene::Light pointLight(glm::vec3 pos, float candela) {
+    pb::scene::Light l;
+    l.type = pb::scene::LightType::Point;
+    l.position = pos;
+    l.intensity = candela;
+    l.color = glm::vec3(1.0f);
+    return l;
+}
+
+} // namespace
+
+TEST(BakeDirectLight, SunIsIntensityTimesCosineAndShadowed) {
+    pb::scene::Scene s = emptyScene(glm::vec3(0.0f));
+    int m = addMaterial(s, glm::vec3(0.5f));
+    addInstance(s, boxPrimitive({-0.5f, 2, -0.5f}, {0.5f, 2.2f, 0.5f}, false, m)); // a roof
+    RayScene rs(s);
+    Scenario sc = noSun();
+    sc.sun.enabled = true;
+    sc.sun.intensity = 3.0f;
+    sc.sun.color = glm::vec3(1.0f);
+    sc.sun.toSun = glm::normalize(glm::vec3(1, 1, 0));
+    std::uint64_t shadow = 0;
+    glm::vec3 e = directIrradiance(rs, sc, {}, {5, 0, 0}, {0, 1, 0}, shadow);
+    EXPECT_NEAR(e.x, 3.0f * std::sqrt(0.5f), 1e-5f);
+    EXPECT_EQ(shadow, 1u);
+    sc.sun.toSun = glm::vec3(0, 1, 0);
+    EXPECT_EQ(directIrradiance(rs, sc, {}, {0, 0, 0}, {0, 1, 0}, shadow), glm::vec3(0.0f));
+    EXPECT_EQ(directIrradiance(rs, sc, {}, {5, 0, 0}, {0, -1, 0}, shadow), glm::vec3(0.0f));
+}
+
+TEST(BakeDirectLight, PointLightFollowsInverseSquareAndRange) {
+    pb::scene::Scene s = emptyScene(glm::vec3(0.0f));
+    RayScene rs(s);
+    std::uint64_t shadow = 0;
+    std::vector<pb::scene::Light> lights{pointLight({0, 2, 0}, 8.0f)};
+    EXPECT_NEAR(directIrradiance(rs, noSun(), lights, {0, 0, 0}, {0, 1, 0}, shadow).x, 2.0f, 1e-5f);
+    // 45 degrees off: cos / d^2 = 0.7071 / 8.
+    EXPECT_NEAR(directIrradiance(rs, noSun(), lights, {2, 0, 0}, {0, 1, 0}, shadow).x,
+                8.0f * std::sqrt(0.5f) / 8.0f, 1e-5f);
+    lights[0].range = 4.0f; // glTF window: (1 - (d/r)^4)^2 at d = 2 -> (15/16)^2
+    EXPECT_NEAR(directIrradiance(rs, noSun(), lights, {0, 0, 0}, {0, 1, 0}, shadow).x,
+                2.0f * (15.0f / 16.0f) * (15.0f / 16.0f), 1e-5f);
+    lights[0].range = 1.0f;
+    EXPECT_EQ(directIrradiance(rs, noSun(), lights, {0, 0, 0}, {0, 1, 0}, shadow).x, 0.0f);
+}
+
+TEST(BakeDirectLight, SpotConeAndShadowRays) {
+    pb::scene::Scene s = emptyScene(glm::vec3(0.0f));
+    int m = addMaterial(s, glm::vec3(0.5f));
+    addInstance(s, boxPrimitive({2.9f, 0.5f, -0.5f}, {3.1f, 1.5f, 0.5f}, false, m)); // occluder
+    RayScene rs(s);
+    pb::scene::Light spot = pointLight({0, 4, 0}, 16.0f);
+    spot.type = pb::scene::LightType::Spot;
+    spot.direction = {0, -1, 0};
+    spot.innerConeAngle = 0.2f;
+    spot.outerConeAngle = 0.4f;
+    std::uint64_t shadow = 0;
+    EXPECT_NEAR(directIrradiance(rs, noSun(), {spot}, {0, 0, 0}, {0, 1, 0}, shadow).x, 1.0f, 1e-5f);
+    EXPECT_EQ(directIrradiance(rs, noSun(), {spot}, {4, 0, 0}, {0, 1, 0}, shadow).x, 0.0f); // outside
+    // A point light whose path to the receiver crosses the occluder.
+    std::vector<pb::scene::Light> side{pointLight({6, 1, 0}, 9.0f)};
+    std::uint64_t before = shadow;
+    EXPECT_EQ(directIrradiance(rs, noSun(), side, {0, 1, 0}, {1, 0, 0}, shadow).x, 0.0f);
+    EXPECT_EQ(shadow, before + 1);
+    EXPECT_NEAR(directIrradiance(rs, noSun(), side, {0, 1, 3}, {0, 0, -1}, shadow).x,
+                9.0f / 45.0f * (3.0f / std::sqrt(45.0f)), 1e-5f);
+}
+
+TEST(BakeParallelFor, RunsEveryItemOnceAndRethrows) {
+    for (int threads : {1, 2, 5}) {
+        std::vector<std::atomic<int>> hits(1000);
+        parallelFor(hits.size(), threads, [&](std::size_t i, int t) {
+            EXPECT_LT(t, threads);
+            ++hits[i];
+        });
+        for (auto& h : hits) EXPECT_EQ(h.load(), 1);
+    }
+    std::size_t lastTick = 0;
+    parallelFor(64, 2, [](std::size_t, int) {}, [&](std::size_t done) { lastTick = done; });
+    EXPECT_EQ(lastTick, 64u);
+    EXPECT_THROW(parallelFor(100, 2,
+                             [](std::size_t i, int) {
+                                 if (i == 37) throw std::runtime_error("boom");
+                             }),
+                 std::runtime_error);
+    parallelFor(0, 2, [](std::size_t, int) { FAIL(); });
+}
