@@ -1,5 +1,7 @@
 // Deferred direct lighting: sun (shadow-mapped), punctual lights, emissive, and the indirect
-// irradiance input (a constant ambient until the GI passes fill it). Output: linear radiance.
+// irradiance input: the GI evaluation target where a probe volume covers the pixel
+// (GI_ENABLED), blended by its weight with the hemispherical ambient, which stays the fallback
+// outside every volume (and the whole input without GI). Output: linear radiance.
 #include "common_octahedral.glsl"
 in vec2 v_uv;
 out vec4 out_radiance;
@@ -26,6 +28,28 @@ uniform vec4 u_lightColor[MAX_LIGHTS];     // rgb colour * intensity
 uniform vec4 u_lightCone[MAX_LIGHTS];      // x: cos outer, y: cos inner
 
 const float PI = 3.14159265358979;
+
+#ifdef GI_ENABLED
+uniform highp sampler2D u_giIrradiance; // gi_ddgi_apply.frag's target
+vec3 indirectIrradiance(vec3 n, ivec2 px) {
+    vec3 ambient = mix(u_ambientDown, u_ambientUp, n.y * 0.5 + 0.5);
+#ifdef GI_RESOLUTION_FULL
+    vec4 gi = texelFetch(u_giIrradiance, px, 0);
+#else
+    vec4 gi = texture(u_giIrradiance, v_uv); // bilinear upsample (better modes: next issue)
+#endif
+#ifdef GI_TARGET_R11G11B10F
+    // No alpha: the apply pass blended the ambient in; all zero = no volume drew here.
+    return gi.rgb == vec3(0.0) ? ambient : gi.rgb;
+#else
+    return gi.rgb + (1.0 - gi.a) * ambient;
+#endif
+}
+#else
+vec3 indirectIrradiance(vec3 n, ivec2 px) {
+    return mix(u_ambientDown, u_ambientUp, n.y * 0.5 + 0.5);
+}
+#endif
 
 float sunShadow(vec3 rel, vec3 n) {
     vec4 s = u_shadowFromRel * vec4(rel + n * u_shadowNormalOffset, 1.0);
@@ -80,7 +104,7 @@ void main() {
     vec3 n = octDecode(texelFetch(u_gbuffer_normal, px, 0).xy);
     vec3 emissive = texelFetch(u_gbuffer_emissive, px, 0).rgb;
 
-    vec3 irradiance = mix(u_ambientDown, u_ambientUp, n.y * 0.5 + 0.5) + punctualIrradiance(rel, n);
+    vec3 irradiance = indirectIrradiance(n, px) + punctualIrradiance(rel, n);
     if (u_sunEnabled != 0) {
         float ndl = max(dot(n, u_toSun), 0.0);
         if (ndl > 0.0) irradiance += u_sunIrradiance * ndl * sunShadow(rel, n);

@@ -6,7 +6,9 @@
 #include "passes/CompositePass.h"
 #include "passes/DirectLightingPass.h"
 #include "passes/GBufferPass.h"
+#include "passes/GiApplyPass.h"
 #include "passes/ShadowPass.h"
+#include "profile/VolumeLod.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -20,10 +22,17 @@ FrameSettings defaultFrameSettings(const scene::Scene& scene) {
     return s;
 }
 
-FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& settings)
+FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& settings,
+                             const GiOptions& gi)
     : gpu_(scene), settings_(settings), quirks_(gl::detectDriverQuirks()) {
     passes_.push_back(std::make_unique<ShadowPass>());
     passes_.push_back(std::make_unique<GBufferPass>());
+    if (gi.probes) {
+        checkGiProfileSupported(gi.profile);
+        probes_ = std::make_unique<GpuProbes>(*gi.probes, gi.scenario,
+                                              profile::parseVolumeLod(gi.profile.gi.volumeLod));
+        passes_.push_back(std::make_unique<GiApplyPass>(*probes_, gi.profile));
+    }
     passes_.push_back(std::make_unique<DirectLightingPass>());
     passes_.push_back(std::make_unique<CompositePass>());
 }
@@ -35,7 +44,7 @@ void FrameRenderer::render(const RenderView& view) {
         targets_->gbuffer.height() != view.height)
         targets_ = std::make_unique<FrameTargets>(view.width, view.height);
     lastView_ = view;
-    FrameContext ctx{gpu_, view, settings_, programs_, *targets_, quirks_, {}};
+    FrameContext ctx{gpu_, view, settings_, programs_, *targets_, quirks_, {}, {}};
     for (auto& pass : passes_) pass->execute(ctx);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glUseProgram(0);

@@ -1,9 +1,13 @@
 #pragma once
-// Builds the pass list and runs frames: shadow -> gbuffer -> direct -> composite. Owns the
-// scene's GPU resources, the program cache and the render targets (re-created when the
-// resolution changes). Requires a current GL context (platforms/).
+// Builds the pass list and runs frames: shadow -> gbuffer -> [gi-apply] -> direct ->
+// composite. Owns the scene's GPU resources, the probes' GPU copy, the program cache and the
+// render targets (re-created when the resolution changes). Requires a current GL context
+// (platforms/). Without probes there is no GI pass and no GI resource at all.
 #include "image/Image.h"
 #include "passes/FrameContext.h"
+#include "passes/GpuProbes.h"
+#include "probes/ProbeSet.h"
+#include "profile/Profile.h"
 
 #include <memory>
 #include <string>
@@ -16,15 +20,23 @@ namespace pb::render {
 // passes fill the indirect input).
 FrameSettings defaultFrameSettings(const scene::Scene& scene);
 
+// Baked probes for the GI apply pass; the set is only read during construction (uploaded).
+struct GiOptions {
+    const probes::ProbeSet* probes = nullptr; // null: no GI
+    int scenario = 0;
+    profile::Profile profile;
+};
+
 class FrameRenderer {
 public:
-    FrameRenderer(const scene::Scene& scene, const FrameSettings& settings);
+    FrameRenderer(const scene::Scene& scene, const FrameSettings& settings,
+                  const GiOptions& gi = {});
     ~FrameRenderer();
 
     void render(const RenderView& view);
 
-    image::Image8 readOutput() const;     // tonemapped sRGB, 8-bit
-    image::ImageF readRadiance() const;   // linear HDR radiance (RGBA, alpha = 1)
+    image::Image8 readOutput() const;   // tonemapped sRGB, 8-bit
+    image::ImageF readRadiance() const; // linear HDR radiance (RGBA, alpha = 1)
     // Writes every GBuffer channel (PNG for colours and normals, PFM for HDR and depth).
     void dumpGBuffer(const std::string& dir);
     // Copies the output to the default framebuffer of a window of size w x h.
@@ -34,12 +46,14 @@ public:
     FrameSettings& settings() { return settings_; }
     gl::ProgramCache& programs() { return programs_; }
     const FrameTargets* targets() const { return targets_.get(); }
+    const GpuProbes* gpuProbes() const { return probes_.get(); } // null without GI
 
 private:
     GpuScene gpu_;
     FrameSettings settings_;
     gl::ProgramCache programs_;
     gl::DriverQuirks quirks_;
+    std::unique_ptr<GpuProbes> probes_;
     std::unique_ptr<FrameTargets> targets_;
     std::vector<std::unique_ptr<Pass>> passes_;
     RenderView lastView_;

@@ -6,7 +6,9 @@
 namespace pb::render {
 
 namespace {
-std::string at(const char* name, int i) { return std::string(name) + "[" + std::to_string(i) + "]"; }
+std::string at(const char* name, int i) {
+    return std::string(name) + "[" + std::to_string(i) + "]";
+}
 
 void setLights(const gl::Program& prog, const scene::Scene& s, const RenderView& view) {
     int count = std::min<int>(int(s.lights.size()), DirectLightingPass::kMaxLights);
@@ -28,7 +30,10 @@ void setLights(const gl::Program& prog, const scene::Scene& s, const RenderView&
 void DirectLightingPass::execute(FrameContext& frame) {
     const scene::Scene& s = frame.scene.scene();
     frame.targets.radianceFbo.bind();
-    const gl::Program& prog = frame.programs.get("fullscreen.vert", "lighting_direct.frag");
+    // Without probes: the variant without defines (what the golden images were made with).
+    const gl::Program& prog =
+        frame.programs.get("fullscreen.vert", "lighting_direct.frag",
+                           frame.gi.enabled ? frame.gi.defines : gl::Defines{});
     prog.use();
     frame.targets.gbuffer.bindForReading(prog, 0);
     int shadowUnit = gbufferDepthUnit(0) + 1;
@@ -47,9 +52,14 @@ void DirectLightingPass::execute(FrameContext& frame) {
         prog.set("u_shadowTexel", frame.shadow.texel);
         prog.set("u_shadowNormalOffset", frame.shadow.normalOffset);
     }
+    const int giUnit = shadowUnit + 1;
+    if (frame.gi.enabled) {
+        frame.gi.irradiance->bind(giUnit);
+        prog.set("u_giIrradiance", giUnit);
+    }
     setLights(prog, s, frame.view);
     drawFullscreenTriangle(frame.targets);
-    for (int u = 0; u <= shadowUnit; ++u) {
+    for (int u = 0; u <= giUnit; ++u) {
         glActiveTexture(GL_TEXTURE0 + u);
         glBindTexture(GL_TEXTURE_2D, 0);
     }

@@ -1,6 +1,7 @@
 #pragma once
 // Deferred lighting into the linear radiance target: sun with shadows, punctual lights,
-// emissive, and albedo x indirect irradiance (constant ambient until GI provides it).
+// emissive, and albedo x indirect irradiance (the GI target blended with the ambient by its
+// weight when the GI apply pass ran, else the ambient alone).
 #include "passes/FrameContext.h"
 
 namespace pb::render {

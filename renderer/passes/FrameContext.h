@@ -31,6 +31,13 @@ struct ShadowResult {
     glm::vec2 texel{0.0f};
 };
 
+// The GI evaluation target the apply pass filled, for the lighting (absent without probes).
+struct GiResult {
+    bool enabled = false;
+    const gl::Texture* irradiance = nullptr; // layout: gi_ddgi_apply.frag
+    gl::Defines defines;                     // the profile's GI variant defines + GI_ENABLED
+};
+
 // Render targets for one output resolution.
 struct FrameTargets {
     FrameTargets(int width, int height);
@@ -50,6 +57,7 @@ struct FrameContext {
     FrameTargets& targets;
     const gl::DriverQuirks& quirks;
     ShadowResult shadow;
+    GiResult gi;
 };
 
 class Pass {

@@ -1,0 +1,195 @@
+#include "passes/GpuProbes.h"
+
+#include "core/Error.h"
+#include "gl/Capabilities.h"
+#include "passes/GiVolumeLod.h"
+#include "probes/ProbeSampler.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+
+namespace pb::render {
+
+namespace {
+
+using probes::StorageFormat;
+
+gl::TextureFormat irradianceFormat(StorageFormat f) {
+    return f == StorageFormat::Rgba32f ? gl::TextureFormat::RGBA32F
+           : f == StorageFormat::Bc6h  ? gl::TextureFormat::BC6H_UF16
+                                       : gl::TextureFormat::RGBA16F;
+}
+gl::TextureFormat visibilityFormat(StorageFormat f) {
+    return f == StorageFormat::Rgba32f ? gl::TextureFormat::RG32F
+           : f == StorageFormat::Bc6h  ? gl::TextureFormat::BC6H_UF16
+                                       : gl::TextureFormat::RG16F;
+}
+
+// Uploads `t.stored` as is: half floats as GL_HALF_FLOAT (the file's bits, never re-rounded
+// from float), 32-bit floats as GL_FLOAT, BC6H blocks compressed.
+gl::Texture uploadProbeTexture(const probes::ProbeTexture& t, gl::TextureFormat format,
+                               StorageFormat storage, const std::string& what) {
+    gl::TextureDesc d;
+    d.format = format;
+    d.width = t.shape.width;
+    d.height = t.shape.height;
+    d.layers = t.shape.layers;
+    d.filter = gl::Filter::Linear; // the sampler's bilinear; tile borders keep it in the tile
+    gl::Texture tex(d);
+    if (t.stored.size() != gl::textureBytes(format, d.width, d.height, d.layers))
+        throw Error(what + ": " + std::to_string(t.stored.size()) + " stored bytes, expected " +
+                    std::to_string(gl::textureBytes(format, d.width, d.height, d.layers)));
+    if (storage == StorageFormat::Rgba16f) {
+        const gl::FormatInfo& fi = gl::formatInfo(format);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, tex.id());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        glTexSubImage3D(GL_TEXTURE_2D_ARRAY, 0, 0, 0, 0, d.width, d.height, d.layers, fi.format,
+                        GL_HALF_FLOAT, t.stored.data());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    } else {
+        tex.upload(t.stored.data());
+    }
+    return tex;
+}
+
+gl::Texture uploadStates(const probes::ProbeVolume& v, const std::vector<probes::ProbeState>& s) {
+    std::vector<float> texels;
+    texels.reserve(s.size() * 4);
+    for (const probes::ProbeState& p : s) // probe index order = texel order of (i, k, layer j)
+        texels.insert(texels.end(), {p.offset.x, p.offset.y, p.offset.z, p.valid ? 1.0f : 0.0f});
+    gl::TextureDesc d;
+    d.format = gl::TextureFormat::RGBA32F;
+    d.width = v.counts.x;
+    d.height = v.counts.z;
+    d.layers = v.counts.y;
+    d.filter = gl::Filter::Nearest;
+    gl::Texture tex(d);
+    tex.upload(texels.data());
+    return tex;
+}
+
+void fillParameters(GpuProbeVolume& g, const probes::ProbeVolume& v) {
+    // The same float expressions as ProbeSampler::init, so both sides round alike.
+    g.center = glm::dvec3(v.center);
+    g.toLocal = glm::transpose(v.localToWorldRotation());
+    g.half = v.halfExtents;
+    g.counts = v.counts;
+    const glm::vec3 cell = v.cellSize();
+    for (int a = 0; a < 3; ++a) {
+        bool grid = v.counts[a] > 1;
+        g.invCell[a] = grid ? 1.0f / cell[a] : 0.0f;
+        g.gridOrigin[a] = grid ? -v.halfExtents[a] : 0.0f;
+        g.gridStep[a] = grid ? cell[a] : 0.0f;
+    }
+    g.fadeWidth = g.root ? probes::kEdgeFadeCells * cell : glm::vec3(0.0f);
+    g.biasDistance = probes::kBiasScale * v.minCellSize();
+    g.invMaxDistance = 1.0f / v.maxDistance();
+    g.boxVolume = v.boxVolume();
+}
+
+std::string glslFloat(float v) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.9g", double(v));
+    std::string s = buf;
+    if (s.find_first_of(".e") == std::string::npos) s += ".0";
+    return s;
+}
+
+} // namespace
+
+gl::Defines ddgiConstantDefines() {
+    using namespace probes;
+    return {
+        {"DDGI_BIAS_NORMAL", glslFloat(kBiasNormalWeight)},
+        {"DDGI_BIAS_VIEW", glslFloat(kBiasViewWeight)},
+        {"DDGI_WRAP_BIAS", glslFloat(kWrapBias)},
+        {"DDGI_CHEBYSHEV_FLOOR", glslFloat(kChebyshevFloor)},
+        {"DDGI_VARIANCE_FLOOR", glslFloat(kVarianceFloor)},
+        {"DDGI_CRUSH_THRESHOLD", glslFloat(kCrushThreshold)},
+        {"DDGI_MIN_TRILINEAR", glslFloat(kMinTrilinear)},
+        {"DDGI_IRR_INTERIOR", glslFloat(float(kIrradianceInterior))},
+        {"DDGI_IRR_TILE", glslFloat(float(kIrradianceTile))},
+        {"DDGI_VIS_INTERIOR", glslFloat(float(kVisibilityInterior))},
+        {"DDGI_VIS_TILE", glslFloat(float(kVisibilityTile))},
+    };
+}
+
+GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::VolumeLod& lod)
+    : format_(set.format()) {
+    if (scenario < 0 || size_t(scenario) >= set.scenarios.size() ||
+        size_t(scenario) >= set.irradiance.size())
+        throw Error("probe set: no scenario #" + std::to_string(scenario));
+    scenario_ = set.scenarios[size_t(scenario)].name;
+    if (format_ != StorageFormat::Rgba16f) {
+        const gl::GlCaps caps = gl::queryCaps();
+        if (format_ == StorageFormat::Rgba32f && !caps.floatLinearFilter)
+            throw Error("rgba32f probes need linear filtering of 32-bit float textures "
+                        "(OES_texture_float_linear), which this GL lacks");
+        if (format_ == StorageFormat::Bc6h && !caps.bptc)
+            throw Error("bc6h probes need BPTC textures, which this GL lacks");
+    }
+    const std::vector<int> parents = probes::validateVolumes(set.volumes, "probe set");
+    for (int vi : selectVolumes(set, lod)) {
+        const probes::ProbeVolume& v = set.volumes[size_t(vi)];
+        const std::string what = "probe volume '" + v.name + "'";
+        GpuProbeVolume g;
+        g.name = v.name;
+        g.fileIndex = vi;
+        g.root = parents[size_t(vi)] < 0;
+        g.irradiance = uploadProbeTexture(set.irradiance[size_t(scenario)][size_t(vi)],
+                                          irradianceFormat(format_), format_, what + " irradiance");
+        g.visibility = uploadProbeTexture(set.visibility[size_t(vi)], visibilityFormat(format_),
+                                          format_, what + " visibility");
+        if (set.states[size_t(vi)].size() != size_t(v.probeCount()))
+            throw Error(what + ": probe state count does not match its grid");
+        g.state = uploadStates(v, set.states[size_t(vi)]);
+        fillParameters(g, v);
+        volumes_.push_back(std::move(g));
+    }
+}
+
+std::size_t GpuProbes::bytes() const {
+    std::size_t total = 0;
+    for (const GpuProbeVolume& v : volumes_)
+        total += v.bytes();
+    return total;
+}
+
+std::vector<int> GpuProbes::drawOrder() const {
+    std::vector<int> order(volumes_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        const GpuProbeVolume &va = volumes_[size_t(a)], &vb = volumes_[size_t(b)];
+        if (va.boxVolume != vb.boxVolume) return va.boxVolume > vb.boxVolume;
+        return va.fileIndex > vb.fileIndex;
+    });
+    return order;
+}
+
+void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,
+                           const glm::dvec3& origin) const {
+    const GpuProbeVolume& g = volumes_[size_t(v)];
+    g.irradiance.bind(firstUnit);
+    g.visibility.bind(firstUnit + 1);
+    g.state.bind(firstUnit + 2);
+    program.set("u_ddgiIrradiance", firstUnit);
+    program.set("u_ddgiVisibility", firstUnit + 1);
+    program.set("u_ddgiState", firstUnit + 2);
+    program.set("u_ddgiCenter", glm::vec3(g.center - origin));
+    program.set("u_ddgiToLocal", g.toLocal);
+    program.set("u_ddgiHalf", g.half);
+    program.set("u_ddgiFadeWidth", g.fadeWidth);
+    program.set("u_ddgiInvCell", g.invCell);
+    program.set("u_ddgiGridOrigin", g.gridOrigin);
+    program.set("u_ddgiGridStep", g.gridStep);
+    program.set("u_ddgiCounts", g.counts);
+    program.set("u_ddgiBiasDistance", g.biasDistance);
+    program.set("u_ddgiInvMaxDistance", g.invMaxDistance);
+    const gl::TextureDesc &irr = g.irradiance.desc(), &vis = g.visibility.desc();
+    program.set("u_ddgiIrrInvSize", glm::vec2(1.0f / float(irr.width), 1.0f / float(irr.height)));
+    program.set("u_ddgiVisInvSize", glm::vec2(1.0f / float(vis.width), 1.0f / float(vis.height)));
+}
+
+} // namespace pb::render

@@ -1,0 +1,67 @@
+#pragma once
+// One scenario of a probe set on the GPU, exactly in its stored format: per volume two 2D
+// texture arrays (irradiance RGBA16F / RGBA32F / BC6H, visibility RG16F / RG32F / BC6H, one
+// layer per probe plane along local Y) and a per-probe state array (RGBA32F: relocation offset
+// in local axes, w = 1 valid / 0 invalid; texel (i, k, layer j) like the probe tiles), plus
+// the per-volume parameters common_ddgi.glsl reads as uniforms. Volumes left out by
+// gi.volume_lod are never created (no GPU memory). Requires a current GL context.
+#include "gl/Program.h"
+#include "gl/ShaderSource.h"
+#include "gl/Texture.h"
+#include "probes/ProbeSet.h"
+#include "profile/VolumeLod.h"
+
+#include <glm/glm.hpp>
+#include <string>
+#include <vector>
+
+namespace pb::render {
+
+struct GpuProbeVolume {
+    std::string name;
+    int fileIndex = 0; // index in the probe set
+    bool root = true;
+    gl::Texture irradiance, visibility, state;
+    // What common_ddgi.glsl needs, computed as the CPU sampler computes it (float).
+    glm::dvec3 center{0.0};
+    glm::mat3 toLocal{1.0f};
+    glm::vec3 half{0.0f}, fadeWidth{0.0f}, invCell{0.0f}, gridOrigin{0.0f}, gridStep{0.0f};
+    glm::ivec3 counts{1};
+    float biasDistance = 0, invMaxDistance = 0, boxVolume = 0;
+    std::size_t bytes() const { return irradiance.bytes() + visibility.bytes() + state.bytes(); }
+};
+
+class GpuProbes {
+public:
+    // Throws pb::Error for a bad scenario index, texture bytes that do not match the shapes,
+    // or a GL that cannot sample the format (BC6H without BPTC).
+    GpuProbes(const probes::ProbeSet& set, int scenario, const profile::VolumeLod& lod = {});
+
+    const std::vector<GpuProbeVolume>& volumes() const { return volumes_; }
+    std::size_t bytes() const; // GPU memory of everything uploaded
+    const std::string& scenarioName() const { return scenario_; }
+    probes::StorageFormat format() const { return format_; }
+
+    // Indices into volumes() in draw order for "each draw overwrites": largest box first, and
+    // among equal boxes the later file index first, so the last draw that covers a pixel is
+    // the CPU sampler's choice (smallest box, ties: first in the file).
+    std::vector<int> drawOrder() const;
+
+    // Binds volume v's textures to units firstUnit..firstUnit+2 and sets the u_ddgi* uniforms
+    // of the program in use. `origin` is the origin of the shader's space in world units (the
+    // eye for camera-relative rendering, 0 for world space).
+    void bindVolume(const gl::Program& program, int v, int firstUnit,
+                    const glm::dvec3& origin) const;
+    static constexpr int kUnitsPerVolume = 3;
+
+private:
+    std::vector<GpuProbeVolume> volumes_;
+    std::string scenario_;
+    probes::StorageFormat format_ = probes::StorageFormat::Rgba16f;
+};
+
+// The sampler's constants (renderer/probes/ProbeSampler.h) as DDGI_* shader defines, so the
+// GLSL port can never drift from the CPU reference.
+gl::Defines ddgiConstantDefines();
+
+} // namespace pb::render

@@ -1,0 +1,157 @@
+// The DDGI irradiance lookup of ONE probe volume: the GLSL port of the CPU reference sampler
+// (renderer/probes/ProbeSampler.cpp; renderer/probes/README.md "The sampler" is the spec).
+// Same steps in the same order with the same float constants (DDGI_* defines, generated from
+// ProbeSampler.h by renderer/passes/GpuProbes.cpp), so the two agree to 1e-3 relative.
+// Used by the apply pass (gi_ddgi_apply.frag) and the point evaluator (gi_ddgi_points.frag):
+// one function, never a copy. The caller picks the volume (one draw per volume) and space
+// (camera-relative in the apply pass, world in the point evaluator: u_ddgiCenter follows).
+//
+// Variants: GI_LOOPS_FUSED | GI_LOOPS_SPLIT, GI_ORDER_XYZ | GI_ORDER_SLICE_FIRST.
+uniform highp sampler2DArray u_ddgiIrradiance; // RGB = E, tiles of DDGI_IRR_TILE^2 texels
+uniform highp sampler2DArray u_ddgiVisibility; // RG = mean, mean^2 of distance / maxDistance
+uniform highp sampler2DArray u_ddgiState;      // per probe: xyz relocation (local), w = valid
+uniform vec3 u_ddgiCenter;        // volume centre in the caller's space
+uniform mat3 u_ddgiToLocal;       // R^T: caller's axes -> volume axes
+uniform vec3 u_ddgiHalf;          // half extents
+uniform vec3 u_ddgiFadeWidth;     // roots: edge fade width per axis; children: 0
+uniform vec3 u_ddgiInvCell;       // 1 / cell; 0 on axes with one probe
+uniform vec3 u_ddgiGridOrigin;    // probe (i,j,k) at origin + (i,j,k) * step (+ relocation)
+uniform vec3 u_ddgiGridStep;
+uniform ivec3 u_ddgiCounts;
+uniform float u_ddgiBiasDistance; // DDGI_BIAS_SCALE * minCell, rounded on the CPU like there
+uniform float u_ddgiInvMaxDistance;
+uniform vec2 u_ddgiIrrInvSize;    // 1 / (width, height) of an irradiance layer
+uniform vec2 u_ddgiVisInvSize;
+
+vec3 ddgiLocal(vec3 pos) { return u_ddgiToLocal * (pos - u_ddgiCenter); }
+
+// The volume's influence region: a child's box, a root's box grown by the fade width.
+bool ddgiInfluences(vec3 local) {
+    return all(lessThanEqual(abs(local), u_ddgiHalf + u_ddgiFadeWidth));
+}
+
+vec3 ddgiSafeNormalize(vec3 v, vec3 fallback) {
+    float len = length(v);
+    return len > 0.0 ? v / len : fallback;
+}
+
+// renderer/probes/Octahedral.h: +Y at the centre, the lower hemisphere folded to the corners.
+vec2 ddgiOctEncode(vec3 d) {
+    float l1 = abs(d.x) + abs(d.y) + abs(d.z);
+    vec2 uv = d.xz / l1;
+    if (d.y < 0.0) {
+        vec2 s = vec2(uv.x >= 0.0 ? 1.0 : -1.0, uv.y >= 0.0 ? 1.0 : -1.0);
+        uv = (1.0 - abs(uv.yx)) * s;
+    }
+    return uv;
+}
+
+// Tile-local continuous texel coordinate of `dir` (the 1-texel border included).
+vec2 ddgiTileLocal(vec3 dir, float interior) {
+    return (ddgiOctEncode(dir) * 0.5 + 0.5) * interior + 1.0;
+}
+
+// Corner i (0..7) of the 8 surrounding probes as an offset in {0,1}^3.
+ivec3 ddgiCorner(int i) {
+#ifdef GI_ORDER_SLICE_FIRST
+    // The 4 probes of one texture slice (local Y plane) before the next slice.
+    return ivec3(i & 1, (i >> 2) & 1, (i >> 1) & 1);
+#else
+    return ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+#endif
+}
+
+// Visibility-and-position weight of probe q (README steps 4a-4d); < 0 when q is skipped.
+float ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, vec3 n, vec3 biased, vec3 alpha) {
+    if (any(greaterThanEqual(q, u_ddgiCounts))) return -1.0;
+    vec4 state = texelFetch(u_ddgiState, ivec3(q.x, q.z, q.y), 0);
+    if (state.w < 0.5) return -1.0;
+    vec3 probe = u_ddgiGridOrigin + vec3(q) * u_ddgiGridStep + state.xyz;
+
+    // 4a. Wrap shading: probes behind the surface count less (never zero).
+    vec3 dirToProbe = ddgiSafeNormalize(probe - p, n);
+    float t = (dot(dirToProbe, n) + 1.0) * 0.5;
+    float w = t * t + DDGI_WRAP_BIAS;
+
+    // 4b. Chebyshev visibility from the probe towards the biased point.
+    vec3 toPoint = biased - probe;
+    float dist = length(toPoint);
+    vec3 dir = dist > 0.0 ? toPoint / dist : n;
+    vec2 visCoord = (vec2(q.xz) * DDGI_VIS_TILE + ddgiTileLocal(dir, DDGI_VIS_INTERIOR)) *
+                    u_ddgiVisInvSize;
+    vec2 vis = texture(u_ddgiVisibility, vec3(visCoord, float(q.y))).rg;
+    float d01 = dist * u_ddgiInvMaxDistance;
+    if (d01 > vis.x) {
+        float variance = max(vis.y - vis.x * vis.x, DDGI_VARIANCE_FLOOR);
+        float dd = d01 - vis.x;
+        float cheb = variance / (variance + dd * dd);
+        w *= max(cheb * cheb * cheb, DDGI_CHEBYSHEV_FLOOR);
+    }
+
+    // 4c. Crush tiny weights.
+    if (w < DDGI_CRUSH_THRESHOLD) w *= (w * w) / (DDGI_CRUSH_THRESHOLD * DDGI_CRUSH_THRESHOLD);
+
+    // 4d. Trilinear.
+    float tri = (off.x != 0 ? alpha.x : 1.0 - alpha.x) * (off.y != 0 ? alpha.y : 1.0 - alpha.y) *
+                (off.z != 0 ? alpha.z : 1.0 - alpha.z);
+    return w * max(tri, DDGI_MIN_TRILINEAR);
+}
+
+vec3 ddgiProbeIrradiance(ivec3 q, vec2 irrLocal) {
+    vec2 c = (vec2(q.xz) * DDGI_IRR_TILE + irrLocal) * u_ddgiIrrInvSize;
+    return texture(u_ddgiIrradiance, vec3(c, float(q.y))).rgb;
+}
+
+// Irradiance at `pos` (caller's space) for surface normal `normal` seen from direction `view`
+// (surface -> viewer; need not be unit). rgb = E * fade, a = weight (fade; 0 = no data).
+vec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
+    // 1. Local frame.
+    vec3 p = ddgiLocal(pos);
+    vec3 n = ddgiSafeNormalize(u_ddgiToLocal * normal, vec3(0.0, 1.0, 0.0));
+    vec3 v = ddgiSafeNormalize(u_ddgiToLocal * view, n);
+
+    // 2. Edge fade (roots; children have a zero fade width and fade 0 outside the box).
+    float fade = 1.0;
+    for (int a = 0; a < 3; ++a) {
+        float outside = abs(p[a]) - u_ddgiHalf[a];
+        if (outside > 0.0)
+            fade *= u_ddgiFadeWidth[a] > 0.0
+                        ? clamp(1.0 - outside / u_ddgiFadeWidth[a], 0.0, 1.0) : 0.0;
+    }
+    if (fade <= 0.0) return vec4(0.0);
+
+    // 3. Surface bias; base probe from the unbiased point, fractions from the biased one.
+    vec3 biased = p + (DDGI_BIAS_NORMAL * n + DDGI_BIAS_VIEW * v) * u_ddgiBiasDistance;
+    vec3 g = clamp((p + u_ddgiHalf) * u_ddgiInvCell, vec3(0.0),
+                   vec3(max(u_ddgiCounts - 2, ivec3(0))));
+    ivec3 base = ivec3(floor(g));
+    vec3 alpha = clamp((biased + u_ddgiHalf) * u_ddgiInvCell - vec3(base), 0.0, 1.0);
+
+    // 4. The 8 surrounding probes.
+    vec2 irrLocal = ddgiTileLocal(n, DDGI_IRR_INTERIOR);
+    vec3 sumE = vec3(0.0);
+    float sumW = 0.0;
+#ifdef GI_LOOPS_SPLIT
+    // All visibility weights first (the visibility fetches back to back), then irradiance.
+    float weights[8];
+    for (int i = 0; i < 8; ++i)
+        weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), p, n, biased, alpha);
+    for (int i = 0; i < 8; ++i) {
+        if (weights[i] < 0.0) continue;
+        sumE += weights[i] * ddgiProbeIrradiance(base + ddgiCorner(i), irrLocal);
+        sumW += weights[i];
+    }
+#else
+    for (int i = 0; i < 8; ++i) {
+        ivec3 off = ddgiCorner(i);
+        float w = ddgiProbeWeight(base + off, off, p, n, biased, alpha);
+        if (w < 0.0) continue;
+        sumE += w * ddgiProbeIrradiance(base + off, irrLocal);
+        sumW += w;
+    }
+#endif
+
+    // 5. Normalise, then fade.
+    if (!(sumW > 0.0)) return vec4(0.0);
+    return vec4(sumE / sumW * fade, fade);
+}

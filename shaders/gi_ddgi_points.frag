@@ -1,0 +1,17 @@
+// The DDGI lookup at arbitrary points (tests, accuracy tools): texel (x, y) reads its world
+// position, normal and view direction from three RGBA32F textures and writes what the apply
+// pass would compute there (common_ddgi.glsl, the same code). One draw per volume, like the
+// apply pass: points outside the drawn volume's influence keep what an earlier draw wrote.
+#include "common_ddgi.glsl"
+out vec4 out_gi;
+uniform highp sampler2D u_pointPosition;
+uniform highp sampler2D u_pointNormal;
+uniform highp sampler2D u_pointView;
+
+void main() {
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    vec3 pos = texelFetch(u_pointPosition, px, 0).xyz;
+    if (!ddgiInfluences(ddgiLocal(pos))) discard;
+    out_gi = ddgiSample(pos, texelFetch(u_pointNormal, px, 0).xyz,
+                        texelFetch(u_pointView, px, 0).xyz);
+}
