@@ -1,5 +1,6 @@
 // probebench render: one frame of a scene to PNG (and optionally PFM and GBuffer dumps), or an
-// interactive window with --platform glfw.
+// interactive window with --platform glfw. With --probes FILE the frame has DDGI from the baked
+// probes, shaped by the profile switches (--set key=value, renderer/profile/SwitchTable.cpp).
 #include "CommandRegistry.h"
 #include "FlyCamera.h"
 #include "PlatformOptions.h"
@@ -8,6 +9,8 @@
 #include "frame/FrameRenderer.h"
 #include "gl/DebugOutput.h"
 #include "image/Image.h"
+#include "probes/ProbeFile.h"
+#include "profile/SwitchTable.h"
 
 #include <chrono>
 #include <filesystem>
@@ -25,7 +28,19 @@ struct RenderArgs {
     std::string out, outHdr, dumpDir;
     float exposure = 0.0f; // 0 = the scene's
     int frames = 0;        // glfw: frames before closing (0 = until ESC)
+    std::string probes, scenario;
+    std::vector<std::string> sets; // --set key=value
+    bool listSwitches = false;
 };
+
+int scenarioIndex(const probes::ProbeSet& set, const RenderArgs& a) {
+    if (a.scenario.empty()) return 0;
+    int i = set.findScenario(a.scenario);
+    if (i >= 0) return i;
+    std::string names;
+    for (const auto& s : set.scenarios) names += (names.empty() ? "" : ", ") + s.name;
+    throw Error("--scenario: '" + a.scenario + "' is not in " + a.probes + " (" + names + ")");
+}
 
 void ensureParentFolder(const std::string& path) {
     auto parent = std::filesystem::path(path).parent_path();
@@ -69,12 +84,29 @@ int runInteractive(platform::Platform& p, render::FrameRenderer& r, const scene:
 }
 
 int run(RenderArgs& a) {
+    profile::Profile prof;
+    for (const std::string& kv : a.sets) prof.applyOverride(kv);
+    if (a.listSwitches) {
+        std::cout << profile::describeSwitchesText(prof);
+        return 0;
+    }
+    if (!a.sets.empty() && a.probes.empty())
+        throw Error("--set: the GI switches need --probes FILE");
+    if (!a.scenario.empty() && a.probes.empty()) throw Error("--scenario needs --probes FILE");
     if (a.width < 1 || a.height < 1 || a.width > 16384 || a.height > 16384)
         throw Error("--width/--height must be in 1..16384");
     if (a.out.empty() && a.platform.name != "glfw")
         throw Error("--out is required (the PNG to write)");
     scene::Scene s = loadSceneWithOverrides(a.scene);
     scene::View view = chooseView(s, a);
+    probes::ProbeSet probeSet;
+    render::GiOptions gi;
+    if (!a.probes.empty()) {
+        probeSet = probes::readProbeFile(a.probes);
+        gi.probes = &probeSet;
+        gi.scenario = scenarioIndex(probeSet, a);
+        gi.profile = prof;
+    }
 
     a.platform.width = a.width;
     a.platform.height = a.height;
@@ -84,10 +116,19 @@ int run(RenderArgs& a) {
     const std::uint64_t glMark = debug.mark();
     render::FrameSettings settings = render::defaultFrameSettings(s);
     if (a.exposure > 0) settings.exposure = a.exposure;
-    render::FrameRenderer renderer(s, settings);
+    render::FrameRenderer renderer(s, settings, gi);
     std::cout << "scene: " << s.name << ", " << s.triangleCount() << " triangles, "
               << s.instances.size() << " instances; view '" << view.name << "'\n"
               << "platform: " << platform->description() << "\n";
+    if (const render::GpuProbes* gp = renderer.gpuProbes()) {
+        std::string changed;
+        for (const auto& c : prof.changedSwitches()) changed += " " + c;
+        std::cout << "gi: ddgi, " << gp->volumes().size() << " of " << probeSet.volumes.size()
+                  << " volume(s), scenario '" << gp->scenarioName() << "', "
+                  << probes::formatName(gp->format()) << ", "
+                  << double(gp->bytes()) / (1024.0 * 1024.0) << " MiB on the GPU; switches:"
+                  << (changed.empty() ? " defaults" : changed) << "\n";
+    }
 
     if (platform->isWindowed() && a.out.empty())
         return runInteractive(*platform, renderer, s, view, a.frames);
@@ -142,6 +183,15 @@ const RegisterCommand reg{{"render", "Render a scene to an image (or a window wi
                                               "Linear exposure scale (default: the scene's)");
                                cmd.add_option("--frames", a->frames,
                                               "glfw: close the window after N frames (0 = on ESC)");
+                               cmd.add_option("--probes", a->probes,
+                                              "Probe file (probebench bake): render with DDGI");
+                               cmd.add_option("--scenario", a->scenario,
+                                              "Lighting scenario of --probes (default: its first)");
+                               cmd.add_option("--set", a->sets,
+                                              "Profile switch key=value (repeatable; "
+                                              "--list-switches shows them)");
+                               cmd.add_flag("--list-switches", a->listSwitches,
+                                            "Print every profile switch and exit");
                                return [a] { return run(*a); };
                            }}};
 

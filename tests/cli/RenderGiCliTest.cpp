@@ -1,0 +1,113 @@
+// `probebench render --probes FILE [--scenario NAME] [--set key=value ...]`: DDGI from a
+// baked file, profile switches from the command line, and clean one-line errors.
+#include "image/Image.h"
+#include "support/RunCommand.h"
+#include "support/TestEnv.h"
+
+#include <gtest/gtest.h>
+
+namespace fs = std::filesystem;
+using namespace pb::test;
+
+namespace {
+
+// A coarse, quick bake of `rooms`, shared by the tests of this file: bake's input-hash cache
+// reuses it across test processes, and its atomic writes keep parallel runs safe.
+const fs::path& roomsProbes() {
+    static const fs::path file = [] {
+        fs::path f = fs::path(PB_TEST_OUTPUT_DIR) / "rooms_gi_cli.pbp";
+        auto r = runProbebench({"bake", "--scene", "rooms", "--spacing", "0.8", "--rays", "32",
+                                "--bounces", "1", "--out", f.string()});
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return f;
+    }();
+    return file;
+}
+
+double meanLuma(const pb::image::Image8& img) {
+    double sum = 0;
+    for (size_t i = 0; i < img.pixels.size(); i += 4)
+        sum += 0.2126 * img.pixels[i] + 0.7152 * img.pixels[i + 1] + 0.0722 * img.pixels[i + 2];
+    return sum / double(img.width * img.height);
+}
+
+std::vector<std::string> renderArgs(const fs::path& out) {
+    return {"render", "--scene",  "rooms", "--view", "sunlit_room", "--width",
+            "96",     "--height", "54",    "--out",  out.string()};
+}
+
+} // namespace
+
+TEST(RenderGiCli, ProbesChangeTheIndirectLight) {
+    fs::path dir = outputDir();
+    auto plain = runProbebench(renderArgs(dir / "plain.png"));
+    ASSERT_EQ(plain.exitCode, 0) << plain.output;
+    auto args = renderArgs(dir / "gi.png");
+    args.insert(args.end(), {"--probes", roomsProbes().string(), "--scenario", "day"});
+    auto gi = runProbebench(args);
+    ASSERT_EQ(gi.exitCode, 0) << gi.output;
+    EXPECT_NE(gi.output.find("gi: ddgi, 1 of 1 volume(s), scenario 'day'"), std::string::npos)
+        << gi.output;
+    auto a = pb::image::readPng((dir / "plain.png").string());
+    auto b = pb::image::readPng((dir / "gi.png").string());
+    EXPECT_GT(std::abs(meanLuma(a) - meanLuma(b)), 1.0) << "GI must replace the ambient";
+    EXPECT_GT(meanLuma(b), 5.0) << "a sunlit room with GI is not black";
+}
+
+TEST(RenderGiCli, SwitchesFromTheCommandLine) {
+    fs::path dir = outputDir();
+    auto args = renderArgs(dir / "half.png");
+    args.insert(args.end(), {"--probes", roomsProbes().string(), "--set", "gi.resolution=half",
+                             "--set", "gi.target_format=r11g11b10f", "--set", "gi.loops=split"});
+    auto r = runProbebench(args);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("gi.resolution=half"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("gi.loops=split"), std::string::npos) << r.output;
+}
+
+TEST(RenderGiCli, BadSwitchesAreOneLineErrors) {
+    fs::path dir = outputDir();
+    struct Case {
+        std::vector<std::string> extra;
+        std::string mustName;
+    };
+    const std::vector<Case> cases = {
+        {{"--set", "gi.resolution=eighth"}, "full, half, quarter"},
+        {{"--set", "gi.resolutoin=half"}, "unknown switch 'gi.resolutoin'"},
+        {{"--set", "gi.loops"}, "expected key=value"},
+        {{"--scenario", "dusk"}, "'dusk' is not in"},
+        {{"--set", "gi.volume_lod=omit:nope"}, "no volume named 'nope'"},
+        {{"--set", "gi.precision=fp16"}, "not implemented yet"},
+    };
+    for (const Case& c : cases) {
+        fs::path out = dir / "bad.png";
+        auto args = renderArgs(out);
+        args.insert(args.end(), {"--probes", roomsProbes().string()});
+        args.insert(args.end(), c.extra.begin(), c.extra.end());
+        auto r = runProbebench(args);
+        EXPECT_FALSE(r.crashed) << r.output;
+        EXPECT_NE(r.exitCode, 0) << r.output;
+        EXPECT_NE(r.output.find(c.mustName), std::string::npos) << r.output;
+        EXPECT_FALSE(fs::exists(out)) << c.mustName;
+    }
+    auto missing = renderArgs(dir / "missing.png");
+    missing.insert(missing.end(), {"--probes", (dir / "no_such.pbp").string()});
+    auto r = runProbebench(missing);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("no_such.pbp"), std::string::npos) << r.output;
+    auto noProbes = renderArgs(dir / "np.png");
+    noProbes.insert(noProbes.end(), {"--set", "gi.loops=split"});
+    r = runProbebench(noProbes);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("--probes"), std::string::npos) << r.output;
+}
+
+TEST(RenderGiCli, ListSwitchesDescribesEverySwitch) {
+    auto r = runProbebench({"render", "--list-switches", "--set", "gi.loops=split"});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    for (const char* key :
+         {"gi.technique", "gi.resolution", "gi.target_format", "gi.precision", "gi.loops",
+          "gi.probe_order", "gi.multi_volume", "gi.dynamic", "gi.volume_lod"})
+        EXPECT_NE(r.output.find(key), std::string::npos) << key;
+    EXPECT_NE(r.output.find("gi.loops = split  (default fused)"), std::string::npos) << r.output;
+}
