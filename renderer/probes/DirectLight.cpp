@@ -52,7 +52,7 @@ glm::vec3 directIrradiance(const RayScene& rs, const Scenario& sc,
             float a = std::min(std::max(cd * scale + offset, 0.0f), 1.0f);
             att *= a * a;
         }
-        if (att <= 0.0f) continue;
+        if (!(att > 0.0f)) continue; // also drops NaN from a degenerate spot direction
         ++shadowRays;
         if (!rs.occluded(origin, toLight, 0.0f, 1.0f - 2.0f * eps / std::max(d, eps)))
             e += l.color * (l.intensity * c * att);

@@ -153,6 +153,10 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
         set.scenarios.push_back(s);
     }
     for (const ProbeVolume& v : set.volumes) {
+        // 17 bytes per probe must still be there before anything is allocated for them.
+        if (std::size_t(v.probeCount()) > body.remaining() / 17)
+            throw fileError(path, "file is truncated or corrupt (probe states of volume '" +
+                                      v.name + "')");
         std::vector<ProbeState> states(static_cast<size_t>(v.probeCount()));
         for (ProbeState& p : states) {
             p.offset = body.pod<glm::vec3>("probe offset");

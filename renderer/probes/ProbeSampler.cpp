@@ -1,5 +1,6 @@
 #include "probes/ProbeSampler.h"
 
+#include "core/Error.h"
 #include "probes/Octahedral.h"
 
 #include <cmath>
@@ -104,6 +105,8 @@ glm::vec2 tileCoord(const glm::ivec3& c, const glm::vec3& dir, int interior) {
 }
 
 ProbeSampler::ProbeSampler(const ProbeSet& set, int scenario) {
+    if (scenario < 0 || scenario >= int(set.irradiance.size()))
+        throw Error("probe set has no scenario #" + std::to_string(scenario));
     std::vector<int> parents = validateVolumes(set.volumes, "probe set");
     std::vector<SamplerVolume> views;
     for (size_t v = 0; v < set.volumes.size(); ++v)

@@ -11,9 +11,10 @@
 
 namespace pb::probes {
 
-// Sanity limits: a texture row of 1024 visibility tiles is 16384 texels (the usual GL max).
+// Sanity limits: a texture row of 1024 visibility tiles is 16384 texels (the usual GL max);
+// 2^18 probes are 384 MiB of rgba16f probe data and a few GiB of bake working memory.
 constexpr int kMaxProbesPerAxis = 1024;
-constexpr long long kMaxProbesPerVolume = 1 << 21;
+constexpr long long kMaxProbesPerVolume = 1 << 18;
 
 // Visibility distances are clamped to kMaxDistanceScale * |cellSize| (1.5 cell diagonals).
 constexpr float kMaxDistanceScale = 1.5f;
