@@ -42,7 +42,8 @@ public:
         if (!tty_ || p.total == 0) return;
         const int width = 30;
         int filled = int(double(p.done) / double(p.total) * width);
-        std::fprintf(stderr, "\r[%-*s] %3d%%  %-24s", width, std::string(size_t(filled), '#').c_str(),
+        std::fprintf(stderr, "\r[%-*s] %3d%%  %-24s", width,
+                     std::string(size_t(filled), '#').c_str(),
                      int(100.0 * double(p.done) / double(p.total)), stage_.c_str());
         std::fflush(stderr);
     }
@@ -121,7 +122,8 @@ void printSummary(const BakeArgs& a, const ProbeSet& set, const BakeStats* st, b
                          {"volumes", volumesJson(set)},
                          {"memory", memoryReportJson(mem)}};
         nlohmann::json sc = nlohmann::json::array();
-        for (const Scenario& s : set.scenarios) sc.push_back(s.name);
+        for (const Scenario& s : set.scenarios)
+            sc.push_back(s.name);
         j["scenarios"] = sc;
         if (st) {
             double rays = double(st->primaryRays + st->shadowRays);
@@ -137,7 +139,8 @@ void printSummary(const BakeArgs& a, const ProbeSet& set, const BakeStats* st, b
             j["triangles"] = st->triangles;
             nlohmann::json q = nlohmann::json::array();
             for (const auto& e : st->quantisation)
-                q.push_back({{"volume", e.volume}, {"texture", e.texture},
+                q.push_back({{"volume", e.volume},
+                             {"texture", e.texture},
                              {"max_relative_error", e.maxRelative},
                              {"mean_relative_error", e.meanRelative}});
             j["quantisation"] = q;
@@ -161,7 +164,8 @@ void printSummary(const BakeArgs& a, const ProbeSet& set, const BakeStats* st, b
                     st->seconds, st->buildSeconds, st->traceSeconds, formatName(set.format()),
                     st->quantiseSeconds, st->seconds > 0 ? rays / st->seconds * 1e-6 : 0.0);
         double worst = 0.0;
-        for (const auto& e : st->quantisation) worst = std::max(worst, e.maxRelative);
+        for (const auto& e : st->quantisation)
+            worst = std::max(worst, e.maxRelative);
         if (set.format() == StorageFormat::Bc6h)
             for (const auto& e : st->quantisation)
                 std::printf("bc6h error %-12s %-20s max %.4f mean %.5f (relative)\n",
@@ -187,10 +191,12 @@ int run(const BakeArgs& a) {
             printSummary(a, *cached, nullptr, true);
             return 0;
         }
-        if (why.rfind("unusable", 0) == 0) std::cerr << "note: re-baking, the old file is " << why << "\n";
+        if (why.rfind("unusable", 0) == 0)
+            std::cerr << "note: re-baking, the old file is " << why << "\n";
     }
     long long probes = 0;
-    for (const ProbeVolume& v : req.volumes) probes += v.probeCount();
+    for (const ProbeVolume& v : req.volumes)
+        probes += v.probeCount();
     if (!a.json)
         std::cout << "bake: scene '" << s.name << "', " << req.volumes.size() << " volume(s), "
                   << probes << " probes, " << req.settings.raysPerProbe << " rays, "
@@ -216,8 +222,9 @@ const RegisterCommand reg{{
                        "Probe volumes: a TOML file (see renderer/probes/README.md) or 'auto' (one "
                        "volume fitted to the static scene bounds)")
             ->capture_default_str();
-        cmd.add_option("--spacing", a->spacing,
-                       "Probe spacing for --volumes auto, scene units (default: about 4096 probes)");
+        cmd.add_option(
+            "--spacing", a->spacing,
+            "Probe spacing for --volumes auto, scene units (default: about 4096 probes)");
         cmd.add_option("--rays", a->rays, "Rays per probe per pass (spherical Fibonacci)")
             ->capture_default_str();
         cmd.add_option("--bounces", a->bounces, "Bounce passes (1 = direct light at the hits)")
@@ -229,8 +236,9 @@ const RegisterCommand reg{{
             ->capture_default_str();
         cmd.add_option("--seed", a->seed, "Seed of the per-pass ray rotations")
             ->capture_default_str();
-        cmd.add_option("--threads", a->threads, "Worker threads (0 = all cores; never changes "
-                                                "the result)")
+        cmd.add_option("--threads", a->threads,
+                       "Worker threads (0 = all cores; never changes "
+                       "the result)")
             ->capture_default_str();
         cmd.add_option("--backface-threshold", a->backfaceThreshold,
                        "Back-face hit ratio above which a probe is invalid")

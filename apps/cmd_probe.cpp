@@ -24,14 +24,16 @@ glm::vec3 parseVec3(const std::string& text, const std::string& option, bool non
     std::stringstream ss(text);
     glm::vec3 v;
     char c1 = 0, c2 = 0;
-    if (!(ss >> v.x >> c1 >> v.y >> c2 >> v.z) || c1 != ',' || c2 != ',' || !(ss >> std::ws).eof() ||
-        !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+    if (!(ss >> v.x >> c1 >> v.y >> c2 >> v.z) || c1 != ',' || c2 != ',' ||
+        !(ss >> std::ws).eof() || !std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
         throw Error(option + ": expected X,Y,Z (got '" + text + "')");
     if (nonZero && !(glm::length(v) > 0.0f)) throw Error(option + ": must not be zero");
     return v;
 }
 
-nlohmann::json vecJson(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+nlohmann::json vecJson(const glm::vec3& v) {
+    return {v.x, v.y, v.z};
+}
 
 int run(const ProbeArgs& a) {
     glm::vec3 at = parseVec3(a.at, "--at", false);
@@ -43,7 +45,8 @@ int run(const ProbeArgs& a) {
         scenario = set.findScenario(a.scenario);
         if (scenario < 0) {
             std::string names;
-            for (const auto& s : set.scenarios) names += (names.empty() ? "" : ", ") + s.name;
+            for (const auto& s : set.scenarios)
+                names += (names.empty() ? "" : ", ") + s.name;
             throw Error("--scenario: '" + a.scenario + "' is not in " + a.probes + " (" + names +
                         ")");
         }
@@ -84,8 +87,9 @@ const RegisterCommand reg{{
             ->required();
         cmd.add_option("--at", a->at, "World position X,Y,Z")->required();
         cmd.add_option("--normal", a->normal, "Surface normal X,Y,Z")->required();
-        cmd.add_option("--view", a->view, "Direction from the point towards the viewer X,Y,Z "
-                                          "(default: the normal)");
+        cmd.add_option("--view", a->view,
+                       "Direction from the point towards the viewer X,Y,Z "
+                       "(default: the normal)");
         cmd.add_option("--scenario", a->scenario, "Lighting scenario (default: the first)");
         cmd.add_flag("--json", a->json, "Print JSON");
         return [a] { return run(*a); };

@@ -17,8 +17,8 @@
 #include "probes/RayScene.h"
 #include "scene/SceneLoader.h"
 
-#include <benchmark/benchmark.h>
 #include <algorithm>
+#include <benchmark/benchmark.h>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -31,7 +31,8 @@ using Clock = std::chrono::steady_clock;
 
 std::string sponzaPath() {
     if (const char* p = std::getenv("PB_SPONZA_GLB")) return p;
-    std::filesystem::path dir = std::filesystem::path(__FILE__).parent_path() / "../../shared/scenes";
+    std::filesystem::path dir =
+        std::filesystem::path(__FILE__).parent_path() / "../../shared/scenes";
     if (const char* d = std::getenv("PB_SCENES_DIR")) dir = d;
     return (dir / "sponza_decimated/sponza_s_lod4.glb").string();
 }
@@ -67,7 +68,8 @@ Setup& setup() {
         out.request.recordRays = nullptr;
         std::stable_partition(out.rays.begin(), out.rays.end(),
                               [](const RecordedRay& r) { return !r.shadow; });
-        for (const RecordedRay& r : out.rays) out.primary += r.shadow ? 0 : 1;
+        for (const RecordedRay& r : out.rays)
+            out.primary += r.shadow ? 0 : 1;
         return out;
     }();
     return s;
@@ -144,10 +146,11 @@ void BM_SamplerLookup(benchmark::State& state) {
     const size_t n = 1 << 16;
     std::vector<glm::vec3> points(n), normals(n);
     for (size_t i = 0; i < n; ++i) {
-        points[i] = v.toWorld((glm::vec3(uniformFloat(rng), uniformFloat(rng), uniformFloat(rng)) *
-                                   2.0f - 1.0f) * v.halfExtents);
-        normals[i] = glm::normalize(glm::vec3(uniformFloat(rng), uniformFloat(rng),
-                                              uniformFloat(rng)) - 0.5f);
+        points[i] = v.toWorld(
+            (glm::vec3(uniformFloat(rng), uniformFloat(rng), uniformFloat(rng)) * 2.0f - 1.0f) *
+            v.halfExtents);
+        normals[i] = glm::normalize(
+            glm::vec3(uniformFloat(rng), uniformFloat(rng), uniformFloat(rng)) - 0.5f);
     }
     if (state.range(0) == 1) {
         glm::vec3 cell = v.cellSize();

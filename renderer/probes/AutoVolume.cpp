@@ -18,7 +18,9 @@ glm::ivec3 countsFor(const glm::vec3& size, float spacing) {
     return c;
 }
 
-long long product(const glm::ivec3& c) { return (long long)c.x * c.y * c.z; }
+long long product(const glm::ivec3& c) {
+    return (long long)c.x * c.y * c.z;
+}
 
 } // namespace
 

@@ -24,12 +24,14 @@ struct ProbeIndex {
     std::vector<std::size_t> first; // first flat index of each volume, plus the total
     explicit ProbeIndex(const std::vector<ProbeVolume>& vols) {
         first.push_back(0);
-        for (const auto& v : vols) first.push_back(first.back() + std::size_t(v.probeCount()));
+        for (const auto& v : vols)
+            first.push_back(first.back() + std::size_t(v.probeCount()));
     }
     std::size_t total() const { return first.back(); }
     std::pair<int, int> locate(std::size_t flat) const {
         std::size_t v = 0;
-        while (flat >= first[v + 1]) ++v;
+        while (flat >= first[v + 1])
+            ++v;
         return {int(v), int(flat - first[v])};
     }
 };
@@ -38,7 +40,8 @@ QuantisationError measureQuantisation(const std::vector<float>& before, const Pr
                                       QuantisationError e) {
     const int ch = after.shape.channels, used = ch == 4 ? 3 : ch; // irradiance alpha is 1
     float peak = 0.0f;
-    for (float v : before) peak = std::max(peak, std::abs(v));
+    for (float v : before)
+        peak = std::max(peak, std::abs(v));
     const double floor = std::max(1e-3 * peak, 1e-12);
     double sum = 0.0;
     std::size_t n = 0;
@@ -106,28 +109,32 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         const auto dirs = passDirections(cfg.raysPerProbe, geometryStream(cfg.seed));
         const ProbeConvolution conv(dirs);
         std::vector<GeometryScratch> scratch(static_cast<size_t>(threads));
-        std::vector<std::vector<float>> vis(static_cast<size_t>(threads),
-                                            std::vector<float>(kVisibilityInterior *
-                                                               kVisibilityInterior * 2));
-        parallelFor(index.total(), threads, [&](std::size_t flat, int t) {
-            auto [v, p] = index.locate(flat);
-            const ProbeVolume& vol = set.volumes[size_t(v)];
-            glm::ivec3 c = vol.probeCoords(p);
-            float* out = vis[size_t(t)].data();
-            ProbeState& st = set.states[size_t(v)][size_t(p)];
-            bakeProbeGeometry(rs, vol, c, dirs, conv, cfg, scratch[size_t(t)], st, out,
-                              counters[size_t(t)].primary);
-            if (!st.valid) return;
-            float* tile = tileOrigin(set.visibility[size_t(v)], c, kVisibilityTile);
-            const int pitch = set.visibility[size_t(v)].shape.width;
-            for (int y = 0; y < kVisibilityInterior; ++y)
-                for (int x = 0; x < kVisibilityInterior; ++x)
-                    for (int ch = 0; ch < 2; ++ch)
-                        tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 2 + size_t(ch)] =
-                            out[(y * kVisibilityInterior + x) * 2 + ch];
-        }, report("geometry"));
+        std::vector<std::vector<float>> vis(
+            static_cast<size_t>(threads),
+            std::vector<float>(kVisibilityInterior * kVisibilityInterior * 2));
+        parallelFor(
+            index.total(), threads,
+            [&](std::size_t flat, int t) {
+                auto [v, p] = index.locate(flat);
+                const ProbeVolume& vol = set.volumes[size_t(v)];
+                glm::ivec3 c = vol.probeCoords(p);
+                float* out = vis[size_t(t)].data();
+                ProbeState& st = set.states[size_t(v)][size_t(p)];
+                bakeProbeGeometry(rs, vol, c, dirs, conv, cfg, scratch[size_t(t)], st, out,
+                                  counters[size_t(t)].primary);
+                if (!st.valid) return;
+                float* tile = tileOrigin(set.visibility[size_t(v)], c, kVisibilityTile);
+                const int pitch = set.visibility[size_t(v)].shape.width;
+                for (int y = 0; y < kVisibilityInterior; ++y)
+                    for (int x = 0; x < kVisibilityInterior; ++x)
+                        for (int ch = 0; ch < 2; ++ch)
+                            tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 2 + size_t(ch)] =
+                                out[(y * kVisibilityInterior + x) * 2 + ch];
+            },
+            report("geometry"));
         doneBefore += index.total();
-        for (ProbeTexture& t : set.visibility) fillAllBorders(t, kVisibilityInterior);
+        for (ProbeTexture& t : set.visibility)
+            fillAllBorders(t, kVisibilityInterior);
     }
 
     // 2. Radiance, per scenario and pass.
@@ -150,36 +157,41 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
             }
             const ProbeSampler prevSampler(prevViews);
             const ProbeSampler* previous = prev.empty() ? nullptr : &prevSampler;
-            const auto dirs = passDirections(cfg.raysPerProbe, radianceStream(cfg.seed, int(s), pass));
+            const auto dirs =
+                passDirections(cfg.raysPerProbe, radianceStream(cfg.seed, int(s), pass));
             const ProbeConvolution conv(dirs);
             std::vector<RadianceScratch> scratch(static_cast<size_t>(threads));
             std::vector<std::vector<float>> irr(
                 size_t(threads), std::vector<float>(kIrradianceInterior * kIrradianceInterior * 3));
-            std::string stage = sc.name + " pass " + std::to_string(pass) + "/" +
-                                std::to_string(cfg.bounces);
-            parallelFor(index.total(), threads, [&](std::size_t flat, int t) {
-                auto [v, p] = index.locate(flat);
-                const ProbeVolume& vol = set.volumes[size_t(v)];
-                const ProbeState& st = set.states[size_t(v)][size_t(p)];
-                glm::ivec3 c = vol.probeCoords(p);
-                float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
-                const int pitch = cur[size_t(v)].shape.width;
-                for (int y = 0; y < kIrradianceTile; ++y)
-                    for (int x = 0; x < kIrradianceTile; ++x)
-                        tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
-                if (!st.valid) return;
-                float* out = irr[size_t(t)].data();
-                bakeProbeRadiance(rs, sc, scene.lights, vol.localToWorldRotation(),
-                                  vol.toWorld(vol.gridLocal(c) + st.offset), dirs, conv, previous,
-                                  scratch[size_t(t)], out, counters[size_t(t)]);
-                for (int y = 0; y < kIrradianceInterior; ++y)
-                    for (int x = 0; x < kIrradianceInterior; ++x)
-                        for (int ch = 0; ch < 3; ++ch)
-                            tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 + size_t(ch)] =
-                                out[(y * kIrradianceInterior + x) * 3 + ch];
-            }, report(stage));
+            std::string stage =
+                sc.name + " pass " + std::to_string(pass) + "/" + std::to_string(cfg.bounces);
+            parallelFor(
+                index.total(), threads,
+                [&](std::size_t flat, int t) {
+                    auto [v, p] = index.locate(flat);
+                    const ProbeVolume& vol = set.volumes[size_t(v)];
+                    const ProbeState& st = set.states[size_t(v)][size_t(p)];
+                    glm::ivec3 c = vol.probeCoords(p);
+                    float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
+                    const int pitch = cur[size_t(v)].shape.width;
+                    for (int y = 0; y < kIrradianceTile; ++y)
+                        for (int x = 0; x < kIrradianceTile; ++x)
+                            tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
+                    if (!st.valid) return;
+                    float* out = irr[size_t(t)].data();
+                    bakeProbeRadiance(rs, sc, scene.lights, vol.localToWorldRotation(),
+                                      vol.toWorld(vol.gridLocal(c) + st.offset), dirs, conv,
+                                      previous, scratch[size_t(t)], out, counters[size_t(t)]);
+                    for (int y = 0; y < kIrradianceInterior; ++y)
+                        for (int x = 0; x < kIrradianceInterior; ++x)
+                            for (int ch = 0; ch < 3; ++ch)
+                                tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 + size_t(ch)] =
+                                    out[(y * kIrradianceInterior + x) * 3 + ch];
+                },
+                report(stage));
             doneBefore += index.total();
-            for (ProbeTexture& t : cur) fillAllBorders(t, kIrradianceInterior);
+            for (ProbeTexture& t : cur)
+                fillAllBorders(t, kIrradianceInterior);
             blendNestedRings(set.volumes, parents, curViews, targets);
             prev = std::move(cur);
         }
@@ -212,7 +224,8 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         st.probes = set.probeCount();
         st.invalidProbes = set.invalidCount();
         for (const auto& vs : set.states)
-            for (const ProbeState& p : vs) st.relocatedProbes += p.offset != glm::vec3(0.0f);
+            for (const ProbeState& p : vs)
+                st.relocatedProbes += p.offset != glm::vec3(0.0f);
         for (const RayCounters& c : counters) {
             st.primaryRays += c.primary;
             st.shadowRays += c.shadow;

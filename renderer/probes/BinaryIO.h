@@ -55,8 +55,8 @@ public:
     std::string str(const char* what, std::size_t maxLength = 4096) {
         auto n = pod<std::uint32_t>(what);
         if (n > maxLength)
-            throw fileError(path_, std::string("corrupt ") + what + " (length " +
-                                       std::to_string(n) + ")");
+            throw fileError(path_,
+                            std::string("corrupt ") + what + " (length " + std::to_string(n) + ")");
         const std::uint8_t* p = take(n, what);
         return std::string(reinterpret_cast<const char*>(p), n);
     }

@@ -72,7 +72,8 @@ void bakeProbeGeometry(const RayScene& rs, const ProbeVolume& vol, const glm::iv
     state.valid = !(float(sum.backfaces) > threshold);
     if (!state.valid) return;
     const float maxDist = vol.maxDistance();
-    for (int r = 0; r < n; ++r) s.dist01[size_t(r)] = std::min(s.t[size_t(r)], maxDist) / maxDist;
+    for (int r = 0; r < n; ++r)
+        s.dist01[size_t(r)] = std::min(s.t[size_t(r)], maxDist) / maxDist;
     conv.visibility(s.dist01.data(), visOut);
 }
 

@@ -39,9 +39,12 @@ nlohmann::json volumeJson(const VolumeMemory& v) {
 
 std::string formatBytes(std::size_t bytes) {
     char buf[64];
-    if (bytes < 1024) std::snprintf(buf, sizeof buf, "%zu B", bytes);
-    else if (bytes < 1024 * 1024) std::snprintf(buf, sizeof buf, "%.2f KiB", double(bytes) / 1024.0);
-    else std::snprintf(buf, sizeof buf, "%.2f MiB", double(bytes) / (1024.0 * 1024.0));
+    if (bytes < 1024)
+        std::snprintf(buf, sizeof buf, "%zu B", bytes);
+    else if (bytes < 1024 * 1024)
+        std::snprintf(buf, sizeof buf, "%.2f KiB", double(bytes) / 1024.0);
+    else
+        std::snprintf(buf, sizeof buf, "%.2f MiB", double(bytes) / (1024.0 * 1024.0));
     return buf;
 }
 
@@ -84,17 +87,16 @@ std::string formatMemoryReport(const MemoryReport& r) {
     auto line = [&](const VolumeMemory& v) {
         char buf[512];
         std::size_t p = v.probes ? v.probes : 1;
-        std::snprintf(buf, sizeof buf,
-                      "%-16s %-12s %8zu  %10s (%zu+%zu B/probe)  %10s (%zu+%zu B/probe)\n",
-                      v.name.c_str(),
-                      v.counts.x ? (std::to_string(v.counts.x) + "x" + std::to_string(v.counts.y) +
-                                    "x" + std::to_string(v.counts.z))
-                                       .c_str()
-                                 : "",
-                      v.probes, formatBytes(v.uncompressed.total()).c_str(),
-                      v.uncompressed.irradiance / p, v.uncompressed.visibility / p,
-                      formatBytes(v.bc6h.total()).c_str(), v.bc6h.irradiance / p,
-                      v.bc6h.visibility / p);
+        std::snprintf(
+            buf, sizeof buf, "%-16s %-12s %8zu  %10s (%zu+%zu B/probe)  %10s (%zu+%zu B/probe)\n",
+            v.name.c_str(),
+            v.counts.x ? (std::to_string(v.counts.x) + "x" + std::to_string(v.counts.y) + "x" +
+                          std::to_string(v.counts.z))
+                             .c_str()
+                       : "",
+            v.probes, formatBytes(v.uncompressed.total()).c_str(), v.uncompressed.irradiance / p,
+            v.uncompressed.visibility / p, formatBytes(v.bc6h.total()).c_str(),
+            v.bc6h.irradiance / p, v.bc6h.visibility / p);
         s << buf;
     };
     s << "probe memory, one scenario resident (irradiance + visibility)\n";
@@ -102,7 +104,8 @@ std::string formatMemoryReport(const MemoryReport& r) {
     std::snprintf(head, sizeof head, "%-16s %-12s %8s  %-36s %s\n", "volume", "grid", "probes",
                   "uncompressed (rgba16f + rg16f)", "bc6h");
     s << head;
-    for (const VolumeMemory& v : r.volumes) line(v);
+    for (const VolumeMemory& v : r.volumes)
+        line(v);
     VolumeMemory t = r.total;
     t.counts = glm::ivec3(0);
     line(t);
@@ -118,7 +121,8 @@ std::string formatMemoryReport(const MemoryReport& r) {
 
 nlohmann::json memoryReportJson(const MemoryReport& r) {
     nlohmann::json vols = nlohmann::json::array();
-    for (const VolumeMemory& v : r.volumes) vols.push_back(volumeJson(v));
+    for (const VolumeMemory& v : r.volumes)
+        vols.push_back(volumeJson(v));
     nlohmann::json total = volumeJson(r.total);
     total.erase("name");
     total.erase("counts");

@@ -16,7 +16,7 @@ struct VolumeMemory {
     std::size_t probes = 0;
     ProbeBytes uncompressed; // rgba16f irradiance + rg16f visibility
     ProbeBytes bc6h;
-    ProbeBytes stored;       // in `format`
+    ProbeBytes stored; // in `format`
 };
 
 struct MemoryReport {

@@ -28,7 +28,8 @@ void blendNestedRings(const std::vector<ProbeVolume>& volumes, const std::vector
         for (int i = 0; i < vol.probeCount(); ++i) {
             glm::ivec3 c = vol.probeCoords(i);
             bool ring = false;
-            for (int a = 0; a < 3; ++a) ring = ring || c[a] == 0 || c[a] == vol.counts[a] - 1;
+            for (int a = 0; a < 3; ++a)
+                ring = ring || c[a] == 0 || c[a] == vol.counts[a] - 1;
             if (!ring || !states[i].valid) continue;
             glm::vec3 pos = vol.toWorld(vol.gridLocal(c) + states[i].offset);
             float* tile = tileOrigin(tex, c, kIrradianceTile);

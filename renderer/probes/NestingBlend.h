@@ -16,7 +16,6 @@ namespace pb::probes {
 // `views` point at the current pass's textures; `targets` are the same irradiance textures,
 // writable (one per volume); parents[i] = -1 for roots.
 void blendNestedRings(const std::vector<ProbeVolume>& volumes, const std::vector<int>& parents,
-                      const std::vector<SamplerVolume>& views,
-                      std::vector<ProbeTexture*>& targets);
+                      const std::vector<SamplerVolume>& views, std::vector<ProbeTexture*>& targets);
 
 } // namespace pb::probes

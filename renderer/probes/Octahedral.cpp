@@ -4,7 +4,9 @@
 
 namespace pb::probes {
 namespace {
-float signNotZero(float a) { return a >= 0.0f ? 1.0f : -1.0f; }
+float signNotZero(float a) {
+    return a >= 0.0f ? 1.0f : -1.0f;
+}
 } // namespace
 
 glm::vec3 octDecode(const glm::vec2& e) {
@@ -30,7 +32,8 @@ void fillOctahedralBorder(float* tile, int rowPitch, int channels, int interior)
     auto copy = [&](int dx, int dy, int sx, int sy) {
         float* dst = tile + (size_t(dy) * rowPitch + dx) * channels;
         const float* src = tile + (size_t(sy) * rowPitch + sx) * channels;
-        for (int c = 0; c < channels; ++c) dst[c] = src[c];
+        for (int c = 0; c < channels; ++c)
+            dst[c] = src[c];
     };
     for (int x = 1; x <= n; ++x) {
         copy(x, 0, n + 1 - x, 1);

@@ -27,7 +27,7 @@ inline glm::vec2 octEncode(const glm::vec3& d) {
     }
     return {u, v};
 }
-glm::vec3 octDecode(const glm::vec2& uv);  // unit vector
+glm::vec3 octDecode(const glm::vec2& uv); // unit vector
 
 // Texel (i, j) of an interior of `interior` x `interior` texels has its CENTRE at
 // u = (2i+1)/interior - 1, v = (2j+1)/interior - 1 (some centres lie on the equator fold

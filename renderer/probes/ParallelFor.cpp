@@ -16,8 +16,7 @@ int resolveThreadCount(int requested) {
     return std::max(1, int(std::thread::hardware_concurrency()));
 }
 
-void parallelFor(std::size_t count, int threads,
-                 const std::function<void(std::size_t, int)>& body,
+void parallelFor(std::size_t count, int threads, const std::function<void(std::size_t, int)>& body,
                  const std::function<void(std::size_t)>& tick) {
     threads = std::max(1, std::min<int>(threads, int(std::max<std::size_t>(count, 1))));
     const std::size_t chunk =
@@ -35,7 +34,8 @@ void parallelFor(std::size_t count, int threads,
                 std::size_t begin = next.fetch_add(chunk);
                 if (begin >= count) break;
                 std::size_t end = std::min(count, begin + chunk);
-                for (std::size_t i = begin; i < end; ++i) body(i, t);
+                for (std::size_t i = begin; i < end; ++i)
+                    body(i, t);
                 done.fetch_add(end - begin, std::memory_order_relaxed);
             }
         } catch (...) {
@@ -49,7 +49,8 @@ void parallelFor(std::size_t count, int threads,
     };
 
     std::vector<std::thread> pool;
-    for (int t = 1; t < threads; ++t) pool.emplace_back(worker, t);
+    for (int t = 1; t < threads; ++t)
+        pool.emplace_back(worker, t);
     if (tick) {
         // The calling thread only reports progress; `threads` workers do the work.
         pool.emplace_back(worker, 0);
@@ -63,7 +64,8 @@ void parallelFor(std::size_t count, int threads,
     } else {
         worker(0);
     }
-    for (auto& th : pool) th.join();
+    for (auto& th : pool)
+        th.join();
     if (error) std::rethrow_exception(error);
     if (tick) tick(done.load()); // the final count, however fast the work was
 }

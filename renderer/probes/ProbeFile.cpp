@@ -23,7 +23,8 @@ void readTexture(ByteReader& r, ProbeTexture& t, const TextureShape& shape, Stor
     auto size = r.pod<std::uint64_t>(what);
     if (size != storedBytes(shape, f))
         throw fileError(path, std::string("corrupt ") + what + " size (" + std::to_string(size) +
-                                  " bytes, expected " + std::to_string(storedBytes(shape, f)) + ")");
+                                  " bytes, expected " + std::to_string(storedBytes(shape, f)) +
+                                  ")");
     const std::uint8_t* p = r.take(std::size_t(size), what);
     t.shape = shape;
     t.stored.assign(p, p + size);
@@ -73,9 +74,11 @@ std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
             w.pod(p.backfaceRatio);
             w.pod(std::uint8_t(p.valid));
         }
-    for (const ProbeTexture& t : set.visibility) writeTexture(w, t);
+    for (const ProbeTexture& t : set.visibility)
+        writeTexture(w, t);
     for (const auto& sc : set.irradiance)
-        for (const ProbeTexture& t : sc) writeTexture(w, t);
+        for (const ProbeTexture& t : sc)
+            writeTexture(w, t);
 
     std::uint64_t total = w.data().size() + sizeof(std::uint64_t);
     std::memcpy(w.data().data() + 12, &total, sizeof(total));
@@ -98,8 +101,7 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
     if (declared != bytes.size())
         throw fileError(path, "file is truncated or padded (" + std::to_string(bytes.size()) +
                                   " bytes, header says " + std::to_string(declared) + ")");
-    if (bytes.size() < kFixedHeader + 8)
-        throw fileError(path, "file is truncated (no checksum)");
+    if (bytes.size() < kFixedHeader + 8) throw fileError(path, "file is truncated (no checksum)");
     std::uint64_t stored;
     std::memcpy(&stored, bytes.data() + bytes.size() - 8, 8);
     if (fnv1a64(bytes.data(), bytes.size() - 8) != stored)
@@ -189,7 +191,9 @@ void writeProbeFile(const std::string& path, const ProbeSet& set) {
     writeFileAtomic(path, bytes.data(), bytes.size());
 }
 
-ProbeSet readProbeFile(const std::string& path) { return parseProbeSet(readFileBytes(path), path); }
+ProbeSet readProbeFile(const std::string& path) {
+    return parseProbeSet(readFileBytes(path), path);
+}
 
 std::optional<ProbeSet> readCachedProbeFile(const std::string& path, std::uint64_t inputHash,
                                             std::string* why) {

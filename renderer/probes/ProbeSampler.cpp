@@ -29,8 +29,8 @@ inline void bilinear(const ProbeTexture& t, float x, float y, int layer, float* 
     int x1 = std::min(std::max(x0 + 1, 0), w - 1), y1 = std::min(std::max(y0 + 1, 0), h - 1);
     x0 = std::min(std::max(x0, 0), w - 1);
     y0 = std::min(std::max(y0, 0), h - 1);
-    const float* base = t.texels.data() + std::size_t(layer) * std::size_t(h) * std::size_t(w) *
-                                              std::size_t(stride);
+    const float* base = t.texels.data() +
+                        std::size_t(layer) * std::size_t(h) * std::size_t(w) * std::size_t(stride);
     const float* r0 = base + std::size_t(y0) * std::size_t(w) * std::size_t(stride);
     const float* r1 = base + std::size_t(y1) * std::size_t(w) * std::size_t(stride);
     const float* t00 = r0 + x0 * stride;
@@ -81,7 +81,8 @@ std::vector<float> copyTiles(const ProbeVolume& v, const ProbeTexture& t, int ti
         for (int y = 0; y < tile; ++y)
             for (int x = 0; x < tile; ++x) {
                 const float* src = t.at(c.x * tile + x, c.z * tile + y, c.y);
-                for (int ch = 0; ch < channels; ++ch) *dst++ = src[ch];
+                for (int ch = 0; ch < channels; ++ch)
+                    *dst++ = src[ch];
             }
     }
     return out;
@@ -91,10 +92,18 @@ std::vector<float> copyTiles(const ProbeVolume& v, const ProbeTexture& t, int ti
 
 void bilinearFetch(const ProbeTexture& t, float x, float y, int layer, float* out) {
     switch (t.shape.channels) {
-    case 1: bilinear<1>(t, x, y, layer, out); break;
-    case 2: bilinear<2>(t, x, y, layer, out); break;
-    case 3: bilinear<3>(t, x, y, layer, out); break;
-    default: bilinear<4>(t, x, y, layer, out); break;
+    case 1:
+        bilinear<1>(t, x, y, layer, out);
+        break;
+    case 2:
+        bilinear<2>(t, x, y, layer, out);
+        break;
+    case 3:
+        bilinear<3>(t, x, y, layer, out);
+        break;
+    default:
+        bilinear<4>(t, x, y, layer, out);
+        break;
     }
 }
 
@@ -111,12 +120,13 @@ ProbeSampler::ProbeSampler(const ProbeSet& set, int scenario) {
     std::vector<SamplerVolume> views;
     for (size_t v = 0; v < set.volumes.size(); ++v)
         views.push_back({&set.volumes[v], set.states[v].data(),
-                         &set.irradiance[size_t(scenario)][v], &set.visibility[v],
-                         parents[v] < 0});
+                         &set.irradiance[size_t(scenario)][v], &set.visibility[v], parents[v] < 0});
     init(views);
 }
 
-ProbeSampler::ProbeSampler(const std::vector<SamplerVolume>& volumes) { init(volumes); }
+ProbeSampler::ProbeSampler(const std::vector<SamplerVolume>& volumes) {
+    init(volumes);
+}
 
 void ProbeSampler::init(const std::vector<SamplerVolume>& volumes) {
     for (const SamplerVolume& sv : volumes) {
@@ -217,8 +227,8 @@ IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const 
             continue;
         }
         // Clamp in float first: a far-away point must not overflow the int conversion.
-        float g = std::min(std::max((p[a] + f.half[a]) * f.invCell[a], 0.0f),
-                           float(f.counts[a] - 2));
+        float g =
+            std::min(std::max((p[a] + f.half[a]) * f.invCell[a], 0.0f), float(f.counts[a] - 2));
         base[a] = floorToInt(g);
         float gb = (biased[a] + f.half[a]) * f.invCell[a] - float(base[a]);
         alpha[a] = std::min(std::max(gb, 0.0f), 1.0f);

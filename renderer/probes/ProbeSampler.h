@@ -20,12 +20,12 @@ namespace pb::probes {
 constexpr float kBiasNormalWeight = 0.2f; // surface bias = (0.2 n + 0.8 v) * 0.25 * minCell
 constexpr float kBiasViewWeight = 0.8f;
 constexpr float kBiasScale = 0.25f;
-constexpr float kWrapBias = 0.2f;          // backface weight ((dot(dirToProbe,n)+1)/2)^2 + 0.2
-constexpr float kChebyshevFloor = 0.05f;   // lower bound of the (cubed) Chebyshev weight
-constexpr float kVarianceFloor = 1e-3f;    // in normalised distance units (maxDistance^2)
-constexpr float kCrushThreshold = 0.2f;    // w < 0.2 -> w * w^2 / 0.2^2
-constexpr float kMinTrilinear = 1e-3f;     // lower bound of the trilinear weight
-constexpr float kEdgeFadeCells = 0.5f;     // fade width of root volumes, in cells
+constexpr float kWrapBias = 0.2f;        // backface weight ((dot(dirToProbe,n)+1)/2)^2 + 0.2
+constexpr float kChebyshevFloor = 0.05f; // lower bound of the (cubed) Chebyshev weight
+constexpr float kVarianceFloor = 1e-3f;  // in normalised distance units (maxDistance^2)
+constexpr float kCrushThreshold = 0.2f;  // w < 0.2 -> w * w^2 / 0.2^2
+constexpr float kMinTrilinear = 1e-3f;   // lower bound of the trilinear weight
+constexpr float kEdgeFadeCells = 0.5f;   // fade width of root volumes, in cells
 
 // One volume as the sampler sees it (the bake points these at its working textures). The
 // sampler copies the textures at construction into a tile-major layout (a probe's tile
@@ -34,9 +34,9 @@ constexpr float kEdgeFadeCells = 0.5f;     // fade width of root volumes, in cel
 // wide volumes. Later changes to the textures are not seen: build a new sampler.
 struct SamplerVolume {
     const ProbeVolume* volume = nullptr;
-    const ProbeState* states = nullptr;        // probeCount() entries
-    const ProbeTexture* irradiance = nullptr;  // RGBA, irradianceShape(counts)
-    const ProbeTexture* visibility = nullptr;  // RG, visibilityShape(counts)
+    const ProbeState* states = nullptr;       // probeCount() entries
+    const ProbeTexture* irradiance = nullptr; // RGBA, irradianceShape(counts)
+    const ProbeTexture* visibility = nullptr; // RG, visibilityShape(counts)
     bool root = true;
 };
 
@@ -70,7 +70,7 @@ private:
         SamplerVolume src;
         glm::mat3 toLocal;
         glm::vec3 center, half, cell, invCell, fadeWidth;
-        glm::vec3 gridOrigin, gridStep; // probe (i,j,k) at gridOrigin + (i,j,k) * gridStep
+        glm::vec3 gridOrigin, gridStep;     // probe (i,j,k) at gridOrigin + (i,j,k) * gridStep
         std::vector<float> irradianceTiles; // per probe: 8x8 texels, RGB
         std::vector<float> visibilityTiles; // per probe: 16x16 texels, mean + meanSq
         glm::ivec3 counts;

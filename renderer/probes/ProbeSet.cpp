@@ -10,14 +10,16 @@ int ProbeSet::findScenario(const std::string& name) const {
 
 std::size_t ProbeSet::probeCount() const {
     std::size_t n = 0;
-    for (const ProbeVolume& v : volumes) n += std::size_t(v.probeCount());
+    for (const ProbeVolume& v : volumes)
+        n += std::size_t(v.probeCount());
     return n;
 }
 
 std::size_t ProbeSet::invalidCount() const {
     std::size_t n = 0;
     for (const auto& s : states)
-        for (const ProbeState& p : s) n += p.valid ? 0 : 1;
+        for (const ProbeState& p : s)
+            n += p.valid ? 0 : 1;
     return n;
 }
 

@@ -20,17 +20,17 @@ struct BakeSettings {
     int bounces = 2;
     std::uint64_t seed = 1;
     StorageFormat format = StorageFormat::Rgba16f;
-    bool relocate = true;             // move probes up to kMaxRelocation cell out of geometry
-    float backfaceThreshold = 0.25f;  // back-face hit ratio above which a probe is invalid
+    bool relocate = true;            // move probes up to kMaxRelocation cell out of geometry
+    float backfaceThreshold = 0.25f; // back-face hit ratio above which a probe is invalid
 };
 
 // Relocation never moves a probe further than this fraction of its cell along any axis.
 constexpr float kMaxRelocation = 0.45f;
 
 struct ProbeState {
-    glm::vec3 offset{0.0f};   // relocation, world units along the volume's LOCAL axes
-    bool valid = true;        // false: inside geometry (excluded by the sampler)
-    float backfaceRatio = 0;  // diagnostic: share of rays that hit single-sided back faces
+    glm::vec3 offset{0.0f};  // relocation, world units along the volume's LOCAL axes
+    bool valid = true;       // false: inside geometry (excluded by the sampler)
+    float backfaceRatio = 0; // diagnostic: share of rays that hit single-sided back faces
 };
 
 struct ProbeSet {

@@ -24,7 +24,9 @@ float ProbeVolume::minCellSize() const {
     return m > 0.0f ? m : std::min(c.x, std::min(c.y, c.z));
 }
 
-float ProbeVolume::maxDistance() const { return kMaxDistanceScale * glm::length(cellSize()); }
+float ProbeVolume::maxDistance() const {
+    return kMaxDistanceScale * glm::length(cellSize());
+}
 
 glm::ivec3 ProbeVolume::probeCoords(int index) const {
     int x = index % counts.x;
@@ -87,7 +89,8 @@ std::string volumeProblem(const ProbeVolume& v) {
         return "half extents must be positive (got " + vecText(v.halfExtents) + ")";
     if (!(v.edgeBlend >= 0.0f && v.edgeBlend <= 1.0f)) return "edge_blend must be in [0, 1]";
     float ql = glm::length(glm::vec4(v.rotation.x, v.rotation.y, v.rotation.z, v.rotation.w));
-    if (!std::isfinite(ql) || std::abs(ql - 1.0f) > 1e-3f) return "rotation is not a unit quaternion";
+    if (!std::isfinite(ql) || std::abs(ql - 1.0f) > 1e-3f)
+        return "rotation is not a unit quaternion";
     return "";
 }
 
@@ -140,9 +143,9 @@ std::vector<int> parentFirstOrder(const std::vector<int>& parents) {
         return d;
     };
     std::vector<int> order(parents.size());
-    for (size_t i = 0; i < order.size(); ++i) order[i] = int(i);
-    std::stable_sort(order.begin(), order.end(),
-                     [&](int a, int b) { return depth(a) < depth(b); });
+    for (size_t i = 0; i < order.size(); ++i)
+        order[i] = int(i);
+    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return depth(a) < depth(b); });
     return order;
 }
 

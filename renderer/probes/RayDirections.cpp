@@ -53,7 +53,8 @@ std::vector<glm::vec3> passDirections(int rays, std::uint64_t stream) {
     std::uint64_t state = stream;
     glm::mat3 rot = randomRotation(state);
     std::vector<glm::vec3> dirs = sphericalFibonacci(rays);
-    for (glm::vec3& d : dirs) d = glm::normalize(rot * d);
+    for (glm::vec3& d : dirs)
+        d = glm::normalize(rot * d);
     return dirs;
 }
 

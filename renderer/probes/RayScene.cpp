@@ -20,10 +20,12 @@ glm::vec3 meanLinearColour(const scene::Scene& s, int texture) {
     std::size_t n = std::size_t(t.width) * t.height;
     if (n == 0 || t.rgba8.size() < n * 4) return glm::vec3(1.0f);
     std::array<float, 256> lut;
-    for (int i = 0; i < 256; ++i) lut[size_t(i)] = srgbToLinear(float(i) / 255.0f);
+    for (int i = 0; i < 256; ++i)
+        lut[size_t(i)] = srgbToLinear(float(i) / 255.0f);
     double sum[3] = {0, 0, 0};
     for (std::size_t i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c) sum[c] += lut[t.rgba8[i * 4 + size_t(c)]];
+        for (int c = 0; c < 3; ++c)
+            sum[c] += lut[t.rgba8[i * 4 + size_t(c)]];
     return glm::vec3(float(sum[0] / double(n)), float(sum[1] / double(n)),
                      float(sum[2] / double(n)));
 }
@@ -130,8 +132,8 @@ RayScene::RayScene(const scene::Scene& s) : recorder_(std::make_unique<Recorder>
         throw Error("Embree: building the bake scene failed (out of memory?)");
     glm::vec3 size = bounds_.size();
     float extent = std::max(size.x, std::max(size.y, size.z));
-    float far = bounds_.empty() ? 0.0f
-                                : std::max(glm::length(bounds_.min), glm::length(bounds_.max));
+    float far =
+        bounds_.empty() ? 0.0f : std::max(glm::length(bounds_.min), glm::length(bounds_.max));
     epsilon_ = std::max(1e-5f * extent + 1e-6f * far, 1e-6f);
 }
 
@@ -154,7 +156,8 @@ std::vector<RecordedRay> RayScene::stopRecording() {
     recorder_->on = false;
     ++recorder_->session;
     std::vector<RecordedRay> all;
-    for (auto& v : recorder_->perThread) all.insert(all.end(), v->begin(), v->end());
+    for (auto& v : recorder_->perThread)
+        all.insert(all.end(), v->begin(), v->end());
     recorder_->perThread.clear();
     return all;
 }
@@ -175,8 +178,7 @@ void RayScene::record(const RecordedRay& r) const {
     buffer->push_back(r);
 }
 
-RayHit RayScene::intersect(const glm::vec3& o, const glm::vec3& d, float tnear,
-                           float tfar) const {
+RayHit RayScene::intersect(const glm::vec3& o, const glm::vec3& d, float tnear, float tfar) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     RTCRayHit rh;

@@ -50,8 +50,10 @@ std::vector<Scenario> resolveScenarios(const std::vector<std::string>& requested
             continue;
         }
         std::string known;
-        for (const auto& s : fromFile) known += (known.empty() ? "" : ", ") + s.name;
-        for (const auto& p : presets) known += (known.empty() ? "" : ", ") + p;
+        for (const auto& s : fromFile)
+            known += (known.empty() ? "" : ", ") + s.name;
+        for (const auto& p : presets)
+            known += (known.empty() ? "" : ", ") + p;
         throw Error("--scenario: unknown scenario '" + n + "' (available: " + known + ")");
     }
     return out;

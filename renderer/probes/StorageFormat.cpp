@@ -11,9 +11,12 @@ namespace pb::probes {
 
 const char* formatName(StorageFormat f) {
     switch (f) {
-    case StorageFormat::Rgba16f: return "rgba16f";
-    case StorageFormat::Rgba32f: return "rgba32f";
-    case StorageFormat::Bc6h: return "bc6h";
+    case StorageFormat::Rgba16f:
+        return "rgba16f";
+    case StorageFormat::Rgba32f:
+        return "rgba32f";
+    case StorageFormat::Bc6h:
+        return "bc6h";
     }
     return "unknown";
 }
@@ -25,7 +28,9 @@ StorageFormat parseStorageFormat(const std::string& text, const std::string& opt
     throw Error(option + ": unknown format '" + text + "' (use rgba16f, rgba32f or bc6h)");
 }
 
-bool isKnownFormat(std::uint32_t raw) { return raw <= 2; }
+bool isKnownFormat(std::uint32_t raw) {
+    return raw <= 2;
+}
 
 ProbeBytes bytesPerProbe(StorageFormat f) {
     auto bytes = [&](const TextureShape& s) { return storedBytes(s, f); };
@@ -53,13 +58,16 @@ std::size_t storedBytes(const TextureShape& s, StorageFormat f) {
     return s.texelCount() * bytesPerTexel(s.channels, f);
 }
 
-float quantiseHalf(float v) { return glm::unpackHalf1x16(glm::packHalf1x16(clampForHalf(v))); }
+float quantiseHalf(float v) {
+    return glm::unpackHalf1x16(glm::packHalf1x16(clampForHalf(v)));
+}
 
 void quantise(ProbeTexture& t, StorageFormat f) {
     const TextureShape& s = t.shape;
     t.stored.assign(storedBytes(s, f), 0);
     if (f == StorageFormat::Rgba32f) {
-        for (float& v : t.texels) v = std::isfinite(v) ? v : 0.0f;
+        for (float& v : t.texels)
+            v = std::isfinite(v) ? v : 0.0f;
         std::memcpy(t.stored.data(), t.texels.data(), t.stored.size());
     } else if (f == StorageFormat::Rgba16f) {
         for (std::size_t i = 0; i < t.texels.size(); ++i) {
@@ -71,7 +79,8 @@ void quantise(ProbeTexture& t, StorageFormat f) {
         for (int l = 0; l < s.layers; ++l) {
             std::vector<float> src(t.texels.begin() + std::ptrdiff_t(l * layerFloats(s)),
                                    t.texels.begin() + std::ptrdiff_t((l + 1) * layerFloats(s)));
-            for (float& v : src) v = clampForHalf(v);
+            for (float& v : src)
+                v = clampForHalf(v);
             std::vector<std::uint8_t> blocks =
                 encodeBc6hUf16(src.data(), s.width, s.height, s.channels);
             std::memcpy(t.stored.data() + l * layerBytes, blocks.data(), layerBytes);
@@ -106,7 +115,8 @@ void decodeStored(ProbeTexture& t, StorageFormat f) {
         }
     }
     // Only a hand-made file can hold inf/NaN here (the checksum matched): never sample them.
-    for (float& v : t.texels) v = std::isfinite(v) ? v : 0.0f;
+    for (float& v : t.texels)
+        v = std::isfinite(v) ? v : 0.0f;
 }
 
 } // namespace pb::probes

@@ -24,13 +24,15 @@ public:
         for (auto&& [k, v] : t) {
             if (known.count(std::string(k.str()))) continue;
             std::string list;
-            for (const auto& n : known) list += (list.empty() ? "" : ", ") + n;
+            for (const auto& n : known)
+                list += (list.empty() ? "" : ", ") + n;
             fail(k.source(), "unknown key '" + std::string(k.str()) + "' in " + what +
                                  " (known: " + list + ")");
         }
     }
 
-    const toml::node& require(const toml::table& t, const char* key, const std::string& what) const {
+    const toml::node& require(const toml::table& t, const char* key,
+                              const std::string& what) const {
         const toml::node* n = t.get(key);
         if (!n) fail(t.source(), what + ": missing key '" + key + "'");
         return *n;
@@ -74,8 +76,9 @@ struct VolumeLines {
 
 ProbeVolume parseVolume(const Parser& P, const toml::table& t, std::size_t i, VolumeLines& lines) {
     std::string what = "[[volume]] #" + std::to_string(i + 1);
-    P.checkKeys(t, {"name", "center", "half_extents", "probes", "rotation", "quaternion", "parent",
-                    "edge_blend"},
+    P.checkKeys(t,
+                {"name", "center", "half_extents", "probes", "rotation", "quaternion", "parent",
+                 "edge_blend"},
                 what);
     ProbeVolume v;
     lines.table = t.source();
@@ -176,7 +179,8 @@ void forEachTable(const Parser& P, const toml::table& root, const char* key, F f
     const toml::array* arr = n->as_array();
     if (!arr || !arr->is_array_of_tables())
         P.fail(n->source(), std::string("'") + key + "' must be written as [[" + key + "]] tables");
-    for (std::size_t i = 0; i < arr->size(); ++i) fn(*(*arr)[i].as_table(), i);
+    for (std::size_t i = 0; i < arr->size(); ++i)
+        fn(*(*arr)[i].as_table(), i);
 }
 
 } // namespace
@@ -217,8 +221,8 @@ VolumeFile parseVolumeToml(std::string_view text, const std::string& path) {
         if (v.parent.empty()) continue;
         auto it = byName.find(v.parent);
         if (it == byName.end())
-            P.fail(lines[i].parent, "volume '" + v.name + "': key 'parent': unknown volume '" +
-                                        v.parent + "'");
+            P.fail(lines[i].parent,
+                   "volume '" + v.name + "': key 'parent': unknown volume '" + v.parent + "'");
         if (it->second == i) P.fail(lines[i].parent, "volume '" + v.name + "' is its own parent");
         std::string problem = nestingProblem(v, out.volumes[it->second]);
         if (!problem.empty()) P.fail(lines[i].parent, "key 'parent': " + problem);
@@ -229,9 +233,8 @@ VolumeFile parseVolumeToml(std::string_view text, const std::string& path) {
 
 VolumeFile loadVolumeFile(const std::string& path) {
     std::vector<unsigned char> bytes = readFileBytes(path);
-    return parseVolumeToml(std::string_view(reinterpret_cast<const char*>(bytes.data()),
-                                            bytes.size()),
-                           path);
+    return parseVolumeToml(
+        std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()), path);
 }
 
 } // namespace pb::probes

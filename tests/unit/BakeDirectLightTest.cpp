@@ -79,7 +79,8 @@ TEST(BakeDirectLight, SpotConeAndShadowRays) {
     spot.outerConeAngle = 0.4f;
     std::uint64_t shadow = 0;
     EXPECT_NEAR(directIrradiance(rs, noSun(), {spot}, {0, 0, 0}, {0, 1, 0}, shadow).x, 1.0f, 1e-5f);
-    EXPECT_EQ(directIrradiance(rs, noSun(), {spot}, {4, 0, 0}, {0, 1, 0}, shadow).x, 0.0f); // outside
+    EXPECT_EQ(directIrradiance(rs, noSun(), {spot}, {4, 0, 0}, {0, 1, 0}, shadow).x,
+              0.0f); // outside
     // A point light whose path to the receiver crosses the occluder.
     std::vector<pb::scene::Light> side{pointLight({6, 1, 0}, 9.0f)};
     std::uint64_t before = shadow;
@@ -96,10 +97,12 @@ TEST(BakeParallelFor, RunsEveryItemOnceAndRethrows) {
             EXPECT_LT(t, threads);
             ++hits[i];
         });
-        for (auto& h : hits) EXPECT_EQ(h.load(), 1);
+        for (auto& h : hits)
+            EXPECT_EQ(h.load(), 1);
     }
     std::size_t lastTick = 0;
-    parallelFor(64, 2, [](std::size_t, int) {}, [&](std::size_t done) { lastTick = done; });
+    parallelFor(
+        64, 2, [](std::size_t, int) {}, [&](std::size_t done) { lastTick = done; });
     EXPECT_EQ(lastTick, 64u);
     EXPECT_THROW(parallelFor(100, 2,
                              [](std::size_t i, int) {

@@ -46,7 +46,8 @@ template <class F> void forEachIrradiance(const ProbeSet& set, int scenario, F f
                 for (int i = 0; i < kIrradianceInterior; ++i) {
                     const float* t = set.irradiance[size_t(scenario)][v].at(
                         c.x * kIrradianceTile + 1 + i, c.z * kIrradianceTile + 1 + j, c.y);
-                    for (int ch = 0; ch < 3; ++ch) f(t[ch]);
+                    for (int ch = 0; ch < 3; ++ch)
+                        f(t[ch]);
                 }
         }
     }
@@ -83,8 +84,8 @@ TEST(BakeFurnace, EmissiveRoomConvergesToAnalyticValue) {
     float previous = 0.0f;
     const float analytic = float(M_PI) * le / (1.0f - rho);
     for (int b = 1; b <= 8; ++b) {
-        ProbeSet set = bakeProbes(s, request({volume("room", {0, 0, 0}, {0.7f, 0.7f, 0.7f},
-                                                     {3, 3, 3})}, s, b));
+        ProbeSet set = bakeProbes(
+            s, request({volume("room", {0, 0, 0}, {0.7f, 0.7f, 0.7f}, {3, 3, 3})}, s, b));
         double sum = 0.0;
         float lo = 1e9f, hi = -1e9f;
         int n = 0;
@@ -139,7 +140,8 @@ TEST(BakeClassification, RelocationMovesProbesOutOfThinGeometry) {
     const ProbeState& mid = set.states[0][1];
     EXPECT_TRUE(mid.valid);
     EXPECT_GT(glm::length(mid.offset), 0.1f);
-    for (int a = 0; a < 3; ++a) EXPECT_LE(std::abs(mid.offset[a]), kMaxRelocation * 1.0f + 1e-6f);
+    for (int a = 0; a < 3; ++a)
+        EXPECT_LE(std::abs(mid.offset[a]), kMaxRelocation * 1.0f + 1e-6f);
     EXPECT_EQ(stats.relocatedProbes, 1u);
     EXPECT_EQ(stats.invalidProbes, 0u);
 }
@@ -186,8 +188,8 @@ TEST(BakeNesting, ChildRingTakesTheParentsIrradiance) {
         bool onRing = c.x == 0 || c.y == 0 || c.z == 0 || c.x == 3 || c.y == 2 || c.z == 3;
         glm::vec3 pos = child.toWorld(child.gridLocal(c) + set.states[1][size_t(p)].offset);
         glm::vec3 dir = octTexelDirection(2, 3, kIrradianceInterior);
-        float mine = set.irradiance[0][1].at(c.x * kIrradianceTile + 3, c.z * kIrradianceTile + 4,
-                                             c.y)[0];
+        float mine =
+            set.irradiance[0][1].at(c.x * kIrradianceTile + 3, c.z * kIrradianceTile + 4, c.y)[0];
         float parents = sampler.sampleVolume(0, pos, dir, dir, noFade).irradiance.x;
         if (onRing) {
             EXPECT_NEAR(mine, parents, 1e-4f * parents + 1e-6f) << "ring probe " << p;
@@ -215,7 +217,8 @@ TEST(BakeEdgeCases, DynamicAndInvisibleGeometryIsNotBaked) {
     s.materials[size_t(glass)].alphaMode = pb::scene::AlphaMode::Blend;
     s.materials[size_t(glass)].baseColor.a = 0.0f;
     addInstance(s, boxPrimitive(glm::vec3(-1.5f), glm::vec3(1.5f), true, glass));
-    ProbeSet set = bakeProbes(s, request({volume("v", {0, 0, 0}, {0.5f, 0.5f, 0.5f}, {2, 2, 2})}, s));
+    ProbeSet set =
+        bakeProbes(s, request({volume("v", {0, 0, 0}, {0.5f, 0.5f, 0.5f}, {2, 2, 2})}, s));
     forEachIrradiance(set, 0, [&](float e) { EXPECT_NEAR(e, float(M_PI), 1e-4f); });
 }
 

@@ -40,14 +40,16 @@ TEST(Octahedral, SixAxesMapToTheDocumentedPoints) {
     for (glm::vec3 axis : {glm::vec3(1, 0, 0), glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0),
                            glm::vec3(0, -1, 0), glm::vec3(0, 0, 1), glm::vec3(0, 0, -1)})
         expectNear(octDecode(octEncode(axis)), axis, 1e-6f);
-    for (glm::vec2 corner : {glm::vec2(1, 1), glm::vec2(-1, 1), glm::vec2(1, -1), glm::vec2(-1, -1)})
+    for (glm::vec2 corner :
+         {glm::vec2(1, 1), glm::vec2(-1, 1), glm::vec2(1, -1), glm::vec2(-1, -1)})
         expectNear(octDecode(corner), {0, -1, 0}, 1e-6f);
 }
 
 TEST(Octahedral, RoundTripsRandomAndFoldEdgeDirections) {
     std::uint64_t rng = 7;
     for (int i = 0; i < 20000; ++i) {
-        glm::vec3 d(uniformFloat(rng) * 2 - 1, uniformFloat(rng) * 2 - 1, uniformFloat(rng) * 2 - 1);
+        glm::vec3 d(uniformFloat(rng) * 2 - 1, uniformFloat(rng) * 2 - 1,
+                    uniformFloat(rng) * 2 - 1);
         if (glm::length(d) < 1e-3f) continue;
         d = glm::normalize(d);
         glm::vec2 e = octEncode(d);
@@ -84,7 +86,8 @@ TEST(Octahedral, BorderTexelsEqualTheirMirroredNeighbours) {
         const int tile = n + 2;
         std::vector<float> t(size_t(tile * tile), -1.0f);
         for (int y = 1; y <= n; ++y)
-            for (int x = 1; x <= n; ++x) t[size_t(y * tile + x)] = float(y * 100 + x);
+            for (int x = 1; x <= n; ++x)
+                t[size_t(y * tile + x)] = float(y * 100 + x);
         fillOctahedralBorder(t.data(), tile, 1, n);
         for (int y = 0; y < tile; ++y)
             for (int x = 0; x < tile; ++x) {
@@ -133,10 +136,12 @@ TEST(Octahedral, BilinearFilteringIsSeamlessAcrossFolds) {
         maxJump = std::max(maxJump, std::abs(sample(up) - sample(down)));
         // ... and across the square's outer edges (lower hemisphere, u or v = +-1).
         glm::vec3 l1 = glm::normalize(glm::vec3(1e-4f, -std::abs(std::cos(a)) - 0.1f, std::sin(a)));
-        glm::vec3 l2 = glm::normalize(glm::vec3(-1e-4f, -std::abs(std::cos(a)) - 0.1f, std::sin(a)));
+        glm::vec3 l2 =
+            glm::normalize(glm::vec3(-1e-4f, -std::abs(std::cos(a)) - 0.1f, std::sin(a)));
         maxJump = std::max(maxJump, std::abs(sample(l1) - sample(l2)));
         glm::vec3 l3 = glm::normalize(glm::vec3(std::sin(a), -std::abs(std::cos(a)) - 0.1f, 1e-4f));
-        glm::vec3 l4 = glm::normalize(glm::vec3(std::sin(a), -std::abs(std::cos(a)) - 0.1f, -1e-4f));
+        glm::vec3 l4 =
+            glm::normalize(glm::vec3(std::sin(a), -std::abs(std::cos(a)) - 0.1f, -1e-4f));
         maxJump = std::max(maxJump, std::abs(sample(l3) - sample(l4)));
         maxErr = std::max(maxErr, std::abs(sample(up) - f(up)));
     }

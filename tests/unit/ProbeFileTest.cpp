@@ -1,11 +1,11 @@
 // The probe data file: round trip, and clear errors for truncated, wrong-version and corrupted
 // files; storage formats and the memory report's reference figures.
+#include "probes/ProbeFile.h"
 #include "ProbeTestScenes.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "probes/Baker.h"
 #include "probes/MemoryReport.h"
-#include "probes/ProbeFile.h"
 #include "support/TestEnv.h"
 
 #include <gtest/gtest.h>
@@ -59,16 +59,15 @@ TEST(ProbeFile, RoundTripsEveryFormat) {
         // The bake's in-memory texels are already the quantised ones the file decodes to.
         EXPECT_EQ(back.irradiance[0][0].texels, set.irradiance[0][0].texels) << formatName(f);
         EXPECT_EQ(back.visibility[0].texels, set.visibility[0].texels) << formatName(f);
-        EXPECT_EQ(back.irradiance[1][0].stored.size(),
-                  storedBytes(irradianceShape({4, 2, 4}), f));
+        EXPECT_EQ(back.irradiance[1][0].stored.size(), storedBytes(irradianceShape({4, 2, 4}), f));
         EXPECT_EQ(serializeProbeSet(back), serializeProbeSet(set));
     }
 }
 
 TEST(ProbeFile, TruncatedFileIsAClearError) {
     std::vector<std::uint8_t> bytes = serializeProbeSet(smallBake(StorageFormat::Rgba16f));
-    for (std::size_t keep : {std::size_t(0), std::size_t(5), std::size_t(30), bytes.size() / 2,
-                             bytes.size() - 1}) {
+    for (std::size_t keep :
+         {std::size_t(0), std::size_t(5), std::size_t(30), bytes.size() / 2, bytes.size() - 1}) {
         std::vector<std::uint8_t> cut(bytes.begin(), bytes.begin() + std::ptrdiff_t(keep));
         std::string e = readError(cut);
         EXPECT_EQ(e.rfind("probes.pbp: ", 0), 0u) << e;
@@ -88,7 +87,8 @@ TEST(ProbeFile, WrongVersionIsAClearError) {
 
 TEST(ProbeFile, FlippedBitIsCaughtByTheChecksum) {
     std::vector<std::uint8_t> bytes = serializeProbeSet(smallBake(StorageFormat::Rgba16f));
-    for (std::size_t at : {std::size_t(40), bytes.size() / 3, bytes.size() - 20, bytes.size() - 3}) {
+    for (std::size_t at :
+         {std::size_t(40), bytes.size() / 3, bytes.size() - 20, bytes.size() - 3}) {
         std::vector<std::uint8_t> bad = bytes;
         bad[at] ^= 0x10;
         std::string e = readError(bad);

@@ -1,7 +1,7 @@
 // The CPU reference sampler (renderer/probes/ProbeSampler.h): GL-exact bilinear fetches,
 // volume choice, edge fade, invalid probes, and degenerate input.
-#include "probes/Octahedral.h"
 #include "probes/ProbeSampler.h"
+#include "probes/Octahedral.h"
 #include "probes/RayDirections.h"
 
 #include <cmath>
@@ -23,7 +23,8 @@ ProbeSet makeSet(std::vector<ProbeVolume> vols, const IrradianceFn& f) {
     for (const ProbeVolume& v : vols) {
         set.states.emplace_back(size_t(v.probeCount()));
         ProbeTexture vis = ProbeTexture::make(visibilityShape(v.counts));
-        for (float& x : vis.texels) x = 1.0f;
+        for (float& x : vis.texels)
+            x = 1.0f;
         set.visibility.push_back(vis);
         ProbeTexture irr = ProbeTexture::make(irradianceShape(v.counts));
         for (int p = 0; p < v.probeCount(); ++p) {
@@ -31,8 +32,8 @@ ProbeSet makeSet(std::vector<ProbeVolume> vols, const IrradianceFn& f) {
             for (int j = 0; j < kIrradianceInterior; ++j)
                 for (int i = 0; i < kIrradianceInterior; ++i) {
                     glm::vec3 e = f(octTexelDirection(i, j, kIrradianceInterior), p);
-                    float* t = irr.at(c.x * kIrradianceTile + 1 + i, c.z * kIrradianceTile + 1 + j,
-                                      c.y);
+                    float* t =
+                        irr.at(c.x * kIrradianceTile + 1 + i, c.z * kIrradianceTile + 1 + j, c.y);
                     t[0] = e.x, t[1] = e.y, t[2] = e.z, t[3] = 1.0f;
                 }
         }
@@ -53,7 +54,8 @@ ProbeVolume box(const std::string& name, glm::vec3 c, glm::vec3 h, glm::ivec3 n)
 
 glm::vec3 randomUnit(std::uint64_t& rng) {
     for (;;) {
-        glm::vec3 d(uniformFloat(rng) * 2 - 1, uniformFloat(rng) * 2 - 1, uniformFloat(rng) * 2 - 1);
+        glm::vec3 d(uniformFloat(rng) * 2 - 1, uniformFloat(rng) * 2 - 1,
+                    uniformFloat(rng) * 2 - 1);
         float l = glm::length(d);
         if (l > 0.1f && l <= 1.0f) return d / l;
     }
@@ -63,7 +65,8 @@ glm::vec3 randomUnit(std::uint64_t& rng) {
 
 TEST(ProbeSampler, BilinearFetchMatchesGlLinear) {
     ProbeTexture t = ProbeTexture::make({4, 2, 1, 1});
-    for (int i = 0; i < 8; ++i) t.texels[size_t(i)] = float(i * i);
+    for (int i = 0; i < 8; ++i)
+        t.texels[size_t(i)] = float(i * i);
     float out;
     bilinearFetch(t, 1.5f, 0.5f, 0, &out); // texel centre: exact
     EXPECT_FLOAT_EQ(out, 1.0f);
@@ -81,9 +84,9 @@ TEST(ProbeSampler, UniformIrradianceIsReturnedEverywhereInside) {
     ProbeSampler s(set, 0);
     std::uint64_t rng = 3;
     for (int i = 0; i < 2000; ++i) {
-        glm::vec3 p = glm::vec3(1, 2, 3) + glm::vec3(uniformFloat(rng) * 4 - 2,
-                                                     uniformFloat(rng) * 2 - 1,
-                                                     uniformFloat(rng) * 4 - 2);
+        glm::vec3 p =
+            glm::vec3(1, 2, 3) + glm::vec3(uniformFloat(rng) * 4 - 2, uniformFloat(rng) * 2 - 1,
+                                           uniformFloat(rng) * 4 - 2);
         IrradianceSample r = s.sample(p, randomUnit(rng), randomUnit(rng));
         ASSERT_EQ(r.volume, 0);
         ASSERT_GT(r.probes, 0);
@@ -108,8 +111,8 @@ TEST(ProbeSampler, NormalIsLookedUpInTheVolumesLocalFrame) {
         for (int i = 0; i < kIrradianceInterior; ++i) {
             glm::vec3 local = octTexelDirection(i, j, kIrradianceInterior);
             glm::vec3 n = v.rotation * local;
-            EXPECT_NEAR(s.sample(v.toWorld({0.1f, 0.2f, -0.3f}), n, n).irradiance.x,
-                        f(local, 0).x, 1e-4f);
+            EXPECT_NEAR(s.sample(v.toWorld({0.1f, 0.2f, -0.3f}), n, n).irradiance.x, f(local, 0).x,
+                        1e-4f);
         }
     // Any normal: the rotated volume equals the unrotated one fed the local normal.
     std::uint64_t rng = 11;
@@ -155,7 +158,8 @@ TEST(ProbeSampler, SmallestContainingVolumeWins) {
     ProbeVolume child = box("room", {1, 0, 0}, {1, 1, 1}, {3, 3, 3});
     child.parent = "world";
     ProbeSet set = makeSet({parent, child}, [](glm::vec3, int) { return glm::vec3(1.0f); });
-    for (float& x : set.irradiance[0][1].texels) x = 5.0f; // the child reads 5
+    for (float& x : set.irradiance[0][1].texels)
+        x = 5.0f; // the child reads 5
     ProbeSampler s(set, 0);
     EXPECT_EQ(s.sample({1.5f, 0, 0}, {0, 1, 0}, {0, 1, 0}).volume, 1);
     EXPECT_NEAR(s.sample({1.5f, 0, 0}, {0, 1, 0}, {0, 1, 0}).irradiance.x, 5.0f, 1e-5f);
@@ -171,7 +175,8 @@ TEST(ProbeSampler, InvalidProbesAreExcludedAndAllInvalidGivesNoNaN) {
     IrradianceSample r = s.sample({-0.9f, -0.9f, -0.9f}, {0, 1, 0}, {0, 1, 0});
     EXPECT_EQ(r.probes, 7);
     EXPECT_NEAR(r.irradiance.x, 1.0f, 1e-5f);
-    for (ProbeState& st : set.states[0]) st.valid = false;
+    for (ProbeState& st : set.states[0])
+        st.valid = false;
     ProbeSampler none(set, 0);
     IrradianceSample z = none.sample({0, 0, 0}, {0, 1, 0}, {0, 1, 0});
     EXPECT_EQ(z.volume, 0);

@@ -16,8 +16,10 @@ inline void addQuad(scene::Primitive& p, glm::vec3 c, glm::vec3 u, glm::vec3 v, 
     }
     bool ccw = glm::dot(glm::cross(u, v), front) > 0.0f;
     std::uint32_t a = base, b = base + 1, cc = base + 2, d = base + 3;
-    if (ccw) p.indices.insert(p.indices.end(), {a, b, cc, a, cc, d});
-    else p.indices.insert(p.indices.end(), {a, cc, b, a, d, cc});
+    if (ccw)
+        p.indices.insert(p.indices.end(), {a, b, cc, a, cc, d});
+    else
+        p.indices.insert(p.indices.end(), {a, cc, b, a, d, cc});
 }
 
 // Axis-aligned box [lo, hi] as one primitive; faces point inwards (a room) or outwards (a
@@ -27,12 +29,12 @@ inline scene::Primitive boxPrimitive(glm::vec3 lo, glm::vec3 hi, bool inward, in
     p.material = material;
     glm::vec3 s = hi - lo;
     float sign = inward ? 1.0f : -1.0f;
-    addQuad(p, lo, {s.x, 0, 0}, {0, 0, s.z}, {0, sign, 0});                    // floor
-    addQuad(p, {lo.x, hi.y, lo.z}, {s.x, 0, 0}, {0, 0, s.z}, {0, -sign, 0});   // ceiling
-    addQuad(p, lo, {0, s.y, 0}, {0, 0, s.z}, {sign, 0, 0});                    // -x wall
-    addQuad(p, {hi.x, lo.y, lo.z}, {0, s.y, 0}, {0, 0, s.z}, {-sign, 0, 0});   // +x wall
-    addQuad(p, lo, {s.x, 0, 0}, {0, s.y, 0}, {0, 0, sign});                    // -z wall
-    addQuad(p, {lo.x, lo.y, hi.z}, {s.x, 0, 0}, {0, s.y, 0}, {0, 0, -sign});   // +z wall
+    addQuad(p, lo, {s.x, 0, 0}, {0, 0, s.z}, {0, sign, 0});                  // floor
+    addQuad(p, {lo.x, hi.y, lo.z}, {s.x, 0, 0}, {0, 0, s.z}, {0, -sign, 0}); // ceiling
+    addQuad(p, lo, {0, s.y, 0}, {0, 0, s.z}, {sign, 0, 0});                  // -x wall
+    addQuad(p, {hi.x, lo.y, lo.z}, {0, s.y, 0}, {0, 0, s.z}, {-sign, 0, 0}); // +x wall
+    addQuad(p, lo, {s.x, 0, 0}, {0, s.y, 0}, {0, 0, sign});                  // -z wall
+    addQuad(p, {lo.x, lo.y, hi.z}, {s.x, 0, 0}, {0, s.y, 0}, {0, 0, -sign}); // +z wall
     return p;
 }
 

@@ -1,10 +1,10 @@
 // Probe volumes: TOML parsing and its errors (file:line: key), nesting rules, auto fitting,
 // scenario resolution.
+#include "probes/VolumeFile.h"
 #include "core/Error.h"
 #include "probes/AutoVolume.h"
 #include "probes/ProbeVolume.h"
 #include "probes/Scenario.h"
-#include "probes/VolumeFile.h"
 
 #include <gtest/gtest.h>
 
@@ -76,7 +76,8 @@ TEST(VolumeFile, GridPositionsRunCornerToCorner) {
     EXPECT_EQ(v.gridLocal({0, 0, 0}), glm::vec3(-2, 0, -3)); // count 1 on y: centre
     EXPECT_EQ(v.gridLocal({2, 0, 3}), glm::vec3(2, 0, 3));
     EXPECT_EQ(v.cellSize(), glm::vec3(2, 2, 2));
-    for (int i = 0; i < v.probeCount(); ++i) EXPECT_EQ(v.probeIndex(v.probeCoords(i)), i);
+    for (int i = 0; i < v.probeCount(); ++i)
+        EXPECT_EQ(v.probeIndex(v.probeCoords(i)), i);
 }
 
 TEST(VolumeFile, MalformedTomlNamesFileAndLine) {
@@ -164,8 +165,10 @@ TEST(VolumeAuto, FitsTheBoundsAtTheSpacing) {
     AutoVolume a = fitAutoVolume(b, 1.0f);
     EXPECT_TRUE(a.note.empty());
     glm::vec3 cell = a.volume.cellSize();
-    for (int k = 0; k < 3; ++k) EXPECT_LE(cell[k], 1.0f + 1e-5f);
-    for (glm::vec3 c : {b.min, b.max}) EXPECT_TRUE(a.volume.contains(c));
+    for (int k = 0; k < 3; ++k)
+        EXPECT_LE(cell[k], 1.0f + 1e-5f);
+    for (glm::vec3 c : {b.min, b.max})
+        EXPECT_TRUE(a.volume.contains(c));
     EXPECT_EQ(volumeProblem(a.volume), "");
 }
 
