@@ -39,13 +39,16 @@ FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& set
 
 FrameRenderer::~FrameRenderer() = default;
 
-void FrameRenderer::render(const RenderView& view) {
+void FrameRenderer::render(const RenderView& view, FrameTimer* timer) {
     if (!targets_ || targets_->gbuffer.width() != view.width ||
         targets_->gbuffer.height() != view.height)
         targets_ = std::make_unique<FrameTargets>(view.width, view.height);
     lastView_ = view;
-    FrameContext ctx{gpu_, view, settings_, programs_, *targets_, quirks_, {}, {}};
-    for (auto& pass : passes_) pass->execute(ctx);
+    FrameContext ctx{gpu_, view, settings_, programs_, *targets_, quirks_, {}, {}, timer};
+    for (auto& pass : passes_) {
+        TimedSection section(timer, pass->name());
+        pass->execute(ctx);
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glUseProgram(0);
 }
@@ -70,8 +73,8 @@ void FrameRenderer::presentToWindow(int w, int h) const {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, targets_->outputFbo.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
     if (quirks_.windowBlitNeedsSrgbOff) glDisable(GL_FRAMEBUFFER_SRGB);
-    glBlitFramebuffer(0, 0, targets_->output.desc().width, targets_->output.desc().height, 0, 0,
-                      w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBlitFramebuffer(0, 0, targets_->output.desc().width, targets_->output.desc().height, 0, 0, w,
+                      h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
     if (quirks_.windowBlitNeedsSrgbOff) glEnable(GL_FRAMEBUFFER_SRGB);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

@@ -33,7 +33,8 @@ public:
                   const GiOptions& gi = {});
     ~FrameRenderer();
 
-    void render(const RenderView& view);
+    // One frame; with a timer, every pass is a timed section named by Pass::name().
+    void render(const RenderView& view, FrameTimer* timer = nullptr);
 
     image::Image8 readOutput() const;   // tonemapped sRGB, 8-bit
     image::ImageF readRadiance() const; // linear HDR radiance (RGBA, alpha = 1)

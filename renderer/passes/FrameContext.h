@@ -5,6 +5,7 @@
 #include "gl/DriverQuirks.h"
 #include "gl/ProgramCache.h"
 #include "gl/Texture.h"
+#include "passes/FrameTimer.h"
 #include "passes/GBufferLayout.h"
 #include "passes/GpuScene.h"
 #include "passes/RenderView.h"
@@ -15,7 +16,7 @@
 namespace pb::render {
 
 struct FrameSettings {
-    float exposure = 1.0f;                 // linear scale before tonemapping
+    float exposure = 1.0f; // linear scale before tonemapping
     // The indirect input until the GI passes fill it: a hemispherical ambient, irradiance for
     // an upward normal and for a downward one, blended by the normal's Y.
     glm::vec3 ambientUp{0.0f};
@@ -42,11 +43,11 @@ struct GiResult {
 struct FrameTargets {
     FrameTargets(int width, int height);
     GBuffer gbuffer;
-    gl::Texture radiance;        // RGBA16F linear radiance (lighting output)
+    gl::Texture radiance; // RGBA16F linear radiance (lighting output)
     gl::Framebuffer radianceFbo;
-    gl::Texture output;          // RGBA8 sRGB-encoded tonemapped image
+    gl::Texture output; // RGBA8 sRGB-encoded tonemapped image
     gl::Framebuffer outputFbo;
-    gl::VertexArrayId emptyVao;  // core profiles reject draws without a VAO
+    gl::VertexArrayId emptyVao; // core profiles reject draws without a VAO
 };
 
 struct FrameContext {
@@ -58,6 +59,7 @@ struct FrameContext {
     const gl::DriverQuirks& quirks;
     ShadowResult shadow;
     GiResult gi;
+    FrameTimer* timer = nullptr; // sections for the bench; null when nobody measures
 };
 
 class Pass {

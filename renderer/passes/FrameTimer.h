@@ -1,0 +1,34 @@
+#pragma once
+// The seam through which a benchmark measures named sections of a frame. FrameRenderer opens
+// one section per pass (named by Pass::name()); a pass may open sub-sections inside its own
+// (e.g. "gi-fill" inside "gi-apply" for the stencil fill of each volume). A timer attributes
+// time to the innermost open section (exclusive time), so sections nest but never overlap.
+// Rendering without a timer (null) costs nothing. How time is taken (CPU clock around
+// glFinish, timer queries, ...) is the timer's business, not the renderer's.
+namespace pb::render {
+
+class FrameTimer {
+public:
+    virtual ~FrameTimer() = default;
+    virtual void begin(const char* section) = 0;
+    virtual void end(const char* section) = 0;
+};
+
+// RAII section; a null timer makes it a no-op.
+class TimedSection {
+public:
+    TimedSection(FrameTimer* timer, const char* section) : timer_(timer), section_(section) {
+        if (timer_) timer_->begin(section_);
+    }
+    ~TimedSection() {
+        if (timer_) timer_->end(section_);
+    }
+    TimedSection(const TimedSection&) = delete;
+    TimedSection& operator=(const TimedSection&) = delete;
+
+private:
+    FrameTimer* timer_;
+    const char* section_;
+};
+
+} // namespace pb::render
