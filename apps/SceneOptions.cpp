@@ -1,12 +1,15 @@
 #include "SceneOptions.h"
 
+#include "core/Error.h"
+
 #include <iostream>
 
 namespace pb::app {
 
 void addSceneOptions(CLI::App& cmd, SceneArgs& a) {
     std::string names;
-    for (const auto& n : scene::builtinSceneNames()) names += (names.empty() ? "" : ", ") + n;
+    for (const auto& n : scene::builtinSceneNames())
+        names += (names.empty() ? "" : ", ") + n;
     cmd.add_option("--scene", a.scene,
                    "Built-in scene name (" + names + ") or path to a .gltf/.glb file")
         ->capture_default_str();
@@ -25,8 +28,21 @@ scene::Scene loadSceneWithOverrides(const SceneArgs& a) {
     scene::Scene s = scene::loadScene(a.scene, opts);
     if (!a.sun.empty()) scene::applySunOverride(s, a.sun);
     if (!a.sky.empty()) scene::applySkyOverride(s, a.sky);
-    for (const auto& w : s.warnings) std::cerr << "warning: " << w << "\n";
+    for (const auto& w : s.warnings)
+        std::cerr << "warning: " << w << "\n";
     return s;
+}
+
+scene::View chooseView(const scene::Scene& s, const std::string& viewName,
+                       const std::string& cameraSpec) {
+    if (!cameraSpec.empty()) return scene::parseCameraSpec(cameraSpec);
+    if (viewName.empty()) return s.views.front();
+    if (const scene::View* v = s.findView(viewName)) return *v;
+    std::string names;
+    for (const auto& v : s.views)
+        names += (names.empty() ? "" : ", ") + v.name;
+    throw Error("--view '" + viewName + "': scene '" + s.name +
+                "' has no such view (views: " + names + ")");
 }
 
 } // namespace pb::app

@@ -10,7 +10,7 @@ namespace pb::app {
 
 struct SceneArgs {
     std::string scene = "cornell";
-    std::string sun;   // empty = scene default
+    std::string sun; // empty = scene default
     std::string sky;
     std::vector<std::string> dynamicNodes;
 };
@@ -18,5 +18,9 @@ struct SceneArgs {
 void addSceneOptions(CLI::App& cmd, SceneArgs& args);
 // Loads the scene, applies the overrides and prints its warnings to stderr.
 scene::Scene loadSceneWithOverrides(const SceneArgs& args);
+// The camera of --camera SPEC if given, else the view named by --view, else the scene's first
+// view. Throws pb::Error listing the scene's views for an unknown name.
+scene::View chooseView(const scene::Scene& s, const std::string& viewName,
+                       const std::string& cameraSpec);
 
 } // namespace pb::app
