@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 
+#include <cstdio>
 #include <iostream>
 
 namespace pb::app {
@@ -31,6 +32,23 @@ scene::Scene loadSceneWithOverrides(const SceneArgs& a) {
     for (const auto& w : s.warnings)
         std::cerr << "warning: " << w << "\n";
     return s;
+}
+
+std::string sceneSummary(const scene::Scene& s) {
+    size_t dynamic = 0;
+    for (const auto& i : s.instances)
+        dynamic += i.dynamic;
+    char buf[512];
+    const scene::Bounds b = s.worldBounds();
+    std::string text = s.name + ": " + std::to_string(s.triangleCount()) + " triangles, " +
+                       std::to_string(s.instances.size()) + " instances";
+    if (dynamic > 0) text += " (" + std::to_string(dynamic) + " dynamic)";
+    if (b.empty()) return text + ", no geometry";
+    const glm::vec3 sz = b.size();
+    std::snprintf(buf, sizeof buf,
+                  ", bounds (%.4g,%.4g,%.4g)..(%.4g,%.4g,%.4g), size %.4g x %.4g x %.4g", b.min.x,
+                  b.min.y, b.min.z, b.max.x, b.max.y, b.max.z, sz.x, sz.y, sz.z);
+    return text + buf;
 }
 
 scene::View chooseView(const scene::Scene& s, const std::string& viewName,

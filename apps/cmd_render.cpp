@@ -117,8 +117,7 @@ int run(RenderArgs& a) {
     render::FrameSettings settings = render::defaultFrameSettings(s);
     if (a.exposure > 0) settings.exposure = a.exposure;
     render::FrameRenderer renderer(s, settings, gi);
-    std::cout << "scene: " << s.name << ", " << s.triangleCount() << " triangles, "
-              << s.instances.size() << " instances; view '" << view.name << "'\n"
+    std::cout << "scene " << sceneSummary(s) << "; view '" << view.name << "'\n"
               << "platform: " << platform->description() << "\n";
     if (const render::GpuProbes* gp = renderer.gpuProbes()) {
         std::string changed;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <regex>
 
 namespace fs = std::filesystem;
 using namespace pb::test;
@@ -35,24 +36,29 @@ void expectCleanFailure(const CommandResult& r, const std::string& mustName, con
 
 TEST(RenderCli, BuiltinSceneWritesPngOfRequestedSize) {
     fs::path dir = outputDir();
-    auto r = runProbebench({"render", "--scene", "courtyard", "--width", "160", "--height", "90",
-                            "--out", (dir / "c.png").string(), "--out-hdr",
-                            (dir / "c.pfm").string()});
+    auto r =
+        runProbebench({"render", "--scene", "courtyard", "--width", "160", "--height", "90",
+                       "--out", (dir / "c.png").string(), "--out-hdr", (dir / "c.pfm").string()});
     ASSERT_EQ(r.exitCode, 0) << r.output;
+    // The scene is reported: its triangle count and bounds.
+    EXPECT_TRUE(std::regex_search(r.output, std::regex(R"(scene courtyard: [1-9][0-9]* triangles, )"
+                                                       R"([0-9]+ instances, bounds \(.*\)\.\.\()")))
+        << r.output;
     auto img = pb::image::readPng((dir / "c.png").string());
     EXPECT_EQ(img.width, 160);
     EXPECT_EQ(img.height, 90);
     EXPECT_GT(meanLuma(img), 10.0) << "image is black";
     auto hdr = pb::image::readPfm((dir / "c.pfm").string());
     ASSERT_EQ(hdr.width, 160);
-    for (float v : hdr.pixels) ASSERT_TRUE(std::isfinite(v) && v >= 0.0f);
+    for (float v : hdr.pixels)
+        ASSERT_TRUE(std::isfinite(v) && v >= 0.0f);
 }
 
 TEST(RenderCli, DumpGBufferWritesEveryChannel) {
     fs::path dir = outputDir();
-    auto r = runProbebench({"render", "--scene", "rooms", "--width", "64", "--height", "36",
-                            "--out", (dir / "r.png").string(), "--dump-gbuffer",
-                            (dir / "gb").string()});
+    auto r =
+        runProbebench({"render", "--scene", "rooms", "--width", "64", "--height", "36", "--out",
+                       (dir / "r.png").string(), "--dump-gbuffer", (dir / "gb").string()});
     ASSERT_EQ(r.exitCode, 0) << r.output;
     for (const char* f : {"albedo.png", "normal.png", "emissive.pfm", "flags.png", "depth.pfm"})
         EXPECT_TRUE(fs::exists(dir / "gb" / f)) << f;
@@ -60,24 +66,24 @@ TEST(RenderCli, DumpGBufferWritesEveryChannel) {
 
 TEST(RenderCli, UnknownViewListsTheViews) {
     fs::path dir = outputDir();
-    auto r = runProbebench({"render", "--scene", "cornell", "--view", "nope", "--out",
-                            (dir / "x.png").string()});
+    auto r = runProbebench(
+        {"render", "--scene", "cornell", "--view", "nope", "--out", (dir / "x.png").string()});
     expectCleanFailure(r, "nope", dir / "x.png");
     EXPECT_NE(r.output.find("default"), std::string::npos) << r.output;
 }
 
 TEST(RenderCli, MissingSceneFile) {
     fs::path dir = outputDir();
-    auto r = runProbebench({"render", "--scene", (dir / "missing.gltf").string(), "--out",
-                            (dir / "x.png").string()});
+    auto r = runProbebench(
+        {"render", "--scene", (dir / "missing.gltf").string(), "--out", (dir / "x.png").string()});
     expectCleanFailure(r, "missing.gltf", dir / "x.png");
 }
 
 TEST(RenderCli, MalformedGltfJson) {
     fs::path dir = outputDir();
     std::ofstream(dir / "bad.gltf") << "{ \"asset\": { \"version\": \"2.0\" }, \"nodes\": [ ";
-    auto r = runProbebench({"render", "--scene", (dir / "bad.gltf").string(), "--out",
-                            (dir / "x.png").string()});
+    auto r = runProbebench(
+        {"render", "--scene", (dir / "bad.gltf").string(), "--out", (dir / "x.png").string()});
     expectCleanFailure(r, "bad.gltf", dir / "x.png");
 }
 
@@ -111,8 +117,8 @@ class PlatformParity : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(PlatformParity, EglMatchesOsmesa) {
     fs::path dir = outputDir();
-    std::vector<std::string> common{"render", "--scene", GetParam(), "--width", "240",
-                                    "--height", "135"};
+    std::vector<std::string> common{"render", "--scene",  GetParam(), "--width",
+                                    "240",    "--height", "135"};
     auto egl = common, osm = common;
     egl.insert(egl.end(), {"--platform", "egl", "--out", (dir / "egl.png").string()});
     osm.insert(osm.end(), {"--platform", "osmesa", "--out", (dir / "osmesa.png").string()});
@@ -135,8 +141,8 @@ TEST(RenderCli, GlfwWindowMatchesEgl) {
         GTEST_SKIP() << "xvfb-run not installed";
     }
     fs::path dir = outputDir();
-    std::vector<std::string> args{"render", "--scene", "courtyard", "--width", "240",
-                                  "--height", "135", "--frames", "2"};
+    std::vector<std::string> args{"render",   "--scene", "courtyard", "--width", "240",
+                                  "--height", "135",     "--frames",  "2"};
     auto egl = args;
     egl.insert(egl.end(), {"--platform", "egl", "--out", (dir / "egl.png").string()});
     std::vector<std::string> glfw{"xvfb-run", "-a", binaryPath().string()};
@@ -172,13 +178,13 @@ TEST_P(SharedSceneRender, RendersLitImage) {
     EXPECT_LT(luma, 250.0) << "blown out";
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Shared, SharedSceneRender,
-    ::testing::Values("cornell_box/CornellBox-Original.gltf", "sponza_decimated/sponza_s_lod4.glb",
-                      "space_ship_hallway/space_ship_hallway.glb",
-                      "japanese_bridge_garden/japanese_bridge_garden.gltf",
-                      "dream_apartment/dream_apartment.gltf"),
-    [](const auto& info) {
-        std::string n = info.param.substr(0, info.param.find('/'));
-        return n;
-    });
+INSTANTIATE_TEST_SUITE_P(Shared, SharedSceneRender,
+                         ::testing::Values("cornell_box/CornellBox-Original.gltf",
+                                           "sponza_decimated/sponza_s_lod4.glb",
+                                           "space_ship_hallway/space_ship_hallway.glb",
+                                           "japanese_bridge_garden/japanese_bridge_garden.gltf",
+                                           "dream_apartment/dream_apartment.gltf"),
+                         [](const auto& info) {
+                             std::string n = info.param.substr(0, info.param.find('/'));
+                             return n;
+                         });
