@@ -158,14 +158,13 @@ std::size_t GpuProbes::bytes() const {
 }
 
 std::vector<int> GpuProbes::drawOrder() const {
-    std::vector<int> order(volumes_.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](int a, int b) {
-        const GpuProbeVolume &va = volumes_[size_t(a)], &vb = volumes_[size_t(b)];
-        if (va.boxVolume != vb.boxVolume) return va.boxVolume > vb.boxVolume;
-        return va.fileIndex > vb.fileIndex;
-    });
-    return order;
+    std::vector<float> boxes;
+    std::vector<int> files;
+    for (const GpuProbeVolume& v : volumes_) {
+        boxes.push_back(v.boxVolume);
+        files.push_back(v.fileIndex);
+    }
+    return volumeDrawOrder(boxes, files);
 }
 
 void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,

@@ -49,12 +49,9 @@ inline void bilinear(const ProbeTexture& t, float x, float y, int layer, float* 
 // only guards against NaN input.
 template <int CH, int T>
 inline void tileBilinear(const float* tile, float lx, float ly, float* out) {
-    const float a = lx - 0.5f, b = ly - 0.5f;
-    int x0 = floorToInt(a), y0 = floorToInt(b);
-    const float ax = a - float(x0), by = b - float(y0);
-    x0 = std::min(std::max(x0, 0), T - 2);
-    y0 = std::min(std::max(y0, 0), T - 2);
-    const float* t00 = tile + (y0 * T + x0) * CH;
+    const TileFootprint fp = tileFootprint(lx, ly, T);
+    const float ax = fp.fx, by = fp.fy;
+    const float* t00 = tile + (fp.y0 * T + fp.x0) * CH;
     const float* t01 = t00 + T * CH;
     for (int c = 0; c < CH; ++c) {
         float top = t00[c] + (t00[CH + c] - t00[c]) * ax;
@@ -65,9 +62,8 @@ inline void tileBilinear(const float* tile, float lx, float ly, float* out) {
 
 // Hints the two texel rows a tileBilinear at (lx, ly) will read into the cache.
 template <int CH, int T> inline void prefetchTexels(const float* tile, glm::vec2 l) {
-    int y0 = std::min(std::max(floorToInt(l.y - 0.5f), 0), T - 2);
-    int x0 = std::min(std::max(floorToInt(l.x - 0.5f), 0), T - 2);
-    const float* p = tile + (y0 * T + x0) * CH;
+    const TileFootprint fp = tileFootprint(l.x, l.y, T);
+    const float* p = tile + (fp.y0 * T + fp.x0) * CH;
     __builtin_prefetch(p);
     __builtin_prefetch(p + T * CH);
 }
@@ -86,6 +82,15 @@ std::vector<float> copyTiles(const ProbeVolume& v, const ProbeTexture& t, int ti
             }
     }
     return out;
+}
+
+// The texels of a corner's two fetches, layer-relative (tile origin + footprint origin).
+void recordFootprints(CornerFetch& c, glm::vec2 visCoord, glm::vec2 irrCoord) {
+    const TileFootprint vis = tileFootprint(visCoord.x, visCoord.y, kVisibilityTile);
+    const TileFootprint irr = tileFootprint(irrCoord.x, irrCoord.y, kIrradianceTile);
+    c.visTexel = {c.probe.x * kVisibilityTile + vis.x0, c.probe.z * kVisibilityTile + vis.y0};
+    c.irradianceTexel = {c.probe.x * kIrradianceTile + irr.x0,
+                         c.probe.z * kIrradianceTile + irr.y0};
 }
 
 } // namespace
@@ -154,6 +159,12 @@ void ProbeSampler::init(const std::vector<SamplerVolume>& volumes) {
     }
 }
 
+bool ProbeSampler::influencesPoint(int volume, const glm::vec3& pos) const {
+    if (volume < 0 || volume >= int(frames_.size())) return false;
+    const Frame& f = frames_[size_t(volume)];
+    return influences(f, f.toLocal * (pos - f.center));
+}
+
 bool ProbeSampler::influences(const Frame& f, const glm::vec3& p) const {
     for (int a = 0; a < 3; ++a)
         if (!(std::abs(p[a]) <= f.half[a] + f.fadeWidth[a])) return false;
@@ -191,8 +202,10 @@ glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
 } // namespace
 
 IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const glm::vec3& normal,
-                                            const glm::vec3& view, SampleOptions opt) const {
+                                            const glm::vec3& view, SampleOptions opt,
+                                            SampleTrace* trace) const {
     IrradianceSample out;
+    if (trace) *trace = SampleTrace{};
     if (vi < 0 || vi >= int(frames_.size())) return out;
     const Frame& f = frames_[size_t(vi)];
     if (!finite3(pos) || !finite3(normal) || !finite3(view)) return out;
@@ -254,6 +267,11 @@ IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const 
         if (c.x >= f.counts.x || c.y >= f.counts.y || c.z >= f.counts.z) continue;
         const int index = vol.probeIndex(c);
         const ProbeState& st = f.src.states[index];
+        if (trace) {
+            trace->corners[corner].probe = c;
+            trace->corners[corner].inGrid = true;
+            trace->corners[corner].valid = st.valid;
+        }
         if (!st.valid) continue;
         k.probe = f.gridOrigin + glm::vec3(c) * f.gridStep + st.offset;
         k.toPoint = biased - k.probe;
@@ -264,8 +282,10 @@ IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const 
         k.irrTile = f.irradianceTiles.data() + std::size_t(index) * kIrrTileFloats;
         prefetchTexels<2, kVisibilityTile>(k.visTile, k.visCoord);
         prefetchTexels<3, kIrradianceTile>(k.irrTile, irrCoord);
+        if (trace) recordFootprints(trace->corners[corner], k.visCoord, irrCoord);
         ++used;
     }
+    if (trace) trace->probesRead = true;
     glm::vec3 sumE(0.0f);
     float sumW = 0.0f;
     for (int i = 0; i < used; ++i) {

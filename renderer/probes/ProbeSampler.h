@@ -13,6 +13,7 @@
 // irradiance 0 - never NaN.
 #include "probes/ProbeSet.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace pb::probes {
@@ -47,6 +48,39 @@ struct IrradianceSample {
     int probes = 0;             // probes that contributed (valid, inside the grid)
 };
 
+// What one lookup reads, for the texture-cache model (renderer/costmodel): sampleVolume fills
+// it from the same arithmetic that filters, so the model's addresses are the texels the
+// sampler (and the shader) read. Corners in the sampler's order: corner = x + 2y + 4z.
+struct CornerFetch {
+    glm::ivec3 probe{0};    // grid coordinates (i, j, k): layer j, tile (i, k)
+    bool inGrid = false;    // false: skipped before any fetch (the shader too)
+    bool valid = false;     // the state was read; false: skipped after that read
+    glm::ivec2 visTexel{0}; // top-left texel of the 2x2 visibility footprint (in the layer)
+    glm::ivec2 irradianceTexel{0};
+};
+struct SampleTrace {
+    bool probesRead = false; // false: returned before reading any probe (fade 0, bad input)
+    CornerFetch corners[8];
+};
+
+// GL_LINEAR's footprint inside one tile of `tile` x `tile` texels at tile-local continuous
+// coordinates: texels (x0, y0) .. (x0+1, y0+1) with weights fx, fy. Valid coordinates keep
+// x0, y0 in [0, tile-2]; the clamp only guards against NaN input.
+struct TileFootprint {
+    int x0, y0;
+    float fx, fy;
+};
+inline TileFootprint tileFootprint(float lx, float ly, int tile) {
+    const float a = lx - 0.5f, b = ly - 0.5f;
+    int x0 = int(a), y0 = int(b); // floor without libm's call (no SSE4.1)
+    if (float(x0) > a) --x0;
+    if (float(y0) > b) --y0;
+    TileFootprint f{x0, y0, a - float(x0), b - float(y0)};
+    f.x0 = std::min(std::max(f.x0, 0), tile - 2);
+    f.y0 = std::min(std::max(f.y0, 0), tile - 2);
+    return f;
+}
+
 struct SampleOptions {
     bool edgeFade = true; // the bake turns it off: hits near a root's face keep full weight
 };
@@ -60,9 +94,13 @@ public:
     // TOWARDS the viewer (use the normal when there is none). Vectors need not be unit.
     IrradianceSample sample(const glm::vec3& pos, const glm::vec3& normal, const glm::vec3& view,
                             SampleOptions opt = {}) const;
+    // trace (optional): receives the texels this lookup reads (SampleTrace).
     IrradianceSample sampleVolume(int volume, const glm::vec3& pos, const glm::vec3& normal,
-                                  const glm::vec3& view, SampleOptions opt = {}) const;
+                                  const glm::vec3& view, SampleOptions opt = {},
+                                  SampleTrace* trace = nullptr) const;
     int selectVolume(const glm::vec3& pos) const;
+    // True when `pos` lies in the volume's influence region (the apply pass's discard test).
+    bool influencesPoint(int volume, const glm::vec3& pos) const;
     std::size_t volumeCount() const { return frames_.size(); }
 
 private:

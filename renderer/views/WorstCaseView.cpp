@@ -161,6 +161,31 @@ std::vector<int> CoverageTester::overlapImage(const scene::View& view, int width
     return image;
 }
 
+std::vector<SurfacePoint>
+CoverageTester::surfacePoints(const scene::View& view, int width, int height,
+                              const std::vector<glm::ivec2>& pixels) const {
+    if (width < 1 || height < 1) throw Error("coverage: resolution must be at least 1x1");
+    const Camera cam(view, width, height);
+    std::vector<SurfacePoint> out(pixels.size());
+    constexpr size_t kChunk = 1024;
+    probes::parallelFor((pixels.size() + kChunk - 1) / kChunk, 0, [&](size_t chunk, int) {
+        const size_t end = std::min(pixels.size(), (chunk + 1) * kChunk);
+        for (size_t i = chunk * kChunk; i < end; ++i) {
+            const glm::vec3 d = cam.ray(pixels[i].x, pixels[i].y);
+            const probes::RayHit hit = rays_->intersect(cam.eye, d);
+            if (!hit.hit()) continue;
+            SurfacePoint& s = out[i];
+            s.hit = true;
+            s.position = cam.eye + d * hit.t;
+            s.normal = rays_->faceNormal(hit.geomID, hit.primID);
+            // The GBuffer turns double-sided surfaces towards the viewer (gl_FrontFacing).
+            if (rays_->surface(hit.geomID).doubleSided && glm::dot(s.normal, d) > 0.0f)
+                s.normal = -s.normal;
+        }
+    });
+    return out;
+}
+
 Coverage CoverageTester::measureSerial(const scene::View& view, int width, int height) const {
     const Camera cam(view, width, height);
     Tally total;

@@ -28,6 +28,13 @@ struct Coverage {
     double meanDistance = 0; // mean hit distance of covered pixels (world units)
 };
 
+// What the GBuffer holds at one pixel, from the CPU primary ray (for the cost model).
+struct SurfacePoint {
+    bool hit = false;         // false: sky
+    glm::vec3 position{0.0f}; // world hit point
+    glm::vec3 normal{0.0f};   // geometric (face) normal, towards the eye on double-sided faces
+};
+
 // Casts the coverage rays of one scene + probe set. Building it builds the BVH once (0.2 s
 // for 0.2 M triangles), so a search asks it many times.
 class CoverageTester {
@@ -41,6 +48,10 @@ public:
     // Per pixel (rows top to bottom): how many kept volumes contain its surface point; 0 =
     // the pixel needs no GI (sky, or outside every volume).
     std::vector<int> overlapImage(const scene::View& view, int width, int height) const;
+    // The surface seen through each pixel centre (x, y), row 0 at the top, of a width x height
+    // image (all cores; the result does not depend on the thread count).
+    std::vector<SurfacePoint> surfacePoints(const scene::View& view, int width, int height,
+                                            const std::vector<glm::ivec2>& pixels) const;
     // Ranking of views for the search: full coverage, then overlap, then depth.
     double score(const Coverage& c) const;
     bool kept(int volume) const { return kept_.empty() || kept_[size_t(volume)]; }

@@ -1,4 +1,4 @@
-#include "passes/GiVolumeLod.h"
+#include "costmodel/GiVolumeLod.h"
 
 #include "core/Error.h"
 
@@ -70,6 +70,18 @@ std::vector<int> selectVolumes(const probes::ProbeSet& set, const profile::Volum
     for (size_t v = 0; v < n; ++v)
         if (keep[v]) out.push_back(int(v));
     return out;
+}
+
+std::vector<int> volumeDrawOrder(const std::vector<float>& boxVolumes,
+                                 const std::vector<int>& fileIndices) {
+    std::vector<int> order(fileIndices.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](int a, int b) {
+        const float va = boxVolumes[size_t(a)], vb = boxVolumes[size_t(b)];
+        if (va != vb) return va > vb;
+        return fileIndices[size_t(a)] > fileIndices[size_t(b)];
+    });
+    return order;
 }
 
 } // namespace pb::render

@@ -1,0 +1,30 @@
+#pragma once
+// gi.volume_lod applied to a probe set: which volumes the GPU loads, what they cost in GPU
+// memory and the order the apply pass draws them (GL-free: the renderer's GpuProbes and the
+// cost model share it; namespace render because these are the renderer's rules). Omitting a volume
+// omits the volumes nested in it: a child only refines its parent and its outer ring was blended
+// towards it.
+#include "probes/ProbeSet.h"
+#include "profile/VolumeLod.h"
+
+#include <cstddef>
+#include <vector>
+
+namespace pb::render {
+
+// GPU bytes of one volume with one scenario resident: irradiance + visibility in the set's
+// storage format + the per-probe state texture (RGBA32F).
+std::size_t gpuVolumeBytes(const probes::ProbeVolume& v, probes::StorageFormat format);
+
+// Indices into set.volumes of the volumes to load, in file order. Throws pb::Error when a
+// name in omit: is not in the set or when budget_mib: cannot hold a root volume.
+std::vector<int> selectVolumes(const probes::ProbeSet& set, const profile::VolumeLod& lod);
+
+// The apply pass's draw order for "each draw overwrites": largest box first, among equal boxes
+// the later file index first, so the last draw covering a pixel is the CPU sampler's choice
+// (smallest box, ties: first in the file). boxVolumes[i] = ProbeVolume::boxVolume() of the
+// volume at file index fileIndices[i]; returns positions i.
+std::vector<int> volumeDrawOrder(const std::vector<float>& boxVolumes,
+                                 const std::vector<int>& fileIndices);
+
+} // namespace pb::render

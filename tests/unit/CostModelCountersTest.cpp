@@ -1,0 +1,180 @@
+// The cost model's counters on an analytic case: a floor seen from above, a root volume over
+// all of it and a child over half (x > 0). Every count follows from the pass structure:
+// one draw per volume, every fragment reads depth, pixels inside a volume read the normal and
+// 8 probes x 3 fetches, the child wins its half. Same inputs give byte-identical JSON.
+#include "unit/ProbeTestScenes.h"
+
+#include "core/Error.h"
+#include "costmodel/CachePresets.h"
+#include "costmodel/CostModel.h"
+#include "costmodel/GiVolumeLod.h"
+
+#include <gtest/gtest.h>
+
+namespace pb::test {
+namespace {
+
+probes::ProbeVolume box(const std::string& name, glm::vec3 lo, glm::vec3 hi,
+                        const std::string& parent = "") {
+    probes::ProbeVolume v;
+    v.name = name;
+    v.center = 0.5f * (lo + hi);
+    v.halfExtents = 0.5f * (hi - lo);
+    v.counts = glm::ivec3(2);
+    v.parent = parent;
+    return v;
+}
+
+probes::ProbeSet setOf(std::vector<probes::ProbeVolume> vols) {
+    probes::ProbeSet set;
+    set.scenarios.push_back({"day", {}, {}});
+    set.irradiance.emplace_back();
+    for (const probes::ProbeVolume& v : vols) {
+        set.volumes.push_back(v);
+        set.states.emplace_back(size_t(v.probeCount()));
+        probes::ProbeTexture vis = probes::ProbeTexture::make(probes::visibilityShape(v.counts));
+        std::fill(vis.texels.begin(), vis.texels.end(), 1.0f);
+        set.visibility.push_back(vis);
+        probes::ProbeTexture irr = probes::ProbeTexture::make(probes::irradianceShape(v.counts));
+        std::fill(irr.texels.begin(), irr.texels.end(), 1.0f);
+        set.irradiance[0].push_back(irr);
+    }
+    return set;
+}
+
+scene::Scene floorScene() {
+    scene::Scene s = emptyScene();
+    int m = addMaterial(s, glm::vec3(0.5f));
+    scene::Primitive p;
+    p.material = m;
+    addQuad(p, {-10, 0, -10}, {20, 0, 0}, {0, 0, 20}, {0, 1, 0});
+    addInstance(s, std::move(p));
+    return s;
+}
+
+scene::View downView() {
+    scene::View v;
+    v.name = "down";
+    v.position = {0, 2, 0};
+    v.target = {0, 0, 0};
+    v.fovYDegrees = 60;
+    return v;
+}
+
+costmodel::CostReport runOn(const probes::ProbeSet& set, const costmodel::CostModelOptions& o) {
+    const scene::Scene s = floorScene();
+    const views::CoverageTester tester(s, set);
+    return costmodel::runCostModel(tester, downView(), o);
+}
+
+costmodel::CostModelOptions small() {
+    costmodel::CostModelOptions o;
+    o.width = 64;
+    o.height = 36;
+    o.caches = {costmodel::cachePresetFor("handheld"), costmodel::cachePresetFor("pc-high")};
+    return o;
+}
+
+} // namespace
+
+TEST(CostModelCounters, NestedVolumesOnAFloorGiveExactCounts) {
+    const probes::ProbeSet set = setOf({box("root", {-10, -1, -10}, {10, 1, 10}),
+                                        box("child", {0, -1, -10}, {10, 1, 10}, "root")});
+    const costmodel::CostReport r = runOn(set, small());
+    const costmodel::GiPassCounters& c = r.counters;
+    const std::uint64_t pixels = 64 * 36;
+    EXPECT_EQ(c.targetPixels, pixels);
+    EXPECT_EQ(c.giPixels, pixels);
+    ASSERT_EQ(c.volumes.size(), 2u);
+    EXPECT_EQ(c.volumes[0].name, "root"); // the larger box draws first
+    EXPECT_EQ(c.volumes[1].name, "child");
+    EXPECT_EQ(c.volumes[0].evaluated, pixels);
+    EXPECT_EQ(c.volumes[1].evaluated, pixels / 2); // pixel centres never lie on x = 0
+    EXPECT_EQ(c.volumes[1].outsideSkipped, pixels / 2);
+    EXPECT_EQ(c.volumes[1].won, pixels / 2);
+    EXPECT_EQ(c.volumes[0].won, pixels / 2);
+    const std::uint64_t lookups = pixels + pixels / 2;
+    for (const costmodel::VolumeCounters& v : c.volumes) {
+        EXPECT_EQ(v.fragments, pixels);
+        EXPECT_EQ(v.skySkipped, 0u);
+        EXPECT_EQ(v.fadedOut, 0u);
+        EXPECT_EQ(v.depthFetches, pixels);
+        EXPECT_EQ(v.normalFetches, v.evaluated);
+        EXPECT_EQ(v.stateFetches, 8 * v.evaluated); // 2x2x2 grid: all 8 probes, all valid
+        EXPECT_EQ(v.visibilityFetches, 8 * v.evaluated);
+        EXPECT_EQ(v.irradianceFetches, 8 * v.evaluated);
+    }
+    EXPECT_EQ(c.gbufferFetches, 2 * pixels + lookups); // depth per draw, normal per lookup
+    EXPECT_EQ(c.probeFetches, 24 * lookups);
+    EXPECT_DOUBLE_EQ(c.fetchesPerGiPixel, double(c.gbufferFetches + c.probeFetches) / pixels);
+    EXPECT_EQ(c.maxFetchesPerLookup, 26);
+    EXPECT_EQ(c.drawCalls, 2);
+    EXPECT_EQ(c.textureBinds, 5 + 2 * 3);
+    EXPECT_EQ(c.renderTargetBytesWritten, lookups * 8); // rgba16f
+    EXPECT_EQ(c.clearBytes, pixels * 8);
+    EXPECT_EQ(c.gpuProbeBytes, render::gpuVolumeBytes(set.volumes[0], set.format()) +
+                                   render::gpuVolumeBytes(set.volumes[1], set.format()));
+    // Raw footprint: 16 B state + 4 visibility texels x 4 B + 4 irradiance texels x 8 B.
+    EXPECT_EQ(c.probeFootprintBytes, lookups * 8 * (16 + 16 + 32));
+    ASSERT_EQ(r.results.size(), 4u * 2u);
+    for (const costmodel::CacheResult& res : r.results) {
+        EXPECT_GT(res.probeLines, 0u);
+        EXPECT_LE(res.probeHits, res.probeLines);
+        EXPECT_GE(res.gbufferLines, c.gbufferFetches / 16); // at most 16 texels per line
+    }
+}
+
+TEST(CostModelCounters, ResolutionTargetFormatAndVolumeLodChangeTheCounts) {
+    const probes::ProbeSet set = setOf({box("root", {-10, -1, -10}, {10, 1, 10}),
+                                        box("child", {0, -1, -10}, {10, 1, 10}, "root")});
+    costmodel::CostModelOptions o = small();
+    o.profile.set("gi.resolution", "half");
+    o.profile.set("gi.target_format", "r11g11b10f");
+    o.profile.set("gi.volume_lod", "omit:child");
+    const costmodel::GiPassCounters c = runOn(set, o).counters;
+    EXPECT_EQ(c.targetWidth, 32);
+    EXPECT_EQ(c.targetHeight, 18);
+    EXPECT_EQ(c.giPixels, 32u * 18u);
+    EXPECT_EQ(c.drawCalls, 1);
+    EXPECT_EQ(c.probeFetches, 24u * 32u * 18u);
+    EXPECT_EQ(c.renderTargetBytesWritten, 32u * 18u * 4u);
+    EXPECT_EQ(c.gpuProbeBytes, render::gpuVolumeBytes(set.volumes[0], set.format()));
+}
+
+TEST(CostModelCounters, SameInputsGiveIdenticalJson) {
+    const probes::ProbeSet set = setOf({box("root", {-10, -1, -10}, {10, 1, 10}),
+                                        box("child", {0, -1, -10}, {10, 1, 10}, "root")});
+    const std::string a = costmodel::reportJson(runOn(set, small())).dump();
+    const std::string b = costmodel::reportJson(runOn(set, small())).dump();
+    EXPECT_EQ(a, b);
+    EXPECT_NE(a.find("\"probe_hit_rate\""), std::string::npos);
+}
+
+TEST(CostModelCounters, SkyPixelsReadOnlyDepth) {
+    // Looking at the horizon: the upper half sees sky.
+    const probes::ProbeSet set = setOf({box("root", {-10, -1, -10}, {10, 1, 10})});
+    const scene::Scene s = floorScene();
+    const views::CoverageTester tester(s, set);
+    scene::View v = downView();
+    v.position = {0, 0.5f, 0};
+    v.target = {0, 0.5f, -1};
+    const costmodel::GiPassCounters c = costmodel::runCostModel(tester, v, small()).counters;
+    ASSERT_EQ(c.volumes.size(), 1u);
+    const costmodel::VolumeCounters& vc = c.volumes[0];
+    EXPECT_GT(vc.skySkipped, 0u);
+    EXPECT_EQ(vc.skySkipped + vc.outsideSkipped + vc.evaluated, vc.fragments);
+    EXPECT_EQ(c.giPixels, vc.evaluated);
+    EXPECT_EQ(c.gbufferFetches, vc.fragments + vc.evaluated);
+}
+
+TEST(CostModelCounters, BadOptionsAreErrors) {
+    const probes::ProbeSet set = setOf({box("root", {-10, -1, -10}, {10, 1, 10})});
+    costmodel::CostModelOptions o = small();
+    o.caches = {{"bad", 1000, 64, 4, ""}};
+    EXPECT_THROW(runOn(set, o), Error);
+    o = small();
+    o.scenario = 3;
+    EXPECT_THROW(runOn(set, o), Error);
+}
+
+} // namespace pb::test
