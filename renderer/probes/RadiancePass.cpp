@@ -10,9 +10,8 @@ namespace pb::probes {
 void RadianceSlab::reset(std::size_t probes, int rays) {
     rays_ = rays;
     const std::size_t n = probes * std::size_t(rays);
-    r_.resize(n);
-    g_.resize(n);
-    b_.resize(n);
+    radiance_.resize(n);
+    hits_.resize(n);
     pending_.resize(probes);
     for (auto& p : pending_)
         p.clear();
@@ -26,10 +25,17 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
     std::vector<Pending>& pending = pending_[slot];
     pending.clear();
     const float invPi = float(1.0 / M_PI);
+    // All rays first, then the shading: the face normal of each hit is prefetched while the
+    // following rays are traced (results are per ray: the order of the calls does not matter).
+    RayHit* hits = hits_.data() + first;
+    for (std::size_t i = 0; i < n; ++i) {
+        hits[i] = rs.intersect(origin, rot * dirs[i]);
+        rs.prefetchSurface(hits[i]);
+    }
+    counters.primary += n;
     for (std::size_t i = 0; i < n; ++i) {
         const glm::vec3 d = rot * dirs[i];
-        RayHit h = rs.intersect(origin, d);
-        ++counters.primary;
+        const RayHit& h = hits[i];
         glm::vec3 L;
         if (!h.hit()) {
             L = sc.sky.radiance;
@@ -53,9 +59,7 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
                 }
             }
         }
-        r_[first + i] = L.x;
-        g_[first + i] = L.y;
-        b_[first + i] = L.z;
+        radiance_[first + i] = glm::vec4(L, 0.0f);
     }
 }
 
@@ -81,7 +85,7 @@ void RadianceSlab::lookUp(const ProbeSampler& previous, int threads) {
         for (std::size_t j = 0; j < pending_[s].size(); ++j)
             order[start[key[i++]]++] = std::uint64_t(s) << 32 | j;
 
-    indirect_.resize(r_.size());
+    indirect_.resize(radiance_.size());
     constexpr std::size_t kChunk = 2048;
     std::vector<std::vector<SampleQuery>> queries(std::size_t(std::max(threads, 1)));
     std::vector<std::vector<IrradianceSample>> results(queries.size());
@@ -108,12 +112,10 @@ void RadianceSlab::convolve(std::size_t slot, const ProbeConvolution& conv, floa
         // The per-ray expression: emissive + albedo/pi * (direct + indirect).
         glm::vec3 e = h.direct;
         e += indirect_[h.ray];
-        glm::vec3 L = glm::vec3(r_[h.ray], g_[h.ray], b_[h.ray]) + h.albedoOverPi * e;
-        r_[h.ray] = L.x;
-        g_[h.ray] = L.y;
-        b_[h.ray] = L.z;
+        glm::vec3 L = glm::vec3(radiance_[h.ray]) + h.albedoOverPi * e;
+        radiance_[h.ray] = glm::vec4(L, 0.0f);
     }
-    conv.irradiance(r_.data() + first, g_.data() + first, b_.data() + first, outRgb);
+    conv.irradiance(&radiance_[first].x, outRgb);
 }
 
 } // namespace pb::probes

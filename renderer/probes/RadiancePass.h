@@ -56,7 +56,8 @@ private:
         std::uint32_t ray; // slot * rays + ray index
     };
     int rays_ = 0;
-    std::vector<float> r_, g_, b_;              // radiance per ray, slot-major
+    std::vector<RayHit> hits_;                  // per ray, slot-major
+    std::vector<glm::vec4> radiance_;           // per ray, slot-major: RGB + unused
     std::vector<std::vector<Pending>> pending_; // per slot
     std::vector<glm::vec3> indirect_;           // E_indirect per ray (pending hits only)
 };
