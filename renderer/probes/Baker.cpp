@@ -103,6 +103,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         };
     };
     std::vector<RayCounters> counters(static_cast<size_t>(threads));
+    RadianceSlab slab; // reused by every pass (keeps its buffers)
 
     // 1. Geometry.
     {
@@ -160,35 +161,53 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
             const auto dirs =
                 passDirections(cfg.raysPerProbe, radianceStream(cfg.seed, int(s), pass));
             const ProbeConvolution conv(dirs);
-            std::vector<RadianceScratch> scratch(static_cast<size_t>(threads));
             std::vector<std::vector<float>> irr(
                 size_t(threads), std::vector<float>(kIrradianceInterior * kIrradianceInterior * 3));
             std::string stage =
                 sc.name + " pass " + std::to_string(pass) + "/" + std::to_string(cfg.bounces);
-            parallelFor(
-                index.total(), threads,
-                [&](std::size_t flat, int t) {
-                    auto [v, p] = index.locate(flat);
+            // Slabs of probes (RadiancePass.h): about 2^18 rays each, so the indirect lookups
+            // of a slab share cells without holding a whole pass's hits in memory.
+            const std::size_t slabProbes =
+                req.slabProbes > 0 ? std::size_t(req.slabProbes)
+                                   : std::max<std::size_t>(1, (std::size_t(1) << 18) /
+                                                                  std::size_t(cfg.raysPerProbe));
+            for (std::size_t first = 0; first < index.total(); first += slabProbes) {
+                const std::size_t count = std::min(slabProbes, index.total() - first);
+                slab.reset(count, cfg.raysPerProbe);
+                parallelFor(count, threads, [&](std::size_t i, int t) {
+                    auto [v, p] = index.locate(first + i);
                     const ProbeVolume& vol = set.volumes[size_t(v)];
                     const ProbeState& st = set.states[size_t(v)][size_t(p)];
-                    glm::ivec3 c = vol.probeCoords(p);
-                    float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
-                    const int pitch = cur[size_t(v)].shape.width;
-                    for (int y = 0; y < kIrradianceTile; ++y)
-                        for (int x = 0; x < kIrradianceTile; ++x)
-                            tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
                     if (!st.valid) return;
-                    float* out = irr[size_t(t)].data();
-                    bakeProbeRadiance(rs, sc, scene.lights, vol.localToWorldRotation(),
-                                      vol.toWorld(vol.gridLocal(c) + st.offset), dirs, conv,
-                                      previous, scratch[size_t(t)], out, counters[size_t(t)]);
-                    for (int y = 0; y < kIrradianceInterior; ++y)
-                        for (int x = 0; x < kIrradianceInterior; ++x)
-                            for (int ch = 0; ch < 3; ++ch)
-                                tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 + size_t(ch)] =
-                                    out[(y * kIrradianceInterior + x) * 3 + ch];
-                },
-                report(stage));
+                    glm::ivec3 c = vol.probeCoords(p);
+                    slab.trace(i, rs, sc, scene.lights, vol.localToWorldRotation(),
+                               vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous != nullptr,
+                               counters[size_t(t)]);
+                });
+                if (previous) slab.lookUp(*previous, threads);
+                parallelFor(
+                    count, threads,
+                    [&](std::size_t i, int t) {
+                        auto [v, p] = index.locate(first + i);
+                        const ProbeVolume& vol = set.volumes[size_t(v)];
+                        const ProbeState& st = set.states[size_t(v)][size_t(p)];
+                        glm::ivec3 c = vol.probeCoords(p);
+                        float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
+                        const int pitch = cur[size_t(v)].shape.width;
+                        for (int y = 0; y < kIrradianceTile; ++y)
+                            for (int x = 0; x < kIrradianceTile; ++x)
+                                tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
+                        if (!st.valid) return;
+                        float* out = irr[size_t(t)].data();
+                        slab.convolve(i, conv, out);
+                        for (int y = 0; y < kIrradianceInterior; ++y)
+                            for (int x = 0; x < kIrradianceInterior; ++x)
+                                for (int ch = 0; ch < 3; ++ch)
+                                    tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 + size_t(ch)] =
+                                        out[(y * kIrradianceInterior + x) * 3 + ch];
+                    },
+                    [&, first](std::size_t done) { report(stage)(first + done); });
+            }
             doneBefore += index.total();
             for (ProbeTexture& t : cur)
                 fillAllBorders(t, kIrradianceInterior);

@@ -20,6 +20,9 @@ struct BakeRequest {
     std::vector<Scenario> scenarios;
     BakeSettings settings;
     int threads = 0; // 0 = all cores; never changes the result
+    // Probes traced before their indirect lookups are sorted and done (RadiancePass.h);
+    // 0 = about 2^18 rays per slab. Memory and speed only: never changes the result.
+    int slabProbes = 0;
     // Benchmark instrumentation (not an input): when set, receives every ray the passes
     // traced, so bench_bake can replay exactly the same rays against bare Embree.
     std::vector<RecordedRay>* recordRays = nullptr;

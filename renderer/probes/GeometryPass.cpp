@@ -24,8 +24,9 @@ TraceSummary trace(const RayScene& rs, const glm::vec3& origin, const glm::mat3&
         s.t[size_t(r)] = h.hit() ? h.t : std::numeric_limits<float>::infinity();
         s.backface[size_t(r)] = 0;
         if (!h.hit()) continue;
-        bool back = glm::dot(rs.faceNormal(h.geomID, h.primID), d) > 0.0f &&
-                    !rs.surface(h.geomID).doubleSided;
+        // Double-sided first: it spares the face normal's cache miss (same result).
+        bool back = !rs.surface(h.geomID).doubleSided &&
+                    glm::dot(rs.faceNormal(h.geomID, h.primID), d) > 0.0f;
         if (back) {
             s.backface[size_t(r)] = 1;
             ++sum.backfaces;

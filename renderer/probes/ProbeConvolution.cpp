@@ -4,6 +4,7 @@
 #include "probes/ProbeLayout.h"
 
 #include <cmath>
+#include <cstring>
 
 namespace pb::probes {
 namespace {
@@ -54,20 +55,19 @@ ProbeConvolution::ProbeConvolution(const std::vector<glm::vec3>& dirs) : rays_(i
     build(dirs, kVisibilityInterior, 1.0f, true, vis_);
 }
 
-void ProbeConvolution::irradiance(const float* r, const float* g, const float* b,
-                                  float* out) const {
+void ProbeConvolution::irradiance(const float* rgbx, float* out) const {
+    // GCC/Clang vector type: lane c computes sum_c += w * L_c exactly like a scalar loop.
+    typedef float Float4 __attribute__((vector_size(16)));
     for (size_t t = 0; t + 1 < irr_.start.size(); ++t) {
-        float sr = 0, sg = 0, sb = 0;
+        Float4 sum = {0.0f, 0.0f, 0.0f, 0.0f};
         for (int e = irr_.start[t]; e < irr_.start[t + 1]; ++e) {
-            int k = irr_.ray[size_t(e)];
-            float w = irr_.weight[size_t(e)];
-            sr += w * r[k];
-            sg += w * g[k];
-            sb += w * b[k];
+            Float4 radiance;
+            std::memcpy(&radiance, rgbx + 4 * size_t(irr_.ray[size_t(e)]), sizeof(radiance));
+            sum += irr_.weight[size_t(e)] * radiance;
         }
-        out[3 * t] = sr;
-        out[3 * t + 1] = sg;
-        out[3 * t + 2] = sb;
+        out[3 * t] = sum[0];
+        out[3 * t + 1] = sum[1];
+        out[3 * t + 2] = sum[2];
     }
 }
 

@@ -24,8 +24,10 @@ class ProbeConvolution {
 public:
     explicit ProbeConvolution(const std::vector<glm::vec3>& localDirs);
     int rays() const { return rays_; }
-    // radiance: SoA arrays of rays() floats; out: interior texels, row-major, RGB per texel.
-    void irradiance(const float* r, const float* g, const float* b, float* outRgb) const;
+    // radiance: rays() x (R, G, B, unused) floats; out: interior texels, row-major, RGB per
+    // texel. (Four floats per ray: one SIMD multiply-add per weight, the same per-channel
+    // arithmetic in the same order as three scalar sums.)
+    void irradiance(const float* rgbx, float* outRgb) const;
     // dist01: rays() normalised distances; out: interior texels, (mean, meanSq) per texel.
     void visibility(const float* dist01, float* outMeanMeanSq) const;
 

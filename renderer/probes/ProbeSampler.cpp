@@ -155,6 +155,8 @@ void ProbeSampler::init(const std::vector<SamplerVolume>& volumes) {
         f.boxVolume = v.boxVolume();
         f.irradianceTiles = copyTiles(v, *sv.irradiance, kIrradianceTile, 3);
         f.visibilityTiles = copyTiles(v, *sv.visibility, kVisibilityTile, 2);
+        f.firstKey = std::uint32_t(keyCount_);
+        keyCount_ += std::size_t(v.probeCount());
         frames_.push_back(std::move(f));
     }
 }
@@ -184,6 +186,19 @@ int ProbeSampler::selectVolume(const glm::vec3& pos) const {
     return best;
 }
 
+std::uint32_t ProbeSampler::localityKey(const glm::vec3& pos) const {
+    const int v = selectVolume(pos);
+    if (v < 0) return 0;
+    const Frame& f = frames_[size_t(v)];
+    const glm::vec3 p = f.toLocal * (pos - f.center);
+    glm::ivec3 base(0);
+    for (int a = 0; a < 3; ++a) // the base probe of sampleVolume's step 3
+        if (f.counts[a] > 1)
+            base[a] = floorToInt(std::min(std::max((p[a] + f.half[a]) * f.invCell[a], 0.0f),
+                                          float(f.counts[a] - 2)));
+    return f.firstKey + std::uint32_t(f.src.volume->probeIndex(base));
+}
+
 IrradianceSample ProbeSampler::sample(const glm::vec3& pos, const glm::vec3& normal,
                                       const glm::vec3& view, SampleOptions opt) const {
     int v = selectVolume(pos);
@@ -199,17 +214,59 @@ glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
     float len = glm::length(v);
     return len > 0.0f && std::isfinite(len) ? v / len : fallback;
 }
+
 } // namespace
+
+// The 8 corners are kept as arrays (x fastest, corner = x + 2y + 4z) so the per-corner
+// arithmetic runs as SIMD loops: the same IEEE operations per corner as a scalar loop, hence
+// the same bits. Corners outside the grid or on an invalid probe are computed on a clamped
+// probe and then ignored (`live` = 0).
+struct ProbeSampler::Lookup {
+    IrradianceSample out; // final when `done`
+    bool done = true;
+    const Frame* frame = nullptr;
+    glm::vec3 p, n, alpha;
+    glm::vec2 irrCoord;
+    float fade = 0.0f;
+    alignas(16) float px[8], py[8], pz[8]; // probe position (local)
+    alignas(16) float dist[8];             // |biased - probe|
+    alignas(16) float vx[8], vy[8];        // visibility tile coordinates
+    const float* visTile[8];
+    const float* irrTile[8];
+    bool live[8];
+};
 
 IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const glm::vec3& normal,
                                             const glm::vec3& view, SampleOptions opt,
                                             SampleTrace* trace) const {
-    IrradianceSample out;
+    Lookup k;
+    prepare(vi, pos, normal, view, opt, k, trace);
+    return finish(k);
+}
+
+void ProbeSampler::sampleBatch(const SampleQuery* q, std::size_t count, IrradianceSample* out,
+                               SampleOptions opt) const {
+    // Query i is prepared (addresses computed, tiles prefetched) kAhead queries before it is
+    // finished, so its cache misses overlap the arithmetic of the queries in between.
+    constexpr std::size_t kAhead = 4;
+    Lookup ring[kAhead];
+    for (std::size_t i = 0; i < count + kAhead; ++i) {
+        Lookup& slot = ring[i % kAhead];
+        if (i >= kAhead) out[i - kAhead] = finish(slot);
+        if (i < count) prepare(selectVolume(q[i].pos), q[i].pos, q[i].normal, q[i].view, opt, slot);
+    }
+}
+
+void ProbeSampler::prepare(int vi, const glm::vec3& pos, const glm::vec3& normal,
+                           const glm::vec3& view, SampleOptions opt, Lookup& k,
+                           SampleTrace* trace) const {
+    k.out = {};
+    k.done = true;
     if (trace) *trace = SampleTrace{};
-    if (vi < 0 || vi >= int(frames_.size())) return out;
+    if (vi < 0 || vi >= int(frames_.size())) return;
     const Frame& f = frames_[size_t(vi)];
-    if (!finite3(pos) || !finite3(normal) || !finite3(view)) return out;
-    out.volume = vi;
+    if (!finite3(pos) || !finite3(normal) || !finite3(view)) return;
+    k.out.volume = vi;
 
     // 1. Everything in the volume's local frame (rotation keeps lengths and dot products).
     const glm::vec3 p = f.toLocal * (pos - f.center);
@@ -226,7 +283,7 @@ IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const 
                         : 0.0f;
     }
     if (!opt.edgeFade) fade = fade > 0.0f ? 1.0f : 0.0f;
-    if (fade <= 0.0f) return out;
+    if (fade <= 0.0f) return;
 
     // 3. Surface bias, base probe (unbiased point) and trilinear fractions (biased point).
     const glm::vec3 biased =
@@ -247,79 +304,120 @@ IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const 
         alpha[a] = std::min(std::max(gb, 0.0f), 1.0f);
     }
 
-    // 4. The 8 surrounding probes. First their positions and texel addresses, prefetching the
-    //    tiles (the loads are the cost of a lookup), then the weights in corner order.
+    // 4. The 8 surrounding probes: their positions and texel addresses, prefetching the tiles
+    //    (the loads are the cost of a lookup); finish() weights them in corner order.
     const ProbeVolume& vol = *f.src.volume;
-    const glm::vec2 irrCoord = octInteriorCoord(n, kIrradianceInterior) + 1.0f;
-    struct Corner {
-        glm::ivec3 off;
-        glm::vec3 probe, toPoint;
-        float dist;
-        glm::vec2 visCoord;
-        const float *visTile, *irrTile;
-    };
-    Corner corners[8];
-    int used = 0;
+    k.irrCoord = octInteriorCoord(n, kIrradianceInterior) + 1.0f;
+    int index[8];
     for (int corner = 0; corner < 8; ++corner) {
-        Corner& k = corners[used];
-        k.off = glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-        const glm::ivec3 c = base + k.off;
-        if (c.x >= f.counts.x || c.y >= f.counts.y || c.z >= f.counts.z) continue;
-        const int index = vol.probeIndex(c);
-        const ProbeState& st = f.src.states[index];
-        if (trace) {
+        const glm::ivec3 off(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+        glm::ivec3 c = base + off;
+        const bool inside = c.x < f.counts.x && c.y < f.counts.y && c.z < f.counts.z;
+        if (!inside) c = base; // a real probe to compute on; ignored
+        index[corner] = vol.probeIndex(c);
+        const ProbeState& st = f.src.states[index[corner]];
+        k.live[corner] = inside && st.valid;
+        if (trace && inside) {
             trace->corners[corner].probe = c;
             trace->corners[corner].inGrid = true;
             trace->corners[corner].valid = st.valid;
         }
-        if (!st.valid) continue;
-        k.probe = f.gridOrigin + glm::vec3(c) * f.gridStep + st.offset;
-        k.toPoint = biased - k.probe;
-        k.dist = glm::length(k.toPoint);
-        const glm::vec3 dir = k.dist > 0.0f ? k.toPoint / k.dist : n;
-        k.visCoord = octInteriorCoord(dir, kVisibilityInterior) + 1.0f;
-        k.visTile = f.visibilityTiles.data() + std::size_t(index) * kVisTileFloats;
-        k.irrTile = f.irradianceTiles.data() + std::size_t(index) * kIrrTileFloats;
-        prefetchTexels<2, kVisibilityTile>(k.visTile, k.visCoord);
-        prefetchTexels<3, kIrradianceTile>(k.irrTile, irrCoord);
-        if (trace) recordFootprints(trace->corners[corner], k.visCoord, irrCoord);
-        ++used;
+        const glm::vec3 probe = f.gridOrigin + glm::vec3(c) * f.gridStep + st.offset;
+        k.px[corner] = probe.x;
+        k.py[corner] = probe.y;
+        k.pz[corner] = probe.z;
+    }
+    // Per corner: toPoint = biased - probe, dist = |toPoint|, dir = toPoint / dist (n if 0),
+    // visibility coordinate = octInteriorCoord(dir, 14) + 1 (Octahedral.h, spelled out).
+    const float interior = float(kVisibilityInterior);
+    for (int i = 0; i < 8; ++i) {
+        const float tx = biased.x - k.px[i], ty = biased.y - k.py[i], tz = biased.z - k.pz[i];
+        const float d = std::sqrt(tx * tx + ty * ty + tz * tz);
+        k.dist[i] = d;
+        const bool some = d > 0.0f;
+        // Divide unconditionally, then select: a conditional division would not vectorise.
+        const float ux = tx / d, uy = ty / d, uz = tz / d;
+        const float dx = some ? ux : n.x, dy = some ? uy : n.y, dz = some ? uz : n.z;
+        const float l1 = std::abs(dx) + std::abs(dy) + std::abs(dz);
+        const float u = dx / l1, v = dz / l1;
+        const float fu = (1.0f - std::abs(v)) * (u >= 0.0f ? 1.0f : -1.0f);
+        const float fv = (1.0f - std::abs(u)) * (v >= 0.0f ? 1.0f : -1.0f);
+        const bool lower = dy < 0.0f;
+        k.vx[i] = ((lower ? fu : u) * 0.5f + 0.5f) * interior + 1.0f;
+        k.vy[i] = ((lower ? fv : v) * 0.5f + 0.5f) * interior + 1.0f;
+    }
+    for (int i = 0; i < 8; ++i) {
+        k.visTile[i] = f.visibilityTiles.data() + std::size_t(index[i]) * kVisTileFloats;
+        k.irrTile[i] = f.irradianceTiles.data() + std::size_t(index[i]) * kIrrTileFloats;
+        if (!k.live[i]) continue;
+        prefetchTexels<2, kVisibilityTile>(k.visTile[i], {k.vx[i], k.vy[i]});
+        prefetchTexels<3, kIrradianceTile>(k.irrTile[i], k.irrCoord);
+        if (trace) recordFootprints(trace->corners[i], {k.vx[i], k.vy[i]}, k.irrCoord);
     }
     if (trace) trace->probesRead = true;
-    glm::vec3 sumE(0.0f);
-    float sumW = 0.0f;
-    for (int i = 0; i < used; ++i) {
-        const Corner& k = corners[i];
+    k.frame = &f;
+    k.p = p;
+    k.n = n;
+    k.alpha = alpha;
+    k.fade = fade;
+    k.done = false;
+}
 
-        // 4a. Wrap shading: probes behind the surface count less (never zero).
-        glm::vec3 dirToProbe = safeNormalize(k.probe - p, n);
-        float t = (glm::dot(dirToProbe, n) + 1.0f) * 0.5f;
+IrradianceSample ProbeSampler::finish(const Lookup& k) const {
+    if (k.done) return k.out;
+    IrradianceSample out = k.out;
+    const Frame& f = *k.frame;
+    const glm::vec3 &p = k.p, &n = k.n, &alpha = k.alpha;
+
+    // The texel fetches (scalar: they are gathers).
+    alignas(16) float mean[8], meanSq[8], irr[8][3];
+    for (int i = 0; i < 8; ++i) {
+        float vis[2];
+        tileBilinear<2, kVisibilityTile>(k.visTile[i], k.vx[i], k.vy[i], vis);
+        mean[i] = vis[0];
+        meanSq[i] = vis[1];
+        tileBilinear<3, kIrradianceTile>(k.irrTile[i], k.irrCoord.x, k.irrCoord.y, irr[i]);
+    }
+
+    // The weights, per corner (SIMD).
+    alignas(16) float weight[8];
+    for (int i = 0; i < 8; ++i) {
+        // 4a. Wrap shading: probes behind the surface count less (never zero). dirToProbe =
+        //     normalize(probe - p), n when that has no length.
+        const float qx = k.px[i] - p.x, qy = k.py[i] - p.y, qz = k.pz[i] - p.z;
+        const float len = std::sqrt(qx * qx + qy * qy + qz * qz);
+        const bool some = len > 0.0f && len <= std::numeric_limits<float>::max();
+        const float ux = qx / len, uy = qy / len, uz = qz / len;
+        const float dx = some ? ux : n.x, dy = some ? uy : n.y, dz = some ? uz : n.z;
+        const float t = (dx * n.x + dy * n.y + dz * n.z + 1.0f) * 0.5f;
         float w = t * t + kWrapBias;
 
         // 4b. Chebyshev visibility from the probe towards the biased point.
-        float vis[2];
-        tileBilinear<2, kVisibilityTile>(k.visTile, k.visCoord.x, k.visCoord.y, vis);
-        float mean = vis[0], meanSq = vis[1];
-        float d01 = k.dist * f.invMaxDistance;
-        if (d01 > mean) {
-            float variance = std::max(meanSq - mean * mean, kVarianceFloor);
-            float dd = d01 - mean;
-            float cheb = variance / (variance + dd * dd);
-            w *= std::max(cheb * cheb * cheb, kChebyshevFloor);
-        }
+        const float d01 = k.dist[i] * f.invMaxDistance;
+        const float variance = std::max(meanSq[i] - mean[i] * mean[i], kVarianceFloor);
+        const float dd = d01 - mean[i];
+        const float cheb = variance / (variance + dd * dd);
+        const float chebW = std::max(cheb * cheb * cheb, kChebyshevFloor);
+        w = d01 > mean[i] ? w * chebW : w;
 
         // 4c. Crush tiny weights (keeps a faint leak from dominating once normalised).
-        if (w < kCrushThreshold) w *= (w * w) / (kCrushThreshold * kCrushThreshold);
+        const float crushed = w * ((w * w) / (kCrushThreshold * kCrushThreshold));
+        w = w < kCrushThreshold ? crushed : w;
 
         // 4d. Trilinear.
-        float tri = (k.off.x ? alpha.x : 1.0f - alpha.x) * (k.off.y ? alpha.y : 1.0f - alpha.y) *
-                    (k.off.z ? alpha.z : 1.0f - alpha.z);
-        w *= std::max(tri, kMinTrilinear);
+        const float tri = ((i & 1) ? alpha.x : 1.0f - alpha.x) *
+                          ((i & 2) ? alpha.y : 1.0f - alpha.y) *
+                          ((i & 4) ? alpha.z : 1.0f - alpha.z);
+        weight[i] = w * std::max(tri, kMinTrilinear);
+    }
 
-        // 4e. Irradiance of this probe in the normal's direction.
-        float irr[3];
-        tileBilinear<3, kIrradianceTile>(k.irrTile, irrCoord.x, irrCoord.y, irr);
-        sumE += w * glm::vec3(irr[0], irr[1], irr[2]);
+    // 4e. Sum in corner order (the order fixes the rounding).
+    glm::vec3 sumE(0.0f);
+    float sumW = 0.0f;
+    for (int i = 0; i < 8; ++i) {
+        if (!k.live[i]) continue;
+        const float w = weight[i];
+        sumE += w * glm::vec3(irr[i][0], irr[i][1], irr[i][2]);
         sumW += w;
         ++out.probes;
     }
@@ -329,8 +427,8 @@ IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const 
         out.probes = 0;
         return out;
     }
-    out.irradiance = sumE / sumW * fade;
-    out.weight = fade;
+    out.irradiance = sumE / sumW * k.fade;
+    out.weight = k.fade;
     return out;
 }
 

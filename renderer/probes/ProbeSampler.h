@@ -14,6 +14,7 @@
 #include "probes/ProbeSet.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <vector>
 
 namespace pb::probes {
@@ -85,6 +86,11 @@ struct SampleOptions {
     bool edgeFade = true; // the bake turns it off: hits near a root's face keep full weight
 };
 
+// One lookup of a batch (ProbeSampler::sampleBatch).
+struct SampleQuery {
+    glm::vec3 pos, normal, view;
+};
+
 class ProbeSampler {
 public:
     ProbeSampler(const ProbeSet& set, int scenario);
@@ -98,10 +104,20 @@ public:
     IrradianceSample sampleVolume(int volume, const glm::vec3& pos, const glm::vec3& normal,
                                   const glm::vec3& view, SampleOptions opt = {},
                                   SampleTrace* trace = nullptr) const;
+    // The same as sample() for each query, bit for bit, but pipelined: the probe tiles of
+    // the next few queries are prefetched while the current one is weighted (a lookup is
+    // bound by its cache misses, not by its arithmetic). out receives count results.
+    void sampleBatch(const SampleQuery* queries, std::size_t count, IrradianceSample* out,
+                     SampleOptions opt = {}) const;
     int selectVolume(const glm::vec3& pos) const;
     // True when `pos` lies in the volume's influence region (the apply pass's discard test).
     bool influencesPoint(int volume, const glm::vec3& pos) const;
     std::size_t volumeCount() const { return frames_.size(); }
+    // Lookups at points with the same key read the same 8 probes (the grid cell of the
+    // unbiased point in the selected volume): sorting a batch by it makes lookups cache hits.
+    // Keys are in [0, localityKeyCount()); 0 = outside every volume.
+    std::uint32_t localityKey(const glm::vec3& pos) const;
+    std::size_t localityKeyCount() const { return keyCount_; }
 
 private:
     struct Frame {
@@ -113,8 +129,14 @@ private:
         std::vector<float> visibilityTiles; // per probe: 16x16 texels, mean + meanSq
         glm::ivec3 counts;
         float minCell, invMaxDistance, boxVolume;
+        std::uint32_t firstKey; // localityKey of the volume's probe 0
     };
     std::vector<Frame> frames_;
+    std::size_t keyCount_ = 1;
+    struct Lookup; // a lookup between its address phase (prepare) and its weights (finish)
+    void prepare(int volume, const glm::vec3& pos, const glm::vec3& normal, const glm::vec3& view,
+                 SampleOptions opt, Lookup& k, SampleTrace* trace = nullptr) const;
+    IrradianceSample finish(const Lookup& k) const;
     void init(const std::vector<SamplerVolume>& volumes);
     bool influences(const Frame& f, const glm::vec3& local) const;
 };

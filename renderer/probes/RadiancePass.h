@@ -1,6 +1,6 @@
 #pragma once
-// One probe's irradiance in one bounce pass: trace the pass's rays, shade what they hit, and
-// convolve (ProbeConvolution.h).
+// One bounce pass's irradiance, a slab of probes at a time: trace the pass's rays, shade what
+// they hit, and convolve (ProbeConvolution.h).
 //
 // Radiance arriving along a ray (Lambert, all surfaces diffuse):
 //   miss                          -> sky radiance of the scenario
@@ -10,6 +10,14 @@
 // E_direct: DirectLight.h. E_indirect: the PREVIOUS pass's probes read with the CPU sampler
 // at (x, n, view = -ray) without edge fade (0 in the first pass, or outside every volume).
 // So pass b carries light that bounced up to b times before reaching the probe.
+//
+// Why slabs: E_indirect is a full DDGI lookup per hit (8 probes, 16 bilinear fetches), and a
+// lookup is bound by the cache misses on those probes' tiles, not by its arithmetic. So the
+// hits of a whole slab of probes are traced first (trace), then looked up sorted by the grid
+// cell they fall in (lookUp: the hits of one cell reuse the same 8 probe tiles from the
+// cache), then every probe's radiance is finished and convolved (convolve). Each lookup is
+// the same pure function of its hit as in a per-ray loop, so the result is bit for bit the
+// same, for any slab size and thread count.
 #include "probes/ProbeConvolution.h"
 #include "probes/ProbeSampler.h"
 #include "probes/RayScene.h"
@@ -20,19 +28,38 @@
 
 namespace pb::probes {
 
-struct RadianceScratch {
-    std::vector<float> r, g, b;
-};
-
 struct RayCounters {
     std::uint64_t primary = 0, shadow = 0;
 };
 
-// outRgb: the 6x6 interior, RGB per texel, row-major.
-void bakeProbeRadiance(const RayScene& rs, const Scenario& sc,
-                       const std::vector<scene::Light>& lights, const glm::mat3& volumeRotation,
-                       const glm::vec3& probeWorld, const std::vector<glm::vec3>& localDirs,
-                       const ProbeConvolution& conv, const ProbeSampler* previous,
-                       RadianceScratch& scratch, float* outRgb, RayCounters& counters);
+class RadianceSlab {
+public:
+    // Room for `probes` probes of `rays` rays each; forgets the previous slab.
+    void reset(std::size_t probes, int rays);
+    // Phase 1, one slot per probe (slots are independent: any thread). Traces the probe's
+    // rays from probeWorld (directions localDirs rotated by volumeRotation); with `indirect`,
+    // hits that need E_indirect are queued for lookUp.
+    void trace(std::size_t slot, const RayScene& rs, const Scenario& sc,
+               const std::vector<scene::Light>& lights, const glm::mat3& volumeRotation,
+               const glm::vec3& probeWorld, const std::vector<glm::vec3>& localDirs, bool indirect,
+               RayCounters& counters);
+    // Phase 2, once per slab after every trace: E_indirect of every queued hit, sorted by
+    // the previous pass's grid cell, on `threads` threads.
+    void lookUp(const ProbeSampler& previous, int threads);
+    // Phase 3, one slot per probe: outRgb = the 6x6 interior, RGB per texel, row-major.
+    void convolve(std::size_t slot, const ProbeConvolution& conv, float* outRgb);
+
+private:
+    struct Pending { // a hit waiting for E_indirect
+        SampleQuery query;
+        glm::vec3 direct, albedoOverPi;
+        std::uint32_t ray; // slot * rays + ray index
+    };
+    int rays_ = 0;
+    std::vector<RayHit> hits_;                  // per ray, slot-major
+    std::vector<glm::vec4> radiance_;           // per ray, slot-major: RGB + unused
+    std::vector<std::vector<Pending>> pending_; // per slot
+    std::vector<glm::vec3> indirect_;           // E_indirect per ray (pending hits only)
+};
 
 } // namespace pb::probes

@@ -65,6 +65,10 @@ public:
         return normals_[geomID][primID];
     }
     const scene::Bounds& bounds() const { return bounds_; }
+    // Starts loading what shading a hit reads (its face normal: a cache miss per hit).
+    void prefetchSurface(const RayHit& h) const {
+        if (h.hit()) __builtin_prefetch(&normals_[h.geomID][h.primID]);
+    }
 
     // Benchmark instrumentation: while recording, every intersect/occluded call (from any
     // thread) is logged. Off by default; costs one relaxed atomic load per ray when off.

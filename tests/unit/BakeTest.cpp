@@ -166,6 +166,14 @@ TEST(BakeDeterminism, SameInputsGiveIdenticalBytesForAnyThreadCount) {
         if (reference.empty()) reference = bytes;
         EXPECT_EQ(bytes, reference) << "threads " << threads;
     }
+    // Slabs (the batched, cell-sorted indirect lookups) change the order of work only: one
+    // probe per slab, slabs that split the 48 probes unevenly, one slab for all.
+    for (int slab : {1, 5, 48}) {
+        r.threads = 2;
+        r.slabProbes = slab;
+        EXPECT_EQ(serializeProbeSet(bakeProbes(s, r)), reference) << "slab " << slab;
+    }
+    r.slabProbes = 0;
     r.settings.seed = 2;
     EXPECT_NE(serializeProbeSet(bakeProbes(s, r)), reference) << "the seed must matter";
 }

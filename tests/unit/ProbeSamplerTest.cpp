@@ -5,6 +5,7 @@
 #include "probes/RayDirections.h"
 
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <gtest/gtest.h>
 
@@ -210,4 +211,93 @@ TEST(ProbeSampler, SingleProbeAxesAndOneProbeVolumes) {
     IrradianceSample r = s.sample({0.3f, -0.2f, 0.9f}, {1, 0, 0}, {0, 0, 1});
     EXPECT_EQ(r.probes, 1);
     EXPECT_NEAR(r.irradiance.x, 4.0f, 1e-5f);
+}
+
+namespace {
+// Two nested volumes (the root rotated, the child with a single-probe axis) with irregular
+// data: random irradiance, random visibility (meanSq >= mean^2), relocated and invalid probes.
+ProbeSet irregularSet() {
+    ProbeVolume root = box("world", {0.5f, 1, -1}, {3, 2, 2.5f}, {5, 4, 6});
+    root.rotation = rotationFromEulerDegrees({10, 35, -5});
+    ProbeVolume child = box("room", {0.8f, 1.2f, -0.7f}, {1, 0.6f, 0.8f}, {3, 1, 4});
+    child.parent = "world";
+    std::uint64_t rng = 99;
+    ProbeSet set = makeSet({root, child}, [&](glm::vec3 d, int) {
+        return glm::vec3(uniformFloat(rng) * 4, uniformFloat(rng) + d.y, uniformFloat(rng));
+    });
+    for (ProbeTexture& vis : set.visibility)
+        for (std::size_t i = 0; i < vis.texels.size(); i += 2) {
+            float mean = uniformFloat(rng);
+            vis.texels[i] = mean;
+            vis.texels[i + 1] = mean * mean + 0.05f * uniformFloat(rng);
+        }
+    for (auto& states : set.states)
+        for (ProbeState& st : states) {
+            st.offset =
+                (glm::vec3(uniformFloat(rng), uniformFloat(rng), uniformFloat(rng)) - 0.5f) * 0.3f;
+            st.valid = uniformFloat(rng) > 0.15f;
+        }
+    return set;
+}
+} // namespace
+
+TEST(ProbeSampler, BatchedLookupsEqualSingleLookupsBitForBit) {
+    // sampleBatch pipelines the lookups (the bake's indirect term uses it): the results must
+    // be exactly those of sample(), whatever the query: inside, in the fade region, outside,
+    // degenerate (NaN, zero normal).
+    ProbeSet set = irregularSet();
+    ProbeSampler s(set, 0);
+    std::uint64_t rng = 5;
+    std::vector<SampleQuery> q;
+    for (int i = 0; i < 3000; ++i) {
+        glm::vec3 p(uniformFloat(rng) * 9 - 4, uniformFloat(rng) * 6 - 2,
+                    uniformFloat(rng) * 8 - 5);
+        q.push_back({p, randomUnit(rng), randomUnit(rng)});
+    }
+    q.push_back({{NAN, 0, 0}, {0, 1, 0}, {0, 1, 0}});
+    q.push_back({{0.5f, 1, -1}, {0, 0, 0}, {0, 0, 0}});
+    q.push_back({set.volumes[0].toWorld({-3, -2, -2.5f}), {0, 1, 0}, {1, 0, 0}}); // corner probe
+    for (bool fade : {true, false}) {
+        SampleOptions opt;
+        opt.edgeFade = fade;
+        std::vector<IrradianceSample> batch(q.size());
+        s.sampleBatch(q.data(), q.size(), batch.data(), opt);
+        int inside = 0;
+        for (std::size_t i = 0; i < q.size(); ++i) {
+            IrradianceSample one = s.sample(q[i].pos, q[i].normal, q[i].view, opt);
+            ASSERT_EQ(std::memcmp(&one.irradiance, &batch[i].irradiance, sizeof(glm::vec3)), 0)
+                << "query " << i;
+            ASSERT_EQ(one.weight, batch[i].weight) << "query " << i;
+            ASSERT_EQ(one.volume, batch[i].volume) << "query " << i;
+            ASSERT_EQ(one.probes, batch[i].probes) << "query " << i;
+            inside += one.probes > 0;
+        }
+        EXPECT_GT(inside, 1000); // the queries exercised real lookups
+    }
+    s.sampleBatch(q.data(), 0, nullptr); // an empty batch is fine
+}
+
+TEST(ProbeSampler, LocalityKeysNameTheCellOfThePoint) {
+    ProbeSet set = irregularSet();
+    ProbeSampler s(set, 0);
+    const ProbeVolume& root = set.volumes[0];
+    const ProbeVolume& child = set.volumes[1];
+    EXPECT_EQ(s.localityKeyCount(), 1u + std::size_t(root.probeCount() + child.probeCount()));
+    EXPECT_EQ(s.localityKey({50, 0, 0}), 0u);  // outside every volume
+    EXPECT_EQ(s.localityKey({NAN, 0, 0}), 0u); // no volume either
+    // Points inside one root cell (away from the child) share its key; the neighbouring cell
+    // along each axis has another; the child's cells have keys of their own.
+    const glm::vec3 cell = root.cellSize();
+    auto rootPoint = [&](glm::ivec3 c, glm::vec3 f) {
+        return root.toWorld(-root.halfExtents + (glm::vec3(c) + f) * cell);
+    };
+    std::uint32_t k = s.localityKey(rootPoint({3, 2, 4}, {0.1f, 0.2f, 0.3f}));
+    EXPECT_NE(k, 0u);
+    EXPECT_EQ(s.localityKey(rootPoint({3, 2, 4}, {0.9f, 0.8f, 0.7f})), k);
+    EXPECT_NE(s.localityKey(rootPoint({2, 2, 4}, {0.5f, 0.5f, 0.5f})), k);
+    EXPECT_NE(s.localityKey(rootPoint({3, 1, 4}, {0.5f, 0.5f, 0.5f})), k);
+    EXPECT_NE(s.localityKey(rootPoint({3, 2, 3}, {0.5f, 0.5f, 0.5f})), k);
+    std::uint32_t inChild = s.localityKey(child.toWorld({0.1f, 0.0f, 0.1f}));
+    EXPECT_GT(inChild, std::uint32_t(root.probeCount()));
+    EXPECT_LT(inChild, s.localityKeyCount());
 }
