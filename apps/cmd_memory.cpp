@@ -28,7 +28,7 @@ int run(const MemoryArgs& a) {
         r = memoryReport({v});
     } else {
         ProbeSet set = readProbeFile(a.probes);
-        r = memoryReport(set.volumes, set.format());
+        r = memoryReport(set);
     }
     if (a.json) {
         nlohmann::json j = memoryReportJson(r);

@@ -26,13 +26,23 @@ nlohmann::json bytesJson(const ProbeBytes& b, std::size_t probes) {
             {"per_probe", probes ? b.total() / probes : 0}};
 }
 
-nlohmann::json volumeJson(const VolumeMemory& v) {
-    return {{"name", v.name},
-            {"counts", {v.counts.x, v.counts.y, v.counts.z}},
-            {"probes", v.probes},
-            {"uncompressed", bytesJson(v.uncompressed, v.probes)},
-            {"bc6h", bytesJson(v.bc6h, v.probes)},
-            {"stored", bytesJson(v.stored, v.probes)}};
+nlohmann::json volumeJson(const VolumeMemory& v, bool sparse) {
+    nlohmann::json j = {{"name", v.name},
+                        {"counts", {v.counts.x, v.counts.y, v.counts.z}},
+                        {"probes", v.probes},
+                        {"uncompressed", bytesJson(v.uncompressed, v.probes)},
+                        {"bc6h", bytesJson(v.bc6h, v.probes)},
+                        {"stored", bytesJson(v.stored, v.probes)}};
+    if (sparse)
+        j["sparse_candidates"] = {{"far_from_surfaces", v.sparse.far},
+                                  {"invalid", v.sparse.invalid},
+                                  {"needed", v.probes - v.sparse.total()}};
+    return j;
+}
+
+// Bytes of `probes` probes at the per-probe cost of `b` over `of` probes.
+std::size_t scaled(std::size_t bytes, std::size_t probes, std::size_t of) {
+    return of ? std::size_t(double(bytes) * double(probes) / double(of)) : 0;
 }
 
 } // namespace
@@ -66,6 +76,18 @@ MemoryReport memoryReport(const std::vector<ProbeVolume>& volumes, StorageFormat
         add(r.total.stored, m.stored);
         r.volumes.push_back(m);
     }
+    return r;
+}
+
+MemoryReport memoryReport(const ProbeSet& set) {
+    MemoryReport r = memoryReport(set.volumes, set.format());
+    std::vector<SparseCounts> sparse = countSparseCandidates(set);
+    for (std::size_t v = 0; v < r.volumes.size(); ++v) {
+        r.volumes[v].sparse = sparse[v];
+        r.total.sparse.far += sparse[v].far;
+        r.total.sparse.invalid += sparse[v].invalid;
+    }
+    r.hasSparse = true;
     return r;
 }
 
@@ -116,14 +138,23 @@ std::string formatMemoryReport(const MemoryReport& r) {
     if (r.format != StorageFormat::Rgba16f && r.format != StorageFormat::Bc6h)
         s << "  stored as " << formatName(r.format) << ": " << formatBytes(r.total.stored.total())
           << "\n";
+    if (r.hasSparse) {
+        const VolumeMemory& t = r.total;
+        const std::size_t needed = t.probes - t.sparse.total();
+        s << "sparse-storage candidates (all stored now): " << t.sparse.far << " of " << t.probes
+          << " probes far from every surface, " << t.sparse.invalid
+          << " inside geometry; storing only the other " << needed << " would take "
+          << formatBytes(scaled(t.stored.total(), needed, t.probes)) << " as "
+          << formatName(r.format) << " (bricks and an index not counted)\n";
+    }
     return s.str();
 }
 
 nlohmann::json memoryReportJson(const MemoryReport& r) {
     nlohmann::json vols = nlohmann::json::array();
     for (const VolumeMemory& v : r.volumes)
-        vols.push_back(volumeJson(v));
-    nlohmann::json total = volumeJson(r.total);
+        vols.push_back(volumeJson(v, r.hasSparse));
+    nlohmann::json total = volumeJson(r.total, r.hasSparse);
     total.erase("name");
     total.erase("counts");
     return {{"format", formatName(r.format)}, {"volumes", vols}, {"total", total}};

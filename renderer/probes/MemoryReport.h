@@ -3,6 +3,7 @@
 // loads only the active scenario's irradiance; visibility is shared): uncompressed =
 // rgba16f + rg16f, BC6H = both textures BC6H, plus the stored format of a probe file.
 #include "probes/ProbeSet.h"
+#include "probes/SparseCandidates.h"
 
 #include <nlohmann/json_fwd.hpp>
 #include <string>
@@ -16,17 +17,21 @@ struct VolumeMemory {
     std::size_t probes = 0;
     ProbeBytes uncompressed; // rgba16f irradiance + rg16f visibility
     ProbeBytes bc6h;
-    ProbeBytes stored; // in `format`
+    ProbeBytes stored;   // in `format`
+    SparseCounts sparse; // probes a sparse layout would not store (from a baked set only)
 };
 
 struct MemoryReport {
     StorageFormat format = StorageFormat::Rgba16f;
     std::vector<VolumeMemory> volumes;
     VolumeMemory total;
+    bool hasSparse = false; // sparse counts filled (the report came from a baked set)
 };
 
 MemoryReport memoryReport(const std::vector<ProbeVolume>& volumes,
                           StorageFormat format = StorageFormat::Rgba16f);
+// The same for a baked set, plus the sparse-storage candidates (SparseCandidates.h).
+MemoryReport memoryReport(const ProbeSet& set);
 // "32x8x32" -> counts; throws pb::Error naming --grid otherwise.
 glm::ivec3 parseGrid(const std::string& text);
 

@@ -30,14 +30,6 @@ glm::vec3 meanLinearColour(const scene::Scene& s, int texture) {
                      float(sum[2] / double(n)));
 }
 
-bool bakes(const scene::Scene& s, const scene::Instance& inst,
-           const std::vector<MaterialSummary>& mats) {
-    if (inst.dynamic || inst.primitive < 0 || inst.primitive >= int(s.primitives.size()))
-        return false;
-    int m = s.primitives[size_t(inst.primitive)].material;
-    return m < 0 || m >= int(mats.size()) || !mats[size_t(m)].invisible;
-}
-
 void embreeError(void*, RTCError code, const char* message) {
     // Errors surface through rtcGetDeviceError checks below; nothing to do here.
     (void)code;
@@ -45,6 +37,14 @@ void embreeError(void*, RTCError code, const char* message) {
 }
 
 } // namespace
+
+bool bakesInstance(const scene::Scene& s, const scene::Instance& inst,
+                   const std::vector<MaterialSummary>& mats) {
+    if (inst.dynamic || inst.primitive < 0 || inst.primitive >= int(s.primitives.size()))
+        return false;
+    int m = s.primitives[size_t(inst.primitive)].material;
+    return m < 0 || m >= int(mats.size()) || !mats[size_t(m)].invisible;
+}
 
 std::vector<MaterialSummary> summariseMaterials(const scene::Scene& s) {
     std::vector<MaterialSummary> out;
@@ -65,7 +65,7 @@ scene::Bounds staticBakeBounds(const scene::Scene& s) {
     auto mats = summariseMaterials(s);
     scene::Bounds b;
     for (const scene::Instance& inst : s.instances) {
-        if (!bakes(s, inst, mats)) continue;
+        if (!bakesInstance(s, inst, mats)) continue;
         for (const glm::vec3& p : s.primitives[size_t(inst.primitive)].positions)
             b.extend(glm::vec3(inst.transform * glm::vec4(p, 1.0f)));
     }
@@ -81,7 +81,7 @@ RayScene::RayScene(const scene::Scene& s) : recorder_(std::make_unique<Recorder>
     auto mats = summariseMaterials(s);
 
     for (const scene::Instance& inst : s.instances) {
-        if (!bakes(s, inst, mats)) continue;
+        if (!bakesInstance(s, inst, mats)) continue;
         const scene::Primitive& prim = s.primitives[size_t(inst.primitive)];
         std::size_t nv = prim.positions.size(), nt = prim.indices.size() / 3;
         if (nt == 0 || nv == 0) continue;

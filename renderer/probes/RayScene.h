@@ -32,6 +32,9 @@ struct MaterialSummary {
 
 // Per-material values the bake uses (also hashed as bake inputs).
 std::vector<MaterialSummary> summariseMaterials(const scene::Scene& scene);
+// Whether the bake traces this instance: static, with a valid primitive and a visible material.
+bool bakesInstance(const scene::Scene& scene, const scene::Instance& inst,
+                   const std::vector<MaterialSummary>& mats);
 
 struct RayHit {
     float t = -1.0f; // < 0: miss
