@@ -2,27 +2,35 @@
 #include "CommandRegistry.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
-#include "probes/AutoVolume.h"
+#include "probes/AutoPlacement.h"
 #include "probes/Baker.h"
 #include "probes/MemoryReport.h"
 #include "probes/ProbeFile.h"
 #include "probes/RayScene.h"
 #include "probes/VolumeFile.h"
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <unistd.h>
 
 namespace pb::app {
 namespace {
 
 using namespace pb::probes;
+namespace fs = std::filesystem;
 
 struct BakeArgs {
     SceneArgs scene;
     std::string volumes = "auto";
     float spacing = 0.0f;
+    int autoLevels = 2, autoMaxChildren = 4;
+    double budgetMib = 0.0;
+    std::string writeVolumes;
+    const CLI::Option *levelsOption = nullptr, *childrenOption = nullptr; // given or not
     int rays = 256, bounces = 2, threads = 0;
     std::vector<std::string> scenarios;
     std::string format = "rgba16f";
@@ -62,24 +70,112 @@ private:
     std::string stage_;
 };
 
-BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s) {
+// Nesting depth of each volume (0 = root).
+std::vector<int> volumeDepths(const std::vector<ProbeVolume>& volumes) {
+    std::vector<int> parents = validateVolumes(volumes, "placement"), depth(volumes.size(), 0);
+    for (size_t i = 0; i < volumes.size(); ++i)
+        for (int p = parents[i]; p >= 0; p = parents[size_t(p)])
+            ++depth[i];
+    return depth;
+}
+
+// What automatic placement chose, for people ("placement: ...") and for --json.
+struct PlacementInfo {
+    std::string mode; // "adaptive", "uniform" or "file"
+    AutoPlacementResult result;
+};
+
+nlohmann::json placementJson(const PlacementInfo& p, StorageFormat format) {
+    std::vector<int> depth = volumeDepths(p.result.volumes);
+    nlohmann::json tiers = nlohmann::json::array();
+    for (size_t i = 0; i < p.result.volumes.size(); ++i) {
+        if (size_t(depth[i]) >= tiers.size())
+            tiers.push_back({{"volumes", 0}, {"probes", 0}, {"spacing", 0.0}});
+        auto& t = tiers[size_t(depth[i])];
+        const ProbeVolume& v = p.result.volumes[i];
+        glm::vec3 c = v.cellSize();
+        t["volumes"] = t["volumes"].get<int>() + 1;
+        t["probes"] = t["probes"].get<long long>() + v.probeCount();
+        t["spacing"] = std::max(c.x, std::max(c.y, c.z));
+    }
+    nlohmann::json j{{"mode", p.mode},
+                     {"tiers", tiers},
+                     {"probes", p.result.probes},
+                     {"bytes", p.result.bytes},
+                     {"budget_bytes", p.result.budgetBytes},
+                     {"default_budget", p.result.defaultBudget},
+                     {"format", formatName(format)},
+                     {"notes", p.result.notes}};
+    if (p.mode == "adaptive") {
+        j["corner_rays"] = p.result.stats.rays;
+        j["cells_tested"] = p.result.stats.cellsTested;
+        j["cells_near_surfaces"] = p.result.stats.cellsNear;
+        j["placements"] = p.result.placements;
+    }
+    return j;
+}
+
+std::string placementText(const PlacementInfo& p, StorageFormat format) {
+    nlohmann::json j = placementJson(p, format);
+    std::ostringstream s;
+    s << "placement: " << p.mode << ", " << p.result.volumes.size() << " volume(s)";
+    for (size_t t = 0; t < j["tiers"].size(); ++t) {
+        const auto& tier = j["tiers"][t];
+        s << (t == 0 ? "; outer " : "; tier " + std::to_string(t) + " ")
+          << tier["volumes"].get<int>() << " x spacing " << tier["spacing"].get<double>() << " ("
+          << tier["probes"].get<long long>() << " probes)";
+    }
+    s << "; " << formatBytes(p.result.bytes) << " as " << formatName(format);
+    if (p.result.defaultBudget)
+        s << " (default budget: the default uniform grid's "
+          << formatBytes(std::size_t(p.result.budgetBytes)) << ")";
+    else if (p.result.budgetBytes > 0.0)
+        s << " (budget " << formatBytes(std::size_t(p.result.budgetBytes)) << ")";
+    if (p.mode == "adaptive")
+        s << "; " << p.result.stats.rays << " corner rays, " << p.result.placements
+          << " placement(s)";
+    return s.str();
+}
+
+BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo& placement) {
     BakeRequest r;
     std::vector<ScenarioSpec> fileScenarios;
-    if (a.volumes == "auto") {
-        AutoVolume fit = fitAutoVolume(staticBakeBounds(s), a.spacing);
-        if (!fit.note.empty()) std::cerr << "note: " << fit.note << "\n";
-        r.volumes.push_back(fit.volume);
+    const StorageFormat format = parseStorageFormat(a.format);
+    AutoMode mode;
+    if (parseAutoMode(a.volumes, mode)) {
+        AutoPlacementRequest req;
+        req.mode = mode;
+        req.adaptive.spacing = a.spacing;
+        req.adaptive.levels = a.autoLevels;
+        req.adaptive.maxChildren = a.autoMaxChildren;
+        req.adaptive.threads = a.threads;
+        req.budgetBytes = a.budgetMib * 1024.0 * 1024.0;
+        req.format = format;
+        placement.mode = autoModeName(mode);
+        placement.result = placeAutoVolumes(s, req);
+        for (const std::string& note : placement.result.notes)
+            std::cerr << "note: " << note << "\n";
+        r.volumes = placement.result.volumes;
     } else {
         if (a.spacing > 0.0f) throw Error("--spacing applies to --volumes auto only");
         VolumeFile vf = loadVolumeFile(a.volumes);
         r.volumes = vf.volumes;
         fileScenarios = vf.scenarios;
+        placement.mode = "file";
+        placement.result.volumes = vf.volumes;
+        for (const ProbeVolume& v : vf.volumes)
+            placement.result.probes += v.probeCount();
+        placement.result.bytes = memoryReport(vf.volumes, format).total.stored.total();
+        if (a.budgetMib > 0.0 && double(placement.result.bytes) > a.budgetMib * 1024.0 * 1024.0)
+            throw Error(a.volumes + ": the volumes need " + formatBytes(placement.result.bytes) +
+                        " as " + formatName(format) + ", over --probe-budget-mib " +
+                        std::to_string(a.budgetMib));
     }
     r.scenarios = resolveScenarios(a.scenarios, fileScenarios, s);
     r.settings.raysPerProbe = a.rays;
     r.settings.bounces = a.bounces;
     r.settings.seed = a.seed;
-    r.settings.format = parseStorageFormat(a.format);
+    r.settings.format = format;
     r.settings.relocate = !a.noRelocate;
     r.settings.backfaceThreshold = a.backfaceThreshold;
     r.threads = a.threads;
@@ -107,10 +203,12 @@ nlohmann::json volumesJson(const ProbeSet& set) {
     return out;
 }
 
-void printSummary(const BakeArgs& a, const ProbeSet& set, const BakeStats* st, bool upToDate) {
-    MemoryReport mem = memoryReport(set.volumes, set.format());
+void printSummary(const BakeArgs& a, const PlacementInfo& placement, const ProbeSet& set,
+                  const BakeStats* st, bool upToDate) {
+    MemoryReport mem = memoryReport(set);
     if (a.json) {
         nlohmann::json j{{"file", a.out},
+                         {"placement", placementJson(placement, set.format())},
                          {"up_to_date", upToDate},
                          {"input_hash", set.inputHash},
                          {"format", formatName(set.format())},
@@ -177,18 +275,56 @@ void printSummary(const BakeArgs& a, const ProbeSet& set, const BakeStats* st, b
     std::cout << "memory (one scenario resident): " << formatBytes(mem.total.uncompressed.total())
               << " uncompressed, " << formatBytes(mem.total.bc6h.total()) << " bc6h; file holds "
               << set.scenarios.size() << " scenario(s) as " << formatName(set.format()) << "\n";
+    std::cout << "sparse-storage candidates: " << mem.total.sparse.far
+              << " probe(s) far from every surface, " << mem.total.sparse.invalid
+              << " inside geometry (stored; see `probebench memory --probes`)\n";
     if (!upToDate) std::cout << "wrote " << a.out << "\n";
 }
 
 int run(const BakeArgs& a) {
-    if (a.out.empty()) throw Error("--out is required (the probe file to write)");
+    if (a.out.empty() && a.writeVolumes.empty())
+        throw Error("--out is required (the probe file to write), or --write-volumes alone to "
+                    "only place volumes");
+    if (!(a.budgetMib >= 0.0) || !std::isfinite(a.budgetMib))
+        throw Error("--probe-budget-mib: must be a positive number");
+    AutoMode mode = AutoMode::Uniform;
+    const bool adaptive = parseAutoMode(a.volumes, mode) && mode == AutoMode::Adaptive;
+    for (const CLI::Option* o : {a.levelsOption, a.childrenOption})
+        if (o && o->count() > 0 && !adaptive)
+            throw Error(o->get_name() + " applies to --volumes auto only (not '" + a.volumes +
+                        "')");
+    if (!a.writeVolumes.empty()) {
+        fs::path parent = fs::path(a.writeVolumes).parent_path();
+        if (!parent.empty() && !fs::is_directory(parent))
+            throw Error("--write-volumes " + a.writeVolumes + ": folder does not exist");
+    }
     scene::Scene s = loadSceneWithOverrides(a.scene);
-    BakeRequest req = buildRequest(a, s);
+    PlacementInfo placement;
+    BakeRequest req = buildRequest(a, s, placement);
+    if (!a.writeVolumes.empty()) {
+        writeVolumeFile(a.writeVolumes, req.volumes,
+                        "probe volumes for scene '" + s.name +
+                            "', written by probebench bake --write-volumes\n"
+                            "edit freely; bake with --volumes FILE (renderer/probes/README.md)");
+        if (a.out.empty()) {
+            if (a.json)
+                std::cout << nlohmann::json{{"volumes_file", a.writeVolumes},
+                                            {"placement",
+                                             placementJson(placement, req.settings.format)}}
+                                 .dump(2)
+                          << "\n";
+            else
+                std::cout << placementText(placement, req.settings.format) << "\nwrote "
+                          << a.writeVolumes << "\n";
+            return 0;
+        }
+    }
     const std::uint64_t hash = bakeInputHash(s, req);
     if (!a.force) {
         std::string why;
         if (std::optional<ProbeSet> cached = readCachedProbeFile(a.out, hash, &why)) {
-            printSummary(a, *cached, nullptr, true);
+            if (!a.json) std::cout << placementText(placement, req.settings.format) << "\n";
+            printSummary(a, placement, *cached, nullptr, true);
             return 0;
         }
         if (why.rfind("unusable", 0) == 0)
@@ -197,6 +333,7 @@ int run(const BakeArgs& a) {
     long long probes = 0;
     for (const ProbeVolume& v : req.volumes)
         probes += v.probeCount();
+    if (!a.json) std::cout << placementText(placement, req.settings.format) << "\n";
     if (!a.json)
         std::cout << "bake: scene '" << s.name << "', " << req.volumes.size() << " volume(s), "
                   << probes << " probes, " << req.settings.raysPerProbe << " rays, "
@@ -207,7 +344,7 @@ int run(const BakeArgs& a) {
     ProbeSet set = bakeProbes(s, req, &stats, [&](const BakeProgress& p) { progress(p); });
     progress.done();
     writeProbeFile(a.out, set);
-    printSummary(a, set, &stats, false);
+    printSummary(a, placement, set, &stats, false);
     return 0;
 }
 
@@ -219,12 +356,34 @@ const RegisterCommand reg{{
         auto a = std::make_shared<BakeArgs>();
         addSceneOptions(cmd, a->scene);
         cmd.add_option("--volumes", a->volumes,
-                       "Probe volumes: a TOML file (see renderer/probes/README.md) or 'auto' (one "
-                       "volume fitted to the static scene bounds)")
+                       "Probe volumes: a TOML file (see renderer/probes/README.md), 'auto' (a "
+                       "coarse outer volume over the static bounds plus nested finer volumes "
+                       "near surfaces) or 'auto-uniform' (one volume fitted to the static "
+                       "bounds)")
             ->capture_default_str();
-        cmd.add_option(
-            "--spacing", a->spacing,
-            "Probe spacing for --volumes auto, scene units (default: about 4096 probes)");
+        cmd.add_option("--spacing", a->spacing,
+                       "Probe spacing, scene units: for auto the finest (innermost child) "
+                       "spacing, the outer volume uses spacing * 2^levels (default: outer "
+                       "volume about 512 probes); for auto-uniform the grid spacing (default: "
+                       "about 4096 probes)");
+        a->levelsOption =
+            cmd.add_option("--auto-levels", a->autoLevels,
+                           "Nesting tiers below the outer volume for --volumes auto, 1..4 (each "
+                           "halves the spacing)")
+                ->capture_default_str();
+        a->childrenOption =
+            cmd.add_option("--auto-max-children", a->autoMaxChildren,
+                           "Most child volumes per parent volume for --volumes auto")
+                ->capture_default_str();
+        cmd.add_option("--probe-budget-mib", a->budgetMib,
+                       "Probe memory budget in MiB (one scenario resident, in --format): auto "
+                       "placement coarsens until it fits and says so; a volumes file over it is "
+                       "an error (default: none; auto without --spacing uses the default uniform "
+                       "grid's memory)");
+        cmd.add_option("--write-volumes", a->writeVolumes,
+                       "Write the volumes used as an editable volumes file (TOML) that "
+                       "--volumes reads back to the same placement; without --out nothing is "
+                       "baked");
         cmd.add_option("--rays", a->rays, "Rays per probe per pass (spherical Fibonacci)")
             ->capture_default_str();
         cmd.add_option("--bounces", a->bounces, "Bounce passes (1 = direct light at the hits)")
@@ -244,8 +403,9 @@ const RegisterCommand reg{{
                        "Back-face hit ratio above which a probe is invalid")
             ->capture_default_str();
         cmd.add_flag("--no-relocate", a->noRelocate, "Do not move probes out of geometry");
-        cmd.add_option("--out", a->out, "Probe file to write (reused when its inputs match)")
-            ->required();
+        cmd.add_option("--out", a->out,
+                       "Probe file to write (reused when its inputs match); required unless "
+                       "--write-volumes is given");
         cmd.add_flag("--force", a->force, "Bake even when --out is up to date");
         cmd.add_flag("--json", a->json, "Print the summary as JSON on stdout");
         return [a] { return run(*a); };

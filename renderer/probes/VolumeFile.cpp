@@ -3,7 +3,9 @@
 #include "core/Error.h"
 #include "core/FileIO.h"
 
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <set>
 #include <toml++/toml.h>
@@ -229,6 +231,74 @@ VolumeFile parseVolumeToml(std::string_view text, const std::string& path) {
     }
     validateVolumes(out.volumes, path); // cycles (a loop of equal boxes) and anything left
     return out;
+}
+
+namespace {
+
+// Shortest text that reads back (as TOML does: a double, then cast to float) to exactly `f`.
+std::string floatText(float f) {
+    char buf[64];
+    auto r = std::to_chars(buf, buf + sizeof buf, f);
+    std::string s(buf, r.ptr);
+    if (float(std::strtod(s.c_str(), nullptr)) != f) {
+        r = std::to_chars(buf, buf + sizeof buf, double(f));
+        s.assign(buf, r.ptr);
+    }
+    // TOML needs a fraction or exponent to read a float.
+    if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+    return s;
+}
+
+std::string quoted(const std::string& text) {
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"' || c == '\\') out += '\\';
+        out += c;
+    }
+    return out + "\"";
+}
+
+std::string vecText(std::initializer_list<float> v) {
+    std::string out = "[";
+    for (float f : v)
+        out += (out.size() > 1 ? ", " : "") + floatText(f);
+    return out + "]";
+}
+
+} // namespace
+
+std::string volumeFileText(const std::vector<ProbeVolume>& volumes, const std::string& header) {
+    std::string out;
+    std::size_t begin = 0;
+    while (begin < header.size()) {
+        std::size_t end = header.find('\n', begin);
+        if (end == std::string::npos) end = header.size();
+        out += "# " + header.substr(begin, end - begin) + "\n";
+        begin = end + 1;
+    }
+    for (const ProbeVolume& v : volumes) {
+        if (!out.empty()) out += '\n';
+        out += "[[volume]]\n";
+        out += "name = " + quoted(v.name) + "\n";
+        if (!v.parent.empty()) out += "parent = " + quoted(v.parent) + "\n";
+        out += "center = " + vecText({v.center.x, v.center.y, v.center.z}) + "\n";
+        out +=
+            "half_extents = " + vecText({v.halfExtents.x, v.halfExtents.y, v.halfExtents.z}) + "\n";
+        out += "probes = [" + std::to_string(v.counts.x) + ", " + std::to_string(v.counts.y) +
+               ", " + std::to_string(v.counts.z) + "]\n";
+        const glm::quat& q = v.rotation;
+        if (!(q.x == 0.0f && q.y == 0.0f && q.z == 0.0f && q.w == 1.0f))
+            out += "quaternion = " + vecText({q.x, q.y, q.z, q.w}) + "\n";
+        if (!v.parent.empty()) out += "edge_blend = " + floatText(v.edgeBlend) + "\n";
+    }
+    return out;
+}
+
+void writeVolumeFile(const std::string& path, const std::vector<ProbeVolume>& volumes,
+                     const std::string& header) {
+    validateVolumes(volumes, path);
+    std::string text = volumeFileText(volumes, header);
+    writeFileAtomic(path, text.data(), text.size());
 }
 
 VolumeFile loadVolumeFile(const std::string& path) {

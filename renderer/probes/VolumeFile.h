@@ -37,4 +37,14 @@ VolumeFile loadVolumeFile(const std::string& path);
 // `path` only names the source in errors.
 VolumeFile parseVolumeToml(std::string_view text, const std::string& path);
 
+// The volumes as a volumes file (no scenarios) that parseVolumeToml reads back to the same
+// volumes: numbers are written in the shortest form that parses back to the same float, an
+// identity rotation is omitted, any other is written as `quaternion` (normalised again on
+// reading, so only axis-aligned volumes - what `--volumes auto` writes - are bit-exact).
+// `header` lines (may be empty) become `#` comments at the top.
+std::string volumeFileText(const std::vector<ProbeVolume>& volumes, const std::string& header = "");
+// volumeFileText written atomically (no partial file on error).
+void writeVolumeFile(const std::string& path, const std::vector<ProbeVolume>& volumes,
+                     const std::string& header = "");
+
 } // namespace pb::probes

@@ -16,8 +16,9 @@ namespace {
 const fs::path& roomsProbes() {
     static const fs::path file = [] {
         fs::path f = fs::path(PB_TEST_OUTPUT_DIR) / "rooms_gi_cli.pbp";
-        auto r = runProbebench({"bake", "--scene", "rooms", "--spacing", "0.8", "--rays", "32",
-                                "--bounces", "1", "--out", f.string()});
+        auto r =
+            runProbebench({"bake", "--scene", "rooms", "--volumes", "auto-uniform", "--spacing",
+                           "0.8", "--rays", "32", "--bounces", "1", "--out", f.string()});
         EXPECT_EQ(r.exitCode, 0) << r.output;
         return f;
     }();

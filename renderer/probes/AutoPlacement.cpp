@@ -1,0 +1,217 @@
+#include "probes/AutoPlacement.h"
+
+#include "core/Error.h"
+#include "probes/MemoryReport.h"
+#include "probes/RayScene.h"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <sstream>
+
+namespace pb::probes {
+namespace {
+
+std::string mib(double bytes) {
+    std::ostringstream s;
+    s.precision(3);
+    s << bytes / (1024.0 * 1024.0) << " MiB";
+    return s.str();
+}
+
+std::string budgetOption(double bytes) {
+    std::ostringstream s;
+    s << "--probe-budget-mib " << bytes / (1024.0 * 1024.0);
+    return s.str();
+}
+
+} // namespace
+
+bool parseAutoMode(const std::string& text, AutoMode& mode) {
+    if (text == "auto")
+        mode = AutoMode::Adaptive;
+    else if (text == "auto-uniform")
+        mode = AutoMode::Uniform;
+    else
+        return false;
+    return true;
+}
+
+const char* autoModeName(AutoMode mode) {
+    return mode == AutoMode::Adaptive ? "adaptive" : "uniform";
+}
+
+float defaultUniformSpacing(const scene::Bounds& b) {
+    return fitAutoVolume(b, 0.0f, std::numeric_limits<long long>::max()).spacing;
+}
+
+AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacementRequest& req) {
+    const scene::Bounds bounds = staticBakeBounds(scene);
+    const bool adaptive = req.mode == AutoMode::Adaptive;
+    const char* option = adaptive ? "--volumes auto" : "--volumes auto-uniform";
+    float spacing = req.adaptive.spacing;
+    if (!(spacing >= 0.0f) || !std::isfinite(spacing))
+        throw Error("--spacing: must be a positive number");
+    if (adaptive && (req.adaptive.levels < 1 || req.adaptive.levels > 4))
+        throw Error("--auto-levels: must be 1..4 (got " + std::to_string(req.adaptive.levels) +
+                    ")");
+    if (adaptive && req.adaptive.maxChildren < 1) throw Error("--auto-max-children: must be >= 1");
+    if (!(req.budgetBytes >= 0.0) || !std::isfinite(req.budgetBytes))
+        throw Error("--probe-budget-mib: must be a positive number");
+    if (req.budgetBytes > 0.0) {
+        ProbeVolume smallest;
+        smallest.name = "smallest";
+        const std::size_t need = memoryReport({smallest}, req.format).total.stored.total();
+        if (double(need) > req.budgetBytes)
+            throw Error(budgetOption(req.budgetBytes) + ": too small, the smallest volume (2x2x2 " +
+                        "probes) needs " + formatBytes(need) + " as " + formatName(req.format));
+    }
+    if (bounds.empty()) fitAutoVolume(bounds, 1.0f); // throws the one-line empty-scene error
+
+    std::unique_ptr<RayScene> rays;
+    std::vector<WorldTriangle> triangles;
+    bool defaultBudget = false;
+    double budget = req.budgetBytes;
+    if (adaptive) {
+        rays = std::make_unique<RayScene>(scene);
+        triangles = staticBakeTriangles(scene);
+        if (!(spacing > 0.0f)) {
+            // Default: the memory of the default uniform grid, spent where the scene needs it,
+            // starting from half the uniform spacing near surfaces.
+            const float uniform = defaultUniformSpacing(bounds);
+            spacing = 0.5f * uniform;
+            if (!(budget > 0.0)) {
+                AutoVolume fit = fitAutoVolume(bounds, uniform, req.maxProbes);
+                budget = double(memoryReport({fit.volume}, req.format).total.stored.total());
+                defaultBudget = true;
+            }
+        }
+    }
+
+    int placements = 0;
+    std::string capNote;
+    // levels 0 = one uniform volume.
+    auto place = [&](float s, int levels) {
+        ++placements;
+        AutoPlacementResult r;
+        if (levels > 0) {
+            AdaptiveOptions o = req.adaptive;
+            o.spacing = s;
+            o.levels = levels;
+            AdaptivePlacement p = placeAdaptiveVolumes(*rays, triangles, bounds, o);
+            r.volumes = std::move(p.volumes);
+            r.stats = p.stats;
+            r.spacing = s;
+        } else {
+            AutoVolume fit = fitAutoVolume(bounds, s, req.maxProbes);
+            if (placements == 1) capNote = fit.note;
+            r.volumes.push_back(fit.volume);
+            r.spacing = fit.spacing;
+        }
+        for (const ProbeVolume& v : r.volumes)
+            r.probes += v.probeCount();
+        r.bytes = memoryReport(r.volumes, req.format).total.stored.total();
+        return r;
+    };
+    auto fits = [&](const AutoPlacementResult& r) {
+        if (budget > 0.0 && double(r.bytes) > budget) return false;
+        if (r.probes > req.maxProbes) return false;
+        for (const ProbeVolume& v : r.volumes)
+            if (!volumeProblem(v).empty()) return false;
+        return true;
+    };
+    // How far over the limits a placement is (> 1: over).
+    auto excess = [&](const AutoPlacementResult& r) {
+        double e = double(r.probes) / double(req.maxProbes);
+        if (budget > 0.0) e = std::max(e, double(r.bytes) / budget);
+        for (const ProbeVolume& v : r.volumes)
+            e = std::max(e, double(v.probeCount()) / double(kMaxProbesPerVolume));
+        return e;
+    };
+    // Grow the spacing until the placement fits (probes fall with the spacing squared near
+    // surfaces, cubed in open space: the square root never undershoots much), then bisect
+    // towards the finest spacing that fits.
+    auto coarsen = [&](const AutoPlacementResult& first, int levels) {
+        float lo = first.spacing, hi = first.spacing;
+        AutoPlacementResult r = first;
+        const int start = placements;
+        while (!fits(r)) {
+            lo = hi;
+            hi = lo * float(std::max(1.05, std::sqrt(excess(r))));
+            AutoPlacementResult next = place(hi, levels);
+            if ((next.probes >= r.probes && !fits(next) && placements - start > 8) ||
+                placements - start > 60)
+                throw Error(std::string(option) + ": " +
+                            (budget > 0.0 ? budgetOption(budget) + " is" : "the probe limit is") +
+                            " too small for this placement (it needs at least " +
+                            formatBytes(next.bytes) + ", " + std::to_string(next.probes) +
+                            " probes); raise it, lower --auto-levels or use auto-uniform");
+            r = std::move(next);
+        }
+        AutoPlacementResult best = r;
+        for (int i = 0; i < 5 && hi > lo * 1.02f; ++i) {
+            float mid = std::sqrt(lo * hi);
+            AutoPlacementResult m = place(mid, levels);
+            if (fits(m)) {
+                hi = mid;
+                best = std::move(m);
+            } else {
+                lo = mid;
+            }
+        }
+        return best;
+    };
+    auto finest = [](const AutoPlacementResult& r) {
+        float f = std::numeric_limits<float>::infinity();
+        for (const ProbeVolume& v : r.volumes) {
+            glm::vec3 c = v.cellSize();
+            f = std::min(f, std::max(c.x, std::max(c.y, c.z)));
+        }
+        return f;
+    };
+
+    const int levels = adaptive ? req.adaptive.levels : 0;
+    AutoPlacementResult first = place(spacing, levels);
+    spacing = first.spacing;
+    AutoPlacementResult best = first;
+    if (!fits(first)) {
+        best = coarsen(first, levels);
+        if (adaptive) {
+            // Under a budget the nested grid must be a 2^levels subdivision of the outer one,
+            // which rounds the spacing in big steps; fewer levels, or one uniform volume when
+            // nothing was worth nesting, may fit a finer spacing into the same memory. The
+            // finest spacing that fits wins (ties: fewer bytes).
+            for (int alt : {1, 0}) {
+                if (alt >= levels) continue;
+
+                AutoPlacementResult a = place(spacing, alt);
+                if (!fits(a)) a = coarsen(a, alt);
+                if (finest(a) < finest(best) * 0.999f ||
+                    (finest(a) <= finest(best) * 1.001f && a.bytes < best.bytes))
+                    best = std::move(a);
+            }
+        }
+        std::ostringstream note;
+        note << option << ": spacing " << spacing << " needs " << first.probes << " probes, "
+             << mib(double(first.bytes)) << " as " << formatName(req.format) << "; coarsened to "
+             << "finest spacing " << finest(best) << " (" << best.volumes.size() << " volume(s), "
+             << best.probes << " probes, " << mib(double(best.bytes)) << ") to fit ";
+        if (defaultBudget)
+            note << "the default budget";
+        else if (budget > 0.0 && double(first.bytes) > budget)
+            note << budgetOption(budget);
+        else
+            note << "the limit of " << req.maxProbes << " probes";
+        best.notes.push_back(note.str());
+    } else if (!capNote.empty()) {
+        best.notes.push_back(capNote);
+    }
+    // The default budget coarsens every time: that is how the default is defined, not news.
+    if (defaultBudget) best.notes.clear();
+    best.budgetBytes = budget;
+    best.defaultBudget = defaultBudget;
+    best.placements = placements;
+    return best;
+}
+
+} // namespace pb::probes
