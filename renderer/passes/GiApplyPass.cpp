@@ -28,7 +28,6 @@ void checkGiProfileSupported(const profile::Profile& p) {
     auto unsupported = [](const std::string& what) {
         throw Error(what + " is not implemented yet (issue 4); use the default");
     };
-    if (p.gi.precision != profile::GiPrecision::Fp32) unsupported("gi.precision=fp16");
     if (p.gi.multiVolume != profile::GiMultiVolume::Naive) unsupported("gi.multi_volume=stencil");
     if (p.gi.dynamic != profile::GiDynamic::PerPixel) unsupported("gi.dynamic=sh");
 }

@@ -141,7 +141,7 @@ TEST_F(GiFrameTest, LossySwitchesReportTheirError) {
     ref->render(testView());
     image::ImageF expected = ref->readRadiance();
     for (const char* sw : {"gi.target_format=rgba16f", "gi.target_format=r11g11b10f",
-                           "gi.resolution=half", "gi.resolution=quarter"}) {
+                           "gi.precision=fp16", "gi.resolution=half", "gi.resolution=quarter"}) {
         auto r = makeRenderer(&set, {sw});
         r->render(testView());
         image::ImageF got = r->readRadiance();
