@@ -38,7 +38,7 @@ TEST_P(GiPrecisionTest, Fp16OverflowsWhereFp32DoesNot) {
     const float kE = 60000.0f;
     const probes::ProbeSet set = syntheticProbes(
         {syntheticVolume("box", glm::vec3(0.0f), glm::vec3(1.0f), glm::ivec3(3))},
-        [&](const glm::vec3&, const glm::ivec3&) { return glm::vec3(kE); },
+        [&](int, const glm::vec3&, const glm::ivec3&) { return glm::vec3(kE); },
         probes::StorageFormat::Rgba32f);
     const glm::vec3 up(0.0f, 1.0f, 0.0f);
     // 0.3 m below the centre probe, facing it: trilinear 0.95 x wrap 1.2 = 1.14 on one probe.

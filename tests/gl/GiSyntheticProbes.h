@@ -12,8 +12,8 @@
 
 namespace pb::test {
 
-// E(local direction, probe grid coordinates).
-using SyntheticIrradiance = std::function<glm::vec3(const glm::vec3&, const glm::ivec3&)>;
+// E(volume index, local direction, probe grid coordinates).
+using SyntheticIrradiance = std::function<glm::vec3(int, const glm::vec3&, const glm::ivec3&)>;
 
 inline probes::ProbeVolume syntheticVolume(const std::string& name, glm::vec3 center,
                                            glm::vec3 half, glm::ivec3 counts,
@@ -36,7 +36,8 @@ inline probes::ProbeSet syntheticProbes(const std::vector<probes::ProbeVolume>& 
     set.volumes = volumes;
     set.scenarios.push_back({"synthetic", {}, {}});
     set.irradiance.emplace_back();
-    for (const ProbeVolume& v : volumes) {
+    for (size_t vi = 0; vi < volumes.size(); ++vi) {
+        const ProbeVolume& v = volumes[vi];
         set.states.emplace_back(size_t(v.probeCount()));
         ProbeTexture vis = ProbeTexture::make(visibilityShape(v.counts));
         for (float& x : vis.texels)
@@ -48,7 +49,8 @@ inline probes::ProbeSet syntheticProbes(const std::vector<probes::ProbeVolume>& 
             const glm::ivec3 c = v.probeCoords(p);
             for (int j = 0; j < kIrradianceInterior; ++j)
                 for (int i = 0; i < kIrradianceInterior; ++i) {
-                    glm::vec3 e = irradiance(octTexelDirection(i, j, kIrradianceInterior), c);
+                    glm::vec3 e =
+                        irradiance(int(vi), octTexelDirection(i, j, kIrradianceInterior), c);
                     float* t =
                         irr.at(c.x * kIrradianceTile + 1 + i, c.z * kIrradianceTile + 1 + j, c.y);
                     t[0] = e.x, t[1] = e.y, t[2] = e.z, t[3] = 1.0f;
