@@ -27,11 +27,9 @@ gl::TextureFormat giTargetFormat(profile::GiTargetFormat f) {
     return gl::TextureFormat::RGBA16F;
 }
 
-void checkGiProfileSupported(const profile::Profile& p) {
-    auto unsupported = [](const std::string& what) {
-        throw Error(what + " is not implemented yet (issue 4); use the default");
-    };
-    if (p.gi.dynamic != profile::GiDynamic::PerPixel) unsupported("gi.dynamic=sh");
+void checkGiProfileSupported(const profile::Profile&) {
+    // Every value of every switch is implemented; a later value that is not yet belongs here
+    // (throw pb::Error naming it).
 }
 
 struct GiApplyPass::Draw {
@@ -266,18 +264,6 @@ void GiApplyPass::countEvaluated(int statsIndex) {
         stats_.shadedBy[i] = std::int16_t(statsIndex);
     }
     stats_.volumes[size_t(statsIndex)].evaluatedPixels = n;
-}
-
-std::int64_t GiPassStats::totalEvaluations() const {
-    std::int64_t n = 0;
-    for (const GiVolumeStats& v : volumes)
-        n += std::max<std::int64_t>(v.evaluatedPixels, 0);
-    return n;
-}
-
-std::int64_t GiPassStats::coveredPixels() const {
-    return std::count_if(evaluations.begin(), evaluations.end(),
-                         [](std::uint8_t e) { return e > 0; });
 }
 
 } // namespace pb::render

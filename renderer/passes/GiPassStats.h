@@ -3,6 +3,8 @@
 // (GiApplyPass::stats()). Pixel counts exist only while counting is on
 // (GiApplyPass::setCountPixels): counting reads the GPU back after every volume, so it is a
 // diagnostic mode, never part of a timed frame.
+#include <nlohmann/json.hpp>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -33,5 +35,14 @@ struct GiPassStats {
     std::int64_t totalEvaluations() const;
     std::int64_t coveredPixels() const; // texels evaluated at least once
 };
+
+// How a volume was drawn, in words: "culled", "full-screen", "fill + box", "box (inside)".
+std::string giVolumeDrawing(const GiVolumeStats& v);
+// The stats without the per-texel maps: multi_volume, target size, per volume name,
+// file_index, drawn, culled, camera_inside, fill_pass, full_screen, evaluated_pixels (null when
+// not counted), and when counted evaluations and covered_pixels.
+nlohmann::json giPassStatsJson(const GiPassStats& s);
+// An aligned table for people (one line per volume and a total line).
+std::string giPassStatsText(const GiPassStats& s);
 
 } // namespace pb::render

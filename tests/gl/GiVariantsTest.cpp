@@ -86,6 +86,18 @@ TEST_P(GiVariantsTest, EveryCombinationCompilesAndLinks) {
     EXPECT_NO_THROW(programs.get("fullscreen.vert", "gi_ddgi_apply.frag", counting));
     EXPECT_NO_THROW(programs.get("gi_volume_box.vert", "gi_ddgi_apply.frag", counting));
     EXPECT_NO_THROW(programs.get("fullscreen.vert", "gi_depth_copy.frag", {}));
+    EXPECT_NO_THROW(programs.get("fullscreen.vert", "gi_dynamic_sh_project.frag", {}));
+    gl::Defines spheres = render::ddgiConstantDefines();
+    EXPECT_NO_THROW(programs.get("debug_probe_sphere.vert", "debug_probe_sphere.frag", spheres));
+    spheres["DEBUG_VISIBILITY"] = "";
+    EXPECT_NO_THROW(programs.get("debug_probe_sphere.vert", "debug_probe_sphere.frag", spheres));
+    // The lighting's gi_only variant (with the default switches' defines).
+    gl::Defines giOnly;
+    for (const auto& [k, v] : profile::shaderDefines(profile::Profile{}))
+        giOnly[k] = v;
+    giOnly["GI_ENABLED"] = "";
+    giOnly["DEBUG_INDIRECT_ONLY"] = "";
+    EXPECT_NO_THROW(programs.get("fullscreen.vert", "lighting_direct.frag", giOnly));
 }
 
 PB_INSTANTIATE_HEADLESS_BACKENDS(GiVariantsTest);
