@@ -15,10 +15,11 @@
 // in fp16 a coordinate into a 100-texel layer is off by a texel, a point 10 m from the volume
 // centre by a centimetre (what a mobile shader keeps in fp32 too).
 // A highp value enters the fp16 part only through ddgiHalf(): the rounding a GPU with 16-bit
-// ALUs applies when a highp value is assigned to a mediump one. llvmpipe would keep such a
-// value (and everything computed from it) in fp32 (DESIGN.md: only expressions mediump end to
-// end are lowered); unpackHalf2x16 is mediump by definition, so from there on the arithmetic
-// is really fp16 on llvmpipe too (tests/gl/GiPrecisionTest.cpp: overflow to Inf past 65504).
+// ALUs applies when a highp value is assigned to a mediump one. llvmpipe lowers an expression
+// to fp16 only when its inputs are mediump (DESIGN.md); a mediump variable assigned from highp
+// may stay fp32 there. unpackHalf2x16 is mediump by definition and its result is a half, so
+// every value of the fp16 part is a real half on llvmpipe too, as on a mobile GPU
+// (tests/gl/GiPrecisionTest.cpp: the sums overflow to Inf past 65504).
 // Irradiance enters the fp16 sums straight from the mediump sampler; an overflow guard (e.g.
 // pre-exposed irradiance: GpuProbes uploads E * 2^-k, the caller multiplies the result by 2^k
 // in highp) can be added as its own switch without touching this structure.

@@ -10,6 +10,7 @@
 #include "passes/FrameContext.h"
 #include "passes/GiPassStats.h"
 #include "passes/GiTargets.h"
+#include "passes/GiVolumeRaster.h"
 #include "passes/GpuProbes.h"
 #include "profile/Profile.h"
 
@@ -41,7 +42,7 @@ public:
 private:
     struct Draw; // one frame's shared state (GiApplyPass.cpp)
     void drawNaive(Draw& d, int v);
-    void drawStencil(Draw& d, int v, const struct GiVolumeRaster& r);
+    void drawStencil(Draw& d, int v, const GiVolumeRaster& r);
     void countEvaluated(int statsIndex);
 
     const GpuProbes& probes_;

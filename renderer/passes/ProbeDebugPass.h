@@ -18,6 +18,8 @@ public:
 private:
     const GpuProbes& probes_;
     bool visibility_;
+    // The targets fbo_ was made for: FrameRenderer allocates new targets while the old ones
+    // still exist, so a new set never has the address of the one cached here.
     const FrameTargets* fboFor_ = nullptr;
     std::unique_ptr<gl::Framebuffer> fbo_; // radiance + the GBuffer's depth
 };

@@ -8,6 +8,7 @@
 #include "gl/GlTestFixture.h"
 
 #include "frame/Readback.h"
+#include "passes/GiVolumeLod.h"
 #include "probes/ProbeSampler.h"
 
 #include <algorithm>
@@ -155,6 +156,26 @@ TEST_F(GiStencilTest, ABoxPastTheFarPlaneIsDrawnFullScreen) {
         EXPECT_EQ(wrong, 0);
         EXPECT_EQ(naive.gi.pixels, stencil.gi.pixels);
     }
+}
+
+// gi.volume_lod: an omitted volume is neither uploaded nor drawn; its pixels go to its parent.
+TEST_F(GiStencilTest, AnOmittedVolumeIsNotDrawn) {
+    const scene::Scene& s = giTestScene();
+    const probes::ProbeSet& set = nestedVolumeProbes();
+    render::GiOptions gi;
+    gi.probes = &set;
+    gi.profile.applyOverride("gi.multi_volume=stencil");
+    gi.profile.applyOverride("gi.volume_lod=omit:sun_patch");
+    render::FrameRenderer r(s, render::defaultFrameSettings(s), gi);
+    applyPass(r)->setCountPixels(true);
+    r.render(render::makeRenderView(nestedCameras()[1].view, s.worldBounds(), kW, kH));
+    const render::GiPassStats& stats = applyPass(r)->stats();
+    ASSERT_EQ(stats.volumes.size(), 2u);
+    for (const auto& v : stats.volumes)
+        EXPECT_NE(v.name, "sun_patch");
+    EXPECT_EQ(r.gpuProbes()->bytes(), render::GpuProbes(set, 0).bytes() -
+                                          render::gpuVolumeBytes(set.volumes[2], set.format()));
+    EXPECT_EQ(stats.totalEvaluations(), stats.coveredPixels());
 }
 
 // The stencil's volume per pixel is the CPU sampler's choice at the pixel's surface point
