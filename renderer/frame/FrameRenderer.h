@@ -52,7 +52,7 @@ public:
     gl::ProgramCache& programs() { return programs_; }
     const FrameTargets* targets() const { return targets_.get(); }
     const GpuProbes* gpuProbes() const { return probes_.get(); } // null without GI
-    GiApplyPass* giApplyPass() const { return giApply_; }         // null without GI
+    GiApplyPass* giApplyPass() const { return giApply_; }        // null without GI
 
 private:
     GpuScene gpu_;

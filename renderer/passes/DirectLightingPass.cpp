@@ -33,7 +33,8 @@ void DirectLightingPass::execute(FrameContext& frame) {
     // Without probes: the variant without defines (what the golden images were made with).
     gl::Defines defines = frame.gi.enabled ? frame.gi.defines : gl::Defines{};
     if (frame.settings.indirectOnly) defines["DEBUG_INDIRECT_ONLY"] = "";
-    const gl::Program& prog = frame.programs.get("fullscreen.vert", "lighting_direct.frag", defines);
+    const gl::Program& prog =
+        frame.programs.get("fullscreen.vert", "lighting_direct.frag", defines);
     prog.use();
     frame.targets.gbuffer.bindForReading(prog, 0);
     int shadowUnit = gbufferDepthUnit(0) + 1;
