@@ -155,8 +155,9 @@ TEST(RenderGiCli, DebugViewsWriteTheirImages) {
         // volume_coverage: shading volume | evaluations per pixel, side by side.
         EXPECT_EQ(img.width,
                   std::string(view) == "volume_coverage" ? 2 * normal.width : normal.width);
-        if (img.width == normal.width)
+        if (img.width == normal.width) {
             EXPECT_GT(std::abs(meanLuma(img) - meanLuma(normal)), 0.5) << view;
+        }
     }
     auto noProbes = renderArgs(dir / "np.png");
     noProbes.insert(noProbes.end(), {"--debug", "gi_only"});
