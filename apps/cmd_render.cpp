@@ -1,14 +1,17 @@
 // probebench render: one frame of a scene to PNG (and optionally PFM and GBuffer dumps), or an
 // interactive window with --platform glfw. With --probes FILE the frame has DDGI from the baked
-// probes, shaped by the profile switches (--set key=value, renderer/profile/SwitchTable.cpp).
+// probes, shaped by the profile switches (--set key=value, renderer/profile/SwitchTable.cpp);
+// --debug NAME shows a GI debug view, --verbose / --json report the GI pass per volume.
 #include "CommandRegistry.h"
 #include "FlyCamera.h"
 #include "PlatformOptions.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
 #include "frame/FrameRenderer.h"
+#include "frame/GiCoverageView.h"
 #include "gl/DebugOutput.h"
 #include "image/Image.h"
+#include "passes/GiApplyPass.h"
 #include "probes/ProbeFile.h"
 #include "profile/SwitchTable.h"
 
@@ -31,6 +34,8 @@ struct RenderArgs {
     std::string probes, scenario;
     std::vector<std::string> sets; // --set key=value
     bool listSwitches = false;
+    std::string debug; // --debug NAME
+    bool verbose = false, json = false;
 };
 
 int scenarioIndex(const probes::ProbeSet& set, const RenderArgs& a) {
@@ -83,6 +88,36 @@ int runInteractive(platform::Platform& p, render::FrameRenderer& r, const scene:
     return 0;
 }
 
+nlohmann::json renderJson(const RenderArgs& a, const scene::Scene& s, const scene::View& view,
+                          const platform::Platform& platform, const render::FrameRenderer& r,
+                          double ms) {
+    auto orNull = [](const std::string& v) {
+        return v.empty() ? nlohmann::json(nullptr) : nlohmann::json(v);
+    };
+    nlohmann::json j;
+    j["scene"] = s.name;
+    j["view"] = view.name;
+    j["platform"] = platform.description();
+    j["width"] = a.width;
+    j["height"] = a.height;
+    j["first_frame_ms"] = ms;
+    j["out"] = a.out;
+    j["out_hdr"] = orNull(a.outHdr);
+    j["gi"] = nullptr;
+    if (const render::GpuProbes* gp = r.gpuProbes()) {
+        const render::GiApplyPass* pass = r.giApplyPass();
+        nlohmann::json& gi = j["gi"];
+        gi["volumes_loaded"] = gp->volumes().size();
+        gi["scenario"] = gp->scenarioName();
+        gi["format"] = probes::formatName(gp->format());
+        gi["probe_gpu_bytes"] = gp->bytes();
+        gi["target_gpu_bytes"] = pass->targetBytes();
+        gi["debug_view"] = orNull(a.debug);
+        gi["pass"] = render::giPassStatsJson(pass->stats());
+    }
+    return j;
+}
+
 int run(RenderArgs& a) {
     profile::Profile prof;
     for (const std::string& kv : a.sets) prof.applyOverride(kv);
@@ -93,6 +128,16 @@ int run(RenderArgs& a) {
     if (!a.sets.empty() && a.probes.empty())
         throw Error("--set: the GI switches need --probes FILE");
     if (!a.scenario.empty() && a.probes.empty()) throw Error("--scenario needs --probes FILE");
+    const render::GiDebugView debugView =
+        a.debug.empty() ? render::GiDebugView::None : render::parseGiDebugView(a.debug);
+    const bool coverage = debugView == render::GiDebugView::VolumeCoverage;
+    if (debugView != render::GiDebugView::None && a.probes.empty())
+        throw Error("--debug " + a.debug + ": the GI debug views need --probes FILE");
+    if (coverage && !a.outHdr.empty())
+        throw Error("--out-hdr: --debug volume_coverage is an 8-bit image only");
+    if (coverage && a.out.empty())
+        throw Error("--debug volume_coverage: needs --out (it is made from a read-back)");
+    if (a.json && a.out.empty()) throw Error("--json: needs --out (a rendered frame to report)");
     if (a.width < 1 || a.height < 1 || a.width > 16384 || a.height > 16384)
         throw Error("--width/--height must be in 1..16384");
     if (a.out.empty() && a.platform.name != "glfw")
@@ -106,7 +151,10 @@ int run(RenderArgs& a) {
         gi.probes = &probeSet;
         gi.scenario = scenarioIndex(probeSet, a);
         gi.profile = prof;
+        gi.debugView = debugView;
     }
+    // Human lines go to stdout, or to stderr when stdout carries the JSON.
+    std::ostream& info = a.json ? std::cerr : std::cout;
 
     a.platform.width = a.width;
     a.platform.height = a.height;
@@ -117,16 +165,22 @@ int run(RenderArgs& a) {
     render::FrameSettings settings = render::defaultFrameSettings(s);
     if (a.exposure > 0) settings.exposure = a.exposure;
     render::FrameRenderer renderer(s, settings, gi);
-    std::cout << "scene " << sceneSummary(s) << "; view '" << view.name << "'\n"
-              << "platform: " << platform->description() << "\n";
+    // Counting reads the GPU back after every volume: only when asked for.
+    if (renderer.giApplyPass() && (a.verbose || a.json || coverage))
+        renderer.giApplyPass()->setCountPixels(true);
+    info << "scene " << sceneSummary(s) << "; view '" << view.name << "'\n"
+         << "platform: " << platform->description() << "\n";
     if (const render::GpuProbes* gp = renderer.gpuProbes()) {
         std::string changed;
         for (const auto& c : prof.changedSwitches()) changed += " " + c;
-        std::cout << "gi: ddgi, " << gp->volumes().size() << " of " << probeSet.volumes.size()
-                  << " volume(s), scenario '" << gp->scenarioName() << "', "
-                  << probes::formatName(gp->format()) << ", "
-                  << double(gp->bytes()) / (1024.0 * 1024.0) << " MiB on the GPU; switches:"
-                  << (changed.empty() ? " defaults" : changed) << "\n";
+        info << "gi: ddgi, " << gp->volumes().size() << " of " << probeSet.volumes.size()
+             << " volume(s), scenario '" << gp->scenarioName() << "', "
+             << probes::formatName(gp->format()) << ", " << double(gp->bytes()) / (1024.0 * 1024.0)
+             << " MiB on the GPU; switches:" << (changed.empty() ? " defaults" : changed)
+             << (debugView == render::GiDebugView::None
+                     ? ""
+                     : std::string("; debug view ") + render::giDebugViewName(debugView))
+             << "\n";
     }
 
     if (platform->isWindowed() && a.out.empty())
@@ -139,6 +193,7 @@ int run(RenderArgs& a) {
                     .count();
     // Read everything back before writing anything: a failure leaves no partial output.
     image::Image8 ldr = renderer.readOutput();
+    if (coverage) ldr = render::giCoverageImage(renderer.giApplyPass()->stats(), ldr);
     image::ImageF hdr;
     if (!a.outHdr.empty()) hdr = renderer.readRadiance();
     if (auto errors = debug.errorsSince(glMark); !errors.empty())
@@ -152,10 +207,18 @@ int run(RenderArgs& a) {
         image::writePfm(a.outHdr, hdr);
     }
     if (!a.dumpDir.empty()) renderer.dumpGBuffer(a.dumpDir);
-    std::cout << "rendered " << a.width << "x" << a.height << " in " << ms
-              << " ms (one frame, includes shader compilation)\n"
-              << "wrote " << a.out << (a.outHdr.empty() ? "" : " and " + a.outHdr)
-              << (a.dumpDir.empty() ? "" : ", GBuffer channels in " + a.dumpDir) << "\n";
+    const render::GiApplyPass* giPass = renderer.giApplyPass();
+    info << "rendered " << a.width << "x" << a.height << " in " << ms
+         << " ms (one frame, includes shader compilation"
+         << (giPass && giPass->stats().counted ? " and per-volume pixel counting" : "") << ")\n"
+         << "wrote " << a.out << (a.outHdr.empty() ? "" : " and " + a.outHdr)
+         << (a.dumpDir.empty() ? "" : ", GBuffer channels in " + a.dumpDir) << "\n";
+    if (coverage)
+        info << "volume_coverage: left = the volume that shaded each pixel:\n"
+             << render::giCoverageLegend(giPass->stats())
+             << "right = full evaluations per pixel: 1 blue, 2 green, 3 yellow, 4+ red\n";
+    if (giPass && a.verbose) info << render::giPassStatsText(giPass->stats());
+    if (a.json) std::cout << renderJson(a, s, view, *platform, renderer, ms).dump(2) << "\n";
     if (platform->isWindowed()) return runInteractive(*platform, renderer, s, view, a.frames);
     return 0;
 }
@@ -191,6 +254,17 @@ const RegisterCommand reg{{"render", "Render a scene to an image (or a window wi
                                               "--list-switches shows them)");
                                cmd.add_flag("--list-switches", a->listSwitches,
                                             "Print every profile switch and exit");
+                               cmd.add_option("--debug", a->debug,
+                                              "GI debug view (needs --probes): gi_only, "
+                                              "probes_irradiance, probes_visibility, "
+                                              "volume_coverage (an image twice as wide: shading "
+                                              "volume | evaluations per pixel)");
+                               cmd.add_flag("--verbose", a->verbose,
+                                            "Report the GI pass per volume: how it was drawn, "
+                                            "pixels evaluated (counting reads back per volume)");
+                               cmd.add_flag("--json", a->json,
+                                            "Print the frame's report as JSON on stdout (human "
+                                            "lines go to stderr); counts pixels like --verbose");
                                return [a] { return run(*a); };
                            }}};
 

@@ -6,9 +6,44 @@
 // one function, never a copy. The caller picks the volume (one draw per volume) and space
 // (camera-relative in the apply pass, world in the point evaluator: u_ddgiCenter follows).
 //
-// Variants: GI_LOOPS_FUSED | GI_LOOPS_SPLIT, GI_ORDER_XYZ | GI_ORDER_SLICE_FIRST.
-uniform highp sampler2DArray u_ddgiIrradiance; // RGB = E, tiles of DDGI_IRR_TILE^2 texels
-uniform highp sampler2DArray u_ddgiVisibility; // RG = mean, mean^2 of distance / maxDistance
+// Variants: GI_LOOPS_FUSED | GI_LOOPS_SPLIT, GI_ORDER_XYZ | GI_ORDER_SLICE_FIRST,
+// GI_PRECISION_FP32 | GI_PRECISION_FP16.
+//
+// Precision (gi.precision). `hfloat`/`hvec*` are the types of the fp16 part: probe weights
+// (wrap, Chebyshev, crush, trilinear), the probe data as fetched and the irradiance sums.
+// Positions, directions, grid coordinates and texture coordinates stay highp in both variants:
+// in fp16 a coordinate into a 100-texel layer is off by a texel, a point 10 m from the volume
+// centre by a centimetre (what a mobile shader keeps in fp32 too).
+// A highp value enters the fp16 part only through ddgiHalf(): the rounding a GPU with 16-bit
+// ALUs applies when a highp value is assigned to a mediump one. llvmpipe lowers an expression
+// to fp16 only when its inputs are mediump (DESIGN.md); a mediump variable assigned from highp
+// may stay fp32 there. unpackHalf2x16 is mediump by definition and its result is a half, so
+// every value of the fp16 part is a real half on llvmpipe too, as on a mobile GPU
+// (tests/gl/GiPrecisionTest.cpp: the sums overflow to Inf past 65504).
+// Irradiance enters the fp16 sums straight from the mediump sampler; an overflow guard (e.g.
+// pre-exposed irradiance: GpuProbes uploads E * 2^-k, the caller multiplies the result by 2^k
+// in highp) can be added as its own switch without touching this structure.
+#ifdef GI_PRECISION_FP16
+#define hfloat mediump float
+#define hvec2 mediump vec2
+#define hvec3 mediump vec3
+#define hvec4 mediump vec4
+#define DDGI_PROBE_DATA_PRECISION mediump
+mediump float ddgiHalf(highp float x) { return unpackHalf2x16(packHalf2x16(vec2(x, 0.0))).x; }
+mediump vec3 ddgiHalf(highp vec3 v) {
+    return vec3(unpackHalf2x16(packHalf2x16(v.xy)), unpackHalf2x16(packHalf2x16(v.zz)).x);
+}
+#else
+#define hfloat highp float
+#define hvec2 highp vec2
+#define hvec3 highp vec3
+#define hvec4 highp vec4
+#define DDGI_PROBE_DATA_PRECISION highp
+#define ddgiHalf(x) (x)
+#endif
+
+uniform DDGI_PROBE_DATA_PRECISION sampler2DArray u_ddgiIrradiance; // RGB = E, tiles of DDGI_IRR_TILE^2 texels
+uniform DDGI_PROBE_DATA_PRECISION sampler2DArray u_ddgiVisibility; // RG = mean, mean^2 of distance / maxDistance
 uniform highp sampler2DArray u_ddgiState;      // per probe: xyz relocation (local), w = valid
 uniform vec3 u_ddgiCenter;        // volume centre in the caller's space
 uniform mat3 u_ddgiToLocal;       // R^T: caller's axes -> volume axes
@@ -62,7 +97,7 @@ ivec3 ddgiCorner(int i) {
 }
 
 // Visibility-and-position weight of probe q (README steps 4a-4d); < 0 when q is skipped.
-float ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, vec3 n, vec3 biased, vec3 alpha) {
+hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, hvec3 n, vec3 biased, hvec3 alpha) {
     if (any(greaterThanEqual(q, u_ddgiCounts))) return -1.0;
     vec4 state = texelFetch(u_ddgiState, ivec3(q.x, q.z, q.y), 0);
     if (state.w < 0.5) return -1.0;
@@ -70,21 +105,21 @@ float ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, vec3 n, vec3 biased, vec3 alph
 
     // 4a. Wrap shading: probes behind the surface count less (never zero).
     vec3 dirToProbe = ddgiSafeNormalize(probe - p, n);
-    float t = (dot(dirToProbe, n) + 1.0) * 0.5;
-    float w = t * t + DDGI_WRAP_BIAS;
+    hfloat t = (dot(ddgiHalf(dirToProbe), n) + 1.0) * 0.5;
+    hfloat w = t * t + DDGI_WRAP_BIAS;
 
     // 4b. Chebyshev visibility from the probe towards the biased point.
     vec3 toPoint = biased - probe;
     float dist = length(toPoint);
-    vec3 dir = dist > 0.0 ? toPoint / dist : n;
+    vec3 dir = dist > 0.0 ? toPoint / dist : vec3(n);
     vec2 visCoord = (vec2(q.xz) * DDGI_VIS_TILE + ddgiTileLocal(dir, DDGI_VIS_INTERIOR)) *
                     u_ddgiVisInvSize;
-    vec2 vis = texture(u_ddgiVisibility, vec3(visCoord, float(q.y))).rg;
-    float d01 = dist * u_ddgiInvMaxDistance;
+    hvec2 vis = texture(u_ddgiVisibility, vec3(visCoord, float(q.y))).rg;
+    hfloat d01 = ddgiHalf(dist * u_ddgiInvMaxDistance);
     if (d01 > vis.x) {
-        float variance = max(vis.y - vis.x * vis.x, DDGI_VARIANCE_FLOOR);
-        float dd = d01 - vis.x;
-        float cheb = variance / (variance + dd * dd);
+        hfloat variance = max(vis.y - vis.x * vis.x, DDGI_VARIANCE_FLOOR);
+        hfloat dd = d01 - vis.x;
+        hfloat cheb = variance / (variance + dd * dd);
         w *= max(cheb * cheb * cheb, DDGI_CHEBYSHEV_FLOOR);
     }
 
@@ -92,19 +127,19 @@ float ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, vec3 n, vec3 biased, vec3 alph
     if (w < DDGI_CRUSH_THRESHOLD) w *= (w * w) / (DDGI_CRUSH_THRESHOLD * DDGI_CRUSH_THRESHOLD);
 
     // 4d. Trilinear.
-    float tri = (off.x != 0 ? alpha.x : 1.0 - alpha.x) * (off.y != 0 ? alpha.y : 1.0 - alpha.y) *
-                (off.z != 0 ? alpha.z : 1.0 - alpha.z);
+    hfloat tri = (off.x != 0 ? alpha.x : 1.0 - alpha.x) * (off.y != 0 ? alpha.y : 1.0 - alpha.y) *
+                 (off.z != 0 ? alpha.z : 1.0 - alpha.z);
     return w * max(tri, DDGI_MIN_TRILINEAR);
 }
 
-vec3 ddgiProbeIrradiance(ivec3 q, vec2 irrLocal) {
+hvec3 ddgiProbeIrradiance(ivec3 q, vec2 irrLocal) {
     vec2 c = (vec2(q.xz) * DDGI_IRR_TILE + irrLocal) * u_ddgiIrrInvSize;
     return texture(u_ddgiIrradiance, vec3(c, float(q.y))).rgb;
 }
 
 // Irradiance at `pos` (caller's space) for surface normal `normal` seen from direction `view`
 // (surface -> viewer; need not be unit). rgb = E * fade, a = weight (fade; 0 = no data).
-vec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
+hvec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
     // 1. Local frame.
     vec3 p = ddgiLocal(pos);
     vec3 n = ddgiSafeNormalize(u_ddgiToLocal * normal, vec3(0.0, 1.0, 0.0));
@@ -125,17 +160,18 @@ vec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
     vec3 g = clamp((p + u_ddgiHalf) * u_ddgiInvCell, vec3(0.0),
                    vec3(max(u_ddgiCounts - 2, ivec3(0))));
     ivec3 base = ivec3(floor(g));
-    vec3 alpha = clamp((biased + u_ddgiHalf) * u_ddgiInvCell - vec3(base), 0.0, 1.0);
+    hvec3 alpha = ddgiHalf(clamp((biased + u_ddgiHalf) * u_ddgiInvCell - vec3(base), 0.0, 1.0));
+    hvec3 nh = ddgiHalf(n);
 
     // 4. The 8 surrounding probes.
     vec2 irrLocal = ddgiTileLocal(n, DDGI_IRR_INTERIOR);
-    vec3 sumE = vec3(0.0);
-    float sumW = 0.0;
+    hvec3 sumE = vec3(0.0);
+    hfloat sumW = 0.0;
 #ifdef GI_LOOPS_SPLIT
     // All visibility weights first (the visibility fetches back to back), then irradiance.
-    float weights[8];
+    hfloat weights[8];
     for (int i = 0; i < 8; ++i)
-        weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), p, n, biased, alpha);
+        weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), p, nh, biased, alpha);
     for (int i = 0; i < 8; ++i) {
         if (weights[i] < 0.0) continue;
         sumE += weights[i] * ddgiProbeIrradiance(base + ddgiCorner(i), irrLocal);
@@ -144,7 +180,7 @@ vec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
 #else
     for (int i = 0; i < 8; ++i) {
         ivec3 off = ddgiCorner(i);
-        float w = ddgiProbeWeight(base + off, off, p, n, biased, alpha);
+        hfloat w = ddgiProbeWeight(base + off, off, p, nh, biased, alpha);
         if (w < 0.0) continue;
         sumE += w * ddgiProbeIrradiance(base + off, irrLocal);
         sumW += w;
@@ -153,5 +189,6 @@ vec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
 
     // 5. Normalise, then fade.
     if (!(sumW > 0.0)) return vec4(0.0);
-    return vec4(sumE / sumW * fade, fade);
+    hfloat fadeH = ddgiHalf(fade);
+    return vec4(sumE / sumW * fadeH, fadeH);
 }

@@ -1,28 +1,37 @@
 // GI apply (DDGI): per pixel of the GI evaluation target, the irradiance of the probe volume
-// being drawn at the GBuffer surface (common_ddgi.glsl). One draw per volume, largest first;
-// a pixel outside the volume's influence is discarded so the smallest volume containing it
-// wins (the CPU sampler's rule). Target: rgb = E * fade, a = weight; formats without alpha
-// (GI_TARGET_R11G11B10F) get the ambient blended in here instead (see lighting_direct.frag).
-// Variants: GI_RESOLUTION_* (the target is 1, 1/2 or 1/4 of the GBuffer per axis).
+// being drawn at the GBuffer surface (common_ddgi.glsl). One draw per volume; a pixel outside
+// the volume's influence is discarded, so the smallest volume containing it wins (the CPU
+// sampler's rule): gi.multi_volume=naive draws largest first and overwrites, =stencil draws
+// smallest first and lets the stencil keep later volumes off taken pixels (GiApplyPass.cpp).
+// Target: rgb = E * fade, a = weight; formats without alpha (GI_TARGET_R11G11B10F) get the
+// ambient blended in here instead (see lighting_direct.frag).
+// Variants: GI_RESOLUTION_* (the target is 1, 1/2 or 1/4 of the GBuffer per axis),
+// GI_DYNAMIC_SH (dynamic-object pixels are lit by their SH in the lighting: skipped here),
+// GI_COUNT_PIXELS (diagnostics: location 1 marks every pixel this draw evaluated).
 #include "common_octahedral.glsl"
+#include "common_gi_pixel.glsl"
 #include "common_ddgi.glsl"
-out vec4 out_gi;
+layout(location = 0) out vec4 out_gi;
+#ifdef GI_COUNT_PIXELS
+layout(location = 1) out vec4 out_evaluated;
+#endif
 uniform highp sampler2D u_gbuffer_normal;
 uniform highp sampler2D u_gbuffer_depth;
-uniform mat4 u_relFromClip;
-uniform vec2 u_gbufferInvSize;
-uniform int u_giDivisor;   // GBuffer pixels per target texel, per axis
+#ifdef GI_DYNAMIC_SH
+uniform highp sampler2D u_gbuffer_flags;
+#endif
 uniform vec3 u_ambientUp;  // GI_TARGET_R11G11B10F only
 uniform vec3 u_ambientDown;
 
 void main() {
-    // The GBuffer pixel nearest the target texel's centre (top-left of the middle four).
-    ivec2 px = ivec2(gl_FragCoord.xy) * u_giDivisor + (u_giDivisor - 1) / 2;
+    ivec2 px = giGBufferPixel();
     float depth = texelFetch(u_gbuffer_depth, px, 0).r;
     if (depth >= 1.0) discard; // sky
-    vec2 uv = (vec2(px) + 0.5) * u_gbufferInvSize;
-    vec4 relH = u_relFromClip * vec4(uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
-    vec3 rel = relH.xyz / relH.w;
+#ifdef GI_DYNAMIC_SH
+    // Early out: the lighting gives dynamic objects their SH (bit 0 of the flags, bits / 255).
+    if ((int(texelFetch(u_gbuffer_flags, px, 0).r * 255.0 + 0.5) & 1) != 0) discard;
+#endif
+    vec3 rel = giRelPosition(px, depth);
     if (!ddgiInfluences(ddgiLocal(rel))) discard;
     vec3 n = octDecode(texelFetch(u_gbuffer_normal, px, 0).xy);
     // The eye is the origin of camera-relative space: the view direction is -rel.
@@ -33,5 +42,8 @@ void main() {
     out_gi = vec4(max(gi.rgb + (1.0 - gi.a) * ambient, vec3(0.0, 0.0, 6.103515625e-05)), 1.0);
 #else
     out_gi = gi;
+#endif
+#ifdef GI_COUNT_PIXELS
+    out_evaluated = vec4(1.0);
 #endif
 }

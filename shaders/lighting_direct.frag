@@ -1,7 +1,8 @@
 // Deferred direct lighting: sun (shadow-mapped), punctual lights, emissive, and the indirect
 // irradiance input: the GI evaluation target where a probe volume covers the pixel
 // (GI_ENABLED), blended by its weight with the hemispherical ambient, which stays the fallback
-// outside every volume (and the whole input without GI). Output: linear radiance.
+// outside every volume (and the whole input without GI); with GI_DYNAMIC_SH, dynamic-object
+// pixels take their object's L1 SH instead. Output: linear radiance.
 #include "common_octahedral.glsl"
 in vec2 v_uv;
 out vec4 out_radiance;
@@ -31,8 +32,26 @@ const float PI = 3.14159265358979;
 
 #ifdef GI_ENABLED
 uniform highp sampler2D u_giIrradiance; // gi_ddgi_apply.frag's target
+#ifdef GI_DYNAMIC_SH
+uniform sampler2D u_gbuffer_flags;      // bit 0: dynamic, bits 1-7: object (bits / 255)
+uniform highp sampler2D u_giDynamicSh;  // texel (k, object): gi_dynamic_sh_project.frag
+#endif
 vec3 indirectIrradiance(vec3 n, ivec2 px) {
     vec3 ambient = mix(u_ambientDown, u_ambientUp, n.y * 0.5 + 0.5);
+#ifdef GI_DYNAMIC_SH
+    // Dynamic objects: their L1 fit at this normal (rgb = E * fade, a = fade), never the
+    // target (the apply pass skipped these pixels).
+    int flags = int(texelFetch(u_gbuffer_flags, px, 0).r * 255.0 + 0.5);
+    if ((flags & 1) != 0) {
+        int object = flags >> 1;
+        vec4 sh = texelFetch(u_giDynamicSh, ivec2(0, object), 0) +
+                  texelFetch(u_giDynamicSh, ivec2(1, object), 0) * n.x +
+                  texelFetch(u_giDynamicSh, ivec2(2, object), 0) * n.y +
+                  texelFetch(u_giDynamicSh, ivec2(3, object), 0) * n.z;
+        sh = max(sh, vec4(0.0)); // an L1 fit can dip below 0 opposite a bright side
+        return sh.rgb + (1.0 - min(sh.a, 1.0)) * ambient;
+    }
+#endif
 #ifdef GI_RESOLUTION_FULL
     vec4 gi = texelFetch(u_giIrradiance, px, 0);
 #else
@@ -104,6 +123,10 @@ void main() {
     vec3 n = octDecode(texelFetch(u_gbuffer_normal, px, 0).xy);
     vec3 emissive = texelFetch(u_gbuffer_emissive, px, 0).rgb;
 
+#ifdef DEBUG_INDIRECT_ONLY
+    out_radiance = vec4(albedo / PI * indirectIrradiance(n, px), 1.0); // debug view gi_only
+    return;
+#endif
     vec3 irradiance = indirectIrradiance(n, px) + punctualIrradiance(rel, n);
     if (u_sunEnabled != 0) {
         float ndl = max(dot(n, u_toSun), 0.0);

@@ -5,8 +5,10 @@
 #include "frame/Readback.h"
 #include "passes/CompositePass.h"
 #include "passes/DirectLightingPass.h"
+#include "passes/DynamicShPass.h"
 #include "passes/GBufferPass.h"
 #include "passes/GiApplyPass.h"
+#include "passes/ProbeDebugPass.h"
 #include "passes/ShadowPass.h"
 #include "profile/VolumeLod.h"
 
@@ -31,9 +33,19 @@ FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& set
         checkGiProfileSupported(gi.profile);
         probes_ = std::make_unique<GpuProbes>(*gi.probes, gi.scenario,
                                               profile::parseVolumeLod(gi.profile.gi.volumeLod));
-        passes_.push_back(std::make_unique<GiApplyPass>(*probes_, gi.profile));
+        if (gi.profile.gi.dynamic == profile::GiDynamic::Sh)
+            passes_.push_back(std::make_unique<DynamicShPass>(*probes_, gi.profile, scene));
+        auto apply = std::make_unique<GiApplyPass>(*probes_, gi.profile);
+        giApply_ = apply.get();
+        giApply_->setCountPixels(gi.debugView == GiDebugView::VolumeCoverage);
+        passes_.push_back(std::move(apply));
     }
+    settings_.indirectOnly = gi.probes && gi.debugView == GiDebugView::GiOnly;
     passes_.push_back(std::make_unique<DirectLightingPass>());
+    if (gi.probes && (gi.debugView == GiDebugView::ProbesIrradiance ||
+                      gi.debugView == GiDebugView::ProbesVisibility))
+        passes_.push_back(std::make_unique<ProbeDebugPass>(
+            *probes_, gi.debugView == GiDebugView::ProbesVisibility));
     passes_.push_back(std::make_unique<CompositePass>());
 }
 

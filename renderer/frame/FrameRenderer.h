@@ -1,10 +1,11 @@
 #pragma once
-// Builds the pass list and runs frames: shadow -> gbuffer -> [gi-apply] -> direct ->
-// composite. Owns the scene's GPU resources, the probes' GPU copy, the program cache and the
-// render targets (re-created when the resolution changes). Requires a current GL context
-// (platforms/). Without probes there is no GI pass and no GI resource at all.
+// Builds the pass list and runs frames: shadow -> gbuffer -> [gi-dynamic-sh] -> [gi-apply] ->
+// direct -> composite. Owns the scene's GPU resources, the probes' GPU copy, the program cache
+// and the render targets (re-created when the resolution changes). Requires a current GL
+// context (platforms/). Without probes there is no GI pass and no GI resource at all.
 #include "image/Image.h"
 #include "passes/FrameContext.h"
+#include "passes/GiDebugView.h"
 #include "passes/GpuProbes.h"
 #include "probes/ProbeSet.h"
 #include "profile/Profile.h"
@@ -25,7 +26,10 @@ struct GiOptions {
     const probes::ProbeSet* probes = nullptr; // null: no GI
     int scenario = 0;
     profile::Profile profile;
+    GiDebugView debugView = GiDebugView::None; // --debug; volume_coverage turns counting on
 };
+
+class GiApplyPass;
 
 class FrameRenderer {
 public:
@@ -48,6 +52,7 @@ public:
     gl::ProgramCache& programs() { return programs_; }
     const FrameTargets* targets() const { return targets_.get(); }
     const GpuProbes* gpuProbes() const { return probes_.get(); } // null without GI
+    GiApplyPass* giApplyPass() const { return giApply_; }        // null without GI
 
 private:
     GpuScene gpu_;
@@ -57,6 +62,7 @@ private:
     std::unique_ptr<GpuProbes> probes_;
     std::unique_ptr<FrameTargets> targets_;
     std::vector<std::unique_ptr<Pass>> passes_;
+    GiApplyPass* giApply_ = nullptr;
     RenderView lastView_;
 };
 

@@ -31,9 +31,10 @@ void DirectLightingPass::execute(FrameContext& frame) {
     const scene::Scene& s = frame.scene.scene();
     frame.targets.radianceFbo.bind();
     // Without probes: the variant without defines (what the golden images were made with).
+    gl::Defines defines = frame.gi.enabled ? frame.gi.defines : gl::Defines{};
+    if (frame.settings.indirectOnly) defines["DEBUG_INDIRECT_ONLY"] = "";
     const gl::Program& prog =
-        frame.programs.get("fullscreen.vert", "lighting_direct.frag",
-                           frame.gi.enabled ? frame.gi.defines : gl::Defines{});
+        frame.programs.get("fullscreen.vert", "lighting_direct.frag", defines);
     prog.use();
     frame.targets.gbuffer.bindForReading(prog, 0);
     int shadowUnit = gbufferDepthUnit(0) + 1;
@@ -57,9 +58,14 @@ void DirectLightingPass::execute(FrameContext& frame) {
         frame.gi.irradiance->bind(giUnit);
         prog.set("u_giIrradiance", giUnit);
     }
+    const int shUnit = giUnit + 1;
+    if (frame.gi.enabled && frame.gi.dynamicSh) {
+        frame.gi.dynamicSh->bind(shUnit);
+        prog.set("u_giDynamicSh", shUnit);
+    }
     setLights(prog, s, frame.view);
     drawFullscreenTriangle(frame.targets);
-    for (int u = 0; u <= giUnit; ++u) {
+    for (int u = 0; u <= shUnit; ++u) {
         glActiveTexture(GL_TEXTURE0 + u);
         glBindTexture(GL_TEXTURE_2D, 0);
     }

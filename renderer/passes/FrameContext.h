@@ -22,6 +22,7 @@ struct FrameSettings {
     glm::vec3 ambientUp{0.0f};
     glm::vec3 ambientDown{0.0f};
     int shadowMapSize = 2048;
+    bool indirectOnly = false; // debug view gi_only: the lighting outputs the indirect term
 };
 
 struct ShadowResult {
@@ -36,6 +37,7 @@ struct ShadowResult {
 struct GiResult {
     bool enabled = false;
     const gl::Texture* irradiance = nullptr; // layout: gi_ddgi_apply.frag
+    const gl::Texture* dynamicSh = nullptr;  // gi.dynamic=sh: DynamicShPass::coefficients()
     gl::Defines defines;                     // the profile's GI variant defines + GI_ENABLED
 };
 

@@ -30,7 +30,7 @@ inline constexpr std::array<GBufferChannel, 4> kGBufferChannels = {{
     {"emissive", gl::TextureFormat::RGBA16F, ChannelEncoding::LinearColor,
      "emitted radiance, linear"},
     {"flags", gl::TextureFormat::R8, ChannelEncoding::Flags,
-     "bit 0: dynamic object (stored as bits/255)"},
+     "bit 0: dynamic object, bits 1-7: its number (DynamicObjects.h); stored as bits/255"},
 }};
 inline constexpr gl::TextureFormat kGBufferDepthFormat = gl::TextureFormat::Depth32FStencil8;
 

@@ -6,6 +6,10 @@ namespace pb::render {
 
 void GBufferPass::execute(FrameContext& frame) {
     const scene::Scene& s = frame.scene.scene();
+    if (objectsOf_ != &s) {
+        dynamic_ = findDynamicObjects(s);
+        objectsOf_ = &s;
+    }
     const GBuffer& gb = frame.targets.gbuffer;
     gb.framebuffer().bind();
     glClearColor(0, 0, 0, 0);
@@ -18,14 +22,15 @@ void GBufferPass::execute(FrameContext& frame) {
     glCullFace(GL_BACK);
     glFrontFace(GL_CCW);
 
-    const gl::Program& prog =
-        frame.programs.get("gbuffer_geometry.vert", "gbuffer_geometry.frag", gbufferOutputDefines());
+    const gl::Program& prog = frame.programs.get("gbuffer_geometry.vert", "gbuffer_geometry.frag",
+                                                 gbufferOutputDefines());
     prog.use();
     prog.set("u_clipFromRel", frame.view.clipFromRel);
     prog.set("u_baseColorTex", 0);
     prog.set("u_emissiveTex", 1);
 
-    for (const scene::Instance& inst : s.instances) {
+    for (size_t i = 0; i < s.instances.size(); ++i) {
+        const scene::Instance& inst = s.instances[i];
         const scene::Primitive& prim = s.primitives[size_t(inst.primitive)];
         const scene::Material& m = s.materials[size_t(prim.material)];
         if (m.invisible() || prim.indices.empty()) continue;
@@ -43,7 +48,7 @@ void GBufferPass::execute(FrameContext& frame) {
                        : m.alphaMode == scene::AlphaMode::Blend ? 0.5f
                                                                 : -1.0f;
         prog.set("u_alphaCutoff", cutoff);
-        prog.set("u_flags", inst.dynamic ? float(kFlagDynamic) / 255.0f : 0.0f);
+        prog.set("u_flags", float(gbufferFlagBits(dynamic_, int(i))) / 255.0f);
         bool hasBase = m.baseColorTexture >= 0 && size_t(m.baseColorTexture) < s.textures.size();
         bool hasEmissive = m.emissiveTexture >= 0 && size_t(m.emissiveTexture) < s.textures.size();
         prog.set("u_hasBaseColorTex", hasBase ? 1 : 0);

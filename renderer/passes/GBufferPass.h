@@ -1,5 +1,6 @@
 #pragma once
 // Fills the GBuffer channels and depth from the scene's instances.
+#include "passes/DynamicObjects.h"
 #include "passes/FrameContext.h"
 
 namespace pb::render {
@@ -8,6 +9,10 @@ class GBufferPass : public Pass {
 public:
     const char* name() const override { return "gbuffer"; }
     void execute(FrameContext& frame) override;
+
+private:
+    const scene::Scene* objectsOf_ = nullptr; // the scene dynamic_ was computed for
+    DynamicObjects dynamic_;
 };
 
 } // namespace pb::render

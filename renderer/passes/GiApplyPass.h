@@ -1,13 +1,18 @@
 #pragma once
 // GI apply (DDGI): evaluates the probe irradiance for every GBuffer pixel into the GI
-// evaluation target (gi.resolution, gi.target_format), one draw per loaded probe volume in
-// GpuProbes::drawOrder (gi.multi_volume = naive), and hands the target to the lighting through
-// FrameContext::gi. Shader: gi_ddgi_apply.frag + common_ddgi.glsl.
+// evaluation target (gi.resolution, gi.target_format) and hands it to the lighting through
+// FrameContext::gi. Shader: gi_ddgi_apply.frag + common_ddgi.glsl. Volumes outside the view
+// frustum are culled; the rest are drawn per gi.multi_volume:
+//   naive:   largest first, full-screen, each overwriting (the last draw = smallest volume);
+//   stencil: smallest first, two stencil bits ('any', 'current') on a depth-stencil of the GI
+//            target's size, so each pixel is evaluated once, by the smallest volume
+//            containing it (renderer/README.md "gi.multi_volume=stencil").
 #include "passes/FrameContext.h"
+#include "passes/GiPassStats.h"
+#include "passes/GiTargets.h"
+#include "passes/GiVolumeRaster.h"
 #include "passes/GpuProbes.h"
 #include "profile/Profile.h"
-
-#include <memory>
 
 namespace pb::render {
 
@@ -22,18 +27,30 @@ void checkGiProfileSupported(const profile::Profile& p);
 class GiApplyPass : public Pass {
 public:
     static constexpr int kFirstProbeUnit = 5; // after the GBuffer's channels and depth
+    static constexpr unsigned kStencilAny = 1u, kStencilCurrent = 2u;
 
     GiApplyPass(const GpuProbes& probes, const profile::Profile& profile);
     const char* name() const override { return "gi-apply"; }
     void execute(FrameContext& frame) override;
-    const gl::Texture* target() const { return target_.get(); }
+    const gl::Texture* target() const { return targets_.target(); }
+    std::size_t targetBytes() const { return targets_.bytes(); }
+
+    // Diagnostics: count the pixels each volume evaluates (a read-back per volume; slow).
+    void setCountPixels(bool on) { countPixels_ = on; }
+    const GiPassStats& stats() const { return stats_; }
 
 private:
+    struct Draw; // one frame's shared state (GiApplyPass.cpp)
+    void drawNaive(Draw& d, int v);
+    void drawStencil(Draw& d, int v, const GiVolumeRaster& r);
+    void countEvaluated(int statsIndex);
+
     const GpuProbes& probes_;
     profile::Profile profile_;
     gl::Defines defines_;
-    std::unique_ptr<gl::Texture> target_;
-    std::unique_ptr<gl::Framebuffer> fbo_;
+    bool countPixels_ = false;
+    GiTargets targets_;
+    GiPassStats stats_;
 };
 
 } // namespace pb::render

@@ -5,6 +5,7 @@
 #include "support/TestEnv.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 namespace fs = std::filesystem;
 using namespace pb::test;
@@ -78,7 +79,10 @@ TEST(RenderGiCli, BadSwitchesAreOneLineErrors) {
         {{"--set", "gi.loops"}, "expected key=value"},
         {{"--scenario", "dusk"}, "'dusk' is not in"},
         {{"--set", "gi.volume_lod=omit:nope"}, "no volume named 'nope'"},
-        {{"--set", "gi.precision=fp16"}, "not implemented yet"},
+        {{"--debug", "nope"},
+         "unknown debug view (views: gi_only, probes_irradiance, probes_visibility, "
+         "volume_coverage)"},
+        {{"--debug", "volume_coverage", "--out-hdr", "x.pfm"}, "8-bit image only"},
     };
     for (const Case& c : cases) {
         fs::path out = dir / "bad.png";
@@ -111,4 +115,78 @@ TEST(RenderGiCli, ListSwitchesDescribesEverySwitch) {
           "gi.probe_order", "gi.multi_volume", "gi.dynamic", "gi.volume_lod"})
         EXPECT_NE(r.output.find(key), std::string::npos) << key;
     EXPECT_NE(r.output.find("gi.loops = split  (default fused)"), std::string::npos) << r.output;
+}
+
+// Every value of every switch renders (fp16, stencil, SH for a dynamic node included).
+TEST(RenderGiCli, EverySwitchValueRenders) {
+    fs::path dir = outputDir();
+    const std::vector<std::vector<std::string>> sets = {
+        {"gi.precision=fp16"},
+        {"gi.multi_volume=stencil", "gi.resolution=quarter"},
+        {"gi.dynamic=sh"},
+    };
+    for (const auto& set : sets) {
+        auto args = renderArgs(dir / "switch.png");
+        args.insert(args.end(), {"--probes", roomsProbes().string(), "--dynamic", "table"});
+        for (const auto& kv : set)
+            args.insert(args.end(), {"--set", kv});
+        auto r = runProbebench(args);
+        EXPECT_EQ(r.exitCode, 0) << set.front() << ": " << r.output;
+        EXPECT_NE(r.output.find(set.front()), std::string::npos) << r.output;
+    }
+}
+
+TEST(RenderGiCli, DebugViewsWriteTheirImages) {
+    fs::path dir = outputDir();
+    auto normalArgs = renderArgs(dir / "normal.png");
+    normalArgs.insert(normalArgs.end(), {"--probes", roomsProbes().string()});
+    ASSERT_EQ(runProbebench(normalArgs).exitCode, 0);
+    const auto normal = pb::image::readPng((dir / "normal.png").string());
+    for (const char* view :
+         {"gi_only", "probes_irradiance", "probes_visibility", "volume_coverage"}) {
+        const fs::path out = dir / (std::string(view) + ".png");
+        auto args = renderArgs(out);
+        args.insert(args.end(), {"--probes", roomsProbes().string(), "--debug", view});
+        auto r = runProbebench(args);
+        ASSERT_EQ(r.exitCode, 0) << view << ": " << r.output;
+        EXPECT_NE(r.output.find(std::string("debug view ") + view), std::string::npos) << r.output;
+        const auto img = pb::image::readPng(out.string());
+        EXPECT_EQ(img.height, normal.height);
+        // volume_coverage: shading volume | evaluations per pixel, side by side.
+        EXPECT_EQ(img.width,
+                  std::string(view) == "volume_coverage" ? 2 * normal.width : normal.width);
+        if (img.width == normal.width) {
+            EXPECT_GT(std::abs(meanLuma(img) - meanLuma(normal)), 0.5) << view;
+        }
+    }
+    auto noProbes = renderArgs(dir / "np.png");
+    noProbes.insert(noProbes.end(), {"--debug", "gi_only"});
+    auto r = runProbebench(noProbes);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.output.find("need --probes"), std::string::npos) << r.output;
+}
+
+// --json: the frame's report on stdout, with pixels evaluated per volume.
+TEST(RenderGiCli, JsonReportsPixelsEvaluatedPerVolume) {
+    fs::path dir = outputDir();
+    for (const char* mode : {"naive", "stencil"}) {
+        auto args = renderArgs(dir / "json.png");
+        args.insert(args.end(), {"--probes", roomsProbes().string(), "--json", "--set",
+                                 std::string("gi.multi_volume=") + mode});
+        auto r = runProbebench(args);
+        ASSERT_EQ(r.exitCode, 0) << r.output;
+        // Human lines (stderr) come first; the JSON document is printed last.
+        const size_t start = r.output.find("\n{");
+        ASSERT_NE(start, std::string::npos) << r.output;
+        const nlohmann::json j = nlohmann::json::parse(r.output.substr(start + 1));
+        const nlohmann::json& pass = j.at("gi").at("pass");
+        EXPECT_EQ(pass.at("multi_volume"), mode);
+        ASSERT_FALSE(pass.at("volumes").empty());
+        long long sum = 0;
+        for (const auto& v : pass.at("volumes"))
+            sum += v.at("evaluated_pixels").get<long long>();
+        EXPECT_EQ(sum, pass.at("evaluations").get<long long>());
+        EXPECT_GT(pass.at("covered_pixels").get<long long>(), 96 * 54 / 2);
+        EXPECT_EQ(pass.at("target").at("width"), 96);
+    }
 }

@@ -125,7 +125,8 @@ TEST_F(GiFrameTest, MathIdenticalSwitchesGiveTheSameImage) {
     auto ref = makeRenderer(&set, {"gi.target_format=rgba32f"});
     ref->render(testView());
     image::ImageF expected = render::readFloat(*giTarget(*ref));
-    for (const char* sw : {"gi.loops=split", "gi.probe_order=slice_first"}) {
+    for (const char* sw :
+         {"gi.loops=split", "gi.probe_order=slice_first", "gi.multi_volume=stencil"}) {
         auto r = makeRenderer(&set, {"gi.target_format=rgba32f", sw});
         r->render(testView());
         auto [maxRel, meanRel] = relativeError(render::readFloat(*giTarget(*r)), expected);
@@ -141,7 +142,7 @@ TEST_F(GiFrameTest, LossySwitchesReportTheirError) {
     ref->render(testView());
     image::ImageF expected = ref->readRadiance();
     for (const char* sw : {"gi.target_format=rgba16f", "gi.target_format=r11g11b10f",
-                           "gi.resolution=half", "gi.resolution=quarter"}) {
+                           "gi.precision=fp16", "gi.resolution=half", "gi.resolution=quarter"}) {
         auto r = makeRenderer(&set, {sw});
         r->render(testView());
         image::ImageF got = r->readRadiance();

@@ -1,7 +1,10 @@
 // Every combination of the shader-visible profile switches (the SwitchTable rows with a
-// #define) compiles and links on egl and osmesa: the apply pass, the point evaluator and the
-// lighting variant. Generated from the table, so a new switch is covered without editing
-// this file. Values the pass does not implement yet are counted and reported, not compiled.
+// #define) compiles and links on egl and osmesa: the apply pass (full-screen and as a volume
+// box for gi.multi_volume=stencil), the stencil fill, the point evaluator and the lighting
+// variant. Generated from the table, so a new switch is covered without editing this file.
+// The programs that take no switch defines (depth copy, counting variant, debug views, SH
+// projection) are compiled once per backend. Values the pass does not implement yet are
+// counted and reported, not compiled.
 #include "gl/GlTestFixture.h"
 
 #include "core/Error.h"
@@ -31,6 +34,19 @@ std::vector<profile::Profile> allShaderCombinations() {
     return out;
 }
 
+struct ProgramSpec {
+    const char* vertex;
+    const char* fragment;
+};
+
+// Programs built from the profile's GI defines (the lighting gets the switches only).
+constexpr ProgramSpec kGiPrograms[] = {
+    {"fullscreen.vert", "gi_ddgi_apply.frag"},
+    {"gi_volume_box.vert", "gi_ddgi_apply.frag"},
+    {"gi_volume_box.vert", "gi_stencil_fill.frag"},
+    {"fullscreen.vert", "gi_ddgi_points.frag"},
+};
+
 class GiVariantsTest : public GlBackendTest {};
 
 TEST_P(GiVariantsTest, EveryCombinationCompilesAndLinks) {
@@ -51,18 +67,37 @@ TEST_P(GiVariantsTest, EveryCombinationCompilesAndLinks) {
         for (const auto& c : p.changedSwitches())
             what += " " + c;
         try {
-            programs.get("fullscreen.vert", "gi_ddgi_apply.frag", render::giShaderDefines(p));
-            programs.get("fullscreen.vert", "gi_ddgi_points.frag", render::giShaderDefines(p));
+            for (const ProgramSpec& s : kGiPrograms)
+                programs.get(s.vertex, s.fragment, render::giShaderDefines(p));
             programs.get("fullscreen.vert", "lighting_direct.frag", lighting);
             ++compiled;
         } catch (const Error& e) {
             ADD_FAILURE() << "variant" << (what.empty() ? " defaults" : what) << ": " << e.what();
         }
     }
-    std::printf("[ variants ] %s: %d combinations compiled and linked (3 programs each), %d use "
-                "values not implemented yet\n",
-                GetParam().c_str(), compiled, notImplemented);
+    std::printf("[ variants ] %s: %d combinations compiled and linked (%zu programs each), %d "
+                "use values not implemented yet\n",
+                GetParam().c_str(), compiled, std::size(kGiPrograms) + 1, notImplemented);
     EXPECT_GT(compiled, 0);
+
+    // The switch-independent programs.
+    gl::Defines counting = render::giShaderDefines(profile::Profile{});
+    counting["GI_COUNT_PIXELS"] = "";
+    EXPECT_NO_THROW(programs.get("fullscreen.vert", "gi_ddgi_apply.frag", counting));
+    EXPECT_NO_THROW(programs.get("gi_volume_box.vert", "gi_ddgi_apply.frag", counting));
+    EXPECT_NO_THROW(programs.get("fullscreen.vert", "gi_depth_copy.frag", {}));
+    EXPECT_NO_THROW(programs.get("fullscreen.vert", "gi_dynamic_sh_project.frag", {}));
+    gl::Defines spheres = render::ddgiConstantDefines();
+    EXPECT_NO_THROW(programs.get("debug_probe_sphere.vert", "debug_probe_sphere.frag", spheres));
+    spheres["DEBUG_VISIBILITY"] = "";
+    EXPECT_NO_THROW(programs.get("debug_probe_sphere.vert", "debug_probe_sphere.frag", spheres));
+    // The lighting's gi_only variant (with the default switches' defines).
+    gl::Defines giOnly;
+    for (const auto& [k, v] : profile::shaderDefines(profile::Profile{}))
+        giOnly[k] = v;
+    giOnly["GI_ENABLED"] = "";
+    giOnly["DEBUG_INDIRECT_ONLY"] = "";
+    EXPECT_NO_THROW(programs.get("fullscreen.vert", "lighting_direct.frag", giOnly));
 }
 
 PB_INSTANTIATE_HEADLESS_BACKENDS(GiVariantsTest);

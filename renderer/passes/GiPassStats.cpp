@@ -1,0 +1,77 @@
+#include "passes/GiPassStats.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace pb::render {
+
+std::int64_t GiPassStats::totalEvaluations() const {
+    std::int64_t n = 0;
+    for (const GiVolumeStats& v : volumes)
+        n += std::max<std::int64_t>(v.evaluatedPixels, 0);
+    return n;
+}
+
+std::int64_t GiPassStats::coveredPixels() const {
+    return std::count_if(evaluations.begin(), evaluations.end(),
+                         [](std::uint8_t e) { return e > 0; });
+}
+
+std::string giVolumeDrawing(const GiVolumeStats& v) {
+    if (v.culled) return "culled";
+    if (v.fillPass) return "fill + box";
+    if (v.fullScreen) return v.cameraInside ? "full-screen (inside)" : "full-screen";
+    return "box (inside)";
+}
+
+nlohmann::json giPassStatsJson(const GiPassStats& s) {
+    nlohmann::json volumes = nlohmann::json::array();
+    for (const GiVolumeStats& v : s.volumes) {
+        nlohmann::json evaluated = nullptr; // not counted
+        if (s.counted) evaluated = v.culled ? 0 : v.evaluatedPixels;
+        volumes.push_back({{"name", v.name},
+                           {"file_index", v.fileIndex},
+                           {"drawn", giVolumeDrawing(v)},
+                           {"culled", v.culled},
+                           {"camera_inside", v.cameraInside},
+                           {"fill_pass", v.fillPass},
+                           {"full_screen", v.fullScreen},
+                           {"evaluated_pixels", evaluated}});
+    }
+    nlohmann::json j{{"multi_volume", s.multiVolume},
+                     {"target", {{"width", s.width}, {"height", s.height}}},
+                     {"volumes", volumes},
+                     {"counted", s.counted}};
+    if (s.counted) {
+        j["evaluations"] = s.totalEvaluations();
+        j["covered_pixels"] = s.coveredPixels();
+    }
+    return j;
+}
+
+std::string giPassStatsText(const GiPassStats& s) {
+    std::ostringstream out;
+    out << "gi pass: gi.multi_volume=" << s.multiVolume << ", target " << s.width << "x" << s.height
+        << ", volumes in draw order:\n";
+    char line[160];
+    for (const GiVolumeStats& v : s.volumes) {
+        std::snprintf(
+            line, sizeof line, "  %-24s %-22s %s\n", v.name.c_str(), giVolumeDrawing(v).c_str(),
+            !s.counted ? "(not counted)"
+            : v.culled ? "0 pixels"
+                       : (std::to_string(v.evaluatedPixels) + " pixels evaluated").c_str());
+        out << line;
+    }
+    if (s.counted) {
+        const std::int64_t covered = s.coveredPixels(), evals = s.totalEvaluations();
+        std::snprintf(line, sizeof line,
+                      "  total: %lld evaluations for %lld covered pixels (%.2f per pixel)\n",
+                      static_cast<long long>(evals), static_cast<long long>(covered),
+                      covered > 0 ? double(evals) / double(covered) : 0.0);
+        out << line;
+    }
+    return out.str();
+}
+
+} // namespace pb::render

@@ -1,0 +1,48 @@
+#pragma once
+// What the GI apply pass did in its last frame, per volume, for reports and the benchmark
+// (GiApplyPass::stats()). Pixel counts exist only while counting is on
+// (GiApplyPass::setCountPixels): counting reads the GPU back after every volume, so it is a
+// diagnostic mode, never part of a timed frame.
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pb::render {
+
+struct GiVolumeStats {
+    std::string name;
+    int fileIndex = 0;         // in the probe set
+    bool culled = false;       // outside the view frustum: nothing drawn
+    bool cameraInside = false; // stencil: the fill pass was skipped ('any' tested directly)
+    bool fillPass = false;     // stencil: the cheap fill pass was drawn
+    // Drawn as a full-screen triangle (naive; stencil when the camera is inside a box that
+    // reaches past the far plane) rather than as the volume's box.
+    bool fullScreen = false;
+    // GI target pixels this volume's full lookup evaluated (wrote), -1 when not counted.
+    std::int64_t evaluatedPixels = -1;
+};
+
+struct GiPassStats {
+    std::string multiVolume;            // gi.multi_volume of the frame
+    int width = 0, height = 0;          // the GI target's texels
+    std::vector<GiVolumeStats> volumes; // in the order drawn (culled ones included)
+    bool counted = false;
+    // Counting only, per GI texel in GL order (row 0 at the bottom), width x height:
+    std::vector<std::uint8_t> evaluations; // full lookups of the texel (saturates at 255)
+    std::vector<std::int16_t> shadedBy;    // index into `volumes` of the final value, -1 none
+    std::int64_t totalEvaluations() const;
+    std::int64_t coveredPixels() const; // texels evaluated at least once
+};
+
+// How a volume was drawn, in words: "culled", "full-screen", "fill + box", "box (inside)".
+std::string giVolumeDrawing(const GiVolumeStats& v);
+// The stats without the per-texel maps: multi_volume, target size, per volume name,
+// file_index, drawn, culled, camera_inside, fill_pass, full_screen, evaluated_pixels (null when
+// not counted), and when counted evaluations and covered_pixels.
+nlohmann::json giPassStatsJson(const GiPassStats& s);
+// An aligned table for people (one line per volume and a total line).
+std::string giPassStatsText(const GiPassStats& s);
+
+} // namespace pb::render

@@ -1,0 +1,83 @@
+#include "passes/GiVolumeRaster.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pb::render {
+
+namespace {
+
+// Grows the influence box so that rounding in the depth test (DEPTH32F) and in the shader's
+// position reconstruction never reject a pixel the shader's test would accept.
+glm::vec3 rasterHalfExtents(const GpuProbeVolume& v, double eyeDistance) {
+    const glm::vec3 influence = v.half + v.fadeWidth;
+    const float size = std::max({influence.x, influence.y, influence.z});
+    const float margin = 1e-3f * (size + float(eyeDistance)) + 1e-4f;
+    return influence + glm::vec3(margin);
+}
+
+} // namespace
+
+glm::mat4 giRasterFromCameraClip(const glm::ivec2& gbufferSize, int divisor,
+                                 const glm::ivec2& giSize) {
+    glm::mat4 m(1.0f);
+    for (int a = 0; a < 2; ++a) {
+        // GBuffer window X of the pixel a texel at window x stands for:
+        //   X = divisor * x + c,  c = (divisor - 1) / 2 + 0.5 - divisor / 2 (integer division
+        // first, as in the shader). Solving for x in NDC gives x_ndc' = s * x_ndc + t.
+        const double full = gbufferSize[a], reduced = double(divisor) * giSize[a];
+        const double c = double((divisor - 1) / 2) + 0.5 - 0.5 * divisor;
+        const double s = full / reduced;
+        m[a][a] = float(s);
+        m[3][a] = float(s - 2.0 * c / reduced - 1.0);
+    }
+    return m;
+}
+
+GiVolumeRaster volumeRaster(const GpuProbeVolume& v, const RenderView& view,
+                            const glm::ivec2& gbufferSize, int divisor, const glm::ivec2& giSize) {
+    GiVolumeRaster r;
+    const glm::dvec3 centreRel = v.center - view.eye;
+    const glm::vec3 half = rasterHalfExtents(v, glm::length(centreRel));
+    // toLocal = R^T, so the box's axes in rel space are the rows of toLocal.
+    const glm::mat3 axes = glm::transpose(v.toLocal);
+    glm::mat4 relFromBox(1.0f);
+    for (int a = 0; a < 3; ++a)
+        relFromBox[a] = glm::vec4(axes[a] * half[a], 0.0f);
+    relFromBox[3] = glm::vec4(glm::vec3(centreRel), 1.0f);
+    r.clipFromBox =
+        giRasterFromCameraClip(gbufferSize, divisor, giSize) * view.clipFromRel * relFromBox;
+
+    // Inside: the eye's local position within the box grown by the distance from the eye to
+    // the near plane's corners (the near plane then cannot clip the box's front faces away).
+    const double tanY = std::tan(glm::radians(double(view.fovYDegrees)) * 0.5);
+    const double aspect = double(view.width) / double(view.height);
+    const double nearReach =
+        double(view.nearPlane) * std::sqrt(1.0 + tanY * tanY * (1.0 + aspect * aspect));
+    const glm::dvec3 eyeLocal = glm::dmat3(v.toLocal) * (-centreRel);
+    r.cameraInside = true;
+    for (int a = 0; a < 3; ++a)
+        r.cameraInside = r.cameraInside && std::abs(eyeLocal[a]) <= double(half[a]) + nearReach;
+
+    // Culling: outside when all 8 corners lie beyond one clip plane (conservative).
+    int outside[6] = {0, 0, 0, 0, 0, 0};
+    double farthest = -1e300;
+    for (int c = 0; c < 8; ++c) {
+        const glm::vec4 unit((c & 1) ? 1.0f : -1.0f, (c & 2) ? 1.0f : -1.0f, (c & 4) ? 1.0f : -1.0f,
+                             1.0f);
+        const glm::vec4 rel = relFromBox * unit;
+        farthest = std::max(farthest, glm::dot(glm::dvec3(rel), view.forward));
+        const glm::vec4 clip = view.clipFromRel * rel;
+        outside[0] += clip.x < -clip.w;
+        outside[1] += clip.x > clip.w;
+        outside[2] += clip.y < -clip.w;
+        outside[3] += clip.y > clip.w;
+        outside[4] += clip.z < -clip.w;
+        outside[5] += clip.z > clip.w;
+    }
+    r.visible = std::none_of(outside, outside + 6, [](int n) { return n == 8; });
+    r.backFacesInFrontOfFar = farthest < double(view.farPlane) * 0.999;
+    return r;
+}
+
+} // namespace pb::render

@@ -1,0 +1,39 @@
+#pragma once
+// Where one probe volume lands on the GI target, for gi.multi_volume and frustum culling
+// (GL-free arithmetic on the view; the pass does the drawing).
+//
+// The box rasterised is the volume's INFLUENCE region (common_ddgi.glsl ddgiInfluences: a
+// child's box, a root's box + fade width) grown by a small margin: the depth and stencil tests
+// only have to be conservative, the shaders' exact influence test decides every pixel.
+//
+// Reduced gi.resolution: a GI texel stands for ONE GBuffer pixel (gi_ddgi_apply.frag:
+// fragCoord * divisor + (divisor - 1) / 2), not for the texel's centre. `clipFromBox` includes
+// the shift and scale that put that pixel's ray through the texel's centre, so the box is
+// rasterised exactly as it is seen from the pixels the shader reads.
+#include "passes/GpuProbes.h"
+#include "passes/RenderView.h"
+
+#include <glm/glm.hpp>
+
+namespace pb::render {
+
+struct GiVolumeRaster {
+    bool visible = true;       // some part of the box may be inside the view frustum
+    bool cameraInside = false; // the eye (or the near plane around it) may touch the box
+    // Inside only: every point of the box lies in front of the far plane, so its back faces
+    // can be depth-tested against the scene (otherwise: a full-screen triangle).
+    bool backFacesInFrontOfFar = false;
+    glm::mat4 clipFromBox{1.0f}; // unit cube [-1,1]^3 -> clip space of the GI target
+};
+
+// gbufferSize: the view's pixels; divisor: gi.resolution's (1, 2, 4); giSize: the GI
+// target's texels (max(1, gbuffer / divisor) per axis).
+GiVolumeRaster volumeRaster(const GpuProbeVolume& v, const RenderView& view,
+                            const glm::ivec2& gbufferSize, int divisor, const glm::ivec2& giSize);
+
+// Clip-space correction from the camera's projection to the GI target's raster (identity at
+// full resolution): x' = s.x * x + t.x * w, likewise y.
+glm::mat4 giRasterFromCameraClip(const glm::ivec2& gbufferSize, int divisor,
+                                 const glm::ivec2& giSize);
+
+} // namespace pb::render

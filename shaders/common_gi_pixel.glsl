@@ -1,0 +1,18 @@
+// The GBuffer pixel a GI target texel stands for, and that pixel's surface position: shared
+// by the GI apply pass and the stencil passes of gi.multi_volume=stencil, so all of them
+// judge a pixel's volume from bit-identical positions.
+uniform mat4 u_relFromClip;  // inverse of the camera's clip-from-camera-relative matrix
+uniform vec2 u_gbufferInvSize;
+uniform int u_giDivisor;     // GBuffer pixels per target texel, per axis (gi.resolution)
+
+// The GBuffer pixel nearest the target texel's centre (top-left of the middle four).
+ivec2 giGBufferPixel() {
+    return ivec2(gl_FragCoord.xy) * u_giDivisor + (u_giDivisor - 1) / 2;
+}
+
+// Camera-relative surface position of GBuffer pixel px at depth-buffer value `depth`.
+vec3 giRelPosition(ivec2 px, float depth) {
+    vec2 uv = (vec2(px) + 0.5) * u_gbufferInvSize;
+    vec4 relH = u_relFromClip * vec4(uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
+    return relH.xyz / relH.w;
+}
