@@ -4,6 +4,7 @@
 #include "CommandRegistry.h"
 #include "FlyCamera.h"
 #include "PlatformOptions.h"
+#include "ProfileOptions.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
 #include "frame/FrameRenderer.h"
@@ -29,7 +30,8 @@ struct RenderArgs {
     float exposure = 0.0f; // 0 = the scene's
     int frames = 0;        // glfw: frames before closing (0 = until ESC)
     std::string probes, scenario;
-    std::vector<std::string> sets; // --set key=value
+    ProfileArgs profileArgs; // --profile, --set
+    const CLI::Option *widthOption = nullptr, *heightOption = nullptr;
     bool listSwitches = false;
 };
 
@@ -84,14 +86,21 @@ int runInteractive(platform::Platform& p, render::FrameRenderer& r, const scene:
 }
 
 int run(RenderArgs& a) {
-    profile::Profile prof;
-    for (const std::string& kv : a.sets) prof.applyOverride(kv);
+    const profile::PlatformProfile platformProfile = resolveProfile(a.profileArgs);
+    const profile::Profile& prof = platformProfile.switches;
     if (a.listSwitches) {
         std::cout << profile::describeSwitchesText(prof);
         return 0;
     }
-    if (!a.sets.empty() && a.probes.empty())
+    if (!a.profileArgs.sets.empty() && a.probes.empty())
         throw Error("--set: the GI switches need --probes FILE");
+    if (!a.profileArgs.profile.empty() && a.probes.empty())
+        throw Error("--profile: the GI switches need --probes FILE");
+    // The profile's output resolution unless --width/--height say otherwise.
+    if (!a.profileArgs.profile.empty()) {
+        if (a.widthOption->count() == 0) a.width = platformProfile.width;
+        if (a.heightOption->count() == 0) a.height = platformProfile.height;
+    }
     if (!a.scenario.empty() && a.probes.empty()) throw Error("--scenario needs --probes FILE");
     if (a.width < 1 || a.height < 1 || a.width > 16384 || a.height > 16384)
         throw Error("--width/--height must be in 1..16384");
@@ -125,7 +134,8 @@ int run(RenderArgs& a) {
         std::cout << "gi: ddgi, " << gp->volumes().size() << " of " << probeSet.volumes.size()
                   << " volume(s), scenario '" << gp->scenarioName() << "', "
                   << probes::formatName(gp->format()) << ", "
-                  << double(gp->bytes()) / (1024.0 * 1024.0) << " MiB on the GPU; switches:"
+                  << double(gp->bytes()) / (1024.0 * 1024.0) << " MiB on the GPU; profile "
+                  << platformProfile.name << ", switches:"
                   << (changed.empty() ? " defaults" : changed) << "\n";
     }
 
@@ -169,10 +179,12 @@ const RegisterCommand reg{{"render", "Render a scene to an image (or a window wi
                                               "Named view of the scene (default: its first)");
                                cmd.add_option("--camera", a->camera,
                                               "Camera px,py,pz,tx,ty,tz[,fovdeg] (overrides --view)");
-                               cmd.add_option("--width", a->width, "Image width in pixels")
-                                   ->capture_default_str();
-                               cmd.add_option("--height", a->height, "Image height in pixels")
-                                   ->capture_default_str();
+                               a->widthOption = cmd.add_option(
+                                   "--width", a->width,
+                                   "Image width in pixels (default: the --profile's, else 1280)");
+                               a->heightOption = cmd.add_option(
+                                   "--height", a->height,
+                                   "Image height in pixels (default: the --profile's, else 720)");
                                cmd.add_option("--out", a->out, "PNG to write (8-bit sRGB, tonemapped)");
                                cmd.add_option("--out-hdr", a->outHdr,
                                               "PFM to write (linear HDR radiance before exposure)");
@@ -186,9 +198,7 @@ const RegisterCommand reg{{"render", "Render a scene to an image (or a window wi
                                               "Probe file (probebench bake): render with DDGI");
                                cmd.add_option("--scenario", a->scenario,
                                               "Lighting scenario of --probes (default: its first)");
-                               cmd.add_option("--set", a->sets,
-                                              "Profile switch key=value (repeatable; "
-                                              "--list-switches shows them)");
+                               addProfileOptions(cmd, a->profileArgs, "Needs --probes.");
                                cmd.add_flag("--list-switches", a->listSwitches,
                                             "Print every profile switch and exit");
                                return [a] { return run(*a); };
