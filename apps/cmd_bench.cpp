@@ -20,6 +20,7 @@
 #include "probes/ProbeFile.h"
 #include "views/WorstCaseView.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -37,7 +38,8 @@ struct BenchArgs {
     std::string reference = "reference";
     bool ablate = false, strict = false, noFloor = false;
     int frames = 3, rounds = 7, warmup = 2, width = 0, height = 0;
-    std::string view, camera, probes, cacheDir, json, html, heatmaps, timing = "auto";
+    std::string view, camera, probes, volumes = "auto", cacheDir, json, html, heatmaps,
+                                      timing = "auto";
     double ppd = 67.0;
 };
 
@@ -164,7 +166,8 @@ int run(const BenchArgs& a) {
     std::string probesPath = a.probes;
     probes::ProbeSet set =
         a.probes.empty()
-            ? bench::benchProbes(s, a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir,
+            ? bench::benchProbes(s, a.volumes,
+                                 a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir,
                                  &probesPath, progress)
             : probes::readProbeFile(a.probes);
 
@@ -213,8 +216,20 @@ int run(const BenchArgs& a) {
                     " variant(s) could not run, nothing written; first: " + skipped.front());
     writeOutputs(a, result, flipMaps);
     std::cout << bench::markdownSummary(result);
-    for (const std::string& sk : skipped)
-        std::fprintf(stderr, "warning: not run: %s\n", sk.c_str());
+    // One warning per distinct reason, naming the variants it hit.
+    std::vector<std::pair<std::string, std::string>> reasons; // reason, variant ids
+    for (const auto& session : result.sessions)
+        for (const auto& v : session.variants) {
+            if (v.ok()) continue;
+            auto it = std::find_if(reasons.begin(), reasons.end(),
+                                   [&](const auto& r) { return r.first == v.error; });
+            if (it == reasons.end())
+                reasons.emplace_back(v.error, v.variant.id);
+            else
+                it->second += ", " + v.variant.id;
+        }
+    for (const auto& [why, ids] : reasons)
+        std::fprintf(stderr, "warning: not run (%s): %s\n", why.c_str(), ids.c_str());
     if (!a.json.empty()) std::cout << "\nwrote " << a.json << "\n";
     if (!a.html.empty()) std::cout << (a.json.empty() ? "\n" : "") << "wrote " << a.html << "\n";
     return 0;
@@ -259,6 +274,10 @@ const RegisterCommand reg{
          cmd.add_option(
              "--probes", a->probes,
              "Probe file (probebench bake); default: bake --volumes auto once and cache");
+         cmd.add_option("--volumes", a->volumes,
+                        "Without --probes: the volumes to bake, auto, auto-uniform or a volumes "
+                        "file (bench/volumes/rooms_nested.toml nests a volume per room)")
+             ->capture_default_str();
          cmd.add_option("--cache-dir", a->cacheDir,
                         "Folder of the baked-probe cache (default: ~/.cache/probebench)");
          cmd.add_option("--json", a->json, "Write the full result as JSON to this file");
@@ -266,8 +285,9 @@ const RegisterCommand reg{
          cmd.add_option("--heatmaps", a->heatmaps,
                         "Folder for the FLIP heat-map PNGs (default: <json/html name>-heatmaps/)");
          cmd.add_option("--timing", a->timing,
-                        "auto (timer queries where the driver's are trustworthy, else CPU clock "
-                        "around glFinish), cpu, or query")
+                        "auto (timer queries where the driver's are trustworthy, else the CPU "
+                        "clock around glFinish), cpu, cpu-time (process CPU time around glFinish: "
+                        "steadier on a shared machine), or query")
              ->capture_default_str();
          cmd.add_flag("--no-floor", a->noFloor, "Skip the GI pass's texture-fetch floor");
          cmd.add_option("--ppd", a->ppd, "FLIP viewing condition, pixels per degree")

@@ -4,8 +4,9 @@
 // time (CPU clock around glFinish on llvmpipe, GL timestamp queries where the driver's are
 // trustworthy - the same choice as `probebench bench`). The usual --benchmark_* flags apply
 // (--benchmark_filter=handheld, --benchmark_repetitions=5, --benchmark_format=json, ...).
-// Own flags, before them: --scene=NAME|FILE (default rooms), --size=WxH (default 640x360),
-// --platform=egl|osmesa, --timing=auto|cpu|query.
+// Own flags, before them: --scene=NAME|FILE (default rooms with bench/volumes/rooms_nested.toml;
+// another scene bakes --volumes auto), --volumes=auto|auto-uniform|FILE, --size=WxH (default
+// 640x360), --platform=egl|osmesa, --timing=auto|cpu|query.
 #include "bench/runner/FetchFloorPass.h"
 #include "bench/runner/ProbeCache.h"
 #include "bench/runner/SectionTimer.h"
@@ -29,6 +30,7 @@ using namespace pb;
 
 struct Options {
     std::string scene = "rooms", platform = "egl", timing = "auto";
+    std::string volumes = PB_SOURCE_DIR "/bench/volumes/rooms_nested.toml";
     int width = 640, height = 360;
 };
 
@@ -95,6 +97,9 @@ void parseOwnFlags(int& argc, char** argv, Options& o) {
         };
         if (const char* v = value("--scene=")) {
             o.scene = v;
+            o.volumes = "auto";
+        } else if (const char* v = value("--volumes=")) {
+            o.volumes = v;
         } else if (const char* v = value("--platform=")) {
             o.platform = v;
         } else if (const char* v = value("--timing=")) {
@@ -112,7 +117,7 @@ void parseOwnFlags(int& argc, char** argv, Options& o) {
 void setUp(World& w) {
     w.scene = scene::loadScene(w.options.scene, {});
     w.probes = bench::benchProbes(
-        w.scene, bench::defaultProbeCacheDir(), nullptr,
+        w.scene, w.options.volumes, bench::defaultProbeCacheDir(), nullptr,
         [](const std::string& line) { std::fprintf(stderr, "bench_passes: %s\n", line.c_str()); });
     platform::PlatformOptions po;
     po.name = w.options.platform;

@@ -20,7 +20,9 @@ struct AccuracyInputs {
     scene::View view;
     render::FrameSettings settings;
     int width = 0, height = 0;
-    int frames = 1; // frames the irradiance renderer runs before reading (temporal history)
+    // Frames the irradiance renderer runs before reading: as many as the timed renderer ran,
+    // so a temporal history is in the same state in both.
+    int frames = 1;
     double pixelsPerDegree = 67.0;
 };
 

@@ -5,6 +5,7 @@
 #include "probes/Baker.h"
 #include "probes/ProbeFile.h"
 #include "probes/Scenario.h"
+#include "probes/VolumeFile.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -22,14 +23,20 @@ std::string defaultProbeCacheDir() {
     return ".probebench-cache";
 }
 
-probes::ProbeSet benchProbes(const scene::Scene& s, const std::string& cacheDir,
-                             std::string* pathOut,
+probes::ProbeSet benchProbes(const scene::Scene& s, const std::string& volumes,
+                             const std::string& cacheDir, std::string* pathOut,
                              const std::function<void(const std::string&)>& progress) {
-    probes::AutoPlacementRequest place;
-    place.mode = probes::AutoMode::Adaptive;
     probes::BakeRequest req;
-    req.volumes = probes::placeAutoVolumes(s, place).volumes;
-    req.scenarios = probes::resolveScenarios({"day"}, {}, s);
+    std::vector<probes::ScenarioSpec> fileScenarios;
+    probes::AutoPlacementRequest place;
+    if (probes::parseAutoMode(volumes, place.mode)) {
+        req.volumes = probes::placeAutoVolumes(s, place).volumes;
+    } else {
+        probes::VolumeFile vf = probes::loadVolumeFile(volumes);
+        req.volumes = vf.volumes;
+        fileScenarios = vf.scenarios;
+    }
+    req.scenarios = probes::resolveScenarios({"day"}, fileScenarios, s);
     req.settings.raysPerProbe = 128;
     req.settings.bounces = 2;
     req.settings.format = probes::StorageFormat::Rgba16f;

@@ -4,6 +4,8 @@
 
 #include <glad/gl.h>
 
+#include <ctime>
+
 namespace pb::bench {
 
 TimingChoice chooseTiming(const std::string& requested, const gl::GlCaps& caps,
@@ -15,9 +17,16 @@ TimingChoice chooseTiming(const std::string& requested, const gl::GlCaps& caps,
         c.reason = why;
         return c;
     };
-    if (requested != "auto" && requested != "cpu" && requested != "query")
-        throw Error("--timing '" + requested + "': expected auto, cpu or query");
+    if (requested != "auto" && requested != "cpu" && requested != "cpu-time" &&
+        requested != "query")
+        throw Error("--timing '" + requested + "': expected auto, cpu, cpu-time or query");
     if (requested == "cpu") return cpu("CPU clock around glFinish per pass (--timing cpu)");
+    if (requested == "cpu-time") {
+        cpu("process CPU time (all threads) around glFinish per pass (--timing cpu-time)");
+        c.processCpuTime = true;
+        c.name = "cpu-time";
+        return c;
+    }
     if (!caps.timerQuery) {
         if (requested == "query")
             throw Error("--timing query: this context has no timer queries "
@@ -60,7 +69,14 @@ void SectionTimer::mark() {
     m.owner = open_.empty() ? std::string() : open_.back();
     if (choice_.method == TimingMethod::CpuFinish) {
         glFinish();
-        m.cpu = std::chrono::steady_clock::now();
+        if (choice_.processCpuTime) {
+            timespec ts{};
+            clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+            m.cpu = std::chrono::steady_clock::time_point(std::chrono::seconds(ts.tv_sec) +
+                                                          std::chrono::nanoseconds(ts.tv_nsec));
+        } else {
+            m.cpu = std::chrono::steady_clock::now();
+        }
     } else {
         if (choice_.flushBracketed) glFlush();
         m.query = query(marks_.size());

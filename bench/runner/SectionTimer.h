@@ -4,6 +4,10 @@
 //   cpu-finish:  glFinish + steady_clock at every section boundary - the truth on a software
 //                rasterizer (DriverQuirks::timerQueriesUntrustworthy), and a fallback anywhere;
 //                the per-pass glFinish serialises CPU and GPU, which the numbers then include.
+//   cpu-time:    glFinish + the process's CPU time (all threads, CLOCK_PROCESS_CPUTIME_ID):
+//                on a software rasterizer the work the pass cost in CPU-ms, which other
+//                processes on a shared machine barely disturb (they steal wall time, not this
+//                process's CPU time); not a frame time (llvmpipe's threads add up).
 //   timer-query: GL timestamps (glQueryCounter) at every boundary, read after the frame; on
 //                drivers with DriverQuirks::timerQueriesNeedFlush each boundary is preceded by
 //                glFlush (DESIGN.md: llvmpipe's queries match wall time only then).
@@ -26,12 +30,14 @@ enum class TimingMethod { CpuFinish, TimerQuery };
 struct TimingChoice {
     TimingMethod method = TimingMethod::CpuFinish;
     bool flushBracketed = false; // timer queries with glFlush before each boundary
-    std::string name;            // "cpu-finish" | "timer-query" | "timer-query-flush"
+    bool processCpuTime = false; // CpuFinish: process CPU time instead of wall time
+    std::string name;            // "cpu-finish" | "cpu-time" | "timer-query" | "timer-query-flush"
     std::string reason;          // one line: why this method on this driver
 };
 
-// requested: "auto" (queries where the driver's are trustworthy), "cpu" or "query". Throws
-// pb::Error for "query" on a context without timestamp queries, or an unknown name.
+// requested: "auto" (queries where the driver's are trustworthy, else cpu), "cpu", "cpu-time"
+// or "query". Throws pb::Error for "query" on a context without timer queries, or an unknown
+// name.
 TimingChoice chooseTiming(const std::string& requested, const gl::GlCaps& caps,
                           const gl::DriverQuirks& quirks);
 

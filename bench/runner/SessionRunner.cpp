@@ -175,7 +175,7 @@ SessionResult runSession(const Session& session, const RunnerInputs& in, const R
                       in.settings,
                       session.width,
                       session.height,
-                      std::min(32, o.warmup + o.frames * o.rounds),
+                      o.warmup + o.frames * o.rounds,
                       o.pixelsPerDegree};
     captureAccuracy(out, renderers, ai, flipMap);
     measureDeltas(out);

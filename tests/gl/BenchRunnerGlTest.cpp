@@ -9,6 +9,7 @@
 #include "bench/runner/IrradianceScene.h"
 #include "bench/runner/SectionTimer.h"
 #include "bench/runner/SessionRunner.h"
+#include "core/Error.h"
 #include "frame/FrameRenderer.h"
 #include "frame/Readback.h"
 #include "passes/GiApplyPass.h"
@@ -60,6 +61,15 @@ TEST_F(BenchRunnerTest, SectionTimerTimesEveryPassByBothMethods) {
     r.render(smallView(s), &cpuTimer);
     ASSERT_TRUE(cpuTimer.endFrame());
     expectOneSectionPerPass(r, cpuTimer);
+
+    bench::TimingChoice cpuTime = bench::chooseTiming("cpu-time", caps(), quirks);
+    EXPECT_TRUE(cpuTime.processCpuTime);
+    bench::SectionTimer cpuTimeTimer(cpuTime, caps().es);
+    cpuTimeTimer.beginFrame();
+    r.render(smallView(s), &cpuTimeTimer);
+    ASSERT_TRUE(cpuTimeTimer.endFrame());
+    expectOneSectionPerPass(r, cpuTimeTimer);
+    EXPECT_THROW(bench::chooseTiming("sundial", caps(), quirks), Error);
 
     // auto follows the driver quirk: a software rasterizer is timed with the CPU clock.
     bench::TimingChoice automatic = bench::chooseTiming("auto", caps(), quirks);
