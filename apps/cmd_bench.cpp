@@ -225,7 +225,7 @@ int run(const BenchArgs& a) {
                                    [&](const auto& r) { return r.first == v.error; });
             if (it == reasons.end())
                 reasons.emplace_back(v.error, v.variant.id);
-            else
+            else if ((", " + it->second + ",").find(", " + v.variant.id + ",") == std::string::npos)
                 it->second += ", " + v.variant.id;
         }
     for (const auto& [why, ids] : reasons)
