@@ -243,8 +243,9 @@ const RegisterCommand reg{
          auto a = std::make_shared<BenchArgs>();
          addSceneOptions(cmd, a->scene);
          addPlatformOptions(cmd, a->platform);
-         cmd.add_option("--profiles", a->profiles,
-                        "Profiles to measure, comma-separated names or .toml files (default: "
+         cmd.add_option("--profiles,--profile", a->profiles,
+                        "Profiles to measure, comma-separated names or .toml files (--profile: "
+                        "the same; default: "
                         "every profile `probebench profiles` lists)")
              ->delimiter(',');
          cmd.add_option("--reference", a->reference,
@@ -271,9 +272,8 @@ const RegisterCommand reg{
          cmd.add_option("--view", a->view, "A named view of the scene instead of the worst case");
          cmd.add_option("--camera", a->camera,
                         "Camera px,py,pz,tx,ty,tz[,fovdeg] instead of the worst case");
-         cmd.add_option(
-             "--probes", a->probes,
-             "Probe file (probebench bake); default: bake --volumes auto once and cache");
+         cmd.add_option("--probes", a->probes,
+                        "Probe file (probebench bake); default: bake --volumes once and cache it");
          cmd.add_option("--volumes", a->volumes,
                         "Without --probes: the volumes to bake, auto, auto-uniform or a volumes "
                         "file (bench/volumes/rooms_nested.toml nests a volume per room)")

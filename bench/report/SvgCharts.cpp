@@ -23,13 +23,8 @@ std::string num(double v) {
 std::string tickText(double v) {
     char buf[32];
     double a = std::fabs(v);
-    std::snprintf(buf, sizeof buf,
-                  a == 0      ? "0"
-                  : a >= 10   ? "%.0f"
-                  : a >= 1    ? "%.1f"
-                  : a >= 0.01 ? "%.2f"
-                              : "%.1e",
-                  v);
+    // Three significant digits tell neighbouring ticks (0.01, 0.015) apart at any scale.
+    std::snprintf(buf, sizeof buf, a == 0 ? "0" : a >= 1000 ? "%.0f" : "%.3g", v);
     return buf;
 }
 
