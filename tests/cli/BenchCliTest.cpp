@@ -186,8 +186,13 @@ TEST(BenchCli, TinyRunWritesTheJsonShapeTheReportAndHeatMaps) {
         EXPECT_TRUE(a["in_profile"]["measured"].get<bool>()) << a.dump();
         EXPECT_TRUE(a["on_reference"]["measured"].get<bool>()) << a.dump();
     }
-    EXPECT_EQ(ablated, (std::set<std::string>{"gi.resolution", "gi.target_format", "gi.loops",
-                                              "gi.probe_order"}));
+    std::set<std::string> differing; // from the profiles' own switches (new switches included)
+    const auto& refSwitches = j["profiles"][0]["profile"]["switches"];
+    for (auto it = refSwitches.begin(); it != refSwitches.end(); ++it)
+        if (hh["profile"]["switches"][it.key()] != it.value()) differing.insert(it.key());
+    EXPECT_EQ(ablated, differing);
+    for (const char* key : {"gi.resolution", "gi.target_format", "gi.loops", "gi.probe_order"})
+        EXPECT_TRUE(ablated.count(key)) << key;
     // Every variant records its passes (the frame's pass list), frames and coverage.
     std::map<std::string, nlohmann::json> switchesOf;
     for (const auto& v : j["variants"]) {
