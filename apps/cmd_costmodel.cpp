@@ -3,6 +3,7 @@
 // shader variant's texel stream through texture-cache models (hit rate, bytes missed per
 // pixel). Hardware-independent: what a testbed without the target GPU can say about it.
 #include "CommandRegistry.h"
+#include "ProfileOptions.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
 #include "costmodel/CachePresets.h"
@@ -19,7 +20,9 @@ namespace {
 struct CostArgs {
     SceneArgs scene;
     std::string probes, view, camera, scenario, layout = "tiled";
-    std::vector<std::string> sets, cachePresets;
+    ProfileArgs profileArgs;
+    std::vector<std::string> cachePresets;
+    const CLI::Option *widthOption = nullptr, *heightOption = nullptr;
     std::uint64_t cacheSize = 0;
     int line = 0, ways = 0, tile = 8, warp = 32, inFlight = 4;
     int width = 1280, height = 720;
@@ -33,7 +36,8 @@ std::string cameraSpec(const scene::View& v) {
     return buf;
 }
 
-std::vector<costmodel::CacheConfig> chooseCaches(const CostArgs& a) {
+std::vector<costmodel::CacheConfig> chooseCaches(const CostArgs& a,
+                                                 const profile::PlatformProfile& prof) {
     std::vector<costmodel::CacheConfig> out;
     for (const std::string& name : a.cachePresets)
         out.push_back(costmodel::cachePresetFor(name));
@@ -45,18 +49,25 @@ std::vector<costmodel::CacheConfig> chooseCaches(const CostArgs& a) {
         c.validate();
         out.push_back(c);
     }
+    // With --profile and no cache named: the profile's own preset.
+    if (out.empty() && !a.profileArgs.profile.empty())
+        out.push_back(costmodel::cachePresetFor(prof.cachePreset));
     return out; // empty: every preset
 }
 
-int run(const CostArgs& a) {
+int run(CostArgs& a) {
+    const profile::PlatformProfile platformProfile = resolveProfile(a.profileArgs);
+    if (!a.profileArgs.profile.empty()) { // the profile's resolution unless given
+        if (a.widthOption->count() == 0) a.width = platformProfile.width;
+        if (a.heightOption->count() == 0) a.height = platformProfile.height;
+    }
     if (a.width < 1 || a.height < 1 || a.width > 16384 || a.height > 16384)
         throw Error("--width/--height must be in 1..16384");
     if (a.worstCase && (!a.view.empty() || !a.camera.empty()))
         throw Error("--worst-case searches a camera: leave out --view and --camera");
     if (a.tile < 2 || a.tile > 64 || a.tile % 2) throw Error("--tile must be even, in 2..64");
     costmodel::CostModelOptions o;
-    for (const std::string& kv : a.sets)
-        o.profile.applyOverride(kv);
+    o.profile = platformProfile.switches;
     o.width = a.width;
     o.height = a.height;
     o.tile = a.tile;
@@ -65,7 +76,7 @@ int run(const CostArgs& a) {
     o.warpPixels = a.warp;
     o.warpsInFlight = a.inFlight;
     o.layout = costmodel::parseMemoryLayout(a.layout);
-    o.caches = chooseCaches(a);
+    o.caches = chooseCaches(a, platformProfile);
     scene::Scene s = loadSceneWithOverrides(a.scene);
     probes::ProbeSet set = probes::readProbeFile(a.probes);
     if (!a.scenario.empty()) {
@@ -105,13 +116,15 @@ const RegisterCommand reg{
          cmd.add_option("--camera", a->camera, "Camera px,py,pz,tx,ty,tz[,fovdeg]");
          cmd.add_flag("--worst-case", a->worstCase,
                       "Use the worst-case view (probebench views --worst-case)");
-         cmd.add_option("--set", a->sets,
-                        "Profile switch key=value (gi.resolution, gi.target_format, "
-                        "gi.volume_lod count; gi.probe_order/gi.loops mark the profile's variant)");
+         addProfileOptions(cmd, a->profileArgs,
+                           "gi.resolution, gi.target_format and gi.volume_lod count; "
+                           "gi.probe_order/gi.loops mark the profile's variant; --profile also "
+                           "picks its cache preset and resolution.");
          cmd.add_option("--scenario", a->scenario, "Lighting scenario (default: the file's first)");
          cmd.add_option("--cache", a->cachePresets,
                         "Cache preset, repeatable: handheld, console-base, pc-low, pc-high "
-                        "(default: all, unless a custom cache is given)");
+                        "(default: the --profile's preset, else all, unless a custom cache is "
+                        "given)");
          cmd.add_option("--cache-size", a->cacheSize, "Custom cache: size in bytes (power of 2)");
          cmd.add_option("--line", a->line, "Custom cache: line size in bytes (power of 2)");
          cmd.add_option("--ways", a->ways, "Custom cache: associativity");
@@ -127,8 +140,12 @@ const RegisterCommand reg{
                         "Warps taking turns per fetch instruction through one cache "
                         "(1 with --warp 1: pixel after pixel)")
              ->capture_default_str();
-         cmd.add_option("--width", a->width, "Frame (GBuffer) width")->capture_default_str();
-         cmd.add_option("--height", a->height, "Frame (GBuffer) height")->capture_default_str();
+         a->widthOption = cmd.add_option("--width", a->width,
+                                         "Frame (GBuffer) width (default: the --profile's, "
+                                         "else 1280)");
+         a->heightOption = cmd.add_option("--height", a->height,
+                                          "Frame (GBuffer) height (default: the --profile's, "
+                                          "else 720)");
          cmd.add_flag("--json", a->json, "Print JSON instead of tables");
          return [a] { return run(*a); };
      }}};

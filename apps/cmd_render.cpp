@@ -5,6 +5,7 @@
 #include "CommandRegistry.h"
 #include "FlyCamera.h"
 #include "PlatformOptions.h"
+#include "ProfileOptions.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
 #include "frame/FrameRenderer.h"
@@ -32,7 +33,8 @@ struct RenderArgs {
     float exposure = 0.0f; // 0 = the scene's
     int frames = 0;        // glfw: frames before closing (0 = until ESC)
     std::string probes, scenario;
-    std::vector<std::string> sets; // --set key=value
+    ProfileArgs profileArgs; // --profile, --set
+    const CLI::Option *widthOption = nullptr, *heightOption = nullptr;
     bool listSwitches = false;
     std::string debug; // --debug NAME
     bool verbose = false, json = false;
@@ -43,7 +45,8 @@ int scenarioIndex(const probes::ProbeSet& set, const RenderArgs& a) {
     int i = set.findScenario(a.scenario);
     if (i >= 0) return i;
     std::string names;
-    for (const auto& s : set.scenarios) names += (names.empty() ? "" : ", ") + s.name;
+    for (const auto& s : set.scenarios)
+        names += (names.empty() ? "" : ", ") + s.name;
     throw Error("--scenario: '" + a.scenario + "' is not in " + a.probes + " (" + names + ")");
 }
 
@@ -60,9 +63,10 @@ scene::View chooseView(const scene::Scene& s, const RenderArgs& a) {
     if (a.view.empty()) return s.views.front();
     if (const scene::View* v = s.findView(a.view)) return *v;
     std::string names;
-    for (const auto& v : s.views) names += (names.empty() ? "" : ", ") + v.name;
-    throw Error("--view '" + a.view + "': scene '" + s.name + "' has no such view (views: " +
-                names + ")");
+    for (const auto& v : s.views)
+        names += (names.empty() ? "" : ", ") + v.name;
+    throw Error("--view '" + a.view + "': scene '" + s.name +
+                "' has no such view (views: " + names + ")");
 }
 
 int runInteractive(platform::Platform& p, render::FrameRenderer& r, const scene::Scene& s,
@@ -119,14 +123,21 @@ nlohmann::json renderJson(const RenderArgs& a, const scene::Scene& s, const scen
 }
 
 int run(RenderArgs& a) {
-    profile::Profile prof;
-    for (const std::string& kv : a.sets) prof.applyOverride(kv);
+    const profile::PlatformProfile platformProfile = resolveProfile(a.profileArgs);
+    const profile::Profile& prof = platformProfile.switches;
     if (a.listSwitches) {
         std::cout << profile::describeSwitchesText(prof);
         return 0;
     }
-    if (!a.sets.empty() && a.probes.empty())
+    if (!a.profileArgs.sets.empty() && a.probes.empty())
         throw Error("--set: the GI switches need --probes FILE");
+    if (!a.profileArgs.profile.empty() && a.probes.empty())
+        throw Error("--profile: the GI switches need --probes FILE");
+    // The profile's output resolution unless --width/--height say otherwise.
+    if (!a.profileArgs.profile.empty()) {
+        if (a.widthOption->count() == 0) a.width = platformProfile.width;
+        if (a.heightOption->count() == 0) a.height = platformProfile.height;
+    }
     if (!a.scenario.empty() && a.probes.empty()) throw Error("--scenario needs --probes FILE");
     const render::GiDebugView debugView =
         a.debug.empty() ? render::GiDebugView::None : render::parseGiDebugView(a.debug);
@@ -172,11 +183,13 @@ int run(RenderArgs& a) {
          << "platform: " << platform->description() << "\n";
     if (const render::GpuProbes* gp = renderer.gpuProbes()) {
         std::string changed;
-        for (const auto& c : prof.changedSwitches()) changed += " " + c;
+        for (const auto& c : prof.changedSwitches())
+            changed += " " + c;
         info << "gi: ddgi, " << gp->volumes().size() << " of " << probeSet.volumes.size()
              << " volume(s), scenario '" << gp->scenarioName() << "', "
              << probes::formatName(gp->format()) << ", " << double(gp->bytes()) / (1024.0 * 1024.0)
-             << " MiB on the GPU; switches:" << (changed.empty() ? " defaults" : changed)
+             << " MiB on the GPU; profile " << platformProfile.name
+             << ", switches:" << (changed.empty() ? " defaults" : changed)
              << (debugView == render::GiDebugView::None
                      ? ""
                      : std::string("; debug view ") + render::giDebugViewName(debugView))
@@ -189,8 +202,8 @@ int run(RenderArgs& a) {
     auto t0 = std::chrono::steady_clock::now();
     renderer.render(render::makeRenderView(view, s.worldBounds(), a.width, a.height));
     glFinish();
-    double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
-                    .count();
+    double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     // Read everything back before writing anything: a failure leaves no partial output.
     image::Image8 ldr = renderer.readOutput();
     if (coverage) ldr = render::giCoverageImage(renderer.giApplyPass()->stats(), ldr);
@@ -223,50 +236,44 @@ int run(RenderArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{{"render", "Render a scene to an image (or a window with --platform glfw)",
-                           20, [](CLI::App& cmd) {
-                               auto a = std::make_shared<RenderArgs>();
-                               addSceneOptions(cmd, a->scene);
-                               addPlatformOptions(cmd, a->platform);
-                               cmd.add_option("--view", a->view,
-                                              "Named view of the scene (default: its first)");
-                               cmd.add_option("--camera", a->camera,
-                                              "Camera px,py,pz,tx,ty,tz[,fovdeg] (overrides --view)");
-                               cmd.add_option("--width", a->width, "Image width in pixels")
-                                   ->capture_default_str();
-                               cmd.add_option("--height", a->height, "Image height in pixels")
-                                   ->capture_default_str();
-                               cmd.add_option("--out", a->out, "PNG to write (8-bit sRGB, tonemapped)");
-                               cmd.add_option("--out-hdr", a->outHdr,
-                                              "PFM to write (linear HDR radiance before exposure)");
-                               cmd.add_option("--dump-gbuffer", a->dumpDir,
-                                              "Folder to write every GBuffer channel to");
-                               cmd.add_option("--exposure", a->exposure,
-                                              "Linear exposure scale (default: the scene's)");
-                               cmd.add_option("--frames", a->frames,
-                                              "glfw: close the window after N frames (0 = on ESC)");
-                               cmd.add_option("--probes", a->probes,
-                                              "Probe file (probebench bake): render with DDGI");
-                               cmd.add_option("--scenario", a->scenario,
-                                              "Lighting scenario of --probes (default: its first)");
-                               cmd.add_option("--set", a->sets,
-                                              "Profile switch key=value (repeatable; "
-                                              "--list-switches shows them)");
-                               cmd.add_flag("--list-switches", a->listSwitches,
-                                            "Print every profile switch and exit");
-                               cmd.add_option("--debug", a->debug,
-                                              "GI debug view (needs --probes): gi_only, "
-                                              "probes_irradiance, probes_visibility, "
-                                              "volume_coverage (an image twice as wide: shading "
-                                              "volume | evaluations per pixel)");
-                               cmd.add_flag("--verbose", a->verbose,
-                                            "Report the GI pass per volume: how it was drawn, "
-                                            "pixels evaluated (counting reads back per volume)");
-                               cmd.add_flag("--json", a->json,
-                                            "Print the frame's report as JSON on stdout (human "
-                                            "lines go to stderr); counts pixels like --verbose");
-                               return [a] { return run(*a); };
-                           }}};
+const RegisterCommand reg{
+    {"render", "Render a scene to an image (or a window with --platform glfw)", 20,
+     [](CLI::App& cmd) {
+         auto a = std::make_shared<RenderArgs>();
+         addSceneOptions(cmd, a->scene);
+         addPlatformOptions(cmd, a->platform);
+         cmd.add_option("--view", a->view, "Named view of the scene (default: its first)");
+         cmd.add_option("--camera", a->camera,
+                        "Camera px,py,pz,tx,ty,tz[,fovdeg] (overrides --view)");
+         a->widthOption = cmd.add_option(
+             "--width", a->width, "Image width in pixels (default: the --profile's, else 1280)");
+         a->heightOption = cmd.add_option(
+             "--height", a->height, "Image height in pixels (default: the --profile's, else 720)");
+         cmd.add_option("--out", a->out, "PNG to write (8-bit sRGB, tonemapped)");
+         cmd.add_option("--out-hdr", a->outHdr,
+                        "PFM to write (linear HDR radiance before exposure)");
+         cmd.add_option("--dump-gbuffer", a->dumpDir, "Folder to write every GBuffer channel to");
+         cmd.add_option("--exposure", a->exposure, "Linear exposure scale (default: the scene's)");
+         cmd.add_option("--frames", a->frames,
+                        "glfw: close the window after N frames (0 = on ESC)");
+         cmd.add_option("--probes", a->probes, "Probe file (probebench bake): render with DDGI");
+         cmd.add_option("--scenario", a->scenario,
+                        "Lighting scenario of --probes (default: its first)");
+         addProfileOptions(cmd, a->profileArgs, "Needs --probes.");
+         cmd.add_flag("--list-switches", a->listSwitches, "Print every profile switch and exit");
+         cmd.add_option("--debug", a->debug,
+                        "GI debug view (needs --probes): gi_only, "
+                        "probes_irradiance, probes_visibility, "
+                        "volume_coverage (an image twice as wide: shading "
+                        "volume | evaluations per pixel)");
+         cmd.add_flag("--verbose", a->verbose,
+                      "Report the GI pass per volume: how it was drawn, "
+                      "pixels evaluated (counting reads back per volume)");
+         cmd.add_flag("--json", a->json,
+                      "Print the frame's report as JSON on stdout (human "
+                      "lines go to stderr); counts pixels like --verbose");
+         return [a] { return run(*a); };
+     }}};
 
 } // namespace
 } // namespace pb::app

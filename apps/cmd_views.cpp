@@ -2,6 +2,7 @@
 // probe volume), for the scene's named views, a given camera, or the worst-case view the
 // benchmark uses (--worst-case: every pixel needs GI, no sky, no early-out).
 #include "CommandRegistry.h"
+#include "ProfileOptions.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
 #include "passes/GiVolumeLod.h"
@@ -20,8 +21,9 @@ namespace {
 struct ViewsArgs {
     SceneArgs scene;
     std::string probes, view, camera;
-    std::vector<std::string> sets;
+    ProfileArgs profileArgs;
     int width = 1280, height = 720;
+    const CLI::Option *widthOption = nullptr, *heightOption = nullptr;
     float fov = 60.0f;
     bool worstCase = false, json = false;
     double minCoverage = -1.0; // < 0: no requirement
@@ -52,15 +54,18 @@ void printRow(const std::string& name, const views::Coverage& c) {
                 c.meanOverlap, c.meanDistance);
 }
 
-int run(const ViewsArgs& a) {
+int run(ViewsArgs& a) {
+    const profile::PlatformProfile platformProfile = resolveProfile(a.profileArgs);
+    const profile::Profile& prof = platformProfile.switches;
+    if (!a.profileArgs.profile.empty()) { // the profile's resolution unless given
+        if (a.widthOption->count() == 0) a.width = platformProfile.width;
+        if (a.heightOption->count() == 0) a.height = platformProfile.height;
+    }
     if (a.width < 1 || a.height < 1 || a.width > 16384 || a.height > 16384)
         throw Error("--width/--height must be in 1..16384");
     if (!(a.fov > 1.0f && a.fov < 179.0f)) throw Error("--fov must be in (1, 179) degrees");
     if (a.worstCase && (!a.view.empty() || !a.camera.empty()))
         throw Error("--worst-case searches a camera: leave out --view and --camera");
-    profile::Profile prof;
-    for (const std::string& kv : a.sets)
-        prof.applyOverride(kv);
     scene::Scene s = loadSceneWithOverrides(a.scene);
     probes::ProbeSet set = probes::readProbeFile(a.probes);
     // gi.volume_lod: coverage counts only the volumes the renderer would load.
@@ -142,12 +147,15 @@ const RegisterCommand reg{
                       "Search a camera whose every pixel needs GI (the benchmark's default view)");
          cmd.add_option("--view", a->view, "Check one named view (default: all of the scene's)");
          cmd.add_option("--camera", a->camera, "Check a camera px,py,pz,tx,ty,tz[,fovdeg]");
-         cmd.add_option("--width", a->width, "Image width in pixels")->capture_default_str();
-         cmd.add_option("--height", a->height, "Image height in pixels")->capture_default_str();
+         a->widthOption = cmd.add_option("--width", a->width,
+                                         "Image width in pixels (default: the --profile's, "
+                                         "else 1280)");
+         a->heightOption = cmd.add_option("--height", a->height,
+                                          "Image height in pixels (default: the --profile's, "
+                                          "else 720)");
          cmd.add_option("--fov", a->fov, "Vertical field of view of the searched camera (degrees)")
              ->capture_default_str();
-         cmd.add_option("--set", a->sets,
-                        "Profile switch key=value; gi.volume_lod decides which volumes count");
+         addProfileOptions(cmd, a->profileArgs, "gi.volume_lod decides which volumes count.");
          cmd.add_option("--min-coverage", a->minCoverage,
                         "Exit 1 when a reported coverage is below this fraction (e.g. 1.0)");
          cmd.add_flag("--json", a->json, "Print JSON instead of a table");

@@ -17,6 +17,7 @@ DriverQuirks detectDriverQuirks() {
                          renderer.find("softpipe") != std::string::npos ||
                          renderer.find("swrast") != std::string::npos;
     q.timerQueriesNeedFlush = renderer.find("llvmpipe") != std::string::npos;
+    q.timerQueriesUntrustworthy = q.softwareRenderer;
     return q;
 }
 

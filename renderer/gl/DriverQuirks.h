@@ -15,6 +15,11 @@ struct DriverQuirks {
     bool timerQueriesNeedFlush = false;
     // A software rasterizer (llvmpipe, softpipe, swrast): timings are of the CPU, not a GPU.
     bool softwareRenderer = false;
+    // Timer queries do not measure the timed work's execution: llvmpipe's measure command
+    // submission unless flush-bracketed (above), and on any software rasterizer the work runs
+    // on the CPU threads the clock already sees. The bench then times with the CPU clock
+    // around glFinish per pass (bench/runner/SectionTimer) instead of queries.
+    bool timerQueriesUntrustworthy = false;
 };
 
 // Reads GL_VERSION / GL_RENDERER of the current context.

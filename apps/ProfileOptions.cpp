@@ -1,0 +1,54 @@
+#include "ProfileOptions.h"
+
+#include "costmodel/CachePresets.h"
+#include "profile/ProfileLoader.h"
+
+#include <cstdlib>
+#include <sstream>
+
+#ifndef PB_PROFILES_DIR
+#define PB_PROFILES_DIR "profiles"
+#endif
+
+namespace pb::app {
+
+void addProfileOptions(CLI::App& cmd, ProfileArgs& a, const std::string& setHelp) {
+    a.profileOption =
+        cmd.add_option("--profile", a.profile,
+                       "Platform profile: a name from `probebench profiles` (reference, pc-high, "
+                       "console-base, handheld, pc-low) or a .toml file");
+    cmd.add_option("--set", a.sets,
+                   "Profile switch key=value on top of --profile (repeatable; `probebench "
+                   "render --list-switches` lists them). " +
+                       setHelp);
+}
+
+profile::ProfileSearch profileSearch() {
+    profile::ProfileSearch s;
+    if (const char* env = std::getenv("PROBEBENCH_PROFILES")) {
+        std::stringstream in(env);
+        std::string dir;
+        while (std::getline(in, dir, ':'))
+            if (!dir.empty()) s.dirs.push_back(dir);
+    }
+    s.dirs.push_back(PB_PROFILES_DIR);
+    for (const costmodel::CacheConfig& c : costmodel::cachePresets())
+        s.cachePresets.push_back(c.name);
+    return s;
+}
+
+profile::PlatformProfile resolveProfile(const ProfileArgs& a) {
+    profile::PlatformProfile p;
+    if (!a.profile.empty()) {
+        p = profile::loadProfile(a.profile, profileSearch());
+    } else {
+        p.name = "defaults";
+        p.description = "every switch at the switch table's default";
+        p.cachePreset = "pc-high";
+    }
+    for (const std::string& kv : a.sets)
+        p.switches.applyOverride(kv);
+    return p;
+}
+
+} // namespace pb::app

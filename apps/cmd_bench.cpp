@@ -1,0 +1,302 @@
+// probebench bench: platform profiles against the reference on the same frame (worst-case view
+// by default): per-pass times in interleaved rounds, accuracy (FLIP, PSNR, SSIM, relative MSE of
+// the GI irradiance), the GI pass's texture-fetch floor, and with --ablate what every switch
+// saves and costs. JSON for machines, a self-contained HTML report, a Markdown summary on stdout.
+#include "CommandRegistry.h"
+#include "PlatformOptions.h"
+#include "ProfileOptions.h"
+#include "SceneOptions.h"
+#include "bench/report/HtmlReport.h"
+#include "bench/report/MarkdownSummary.h"
+#include "bench/report/ResultJson.h"
+#include "bench/runner/BenchContext.h"
+#include "bench/runner/ProbeCache.h"
+#include "bench/runner/SessionRunner.h"
+#include "core/Error.h"
+#include "core/FileIO.h"
+#include "frame/FrameRenderer.h"
+#include "gl/DebugOutput.h"
+#include "metrics/ImageMetrics.h"
+#include "probes/ProbeFile.h"
+#include "views/WorstCaseView.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+namespace pb::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct BenchArgs {
+    SceneArgs scene;
+    platform::PlatformOptions platform;
+    std::vector<std::string> profiles, sets;
+    std::string reference = "reference";
+    bool ablate = false, strict = false, noFloor = false;
+    int frames = 3, rounds = 7, warmup = 2, width = 0, height = 0;
+    std::string view, camera, probes, volumes = "auto", cacheDir, json, html, heatmaps,
+                                      timing = "auto";
+    double ppd = 67.0;
+};
+
+void progress(const std::string& line) {
+    std::fprintf(stderr, "bench: %s\n", line.c_str());
+    std::fflush(stderr);
+}
+
+void ensureParent(const std::string& path, const char* option) {
+    fs::path parent = fs::path(path).parent_path();
+    std::error_code ec;
+    if (!parent.empty()) fs::create_directories(parent, ec);
+    if (ec) throw Error(std::string(option) + " " + path + ": cannot create its folder");
+}
+
+std::string cameraSpec(const scene::View& v) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g", v.position.x, v.position.y,
+                  v.position.z, v.target.x, v.target.y, v.target.z, v.fovYDegrees);
+    return buf;
+}
+
+void validate(const BenchArgs& a) {
+    if (a.frames < 1 || a.frames > 1000) throw Error("--frames must be in 1..1000");
+    if (a.rounds < 1 || a.rounds > 1000) throw Error("--rounds must be in 1..1000");
+    if (a.warmup < 1 || a.warmup > 100)
+        throw Error("--warmup must be in 1..100 (the first frame compiles shaders)");
+    if ((a.width > 0) != (a.height > 0)) throw Error("--width and --height go together");
+    if (a.width < 0 || a.height < 0 || a.width > 16384 || a.height > 16384)
+        throw Error("--width/--height must be in 16..16384");
+    if (a.width > 0 && (a.width < 16 || a.height < 16))
+        throw Error("--width/--height must be in 16..16384");
+    if (!a.view.empty() && !a.camera.empty()) throw Error("give --view or --camera, not both");
+    if (!(a.ppd > 0)) throw Error("--ppd must be positive");
+}
+
+std::vector<profile::PlatformProfile> loadProfiles(const BenchArgs& a,
+                                                   const profile::ProfileSearch& search) {
+    std::vector<std::string> names = a.profiles;
+    if (names.empty()) names = profile::profileNames(search);
+    std::vector<profile::PlatformProfile> out;
+    for (const std::string& n : names) {
+        profile::PlatformProfile p = profile::loadProfile(n, search);
+        for (const std::string& kv : a.sets)
+            p.switches.applyOverride(kv);
+        out.push_back(std::move(p));
+    }
+    return out;
+}
+
+// The camera every variant renders: --camera, --view, or the worst-case view (searched at a
+// small size of the first session's aspect; every result records its own coverage).
+nlohmann::json chooseBenchView(const BenchArgs& a, const scene::Scene& s,
+                               const probes::ProbeSet& set, const bench::BenchPlan& plan,
+                               scene::View& view) {
+    if (!a.camera.empty() || !a.view.empty()) {
+        view = chooseView(s, a.view, a.camera);
+        if (!a.camera.empty()) view.name = "camera";
+        return {{"source", a.camera.empty() ? "view " + view.name : "camera"},
+                {"camera", cameraSpec(view)}};
+    }
+    const bench::Session& first = plan.sessions.front();
+    const int h = std::min(first.height, 180);
+    const int w = std::max(16, int(double(first.width) * h / first.height + 0.5));
+    progress("searching the worst-case view (every pixel needs GI) at " + std::to_string(w) + "x" +
+             std::to_string(h));
+    const views::WorstCase wc = views::findWorstCaseView(s, set, w, h);
+    view = wc.view;
+    return {{"source", "worst-case"},
+            {"camera", cameraSpec(view)},
+            {"search_size", {w, h}},
+            {"search_coverage", wc.coverage.fraction},
+            {"poses_searched", wc.candidates}};
+}
+
+// Heat maps share one scale (the largest FLIP of any profile, at least 0.05) so they compare;
+// FLIP errors of GI switches are small, and a 0..1 ramp would show them black.
+void writeOutputs(const BenchArgs& a, bench::BenchResult& r,
+                  const std::vector<image::ImageF>& flipMaps) {
+    r.heatmapScale = 0.05;
+    for (const auto& s : r.sessions)
+        if (s.profile().accuracy.measured)
+            r.heatmapScale = std::max(r.heatmapScale, s.profile().accuracy.flipMax);
+    std::string dir = a.heatmaps;
+    if (dir.empty() && (!a.html.empty() || !a.json.empty())) {
+        fs::path base(a.html.empty() ? a.json : a.html);
+        dir = (base.parent_path() / (base.stem().string() + "-heatmaps")).string();
+    }
+    if (!dir.empty()) {
+        std::error_code ec;
+        fs::create_directories(dir, ec);
+        if (ec) throw Error("--heatmaps " + dir + ": cannot create the folder");
+        for (size_t s = 0; s < r.sessions.size(); ++s) {
+            if (flipMaps[s].pixels.empty()) continue;
+            std::string png =
+                (fs::path(dir) / (r.sessions[s].session.profile.name + ".png")).string();
+            image::writePng(png, metrics::errorHeatMap(flipMaps[s], float(r.heatmapScale)));
+            r.sessions[s].variants[0].accuracy.heatmapFile = png;
+        }
+    }
+    if (!a.json.empty()) {
+        std::string text = bench::benchJson(r).dump(2) + "\n";
+        writeFileAtomic(a.json, text.data(), text.size());
+    }
+    if (!a.html.empty()) {
+        std::string text = bench::htmlReport(r);
+        writeFileAtomic(a.html, text.data(), text.size());
+    }
+}
+
+int run(const BenchArgs& a) {
+    const auto t0 = std::chrono::steady_clock::now();
+    validate(a);
+    const profile::ProfileSearch search = profileSearch();
+    profile::PlatformProfile reference = profile::loadProfile(a.reference, search);
+    std::vector<profile::PlatformProfile> profiles = loadProfiles(a, search);
+    bench::BenchPlan plan =
+        bench::makeBenchPlan(profiles, reference, {a.ablate, a.width, a.height});
+    for (const char* opt : {"--json", "--html"}) {
+        const std::string& path = std::string(opt) == "--json" ? a.json : a.html;
+        if (!path.empty()) ensureParent(path, opt);
+    }
+    scene::Scene s = loadSceneWithOverrides(a.scene);
+    std::string probesPath = a.probes;
+    probes::ProbeSet set =
+        a.probes.empty()
+            ? bench::benchProbes(s, a.volumes,
+                                 a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir,
+                                 &probesPath, progress)
+            : probes::readProbeFile(a.probes);
+
+    bench::BenchResult result;
+    scene::View view;
+    result.view = chooseBenchView(a, s, set, plan, view);
+    auto platform = platform::createPlatform(a.platform);
+    gl::DebugOutput debug;
+    const gl::GlCaps caps = gl::queryCaps();
+    const bench::TimingChoice timing =
+        bench::chooseTiming(a.timing, caps, gl::detectDriverQuirks());
+    result.context = bench::benchContext(*platform, caps);
+    result.scene = {{"name", s.name},
+                    {"summary", sceneSummary(s)},
+                    {"probes_file", probesPath},
+                    {"probe_volumes", set.volumes.size()},
+                    {"probes", set.probeCount()},
+                    {"probe_format", probes::formatName(set.format())}};
+    result.settings = {a.frames, a.rounds, a.warmup, a.ablate, timing.name, timing.reason, a.ppd};
+    progress(std::to_string(plan.sessions.size()) + " profile(s), " +
+             std::to_string(plan.variantCount()) + " variant(s), " + std::to_string(a.rounds) +
+             " rounds x " + std::to_string(a.frames) + " frames; timing " + timing.name + " on " +
+             caps.renderer);
+
+    bench::RunnerOptions o;
+    o.frames = a.frames;
+    o.rounds = a.rounds;
+    o.warmup = a.warmup;
+    o.timing = timing;
+    o.es = caps.es;
+    o.fetchFloor = !a.noFloor;
+    o.pixelsPerDegree = a.ppd;
+    o.progress = progress;
+    bench::RunnerInputs in{&s, &set, view, render::defaultFrameSettings(s), &debug};
+    std::vector<image::ImageF> flipMaps;
+    result.sessions = bench::runBenchPlan(plan, in, o, &flipMaps);
+    result.context["load_average_end"] = bench::loadAverage();
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    std::vector<std::string> skipped;
+    for (const auto& session : result.sessions)
+        for (const auto& v : session.variants)
+            if (!v.ok()) skipped.push_back(v.variant.id + ": " + v.error);
+    if (a.strict && !skipped.empty())
+        throw Error("--strict: " + std::to_string(skipped.size()) +
+                    " variant(s) could not run, nothing written; first: " + skipped.front());
+    writeOutputs(a, result, flipMaps);
+    std::cout << bench::markdownSummary(result);
+    // One warning per distinct reason, naming the variants it hit.
+    std::vector<std::pair<std::string, std::string>> reasons; // reason, variant ids
+    for (const auto& session : result.sessions)
+        for (const auto& v : session.variants) {
+            if (v.ok()) continue;
+            auto it = std::find_if(reasons.begin(), reasons.end(),
+                                   [&](const auto& r) { return r.first == v.error; });
+            if (it == reasons.end())
+                reasons.emplace_back(v.error, v.variant.id);
+            else if ((", " + it->second + ",").find(", " + v.variant.id + ",") == std::string::npos)
+                it->second += ", " + v.variant.id;
+        }
+    for (const auto& [why, ids] : reasons)
+        std::fprintf(stderr, "warning: not run (%s): %s\n", why.c_str(), ids.c_str());
+    if (!a.json.empty()) std::cout << "\nwrote " << a.json << "\n";
+    if (!a.html.empty()) std::cout << (a.json.empty() ? "\n" : "") << "wrote " << a.html << "\n";
+    return 0;
+}
+
+const RegisterCommand reg{
+    {"bench",
+     "Benchmark platform profiles against the reference: per-pass times, accuracy, ablation, "
+     "report",
+     50, [](CLI::App& cmd) {
+         auto a = std::make_shared<BenchArgs>();
+         addSceneOptions(cmd, a->scene);
+         addPlatformOptions(cmd, a->platform);
+         cmd.add_option("--profiles,--profile", a->profiles,
+                        "Profiles to measure, comma-separated names or .toml files (--profile: "
+                        "the same; default: "
+                        "every profile `probebench profiles` lists)")
+             ->delimiter(',');
+         cmd.add_option("--reference", a->reference,
+                        "The accuracy baseline profile (rendered at each profile's size)")
+             ->capture_default_str();
+         cmd.add_option("--set", a->sets,
+                        "Switch key=value applied to every measured profile, not to the "
+                        "reference (repeatable)");
+         cmd.add_flag("--ablate", a->ablate,
+                      "Per switch where a profile differs from the reference: the profile with "
+                      "only that switch reverted, and the reference with only that switch applied");
+         cmd.add_option("--frames", a->frames, "Measured frames per variant per round")
+             ->capture_default_str();
+         cmd.add_option("--rounds", a->rounds,
+                        "Interleaved rounds (A B A B ...): the deltas' 95% CIs come from them")
+             ->capture_default_str();
+         cmd.add_option("--warmup", a->warmup,
+                        "Frames per variant before timing (never counted; the first compiles "
+                        "shaders)")
+             ->capture_default_str();
+         cmd.add_option("--width", a->width,
+                        "Render every profile at this width instead of its own output size");
+         cmd.add_option("--height", a->height, "...and this height");
+         cmd.add_option("--view", a->view, "A named view of the scene instead of the worst case");
+         cmd.add_option("--camera", a->camera,
+                        "Camera px,py,pz,tx,ty,tz[,fovdeg] instead of the worst case");
+         cmd.add_option("--probes", a->probes,
+                        "Probe file (probebench bake); default: bake --volumes once and cache it");
+         cmd.add_option("--volumes", a->volumes,
+                        "Without --probes: the volumes to bake, auto, auto-uniform or a volumes "
+                        "file (bench/volumes/rooms_nested.toml nests a volume per room)")
+             ->capture_default_str();
+         cmd.add_option("--cache-dir", a->cacheDir,
+                        "Folder of the baked-probe cache (default: ~/.cache/probebench)");
+         cmd.add_option("--json", a->json, "Write the full result as JSON to this file");
+         cmd.add_option("--html", a->html, "Write the self-contained HTML report to this file");
+         cmd.add_option("--heatmaps", a->heatmaps,
+                        "Folder for the FLIP heat-map PNGs (default: <json/html name>-heatmaps/)");
+         cmd.add_option("--timing", a->timing,
+                        "auto (timer queries where the driver's are trustworthy, else the CPU "
+                        "clock around glFinish), cpu, cpu-time (process CPU time around glFinish: "
+                        "steadier on a shared machine), or query")
+             ->capture_default_str();
+         cmd.add_flag("--no-floor", a->noFloor, "Skip the GI pass's texture-fetch floor");
+         cmd.add_option("--ppd", a->ppd, "FLIP viewing condition, pixels per degree")
+             ->capture_default_str();
+         cmd.add_flag("--strict", a->strict,
+                      "Fail (writing nothing) when any variant cannot run, instead of reporting "
+                      "it as not run");
+         return [a] { return run(*a); };
+     }}};
+
+} // namespace
+} // namespace pb::app

@@ -1,0 +1,87 @@
+#pragma once
+// Everything one benchmark run measured, GL-free, for the JSON, the Markdown summary and the
+// HTML report (ResultJson.h, MarkdownSummary.h, HtmlReport.h). Times in milliseconds.
+#include "AblationPlan.h"
+#include "metrics/Statistics.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace pb::bench {
+
+struct SectionTiming {
+    std::string name;            // a pass (FrameTimer section) or a sub-section
+    std::vector<double> samples; // one per measured frame (warm-up excluded)
+    stats::Summary ms;
+};
+
+struct CoverageResult {
+    double fraction = 0; // pixels needing GI (target 1.0)
+    int maxOverlap = 0;  // volumes over one pixel, at most
+    double meanOverlap = 0;
+};
+
+struct AccuracyResult {
+    bool measured = false;
+    double flipMean = 0, flipMax = 0; // LDR-FLIP of the tonemapped output vs reference
+    double psnr = 0;                  // dB; +inf when identical
+    double ssim = 1;
+    double relativeMseGi = 0; // linear GI irradiance (the lighting's indirect input)
+    std::string heatmapFile;  // FLIP heat-map PNG ("" when none written)
+};
+
+struct VariantResult {
+    Variant variant;
+    std::string status = "ok"; // "ok" | "unsupported" (error says why)
+    std::string error;
+    std::vector<SectionTiming> sections; // in first-seen order: the frame's passes
+    std::vector<double> frameSamples;    // whole frame, per measured frame
+    stats::Summary frameMs;
+    std::vector<double> roundMedians;        // frame ms per round (median of its frames)
+    std::optional<SectionTiming> fetchFloor; // the GI pass's texture-fetch floor
+    AccuracyResult accuracy;
+    CoverageResult coverage;
+    double giMemoryMiB = 0; // probe data on the GPU
+    int volumesKept = 0;
+    bool ok() const { return status == "ok"; }
+    const SectionTiming* section(const std::string& name) const;
+};
+
+struct DeltaResult {
+    PlannedDelta planned;
+    bool measured = false; // both sides rendered
+    stats::Shift ms;       // on - off, paired over rounds (Hodges-Lehmann, Wilcoxon CI)
+    double flip = 0, psnr = 0, ssim = 0, relativeMseGi = 0; // on - off (psnr: NaN if inf)
+};
+
+struct SessionResult {
+    Session session;
+    std::vector<VariantResult> variants; // parallel to session.variants
+    std::vector<DeltaResult> deltas;     // parallel to session.deltas
+    const VariantResult& profile() const { return variants[0]; }
+    const VariantResult& reference() const { return variants[size_t(session.referenceVariant)]; }
+    const DeltaResult* vsReference() const;
+};
+
+struct BenchSettings {
+    int frames = 0, rounds = 0, warmup = 0;
+    bool ablate = false;
+    std::string timingMethod; // "cpu-finish" | "timer-query" | "timer-query-flush"
+    std::string timingReason; // why that method
+    double pixelsPerDegree = 67;
+};
+
+struct BenchResult {
+    nlohmann::json context; // platform, GL strings, driver, CPU, threads, commit, date, load
+    nlohmann::json scene;   // name, summary, probes file, volumes, probe format
+    nlohmann::json view;    // source (worst-case | view | camera), camera spec, coverage
+    BenchSettings settings;
+    std::vector<SessionResult> sessions;
+    double heatmapScale = 1; // FLIP value shown as the ramp's brightest colour in every heat map
+    double seconds = 0;      // wall time of the whole run
+};
+
+} // namespace pb::bench

@@ -1,0 +1,119 @@
+#include "MarkdownSummary.h"
+
+#include "Format.h"
+#include "ResultJson.h"
+
+#include <sstream>
+
+namespace pb::bench {
+
+namespace {
+
+std::string accuracyCells(const AccuracyResult& a) {
+    if (!a.measured) return "n/a | n/a | n/a | n/a";
+    return fixed(a.flipMean, 4) + " | " + psnrText(a.psnr) + " | " + fixed(a.ssim, 4) + " | " +
+           scientific(a.relativeMseGi);
+}
+
+std::string deltaCells(const DeltaResult* d) {
+    if (!d || !d->measured) return "n/a | n/a";
+    return shiftWithCi(d->ms) + (significant(d->ms) ? "" : " (ns)") + " | " +
+           (d->flip >= 0 ? "+" : "") + fixed(d->flip, 4);
+}
+
+void profileTable(std::ostringstream& out, const BenchResult& r) {
+    out << "| profile | size | frame ms median [95% CI] | Δ ms vs reference [95% CI] | GI ms | "
+           "floor ms | FLIP | PSNR dB | SSIM | rel. MSE GI | coverage | GI MiB (budget) |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+    for (const SessionResult& s : r.sessions) {
+        const VariantResult& p = s.profile();
+        out << "| " << s.session.profile.name << " | " << s.session.width << "x" << s.session.height
+            << " | ";
+        if (!p.ok()) {
+            out << "not run: " << p.error << " |";
+            for (int i = 0; i < 9; ++i)
+                out << " - |";
+            out << "\n";
+            continue;
+        }
+        const DeltaResult* vs = s.vsReference();
+        std::vector<double> gi = giPassSamples(p);
+        out << msWithCi(p.frameMs) << " | "
+            << (vs ? (vs->measured ? shiftWithCi(vs->ms) : std::string("n/a"))
+                   : std::string("(is the reference)"))
+            << " | " << (gi.empty() ? "n/a" : fixed(stats::summarize(gi).median, 2)) << " | "
+            << (p.fetchFloor ? fixed(p.fetchFloor->ms.median, 2) : std::string("n/a")) << " | "
+            << accuracyCells(p.accuracy) << " | " << fixed(p.coverage.fraction, 4) << " | "
+            << fixed(p.giMemoryMiB, 2) << " (" << fixed(s.session.profile.giMemoryBudgetMiB, 1)
+            << ") |\n";
+    }
+}
+
+void passTable(std::ostringstream& out, const BenchResult& r) {
+    std::vector<std::string> names = sectionNames(r);
+    out << "\nMedian ms per pass:\n\n| profile |";
+    for (const auto& n : names)
+        out << " " << n << " |";
+    out << " frame |\n|---|";
+    for (size_t i = 0; i <= names.size(); ++i)
+        out << "---|";
+    out << "\n";
+    for (const SessionResult& s : r.sessions) {
+        const VariantResult& p = s.profile();
+        if (!p.ok()) continue;
+        out << "| " << s.session.profile.name << " |";
+        for (const auto& n : names) {
+            const SectionTiming* t = p.section(n);
+            out << " " << (t ? fixed(t->ms.median, 2) : std::string("-")) << " |";
+        }
+        out << " " << fixed(p.frameMs.median, 2) << " |\n";
+    }
+}
+
+void ablationTables(std::ostringstream& out, const BenchResult& r) {
+    for (const SessionResult& s : r.sessions) {
+        bool any = false;
+        for (const DeltaResult& d : s.deltas)
+            any |= d.planned.kind == DeltaKind::InProfile;
+        if (!any) continue;
+        out << "\nAblation of **" << s.session.profile.name
+            << "** (Δ = switch on − off; negative ms = the switch saves time; ΔFLIP > 0 = it "
+               "costs accuracy; (ns) = 95% CI contains 0):\n\n"
+            << "| switch | reference → profile | Δ ms in profile | ΔFLIP in profile | Δ ms on "
+               "reference | ΔFLIP on reference |\n|---|---|---|---|---|---|\n";
+        for (const DeltaResult& d : s.deltas) {
+            if (d.planned.kind != DeltaKind::InProfile) continue;
+            const DeltaResult* onRef = nullptr;
+            for (const DeltaResult& o : s.deltas)
+                if (o.planned.kind == DeltaKind::OnReference &&
+                    o.planned.switchKey == d.planned.switchKey)
+                    onRef = &o;
+            out << "| " << d.planned.switchKey << " | " << d.planned.offValue << " → "
+                << d.planned.onValue << " | " << deltaCells(&d) << " | " << deltaCells(onRef)
+                << " |\n";
+        }
+    }
+}
+
+} // namespace
+
+std::string markdownSummary(const BenchResult& r) {
+    std::ostringstream out;
+    const auto& ctx = r.context;
+    out << "## probebench bench: " << r.scene.value("name", std::string("?")) << ", view "
+        << r.view.value("source", std::string("?")) << "\n\n"
+        << "Device: " << ctx.value("gl_renderer", std::string("?")) << " ("
+        << ctx.value("platform", std::string("?")) << "), timing " << r.settings.timingMethod
+        << "; " << r.settings.rounds << " rounds x " << r.settings.frames << " frames after "
+        << r.settings.warmup << " warm-up frames per variant; " << fixed(r.seconds, 1) << " s.";
+    if (ctx.value("software_renderer", false))
+        out << " **Software rasterizer: the times are of this CPU, not of a GPU; accuracy, memory "
+               "and coverage are hardware-independent.**";
+    out << "\n\n";
+    profileTable(out, r);
+    passTable(out, r);
+    ablationTables(out, r);
+    return out.str();
+}
+
+} // namespace pb::bench

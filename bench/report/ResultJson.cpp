@@ -1,0 +1,167 @@
+#include "ResultJson.h"
+
+#include <cmath>
+
+namespace pb::bench {
+
+nlohmann::json finiteOrNull(double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+nlohmann::json summaryJson(const stats::Summary& s) {
+    return {{"n", s.n},          {"median", s.median},  {"min", s.min},         {"max", s.max},
+            {"mean", s.mean},    {"q1", s.q1},          {"q3", s.q3},           {"iqr", s.iqr},
+            {"ci_low", s.ciLow}, {"ci_high", s.ciHigh}, {"ci_level", s.ciLevel}};
+}
+
+nlohmann::json shiftJson(const stats::Shift& s) {
+    return {{"estimate", s.estimate},
+            {"ci_low", s.ciLow},
+            {"ci_high", s.ciHigh},
+            {"ci_level", s.ciLevel}};
+}
+
+std::vector<double> giPassSamples(const VariantResult& v) {
+    std::vector<double> out(v.frameSamples.size(), 0.0);
+    for (const SectionTiming& s : v.sections)
+        if (s.name.rfind("gi-", 0) == 0)
+            for (size_t i = 0; i < s.samples.size() && i < out.size(); ++i)
+                out[i] += s.samples[i];
+    return out;
+}
+
+namespace {
+
+nlohmann::json accuracyJson(const AccuracyResult& a) {
+    if (!a.measured) return nullptr;
+    return {{"flip_mean", a.flipMean},
+            {"flip_max", a.flipMax},
+            {"psnr_db", finiteOrNull(a.psnr)},
+            {"ssim", a.ssim},
+            {"relative_mse_gi", a.relativeMseGi},
+            {"heatmap",
+             a.heatmapFile.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.heatmapFile)}};
+}
+
+nlohmann::json variantJson(const VariantResult& v, const Session& s) {
+    nlohmann::json j{{"id", v.variant.id},
+                     {"session", s.profile.name},
+                     {"role", roleName(v.variant.role)},
+                     {"switch", v.variant.switchKey.empty() ? nlohmann::json(nullptr)
+                                                            : nlohmann::json(v.variant.switchKey)},
+                     {"label", v.variant.label},
+                     {"switches", v.variant.switches.valuesJson()},
+                     {"width", s.width},
+                     {"height", s.height},
+                     {"status", v.status}};
+    if (!v.ok()) {
+        j["error"] = v.error;
+        return j;
+    }
+    j["frame_ms"] = summaryJson(v.frameMs);
+    nlohmann::json passes = nlohmann::json::array();
+    for (const SectionTiming& t : v.sections)
+        passes.push_back({{"name", t.name}, {"ms", summaryJson(t.ms)}});
+    j["passes"] = passes;
+    std::vector<double> gi = giPassSamples(v);
+    j["gi_pass_ms"] = gi.empty() ? nlohmann::json(nullptr) : summaryJson(stats::summarize(gi));
+    if (v.fetchFloor) {
+        j["fetch_floor_ms"] = summaryJson(v.fetchFloor->ms);
+        double giMedian = gi.empty() ? 0.0 : stats::summarize(gi).median;
+        j["gi_over_floor"] = finiteOrNull(giMedian / v.fetchFloor->ms.median);
+    } else {
+        j["fetch_floor_ms"] = nullptr;
+    }
+    j["accuracy"] = accuracyJson(v.accuracy);
+    j["coverage"] = {{"fraction", v.coverage.fraction},
+                     {"max_overlap", v.coverage.maxOverlap},
+                     {"mean_overlap", v.coverage.meanOverlap}};
+    j["gi_memory_mib"] = v.giMemoryMiB;
+    j["volumes_kept"] = v.volumesKept;
+    j["round_medians_ms"] = v.roundMedians;
+    j["frame_samples_ms"] = v.frameSamples;
+    return j;
+}
+
+nlohmann::json deltaJson(const DeltaResult& d, const SessionResult& s) {
+    nlohmann::json j{{"kind", deltaKindName(d.planned.kind)},
+                     {"off", s.variants[size_t(d.planned.off)].variant.id},
+                     {"on", s.variants[size_t(d.planned.on)].variant.id},
+                     {"measured", d.measured}};
+    if (!d.measured) return j;
+    j["delta_ms"] = shiftJson(d.ms);
+    j["delta_flip_mean"] = d.flip;
+    j["delta_psnr_db"] = finiteOrNull(d.psnr);
+    j["delta_ssim"] = d.ssim;
+    j["delta_relative_mse_gi"] = d.relativeMseGi;
+    return j;
+}
+
+nlohmann::json profileJson(const SessionResult& s) {
+    const VariantResult& p = s.profile();
+    nlohmann::json j{{"name", s.session.profile.name},
+                     {"profile", s.session.profile.toJson()},
+                     {"width", s.session.width},
+                     {"height", s.session.height},
+                     {"variant", p.variant.id},
+                     {"reference_variant", s.reference().variant.id},
+                     {"status", p.status}};
+    if (!p.ok()) j["error"] = p.error;
+    if (p.ok()) {
+        j["frame_ms"] = summaryJson(p.frameMs);
+        j["coverage"] = variantJson(p, s.session)["coverage"];
+        j["gi_memory_mib"] = p.giMemoryMiB;
+        j["budget"] = {{"frame_ms", s.session.profile.frameBudgetMs},
+                       {"frame_within", p.frameMs.median <= s.session.profile.frameBudgetMs},
+                       {"gi_memory_mib", s.session.profile.giMemoryBudgetMiB},
+                       {"gi_memory_within", p.giMemoryMiB <= s.session.profile.giMemoryBudgetMiB}};
+        j["accuracy"] = accuracyJson(p.accuracy);
+    }
+    const DeltaResult* vs = s.vsReference();
+    j["vs_reference"] = vs ? deltaJson(*vs, s) : nlohmann::json(nullptr); // null: P is reference
+    nlohmann::json ablation = nlohmann::json::array();
+    for (const DeltaResult& d : s.deltas) {
+        if (d.planned.kind != DeltaKind::InProfile) continue;
+        nlohmann::json a{{"switch", d.planned.switchKey},
+                         {"reference_value", d.planned.offValue},
+                         {"profile_value", d.planned.onValue},
+                         {"in_profile", deltaJson(d, s)}};
+        for (const DeltaResult& o : s.deltas)
+            if (o.planned.kind == DeltaKind::OnReference &&
+                o.planned.switchKey == d.planned.switchKey)
+                a["on_reference"] = deltaJson(o, s);
+        ablation.push_back(a);
+    }
+    j["ablation"] = ablation;
+    return j;
+}
+
+} // namespace
+
+nlohmann::json benchJson(const BenchResult& r) {
+    nlohmann::json j{{"schema", "probebench.bench/1"},
+                     {"context", r.context},
+                     {"scene", r.scene},
+                     {"view", r.view},
+                     {"settings",
+                      {{"frames", r.settings.frames},
+                       {"rounds", r.settings.rounds},
+                       {"warmup", r.settings.warmup},
+                       {"ablate", r.settings.ablate},
+                       {"timing_method", r.settings.timingMethod},
+                       {"timing_reason", r.settings.timingReason},
+                       {"flip_pixels_per_degree", r.settings.pixelsPerDegree}}},
+                     {"heatmap_scale", r.heatmapScale},
+                     {"seconds", r.seconds}};
+    nlohmann::json profiles = nlohmann::json::array(), variants = nlohmann::json::array();
+    for (const SessionResult& s : r.sessions) {
+        profiles.push_back(profileJson(s));
+        for (const VariantResult& v : s.variants)
+            variants.push_back(variantJson(v, s.session));
+    }
+    j["profiles"] = profiles;
+    j["variants"] = variants;
+    return j;
+}
+
+} // namespace pb::bench

@@ -1,0 +1,15 @@
+#pragma once
+// Where a benchmark ran, recorded in every result: platform, GL strings, driver version, CPU,
+// thread count (LP_NUM_THREADS), commit, date, load average. Needs a current GL context.
+#include "gl/Capabilities.h"
+#include "platforms/Platform.h"
+
+#include <nlohmann/json.hpp>
+
+namespace pb::bench {
+
+nlohmann::json benchContext(const platform::Platform& platform, const gl::GlCaps& caps);
+// "0.52 0.61 0.70" from /proc/loadavg ("unknown" elsewhere).
+std::string loadAverage();
+
+} // namespace pb::bench

@@ -1,0 +1,64 @@
+#include "ProbeCache.h"
+
+#include "core/Error.h"
+#include "probes/AutoPlacement.h"
+#include "probes/Baker.h"
+#include "probes/ProbeFile.h"
+#include "probes/Scenario.h"
+#include "probes/VolumeFile.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+
+namespace pb::bench {
+
+namespace fs = std::filesystem;
+
+std::string defaultProbeCacheDir() {
+    if (const char* x = std::getenv("XDG_CACHE_HOME"); x && *x)
+        return (fs::path(x) / "probebench").string();
+    if (const char* h = std::getenv("HOME"); h && *h)
+        return (fs::path(h) / ".cache" / "probebench").string();
+    return ".probebench-cache";
+}
+
+probes::ProbeSet benchProbes(const scene::Scene& s, const std::string& volumes,
+                             const std::string& cacheDir, std::string* pathOut,
+                             const std::function<void(const std::string&)>& progress) {
+    probes::BakeRequest req;
+    std::vector<probes::ScenarioSpec> fileScenarios;
+    probes::AutoPlacementRequest place;
+    if (probes::parseAutoMode(volumes, place.mode)) {
+        req.volumes = probes::placeAutoVolumes(s, place).volumes;
+    } else {
+        probes::VolumeFile vf = probes::loadVolumeFile(volumes);
+        req.volumes = vf.volumes;
+        fileScenarios = vf.scenarios;
+    }
+    req.scenarios = probes::resolveScenarios({"day"}, fileScenarios, s);
+    req.settings.raysPerProbe = 128;
+    req.settings.bounces = 2;
+    req.settings.format = probes::StorageFormat::Rgba16f;
+    const std::uint64_t hash = probes::bakeInputHash(s, req);
+    char name[64];
+    std::snprintf(name, sizeof name, "-%016llx.pbp", static_cast<unsigned long long>(hash));
+    std::error_code ec;
+    fs::create_directories(cacheDir, ec);
+    if (ec) throw fileError(cacheDir, "cannot create the probe cache folder: " + ec.message());
+    const std::string path = (fs::path(cacheDir) / (s.name + name)).string();
+    if (pathOut) *pathOut = path;
+    if (auto cached = probes::readCachedProbeFile(path, hash)) return std::move(*cached);
+    long long count = 0;
+    for (const auto& v : req.volumes)
+        count += v.probeCount();
+    if (progress)
+        progress("baking " + std::to_string(count) + " probes in " +
+                 std::to_string(req.volumes.size()) + " volume(s) for '" + s.name +
+                 "' (cached as " + path + ")");
+    probes::ProbeSet set = probes::bakeProbes(s, req);
+    probes::writeProbeFile(path, set);
+    return set;
+}
+
+} // namespace pb::bench

@@ -1,0 +1,205 @@
+#include "SessionRunner.h"
+
+#include "AccuracyCapture.h"
+#include "FetchFloorPass.h"
+#include "core/Error.h"
+#include "frame/FrameRenderer.h"
+
+#include <algorithm>
+#include <map>
+#include <memory>
+
+namespace pb::bench {
+
+namespace {
+
+struct LiveVariant {
+    std::unique_ptr<render::FrameRenderer> renderer;
+    std::unique_ptr<FetchFloorPass> floor;
+    std::vector<std::string> order;                   // section names, first seen first
+    std::map<std::string, std::vector<double>> times; // per section, per frame
+    std::vector<double> floorTimes;
+};
+
+std::string glErrorText(gl::DebugOutput* debug, std::uint64_t mark) {
+    if (!debug) return "";
+    auto errors = debug->errorsSince(mark);
+    if (errors.empty()) return "";
+    return "the GL reported " + std::to_string(errors.size()) + " error(s): " + errors.front().text;
+}
+
+void fail(VariantResult& v, LiveVariant& live, const std::string& why) {
+    v.status = "unsupported";
+    v.error = why;
+    live.floor.reset();
+    live.renderer.reset();
+}
+
+// One measured frame (re-taken when timer queries report a disjoint event).
+void timedFrame(LiveVariant& live, VariantResult& v, SectionTimer& timer,
+                const render::RenderView& rv) {
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        timer.beginFrame();
+        live.renderer->render(rv, &timer);
+        if (!timer.endFrame()) continue;
+        // A section missing from this frame counts 0 (keeps every series one value per frame).
+        for (const auto& [name, ms] : timer.sections())
+            if (!live.times.count(name)) {
+                live.order.push_back(name);
+                live.times[name].assign(v.frameSamples.size(), 0.0);
+            }
+        for (auto& [name, series] : live.times) {
+            double ms = 0;
+            for (const auto& [n, t] : timer.sections())
+                if (n == name) ms = t;
+            series.push_back(ms);
+        }
+        v.frameSamples.push_back(timer.frameMs());
+        return;
+    }
+    throw Error("timer queries reported disjoint GPU time 3 times in a row; use --timing cpu");
+}
+
+void timedFloor(LiveVariant& live, SectionTimer& timer, const render::RenderView& rv) {
+    for (int attempt = 0; attempt < 3; ++attempt) {
+        timer.beginFrame();
+        timer.begin("gi-fetch-floor");
+        live.floor->execute(*live.renderer, rv);
+        timer.end("gi-fetch-floor");
+        if (!timer.endFrame()) continue;
+        live.floorTimes.push_back(timer.sections().front().second);
+        return;
+    }
+}
+
+void summarizeVariant(VariantResult& v, const LiveVariant& live) {
+    if (!v.ok() || v.frameSamples.empty()) return;
+    v.frameMs = stats::summarize(v.frameSamples);
+    for (const std::string& name : live.order) {
+        SectionTiming t{name, live.times.at(name), {}};
+        t.ms = stats::summarize(t.samples);
+        v.sections.push_back(std::move(t));
+    }
+    if (!live.floorTimes.empty()) {
+        SectionTiming f{"gi-fetch-floor", live.floorTimes, stats::summarize(live.floorTimes)};
+        v.fetchFloor = f;
+    }
+}
+
+void measureDeltas(SessionResult& s) {
+    for (const PlannedDelta& p : s.session.deltas) {
+        DeltaResult d;
+        d.planned = p;
+        const VariantResult &off = s.variants[size_t(p.off)], &on = s.variants[size_t(p.on)];
+        if (off.ok() && on.ok() && !off.roundMedians.empty() &&
+            off.roundMedians.size() == on.roundMedians.size()) {
+            d.measured = true;
+            d.ms = stats::pairedShift(off.roundMedians, on.roundMedians);
+            if (off.accuracy.measured && on.accuracy.measured) {
+                d.flip = on.accuracy.flipMean - off.accuracy.flipMean;
+                d.psnr = on.accuracy.psnr - off.accuracy.psnr; // NaN/inf when one is identical
+                d.ssim = on.accuracy.ssim - off.accuracy.ssim;
+                d.relativeMseGi = on.accuracy.relativeMseGi - off.accuracy.relativeMseGi;
+            }
+        }
+        s.deltas.push_back(d);
+    }
+}
+
+SessionResult runSession(const Session& session, const RunnerInputs& in, const RunnerOptions& o,
+                         const std::string& tag, image::ImageF* flipMap) {
+    auto say = [&](const std::string& line) {
+        if (o.progress) o.progress(tag + " " + line);
+    };
+    SessionResult out;
+    out.session = session;
+    const size_t n = session.variants.size();
+    std::vector<LiveVariant> live(n);
+    out.variants.resize(n);
+    const render::RenderView rv =
+        render::makeRenderView(in.view, in.scene->worldBounds(), session.width, session.height);
+    say("building " + std::to_string(n) + " variant(s), " + std::to_string(o.warmup) +
+        " warm-up frame(s) each");
+    for (size_t i = 0; i < n; ++i) {
+        VariantResult& v = out.variants[i];
+        v.variant = session.variants[i];
+        const std::uint64_t mark = in.debug ? in.debug->mark() : 0;
+        try {
+            render::GiOptions gi{in.probes, 0, v.variant.switches};
+            live[i].renderer = std::make_unique<render::FrameRenderer>(*in.scene, in.settings, gi);
+            const bool main =
+                v.variant.role == VariantRole::Profile || v.variant.role == VariantRole::Reference;
+            if (o.fetchFloor && main)
+                live[i].floor = std::make_unique<FetchFloorPass>(v.variant.switches);
+            for (int w = 0; w < o.warmup; ++w) {
+                live[i].renderer->render(rv);
+                if (live[i].floor) live[i].floor->execute(*live[i].renderer, rv);
+            }
+            glFinish();
+        } catch (const Error& e) {
+            fail(v, live[i], e.what());
+            say("variant '" + v.variant.id + "' not run: " + e.what());
+            continue;
+        }
+        if (std::string why = glErrorText(in.debug, mark); !why.empty()) fail(v, live[i], why);
+    }
+    SectionTimer timer(o.timing, o.es);
+    for (int r = 0; r < o.rounds; ++r) {
+        say("round " + std::to_string(r + 1) + "/" + std::to_string(o.rounds));
+        for (size_t k = 0; k < n; ++k) {
+            const size_t i = (k + size_t(r)) % n;
+            VariantResult& v = out.variants[i];
+            if (!v.ok()) continue;
+            const std::uint64_t mark = in.debug ? in.debug->mark() : 0;
+            const size_t first = v.frameSamples.size();
+            for (int f = 0; f < o.frames; ++f)
+                timedFrame(live[i], v, timer, rv);
+            std::vector<double> round(v.frameSamples.begin() + long(first), v.frameSamples.end());
+            v.roundMedians.push_back(stats::summarize(round).median);
+            if (live[i].floor)
+                for (int f = 0; f < o.frames; ++f)
+                    timedFloor(live[i], timer, rv);
+            if (std::string why = glErrorText(in.debug, mark); !why.empty()) fail(v, live[i], why);
+        }
+    }
+    for (size_t i = 0; i < n; ++i)
+        summarizeVariant(out.variants[i], live[i]);
+
+    say("accuracy against " + session.variants[size_t(session.referenceVariant)].id);
+    std::vector<render::FrameRenderer*> renderers(n, nullptr);
+    for (size_t i = 0; i < n; ++i)
+        renderers[i] = live[i].renderer.get();
+    AccuracyInputs ai{in.scene,
+                      in.probes,
+                      in.view,
+                      in.settings,
+                      session.width,
+                      session.height,
+                      o.warmup + o.frames * o.rounds,
+                      o.pixelsPerDegree};
+    captureAccuracy(out, renderers, ai, flipMap);
+    measureDeltas(out);
+    return out;
+}
+
+} // namespace
+
+std::vector<SessionResult> runBenchPlan(const BenchPlan& plan, const RunnerInputs& in,
+                                        const RunnerOptions& o,
+                                        std::vector<image::ImageF>* flipMaps) {
+    if (o.frames < 1 || o.rounds < 1 || o.warmup < 1)
+        throw Error("--frames, --rounds and --warmup must be at least 1 (the first frame "
+                    "compiles shaders and is never counted)");
+    std::vector<SessionResult> out;
+    if (flipMaps) flipMaps->assign(plan.sessions.size(), {});
+    for (size_t s = 0; s < plan.sessions.size(); ++s) {
+        const Session& session = plan.sessions[s];
+        std::string tag = "[" + std::to_string(s + 1) + "/" + std::to_string(plan.sessions.size()) +
+                          "] " + session.profile.name + " " + std::to_string(session.width) + "x" +
+                          std::to_string(session.height) + ":";
+        out.push_back(runSession(session, in, o, tag, flipMaps ? &(*flipMaps)[s] : nullptr));
+    }
+    return out;
+}
+
+} // namespace pb::bench

@@ -1,0 +1,46 @@
+#pragma once
+// Runs a BenchPlan on the current GL context: per session, every variant's renderer is built
+// (a variant the renderer rejects - a switch value not implemented, a format the driver lacks
+// - is recorded as unsupported, not fatal), warmed up (the first frames compile shaders and
+// are never counted), then timed in interleaved rounds: round r renders `frames` frames of
+// every variant, the order rotated by r, so every paired delta sees the same load. The GI
+// fetch floor follows each profile/reference variant's frames. Accuracy, coverage and GI memory
+// are taken after the timing (AccuracyCapture.h).
+#include "SectionTimer.h"
+#include "bench/report/AblationPlan.h"
+#include "bench/report/BenchResult.h"
+#include "gl/DebugOutput.h"
+#include "image/Image.h"
+#include "passes/FrameContext.h"
+#include "probes/ProbeSet.h"
+#include "scene/Scene.h"
+
+#include <functional>
+#include <string>
+
+namespace pb::bench {
+
+struct RunnerOptions {
+    int frames = 3, rounds = 7, warmup = 2;
+    TimingChoice timing;
+    bool es = true; // GL ES context (timer-query entry points)
+    bool fetchFloor = true;
+    double pixelsPerDegree = 67.0;
+    std::function<void(const std::string&)> progress; // one line each; may be empty
+};
+
+struct RunnerInputs {
+    const scene::Scene* scene = nullptr;
+    const probes::ProbeSet* probes = nullptr;
+    scene::View view;
+    render::FrameSettings settings;
+    gl::DebugOutput* debug = nullptr; // GL errors fail the variant that caused them
+};
+
+// `flipMaps` (optional) receives, parallel to the sessions, the profile variant's per-pixel
+// FLIP map against the reference (empty when not measured), for heat maps.
+std::vector<SessionResult> runBenchPlan(const BenchPlan& plan, const RunnerInputs& in,
+                                        const RunnerOptions& o,
+                                        std::vector<image::ImageF>* flipMaps = nullptr);
+
+} // namespace pb::bench

@@ -1,0 +1,34 @@
+#pragma once
+// A platform profile: the GI switches one class of hardware runs with (the switch table's
+// Profile), plus what the benchmark needs to judge it - output resolution, frame budget, GI
+// memory budget and the cost model's texture-cache preset. Loaded from profiles/*.toml
+// (ProfileLoader.h); GL-free.
+#include "profile/Profile.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <vector>
+
+namespace pb::profile {
+
+struct PlatformProfile {
+    std::string name;                  // file stem ("handheld")
+    std::string file;                  // the TOML it came from ("" when built in code)
+    std::string description;           // one line for listings
+    std::vector<std::string> inherits; // parent chain, nearest first ("console-base", ...)
+    Profile switches;                  // every GI switch (table defaults where unset)
+    int width = 1280, height = 720;    // output resolution
+    double frameBudgetMs = 16.7;       // whole frame on the target hardware
+    double giMemoryBudgetMiB = 8.0;    // probe data resident on the GPU (one scenario)
+    std::string cachePreset;           // costmodel::cachePresetFor name
+
+    // {name, file, description, inherits, output, budget, costmodel, switches}
+    nlohmann::json toJson() const;
+    // "1280x720, 33.3 ms, 4 MiB, cache handheld; gi: resolution=half, ..." (switches that
+    // differ from the table defaults).
+    std::string summaryLine() const;
+    bool sameSettings(const PlatformProfile& o) const; // everything but name/file/description
+};
+
+} // namespace pb::profile

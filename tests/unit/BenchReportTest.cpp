@@ -1,0 +1,129 @@
+// The bench's outputs from a hand-made result (no GL): JSON fields and nulls, the Markdown
+// table, a self-contained HTML report, and the Pareto front.
+#include "bench/report/HtmlReport.h"
+#include "bench/report/MarkdownSummary.h"
+#include "bench/report/ResultJson.h"
+#include "bench/report/SvgCharts.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+
+namespace pb::test {
+namespace {
+
+using namespace pb::bench;
+
+VariantResult variant(const Variant& v, double frameMs, double flip, double psnr) {
+    VariantResult r;
+    r.variant = v;
+    for (int i = 0; i < 6; ++i) {
+        r.frameSamples.push_back(frameMs + 0.1 * i);
+        r.roundMedians.push_back(frameMs + 0.1 * i);
+    }
+    r.frameMs = stats::summarize(r.frameSamples);
+    for (const char* pass : {"gbuffer", "gi-apply", "direct"}) {
+        SectionTiming t{pass, std::vector<double>(6, frameMs / 3), {}};
+        t.ms = stats::summarize(t.samples);
+        r.sections.push_back(t);
+    }
+    r.accuracy = {true, flip, 2 * flip, psnr, 1.0 - flip, flip * flip, ""};
+    r.coverage = {1.0, 1, 1.0};
+    r.giMemoryMiB = 2.5;
+    r.volumesKept = 1;
+    return r;
+}
+
+BenchResult result() {
+    profile::PlatformProfile ref, low;
+    ref.name = "reference";
+    low.name = "low";
+    low.switches.set("gi.resolution", "half");
+    BenchPlan plan = makeBenchPlan({ref, low}, ref, {true, 64, 36});
+    BenchResult r;
+    r.context = {{"gl_renderer", "llvmpipe"}, {"software_renderer", true}, {"date", "today"}};
+    r.scene = {{"name", "cornell"}};
+    r.view = {{"source", "worst-case"}, {"camera", "0,1,2,0,1,0,60"}};
+    r.settings = {1, 6, 1, true, "cpu-finish", "test", 67};
+    for (const Session& s : plan.sessions) {
+        SessionResult sr;
+        sr.session = s;
+        for (const Variant& v : s.variants) {
+            bool isRef = v.switches == ref.switches;
+            sr.variants.push_back(
+                variant(v, isRef ? 10.0 : 4.0, isRef ? 0.0 : 0.02, isRef ? INFINITY : 30.0));
+        }
+        for (const PlannedDelta& p : s.deltas) {
+            DeltaResult d;
+            d.planned = p;
+            d.measured = true;
+            d.ms = stats::pairedShift(sr.variants[size_t(p.off)].roundMedians,
+                                      sr.variants[size_t(p.on)].roundMedians);
+            d.flip = 0.02;
+            sr.deltas.push_back(d);
+        }
+        r.sessions.push_back(sr);
+    }
+    return r;
+}
+
+TEST(BenchReport, JsonHasEveryProfileWithTimesAccuracyAndAblation) {
+    nlohmann::json j = benchJson(result());
+    EXPECT_EQ(j["schema"], "probebench.bench/1");
+    ASSERT_EQ(j["profiles"].size(), 2u);
+    const auto& ref = j["profiles"][0];
+    EXPECT_TRUE(ref["vs_reference"].is_null()) << "the reference is not compared to itself";
+    EXPECT_TRUE(ref["accuracy"]["psnr_db"].is_null()) << "+inf is written as null";
+    const auto& low = j["profiles"][1];
+    EXPECT_EQ(low["status"], "ok");
+    EXPECT_NEAR(low["vs_reference"]["delta_ms"]["estimate"].get<double>(), -6.0, 1e-9);
+    EXPECT_FALSE(low.contains("passes")) << "passes live in the variants";
+    ASSERT_EQ(low["ablation"].size(), 1u);
+    EXPECT_EQ(low["ablation"][0]["switch"], "gi.resolution");
+    EXPECT_EQ(low["ablation"][0]["reference_value"], "full");
+    EXPECT_EQ(low["ablation"][0]["profile_value"], "half");
+    EXPECT_TRUE(low["ablation"][0].contains("on_reference"));
+    EXPECT_EQ(low["coverage"]["fraction"], 1.0);
+    for (const auto& v : j["variants"]) {
+        EXPECT_EQ(v["passes"].size(), 3u);
+        EXPECT_EQ(v["frame_samples_ms"].size(), 6u);
+        EXPECT_TRUE(v.contains("coverage"));
+    }
+}
+
+TEST(BenchReport, MarkdownAndHtmlShowEveryProfileAndNeedNoNetwork) {
+    BenchResult r = result();
+    std::string md = markdownSummary(r);
+    EXPECT_NE(md.find("| reference | 64x36 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| low | 64x36 |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| gi.resolution | full → half |"), std::string::npos) << md;
+    EXPECT_NE(md.find("Software rasterizer"), std::string::npos);
+
+    std::string html = htmlReport(r);
+    EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+    EXPECT_NE(html.find("</html>"), std::string::npos);
+    EXPECT_NE(html.find("aria-label=\"Pareto chart\""), std::string::npos);
+    EXPECT_NE(html.find("aria-label=\"per-pass times\""), std::string::npos);
+    // Nothing is fetched: the only URL is the SVG namespace; no script, no external sheet.
+    std::string stripped =
+        std::regex_replace(html, std::regex("xmlns=\"http://www.w3.org/2000/svg\""), "");
+    EXPECT_EQ(stripped.find("http"), std::string::npos);
+    EXPECT_EQ(html.find("<script"), std::string::npos);
+    EXPECT_EQ(html.find("<link"), std::string::npos);
+}
+
+TEST(BenchReport, ParetoFrontKeepsPointsNothingBeatsOnBothAxes) {
+    std::vector<ParetoPoint> pts = {{"ref", 0, 0, 0, 0.0, true, ""},
+                                    {"fast-bad", -10, -11, -9, 0.05, true, ""},
+                                    {"dominated", -5, -6, -4, 0.06, true, ""},
+                                    {"mid", -6, -7, -5, 0.01, true, ""},
+                                    {"slow-bad", 2, 1, 3, 0.02, false, "1"}};
+    std::vector<size_t> front = paretoFront(pts);
+    EXPECT_EQ(front, (std::vector<size_t>{1, 3, 0}));
+    std::string svg = paretoSvg(pts);
+    EXPECT_NE(svg.find("<polyline"), std::string::npos);
+}
+
+} // namespace
+} // namespace pb::test
