@@ -12,12 +12,14 @@ uniform highp sampler2D u_gbuffer_depth;
 uniform mat4 u_relFromClip;
 uniform vec2 u_gbufferInvSize;
 uniform int u_giDivisor;   // GBuffer pixels per target texel, per axis
+uniform ivec2 u_giJitter;  // the GBuffer pixel of the texel's footprint sampled this frame
 uniform vec3 u_ambientUp;  // GI_TARGET_R11G11B10F only
 uniform vec3 u_ambientDown;
 
 void main() {
-    // The GBuffer pixel nearest the target texel's centre (top-left of the middle four).
-    ivec2 px = ivec2(gl_FragCoord.xy) * u_giDivisor + (u_giDivisor - 1) / 2;
+    // The GBuffer pixel this frame samples in the texel's footprint: (divisor - 1) / 2 (nearest
+    // the centre) unless gi.upsample=temporal jitters it (GiUpsamplePass, common_upsample.glsl).
+    ivec2 px = ivec2(gl_FragCoord.xy) * u_giDivisor + u_giJitter;
     float depth = texelFetch(u_gbuffer_depth, px, 0).r;
     if (depth >= 1.0) discard; // sky
     vec2 uv = (vec2(px) + 0.5) * u_gbufferInvSize;

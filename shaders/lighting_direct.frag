@@ -30,14 +30,11 @@ uniform vec4 u_lightCone[MAX_LIGHTS];      // x: cos outer, y: cos inner
 const float PI = 3.14159265358979;
 
 #ifdef GI_ENABLED
-uniform highp sampler2D u_giIrradiance; // gi_ddgi_apply.frag's target
+uniform highp sampler2D u_giIrradiance; // gi_ddgi_apply.frag's layout, full resolution
 vec3 indirectIrradiance(vec3 n, ivec2 px) {
     vec3 ambient = mix(u_ambientDown, u_ambientUp, n.y * 0.5 + 0.5);
-#ifdef GI_RESOLUTION_FULL
+    // Full resolution: the apply pass's target, or at half/quarter the upsample pass's output.
     vec4 gi = texelFetch(u_giIrradiance, px, 0);
-#else
-    vec4 gi = texture(u_giIrradiance, v_uv); // bilinear upsample (better modes: next issue)
-#endif
 #ifdef GI_TARGET_R11G11B10F
     // No alpha: the apply pass blended the ambient in; all zero = no volume drew here.
     return gi.rgb == vec3(0.0) ? ambient : gi.rgb;

@@ -7,6 +7,7 @@
 #include "passes/DirectLightingPass.h"
 #include "passes/GBufferPass.h"
 #include "passes/GiApplyPass.h"
+#include "passes/GiUpsamplePass.h"
 #include "passes/ShadowPass.h"
 #include "profile/VolumeLod.h"
 
@@ -32,6 +33,11 @@ FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& set
         probes_ = std::make_unique<GpuProbes>(*gi.probes, gi.scenario,
                                               profile::parseVolumeLod(gi.profile.gi.volumeLod));
         passes_.push_back(std::make_unique<GiApplyPass>(*probes_, gi.profile));
+        if (gi.profile.gi.resolution != profile::GiResolution::Full) {
+            auto upsample = std::make_unique<GiUpsamplePass>(gi.profile);
+            upsample_ = upsample.get();
+            passes_.push_back(std::move(upsample));
+        }
     }
     passes_.push_back(std::make_unique<DirectLightingPass>());
     passes_.push_back(std::make_unique<CompositePass>());
@@ -45,12 +51,17 @@ void FrameRenderer::render(const RenderView& view, FrameTimer* timer) {
         targets_ = std::make_unique<FrameTargets>(view.width, view.height);
     lastView_ = view;
     FrameContext ctx{gpu_, view, settings_, programs_, *targets_, quirks_, {}, {}, timer};
+    if (upsample_) upsample_->beginFrame(view, ctx);
     for (auto& pass : passes_) {
         TimedSection section(timer, pass->name());
         pass->execute(ctx);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glUseProgram(0);
+}
+
+void FrameRenderer::resetGiHistory() {
+    if (upsample_) upsample_->resetHistory();
 }
 
 image::Image8 FrameRenderer::readOutput() const {

@@ -67,6 +67,7 @@ void GiApplyPass::execute(FrameContext& frame) {
     prog.set("u_relFromClip", frame.view.relFromClip);
     prog.set("u_gbufferInvSize", glm::vec2(1.0f / float(gb.width()), 1.0f / float(gb.height())));
     prog.set("u_giDivisor", div);
+    prog.set("u_giJitter", frame.giJitter); // gi.upsample: where in the footprint to sample
     prog.set("u_ambientUp", frame.settings.ambientUp);
     prog.set("u_ambientDown", frame.settings.ambientDown);
     for (int v : probes_.drawOrder()) {
