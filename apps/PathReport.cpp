@@ -11,7 +11,7 @@ namespace pb::app {
 
 namespace {
 constexpr double kIdenticalPsnr = 100.0; // dB counted for identical frames in summaries
-constexpr double kConvergedWithinDb = 0.5;
+constexpr double kConvergedRelative = 0.1, kConvergedAbsolute = 1e-4;
 
 double cappedPsnr(double psnr) {
     return std::min(psnr, kIdenticalPsnr);
@@ -23,14 +23,19 @@ nlohmann::json finiteOrNull(double v) {
 
 struct Totals {
     double psnrMean = 0, psnrMin = 1e300, flipMean = 0, maeMean = 0;
+    double giRelMse = 0, giRelMae = 0;
     std::int64_t disoccluded = 0;
-    double disoccludedMae = 0; // pixel-weighted over all frames
+    double disoccludedMae = 0;      // pixel-weighted over all frames
+    double disoccludedGiRelMae = 0; // pixel-weighted over all frames
 };
 
 Totals totals(const std::vector<PathFrameError>& frames) {
     Totals t;
-    double disoccludedSum = 0;
+    double disoccludedSum = 0, disoccludedGiSum = 0;
     for (const auto& f : frames) {
+        t.giRelMse += f.giRelMse;
+        t.giRelMae += f.giRelMae;
+        disoccludedGiSum += f.disoccludedGiRelMae * double(f.disoccludedPixels);
         t.psnrMean += cappedPsnr(f.psnr);
         t.psnrMin = std::min(t.psnrMin, cappedPsnr(f.psnr));
         t.flipMean += f.flipMean;
@@ -42,14 +47,36 @@ Totals totals(const std::vector<PathFrameError>& frames) {
     t.psnrMean /= n;
     t.flipMean /= n;
     t.maeMean /= n;
-    if (t.disoccluded > 0) t.disoccludedMae = disoccludedSum / double(t.disoccluded);
+    t.giRelMse /= n;
+    t.giRelMae /= n;
+    if (t.disoccluded > 0) {
+        t.disoccludedMae = disoccludedSum / double(t.disoccluded);
+        t.disoccludedGiRelMae = disoccludedGiSum / double(t.disoccluded);
+    }
     return t;
 }
 } // namespace
 
 PathFrameError measurePathFrame(const image::Image8& test, const image::Image8& reference,
+                                const image::ImageF& testGi, const image::ImageF& referenceGi,
                                 const std::vector<std::uint8_t>& disocclusion) {
     PathFrameError e;
+    e.giRelMse = metrics::relativeMse(testGi, referenceGi);
+    double giDiff = 0, giRef = 0, giDiffMasked = 0, giRefMasked = 0;
+    for (size_t p = 0; p < size_t(testGi.width) * size_t(testGi.height); ++p)
+        for (size_t c = 0; c < 3; ++c) {
+            const size_t i = p * size_t(testGi.channels) + c;
+            const double d = std::abs(double(testGi.pixels[i]) - referenceGi.pixels[i]);
+            const double r = std::abs(double(referenceGi.pixels[i]));
+            giDiff += d;
+            giRef += r;
+            if (!disocclusion.empty() && disocclusion[p]) {
+                giDiffMasked += d;
+                giRefMasked += r;
+            }
+        }
+    e.giRelMae = giRef > 0 ? giDiff / giRef : 0.0;
+    e.disoccludedGiRelMae = giRefMasked > 0 ? giDiffMasked / giRefMasked : 0.0;
     e.psnr = metrics::psnr(test, reference);
     const metrics::FlipResult flip = metrics::ldrFlip(test, reference);
     e.flipMean = flip.mean;
@@ -81,9 +108,11 @@ std::vector<PathConvergence> framesToConverge(const std::vector<PathFrameError>&
         PathConvergence c;
         c.cutFrame = frames[start].frame;
         if (end - start >= 2) {
-            const double target = cappedPsnr(frames[end - 1].psnr) - kConvergedWithinDb;
+            const double last = frames[end - 1].giRelMae;
+            const double target =
+                std::max(last * (1.0 + kConvergedRelative), last + kConvergedAbsolute);
             size_t k = end - 1;
-            while (k > start && cappedPsnr(frames[k - 1].psnr) >= target)
+            while (k > start && frames[k - 1].giRelMae <= target)
                 --k;
             c.frames = int(k - start);
         }
@@ -94,15 +123,16 @@ std::vector<PathConvergence> framesToConverge(const std::vector<PathFrameError>&
 
 std::string pathErrorsCsv(const std::vector<PathFrameError>& frames) {
     std::ostringstream out;
-    out << "frame,time_s,cut,history_used,psnr_db,flip_mean,flip_max,mae,disoccluded_pixels,"
-           "disoccluded_mae\n";
+    out << "frame,time_s,cut,history_used,psnr_db,flip_mean,flip_max,mae,gi_rel_mse,gi_rel_mae,"
+           "disoccluded_pixels,disoccluded_mae,disoccluded_gi_rel_mae\n";
     char line[256];
     for (const auto& f : frames) {
-        std::snprintf(line, sizeof line, "%d,%.4f,%d,%d,%s,%.6f,%.6f,%.4f,%lld,%.4f\n", f.frame,
-                      f.time, f.cut ? 1 : 0, f.historyUsed ? 1 : 0,
-                      std::isfinite(f.psnr) ? std::to_string(f.psnr).c_str() : "inf", f.flipMean,
-                      f.flipMax, f.mae, static_cast<long long>(f.disoccludedPixels),
-                      f.disoccludedMae);
+        std::snprintf(
+            line, sizeof line, "%d,%.4f,%d,%d,%s,%.6f,%.6f,%.4f,%.4g,%.4g,%lld,%.4f,%.4g\n",
+            f.frame, f.time, f.cut ? 1 : 0, f.historyUsed ? 1 : 0,
+            std::isfinite(f.psnr) ? std::to_string(f.psnr).c_str() : "inf", f.flipMean, f.flipMax,
+            f.mae, f.giRelMse, f.giRelMae, static_cast<long long>(f.disoccludedPixels),
+            f.disoccludedMae, f.disoccludedGiRelMae);
         out << line;
     }
     return out.str();
@@ -119,8 +149,11 @@ nlohmann::json pathErrorsJson(const std::vector<PathFrameError>& frames, nlohman
                         {"flip_mean", f.flipMean},
                         {"flip_max", f.flipMax},
                         {"mae", f.mae},
+                        {"gi_rel_mse", f.giRelMse},
+                        {"gi_rel_mae", f.giRelMae},
                         {"disoccluded_pixels", f.disoccludedPixels},
-                        {"disoccluded_mae", f.disoccludedMae}});
+                        {"disoccluded_mae", f.disoccludedMae},
+                        {"disoccluded_gi_rel_mae", f.disoccludedGiRelMae}});
     const Totals t = totals(frames);
     nlohmann::json convergence = nlohmann::json::array();
     for (const auto& c : framesToConverge(frames))
@@ -133,8 +166,11 @@ nlohmann::json pathErrorsJson(const std::vector<PathFrameError>& frames, nlohman
                         {"identical_frames_count_as_db", kIdenticalPsnr},
                         {"flip_mean", t.flipMean},
                         {"mae_mean", t.maeMean},
+                        {"gi_rel_mse_mean", t.giRelMse},
+                        {"gi_rel_mae_mean", t.giRelMae},
                         {"disoccluded_pixels", t.disoccluded},
                         {"disoccluded_mae", t.disoccludedMae},
+                        {"disoccluded_gi_rel_mae", t.disoccludedGiRelMae},
                         {"convergence", convergence}};
     return about;
 }
@@ -145,11 +181,13 @@ std::string pathSummaryText(const std::vector<PathFrameError>& frames) {
     std::string out;
     std::snprintf(line, sizeof line,
                   "error vs full-resolution GI over %zu frames: PSNR mean %.2f dB (min %.2f; "
-                  "identical = %.0f), FLIP mean %.4f, MAE %.3f\n",
-                  frames.size(), t.psnrMean, t.psnrMin, kIdenticalPsnr, t.flipMean, t.maeMean);
+                  "identical = %.0f), FLIP mean %.4f, MAE %.3f; GI rel. MAE %.4f, rel. MSE %.3g\n",
+                  frames.size(), t.psnrMean, t.psnrMin, kIdenticalPsnr, t.flipMean, t.maeMean,
+                  t.giRelMae, t.giRelMse);
     out += line;
-    std::snprintf(line, sizeof line, "disocclusions: %lld pixels, MAE there %.3f\n",
-                  static_cast<long long>(t.disoccluded), t.disoccludedMae);
+    std::snprintf(line, sizeof line,
+                  "disocclusions: %lld pixels, MAE there %.3f, GI rel. MAE there %.4f\n",
+                  static_cast<long long>(t.disoccluded), t.disoccludedMae, t.disoccludedGiRelMae);
     out += line;
     for (const auto& c : framesToConverge(frames)) {
         if (c.frames < 0)

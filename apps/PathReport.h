@@ -21,10 +21,16 @@ struct PathFrameError {
     double mae = 0;                     // mean |test - reference| over RGB, 8-bit units
     std::int64_t disoccludedPixels = 0; // surfaces not visible in the previous frame
     double disoccludedMae = 0;          // the MAE over those pixels (0 when none)
+    // The GI irradiance the lighting read (linear RGB), against full resolution's: the
+    // upsampling's own error, undiluted by direct light and tonemapping.
+    double giRelMse = 0;            // metrics::relativeMse
+    double giRelMae = 0;            // sum |test - ref| / sum |ref| over RGB
+    double disoccludedGiRelMae = 0; // the same over the disoccluded pixels
 };
 
 // Every metric of one frame; `disocclusion` is one byte per pixel (empty = none computed).
 PathFrameError measurePathFrame(const image::Image8& test, const image::Image8& reference,
+                                const image::ImageF& testGi, const image::ImageF& referenceGi,
                                 const std::vector<std::uint8_t>& disocclusion);
 
 struct PathConvergence {
@@ -32,8 +38,9 @@ struct PathConvergence {
     int frames = -1; // -1: the segment is too short to say
 };
 
-// For each segment that starts at a cut: the frames after the cut until the PSNR (identical
-// frames counted as 100 dB) stays within 0.5 dB of the segment's last frame.
+// For each segment that starts at a cut: the frames after the cut until the GI error (giRelMae)
+// stays within 10% of the segment's last frame's (or within 1e-4 of it). Meaningful where the
+// segment ends still (a converged state); on a moving segment it says when the error settled.
 std::vector<PathConvergence> framesToConverge(const std::vector<PathFrameError>& frames);
 
 std::string pathErrorsCsv(const std::vector<PathFrameError>& frames);

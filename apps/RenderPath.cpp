@@ -6,6 +6,8 @@
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "frame/DepthReadback.h"
+#include "frame/Readback.h"
+#include "passes/GiApplyPass.h"
 #include "passes/GiUpsamplePass.h"
 
 #include <cstdio>
@@ -57,6 +59,16 @@ private:
 
 void writeText(const std::string& path, const std::string& text) {
     writeFileAtomic(path, text.data(), text.size());
+}
+
+// The full-resolution GI the lighting read: the upsample pass's output, or the apply pass's
+// target at full resolution.
+image::ImageF fullResolutionGi(const render::FrameRenderer& r) {
+    if (const render::GiUpsamplePass* up = r.giUpsample()) return render::readFloat(*up->output());
+    for (const auto& p : r.passes())
+        if (auto* apply = dynamic_cast<const render::GiApplyPass*>(p.get()))
+            return render::readFloat(*apply->target());
+    throw Error("--compare-to full: the frame has no GI target");
 }
 
 void checkGl(gl::DebugOutput* debug, std::uint64_t mark) {
@@ -111,7 +123,9 @@ int renderPath(const PathRenderRequest& r) {
                 render::readDepthDistance(*renderer.targets(), view, renderer.programs());
             std::vector<std::uint8_t> mask;
             if (!f.cut) mask = camera::disocclusionMask(prevCamera, prevDepth, cam, depth);
-            PathFrameError e = measurePathFrame(image, reference->readOutput(), mask);
+            PathFrameError e =
+                measurePathFrame(image, reference->readOutput(), fullResolutionGi(renderer),
+                                 fullResolutionGi(*reference), mask);
             e.frame = f.index;
             e.time = f.time;
             e.cut = f.cut;
@@ -119,7 +133,8 @@ int renderPath(const PathRenderRequest& r) {
             errors.push_back(e);
             prevDepth = std::move(depth);
             prevCamera = cam;
-            std::fprintf(stderr, ": PSNR %.2f dB, FLIP %.4f", e.psnr, e.flipMean);
+            std::fprintf(stderr, ": PSNR %.2f dB, FLIP %.4f, GI rel. MAE %.4f", e.psnr, e.flipMean,
+                         e.giRelMae);
         }
         std::fprintf(stderr, "\n");
         checkGl(r.debug, mark);

@@ -7,9 +7,10 @@
 //    rejected when the surface it stored is not this pixel's surface), blended with the
 //    bilateral reconstruction by alpha = max(disocclusion, depth difference, luma difference,
 //    distance moved) - the talk's weights; the thresholds are documented in renderer/README.md.
-// Outputs the new history: GI (read by the lighting), the pixel's distance from the eye (-1 =
-// nothing to reproject: sky, dynamic) and the history's confidence: the share of it that comes
-// from exact samples (1 at this frame's sample, 0 for a reconstruction, blended like the GI).
+// Outputs the new history: GI (read by the lighting) and its surface (RGBA16F): the pixel's
+// distance from the eye (-1 = nothing to reproject: sky, dynamic), the history's confidence -
+// the share of it that comes from exact samples (1 at this frame's sample, 0 for a
+// reconstruction, blended like the GI) - and the octahedral normal.
 #include "common_octahedral.glsl"
 #include "common_upsample.glsl"
 layout(location = 0) out vec4 out_gi;
@@ -31,7 +32,7 @@ const float TEMPORAL_DEPTH_FLOOR = 0.005;
 // agreement (fp16, the view-dependent bias); alpha reaches 1 at 30%.
 const float TEMPORAL_LUMA_TOLERANCE = 0.05;
 const float TEMPORAL_LUMA_FULL = 0.30;
-const float TEMPORAL_MOTION_PIXELS = 64.0; // alpha from motion = pixels moved / 64...
+const float TEMPORAL_MOTION_PIXELS = 16.0; // alpha from motion = pixels moved / 16...
 const float TEMPORAL_MOTION_MAX = 0.5;     // ...at most 0.5
 
 float luma(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
@@ -48,16 +49,17 @@ bool onPreviousScreen(vec3 w) {
     return w.z > 0.0 && all(greaterThanEqual(w.xy, vec2(0.0))) && all(lessThanEqual(w.xy, size()));
 }
 
-// History texel q: x = relative distance of its stored surface from the tangent plane (normal
-// n) through relPrev (a position relative to the previous eye), > 1e29 when it stored none;
-// y = its confidence.
-vec2 historyTap(ivec2 q, vec3 relPrev, vec3 n) {
-    vec2 stored = texelFetch(u_historyDistance, q, 0).rg;
-    if (stored.x < 0.0) return vec2(1e30, 0.0);
+// History texel q against the surface at relPrev (relative to the previous eye) with normal n:
+// x = relative distance of the stored surface from that tangent plane (> 1e29 when it stored
+// none), y = the stored confidence, z = the normal agreement weight (the bilateral one).
+vec3 historyTap(ivec2 q, vec3 relPrev, vec3 n) {
+    vec4 stored = texelFetch(u_historyDistance, q, 0);
+    if (stored.x < 0.0) return vec3(1e30, 0.0, 0.0);
     vec2 ndc = (vec2(q) + 0.5) * u_gbufferInvSize * 2.0 - 1.0;
     vec4 farH = u_prevRelFromClip * vec4(ndc, 1.0, 1.0);
     vec3 tap = normalize(farH.xyz / farH.w) * stored.x;
-    return vec2(abs(dot(n, tap - relPrev)) / max(length(relPrev), 1e-6), stored.y);
+    float plane = abs(dot(n, tap - relPrev)) / max(length(relPrev), 1e-6);
+    return vec3(plane, stored.y, upsampleNormalWeight(n, octDecode(stored.zw)));
 }
 
 // How far the history disagrees with this frame's fresh sample nearest p - the one place where
@@ -76,8 +78,8 @@ float freshSampleLumaDifference(ivec2 p) {
     if (!onPreviousScreen(w)) return 0.0;
     ivec2 q = u_stillCamera != 0 ? s : clamp(ivec2(floor(w.xy)), ivec2(0), ivec2(size()) - 1);
     vec3 nS = octDecode(texelFetch(u_gbuffer_normal, s, 0).xy);
-    vec2 tap = historyTap(q, relS + u_eyeOffset, nS);
-    if (tap.x > UPSAMPLE_PLANE_TOLERANCE) return 0.0;
+    vec3 tap = historyTap(q, relS + u_eyeOffset, nS);
+    if (tap.x > UPSAMPLE_PLANE_TOLERANCE || tap.z < 0.5) return 0.0;
     float fresh = luma(texelFetch(u_giLow, i, 0).rgb);
     float old = luma(texelFetch(u_historyGi, q, 0).rgb);
     return tap.y * abs(fresh - old) / max(max(fresh, old), 1e-4);
@@ -88,7 +90,7 @@ void main() {
     float depth = texelFetch(u_gbuffer_depth, p, 0).r;
     if (depth >= 1.0) {
         out_gi = vec4(0.0);
-        out_distance = vec4(-1.0);
+        out_distance = vec4(-1.0, 0.0, 0.0, 0.0);
         return;
     }
     vec3 rel = upsampleRel(p, depth);
@@ -96,7 +98,8 @@ void main() {
     vec4 spatial = upsampleBilateral(p, rel, n);
     bool dynamic = (int(texelFetch(u_gbuffer_flags, p, 0).r * 255.0 + 0.5) & 1) != 0;
     bool exact = upsampleIsExactSample(p);
-    out_distance = vec4(dynamic ? -1.0 : length(rel), exact ? 1.0 : 0.0, 0.0, 0.0);
+    out_distance = vec4(dynamic ? -1.0 : length(rel), exact ? 1.0 : 0.0,
+                        texelFetch(u_gbuffer_normal, p, 0).xy);
     out_gi = spatial;
     if (dynamic || u_historyValid == 0 || exact) return;
 
@@ -117,15 +120,16 @@ void main() {
         float wb = (o.x == 1 ? t.x : 1.0 - t.x) * (o.y == 1 ? t.y : 1.0 - t.y);
         if (wb <= 0.0) continue;
         ivec2 q = clamp(h0 + o, ivec2(0), ivec2(size()) - 1);
-        vec2 tap = historyTap(q, relPrev, n);
+        vec3 tap = historyTap(q, relPrev, n);
         float plane = tap.x;
         if (plane > UPSAMPLE_PLANE_TOLERANCE) continue;
-        history += wb * texelFetch(u_historyGi, q, 0);
-        accepted += wb;
-        confidence += wb * tap.y;
-        depthError += wb * clamp((plane - TEMPORAL_DEPTH_FLOOR) /
-                                     (UPSAMPLE_PLANE_TOLERANCE - TEMPORAL_DEPTH_FLOOR),
-                                 0.0, 1.0);
+        float w = wb * tap.z; // another orientation is another surface, as in the bilateral
+        history += w * texelFetch(u_historyGi, q, 0);
+        accepted += w;
+        confidence += w * tap.y;
+        depthError += w * clamp((plane - TEMPORAL_DEPTH_FLOOR) /
+                                    (UPSAMPLE_PLANE_TOLERANCE - TEMPORAL_DEPTH_FLOOR),
+                                0.0, 1.0);
     }
     if (accepted < 1e-3) return; // disoccluded: nothing of this surface in the history
     history /= accepted;

@@ -25,13 +25,13 @@ gl::Texture makeTarget(gl::TextureFormat format, int w, int h) {
 }
 } // namespace
 
-// GI at full resolution, plus (temporal) the distance from the eye of each pixel's surface,
-// which the next frame checks its reprojected taps against. RG16F: half precision is 5e-4
-// relative, a hundredth of the plane tolerance.
+// GI at full resolution, plus (temporal) each pixel's surface - distance from the eye,
+// confidence, octahedral normal - which the next frame checks its reprojected taps against.
+// RGBA16F: half precision is 5e-4 relative, a hundredth of the plane tolerance.
 struct GiUpsamplePass::Target {
     Target(gl::TextureFormat format, int w, int h, bool withDistance)
         : gi(makeTarget(format, w, h)),
-          distance(withDistance ? makeTarget(gl::TextureFormat::RG16F, w, h) : gl::Texture()),
+          distance(withDistance ? makeTarget(gl::TextureFormat::RGBA16F, w, h) : gl::Texture()),
           fbo("gi upsample",
               withDistance ? std::vector<const gl::Texture*>{&gi, &distance}
                            : std::vector<const gl::Texture*>{&gi},
