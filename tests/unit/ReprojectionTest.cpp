@@ -72,6 +72,18 @@ TEST(Reprojection, StillCameraMapsEveryPixelOntoItself) {
         }
 }
 
+TEST(Reprojection, SameCameraMeansBitIdenticalEyeMatricesAndViewport) {
+    const camera::CameraState a = testCamera({5e5, 2.0, 5e5}, {5e5 - 3.0, 1.0, 5e5 + 1.0});
+    EXPECT_TRUE(camera::isSameCamera(a, a));
+    camera::CameraState b = a;
+    b.eye.x += 1e-9; // below float, not below double: the shader would still have to reproject
+    EXPECT_FALSE(camera::isSameCamera(a, b));
+    b = testCamera({5e5, 2.0, 5e5}, {5e5 - 3.0, 1.0, 5e5 + 1.001});
+    EXPECT_FALSE(camera::isSameCamera(a, b));
+    b = testCamera({5e5, 2.0, 5e5}, {5e5 - 3.0, 1.0, 5e5 + 1.0}, 161, 90);
+    EXPECT_FALSE(camera::isSameCamera(a, b));
+}
+
 TEST(Reprojection, PointsBehindOrBesideThePreviousCameraHaveNoPreviousPixel) {
     const camera::CameraState prev = testCamera({0, 1, 0}, {0, 1, -1});
     // Turned around: what is in front now was behind before.

@@ -1,0 +1,54 @@
+#!/usr/bin/env python3
+"""Summary table of bench/upsample_accuracy.sh's runs (markdown, for bench/README.md).
+
+Per path, resolution and gi.upsample mode, from each run's errors.json:
+  GI err     mean over frames of the GI irradiance's relative MAE vs full resolution
+             (sum |test - ref| / sum |ref| over RGB: the upsampling's own error)
+  PSNR       mean PSNR of the final 8-bit image (identical frames count as 100 dB)
+  FLIP       mean LDR-FLIP of the final image
+  converge   frames after each cut until the GI error stays within 10% (or 1e-4) of the
+             segment's last frame
+  disocc.    GI relative MAE over the pixels disoccluded at each frame (ghosting measure)
+  ghost      disocc. of this mode / disocc. of bilateral on the same path and resolution
+"""
+import json
+import os
+import sys
+
+MODES = ["bilinear", "bilateral", "temporal"]
+
+
+def load(root, res, mode, path):
+    with open(os.path.join(root, res, mode, path, "errors.json")) as f:
+        return json.load(f)
+
+
+def main():
+    root = sys.argv[1] if len(sys.argv) > 1 else "bench-out/upsample"
+    paths = sorted(
+        {p for res in ("half", "quarter") for m in MODES
+         for p in os.listdir(os.path.join(root, res, m))
+         if os.path.isdir(os.path.join(root, res, m, p))},
+        key=lambda p: ["static", "slow_pan", "fast_turn", "doorway_walk"].index(p)
+        if p in ("static", "slow_pan", "fast_turn", "doorway_walk") else 9)
+    print("| path | res | mode | frames | GI err | PSNR dB | FLIP | converge | disocc. px "
+          "| disocc. GI err | ghost |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    for path in paths:
+        for res in ("half", "quarter"):
+            base = load(root, res, "bilateral", path)["summary"]["disoccluded_gi_rel_mae"]
+            for mode in MODES:
+                j = load(root, res, mode, path)
+                s = j["summary"]
+                conv = ", ".join("-" if c["frames_to_converge"] is None
+                                 else str(c["frames_to_converge"]) for c in s["convergence"])
+                ghost = (s["disoccluded_gi_rel_mae"] / base) if base > 0 else float("nan")
+                disocc = s["disoccluded_pixels"]
+                print(f"| {path} | {res} | {mode} | {len(j['frames'])} | {s['gi_rel_mae_mean']:.4f} "
+                      f"| {s['psnr_mean_db']:.1f} | {s['flip_mean']:.4f} | {conv} | {disocc} "
+                      f"| {s['disoccluded_gi_rel_mae']:.4f} | "
+                      f"{'-' if disocc == 0 else f'{ghost:.2f}'} |")
+
+
+if __name__ == "__main__":
+    main()
