@@ -85,10 +85,11 @@ void GiUpsamplePass::execute(FrameContext& frame) {
     const bool sizeChanged = !targets_[0] || targets_[0]->gi.desc().width != gb.width() ||
                              targets_[0]->gi.desc().height != gb.height() ||
                              targets_[0]->gi.desc().format != format;
-    if (sizeChanged) {
-        for (auto& t : targets_)
-            t = std::make_unique<Target>(format, gb.width(), gb.height(), temporal);
-        if (!temporal) targets_[1].reset();
+    if (sizeChanged) { // the history (temporal: ping-pong pair) starts over
+        targets_[0] = std::make_unique<Target>(format, gb.width(), gb.height(), temporal);
+        targets_[1] =
+            temporal ? std::make_unique<Target>(format, gb.width(), gb.height(), true) : nullptr;
+        current_ = 0;
         historyValid_ = false;
     }
     const int previous = current_;
