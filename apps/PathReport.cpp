@@ -24,7 +24,7 @@ nlohmann::json finiteOrNull(double v) {
 struct Totals {
     double psnrMean = 0, psnrMin = 1e300, flipMean = 0, maeMean = 0;
     double giRelMse = 0, giRelMae = 0;
-    std::int64_t disoccluded = 0;
+    std::int64_t entered = 0, disoccluded = 0;
     double disoccludedMae = 0;      // pixel-weighted over all frames
     double disoccludedGiRelMae = 0; // pixel-weighted over all frames
 };
@@ -40,6 +40,7 @@ Totals totals(const std::vector<PathFrameError>& frames) {
         t.psnrMin = std::min(t.psnrMin, cappedPsnr(f.psnr));
         t.flipMean += f.flipMean;
         t.maeMean += f.mae;
+        t.entered += f.enteredPixels;
         t.disoccluded += f.disoccludedPixels;
         disoccludedSum += f.disoccludedMae * double(f.disoccludedPixels);
     }
@@ -59,7 +60,10 @@ Totals totals(const std::vector<PathFrameError>& frames) {
 
 PathFrameError measurePathFrame(const image::Image8& test, const image::Image8& reference,
                                 const image::ImageF& testGi, const image::ImageF& referenceGi,
-                                const std::vector<std::uint8_t>& disocclusion) {
+                                const std::vector<camera::PixelHistory>& history) {
+    auto hidden = [&](size_t p) {
+        return !history.empty() && history[p] == camera::PixelHistory::WasHidden;
+    };
     PathFrameError e;
     e.giRelMse = metrics::relativeMse(testGi, referenceGi);
     double giDiff = 0, giRef = 0, giDiffMasked = 0, giRefMasked = 0;
@@ -70,7 +74,7 @@ PathFrameError measurePathFrame(const image::Image8& test, const image::Image8& 
             const double r = std::abs(double(referenceGi.pixels[i]));
             giDiff += d;
             giRef += r;
-            if (!disocclusion.empty() && disocclusion[p]) {
+            if (hidden(p)) {
                 giDiffMasked += d;
                 giRefMasked += r;
             }
@@ -88,10 +92,12 @@ PathFrameError measurePathFrame(const image::Image8& test, const image::Image8& 
         for (size_t c = 0; c < 3; ++c)
             d += std::abs(int(test.pixels[p * 4 + c]) - int(reference.pixels[p * 4 + c]));
         sum += d;
-        if (!disocclusion.empty() && disocclusion[p]) {
+        if (hidden(p)) {
             sumMasked += d;
             ++e.disoccludedPixels;
         }
+        if (!history.empty() && history[p] == camera::PixelHistory::EnteredScreen)
+            ++e.enteredPixels;
     }
     e.mae = sum / (3.0 * double(pixels));
     if (e.disoccludedPixels > 0) e.disoccludedMae = sumMasked / (3.0 * double(e.disoccludedPixels));
@@ -124,15 +130,15 @@ std::vector<PathConvergence> framesToConverge(const std::vector<PathFrameError>&
 std::string pathErrorsCsv(const std::vector<PathFrameError>& frames) {
     std::ostringstream out;
     out << "frame,time_s,cut,history_used,psnr_db,flip_mean,flip_max,mae,gi_rel_mse,gi_rel_mae,"
-           "disoccluded_pixels,disoccluded_mae,disoccluded_gi_rel_mae\n";
+           "entered_pixels,disoccluded_pixels,disoccluded_mae,disoccluded_gi_rel_mae\n";
     char line[256];
     for (const auto& f : frames) {
         std::snprintf(
-            line, sizeof line, "%d,%.4f,%d,%d,%s,%.6f,%.6f,%.4f,%.4g,%.4g,%lld,%.4f,%.4g\n",
+            line, sizeof line, "%d,%.4f,%d,%d,%s,%.6f,%.6f,%.4f,%.4g,%.4g,%lld,%lld,%.4f,%.4g\n",
             f.frame, f.time, f.cut ? 1 : 0, f.historyUsed ? 1 : 0,
             std::isfinite(f.psnr) ? std::to_string(f.psnr).c_str() : "inf", f.flipMean, f.flipMax,
-            f.mae, f.giRelMse, f.giRelMae, static_cast<long long>(f.disoccludedPixels),
-            f.disoccludedMae, f.disoccludedGiRelMae);
+            f.mae, f.giRelMse, f.giRelMae, static_cast<long long>(f.enteredPixels),
+            static_cast<long long>(f.disoccludedPixels), f.disoccludedMae, f.disoccludedGiRelMae);
         out << line;
     }
     return out.str();
@@ -151,6 +157,7 @@ nlohmann::json pathErrorsJson(const std::vector<PathFrameError>& frames, nlohman
                         {"mae", f.mae},
                         {"gi_rel_mse", f.giRelMse},
                         {"gi_rel_mae", f.giRelMae},
+                        {"entered_pixels", f.enteredPixels},
                         {"disoccluded_pixels", f.disoccludedPixels},
                         {"disoccluded_mae", f.disoccludedMae},
                         {"disoccluded_gi_rel_mae", f.disoccludedGiRelMae}});
@@ -168,6 +175,7 @@ nlohmann::json pathErrorsJson(const std::vector<PathFrameError>& frames, nlohman
                         {"mae_mean", t.maeMean},
                         {"gi_rel_mse_mean", t.giRelMse},
                         {"gi_rel_mae_mean", t.giRelMae},
+                        {"entered_pixels", t.entered},
                         {"disoccluded_pixels", t.disoccluded},
                         {"disoccluded_mae", t.disoccludedMae},
                         {"disoccluded_gi_rel_mae", t.disoccludedGiRelMae},
@@ -186,8 +194,10 @@ std::string pathSummaryText(const std::vector<PathFrameError>& frames) {
                   t.giRelMae, t.giRelMse);
     out += line;
     std::snprintf(line, sizeof line,
-                  "disocclusions: %lld pixels, MAE there %.3f, GI rel. MAE there %.4f\n",
-                  static_cast<long long>(t.disoccluded), t.disoccludedMae, t.disoccludedGiRelMae);
+                  "disocclusions (hidden in the previous frame): %lld pixels, MAE there %.3f, GI "
+                  "rel. MAE there %.4f; %lld pixels entered at the borders\n",
+                  static_cast<long long>(t.disoccluded), t.disoccludedMae, t.disoccludedGiRelMae,
+                  static_cast<long long>(t.entered));
     out += line;
     for (const auto& c : framesToConverge(frames)) {
         if (c.frames < 0)

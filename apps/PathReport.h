@@ -2,6 +2,7 @@
 // Per-frame error of a camera-path render against full-resolution GI (`probebench render --path
 // --compare-to full`) and its summary: PSNR, LDR-FLIP, MAE, frames to converge after each cut,
 // and the error at disocclusions (the ghosting measure; definitions in bench/README.md).
+#include "camera/DisocclusionMask.h"
 #include "image/Image.h"
 
 #include <cstdint>
@@ -19,7 +20,8 @@ struct PathFrameError {
     double psnr = 0;          // dB, +inf when identical
     double flipMean = 0, flipMax = 0;
     double mae = 0;                     // mean |test - reference| over RGB, 8-bit units
-    std::int64_t disoccludedPixels = 0; // surfaces not visible in the previous frame
+    std::int64_t enteredPixels = 0;     // surfaces off the previous frame's screen
+    std::int64_t disoccludedPixels = 0; // surfaces hidden behind another in the previous frame
     double disoccludedMae = 0;          // the MAE over those pixels (0 when none)
     // The GI irradiance the lighting read (linear RGB), against full resolution's: the
     // upsampling's own error, undiluted by direct light and tonemapping.
@@ -28,10 +30,10 @@ struct PathFrameError {
     double disoccludedGiRelMae = 0; // the same over the disoccluded pixels
 };
 
-// Every metric of one frame; `disocclusion` is one byte per pixel (empty = none computed).
+// Every metric of one frame; `history` has one entry per pixel (empty = none computed).
 PathFrameError measurePathFrame(const image::Image8& test, const image::Image8& reference,
                                 const image::ImageF& testGi, const image::ImageF& referenceGi,
-                                const std::vector<std::uint8_t>& disocclusion);
+                                const std::vector<camera::PixelHistory>& history);
 
 struct PathConvergence {
     int cutFrame = 0;

@@ -121,7 +121,7 @@ int renderPath(const PathRenderRequest& r) {
             const camera::CameraState cam = render::cameraState(view);
             image::ImageF depth =
                 render::readDepthDistance(*renderer.targets(), view, renderer.programs());
-            std::vector<std::uint8_t> mask;
+            std::vector<camera::PixelHistory> mask;
             if (!f.cut) mask = camera::disocclusionMask(prevCamera, prevDepth, cam, depth);
             PathFrameError e =
                 measurePathFrame(image, reference->readOutput(), fullResolutionGi(renderer),

@@ -7,15 +7,19 @@ Per path, resolution and gi.upsample mode, from each run's errors.json:
   PSNR       mean PSNR of the final 8-bit image (identical frames count as 100 dB)
   FLIP       mean LDR-FLIP of the final image
   converge   frames after each cut until the GI error stays within 10% (or 1e-4) of the
-             segment's last frame
-  disocc.    GI relative MAE over the pixels disoccluded at each frame (ghosting measure)
-  ghost      disocc. of this mode / disocc. of bilateral on the same path and resolution
+             segment's last frame; only for paths that end still (static, fast_turn - whose
+             turn stops at frame 30 -, rooms_cut), "-" for paths moving to the end
+  entered    pixels entering at the screen borders, summed over frames (no history exists)
+  disocc.    pixels that were hidden behind another surface in the previous frame, summed
+  disocc. GI err   GI relative MAE over those pixels, all frames (the ghosting measure)
+  ghost      disocc. GI err of this mode / that of bilateral on the same path and resolution
 """
 import json
 import os
 import sys
 
 MODES = ["bilinear", "bilateral", "temporal"]
+ENDS_STILL = {"static", "fast_turn", "rooms_cut"}
 
 
 def load(root, res, mode, path):
@@ -31,9 +35,9 @@ def main():
          if os.path.isdir(os.path.join(root, res, m, p))},
         key=lambda p: ["static", "slow_pan", "fast_turn", "doorway_walk"].index(p)
         if p in ("static", "slow_pan", "fast_turn", "doorway_walk") else 9)
-    print("| path | res | mode | frames | GI err | PSNR dB | FLIP | converge | disocc. px "
-          "| disocc. GI err | ghost |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|")
+    print("| path | res | mode | frames | GI err | PSNR dB | FLIP | converge | entered px "
+          "| disocc. px | disocc. GI err | ghost |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for path in paths:
         for res in ("half", "quarter"):
             base = load(root, res, "bilateral", path)["summary"]["disoccluded_gi_rel_mae"]
@@ -42,10 +46,13 @@ def main():
                 s = j["summary"]
                 conv = ", ".join("-" if c["frames_to_converge"] is None
                                  else str(c["frames_to_converge"]) for c in s["convergence"])
+                if path not in ENDS_STILL:
+                    conv = "-"
                 ghost = (s["disoccluded_gi_rel_mae"] / base) if base > 0 else float("nan")
                 disocc = s["disoccluded_pixels"]
                 print(f"| {path} | {res} | {mode} | {len(j['frames'])} | {s['gi_rel_mae_mean']:.4f} "
-                      f"| {s['psnr_mean_db']:.1f} | {s['flip_mean']:.4f} | {conv} | {disocc} "
+                      f"| {s['psnr_mean_db']:.1f} | {s['flip_mean']:.4f} | {conv} "
+                      f"| {s['entered_pixels']} | {disocc} "
                       f"| {s['disoccluded_gi_rel_mae']:.4f} | "
                       f"{'-' if disocc == 0 else f'{ghost:.2f}'} |")
 

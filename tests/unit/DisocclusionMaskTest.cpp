@@ -1,6 +1,6 @@
 // The ghosting measure's ground truth (renderer/camera/DisocclusionMask.h): a camera stepping
 // sideways past the edge of a wall in front of a backdrop uncovers exactly the strip of backdrop
-// behind the edge, plus what enters the screen at its side.
+// behind the edge (was hidden), and what enters the screen at its side is told apart.
 #include "camera/DisocclusionMask.h"
 #include "unit/CameraTestViews.h"
 
@@ -56,7 +56,10 @@ TEST(DisocclusionMask, SidewaysStepUncoversTheStripBehindTheEdge) {
             const bool offScreen = before.window.x < 0.0 || before.window.x > kW;
             uncovered += hidden;
             enteredScreen += offScreen && !hidden;
-            wrong += (mask[size_t(y) * kW + x] != 0) != (hidden || offScreen);
+            const camera::PixelHistory want = offScreen ? camera::PixelHistory::EnteredScreen
+                                              : hidden  ? camera::PixelHistory::WasHidden
+                                                        : camera::PixelHistory::Seen;
+            wrong += mask[size_t(y) * kW + x] != want;
         }
     EXPECT_GT(uncovered, kH);     // the strip is at least a column wide
     EXPECT_GT(enteredScreen, kH); // and the right edge brought new pixels
@@ -67,8 +70,8 @@ TEST(DisocclusionMask, SidewaysStepUncoversTheStripBehindTheEdge) {
 TEST(DisocclusionMask, StillCameraUncoversNothing) {
     const camera::CameraState c = testCamera({0.3, 0.1, 0.0}, {0.0, 0.0, -1.0}, kW, kH);
     const image::ImageF d = depthImage(c);
-    for (std::uint8_t m : camera::disocclusionMask(c, d, c, d))
-        ASSERT_EQ(m, 0);
+    for (camera::PixelHistory m : camera::disocclusionMask(c, d, c, d))
+        ASSERT_EQ(m, camera::PixelHistory::Seen);
 }
 
 } // namespace
