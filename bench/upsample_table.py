@@ -13,6 +13,7 @@ Per path, resolution and gi.upsample mode, from each run's errors.json:
   disocc.    pixels that were hidden behind another surface in the previous frame, summed
   disocc. GI err   GI relative MAE over those pixels, all frames (the ghosting measure)
   ghost      disocc. GI err of this mode / that of bilateral on the same path and resolution
+             ("-" below 1000 disoccluded pixels: too few to compare)
 """
 import json
 import os
@@ -50,11 +51,12 @@ def main():
                     conv = "-"
                 ghost = (s["disoccluded_gi_rel_mae"] / base) if base > 0 else float("nan")
                 disocc = s["disoccluded_pixels"]
+                derr = "-" if disocc < 1000 else f"{s['disoccluded_gi_rel_mae']:.4f}"
                 print(f"| {path} | {res} | {mode} | {len(j['frames'])} | {s['gi_rel_mae_mean']:.4f} "
                       f"| {s['psnr_mean_db']:.1f} | {s['flip_mean']:.4f} | {conv} "
                       f"| {s['entered_pixels']} | {disocc} "
-                      f"| {s['disoccluded_gi_rel_mae']:.4f} | "
-                      f"{'-' if disocc == 0 else f'{ghost:.2f}'} |")
+                      f"| {derr} | "
+                      f"{'-' if disocc < 1000 else f'{ghost:.2f}'} |")
 
 
 if __name__ == "__main__":
