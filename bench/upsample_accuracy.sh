@@ -2,11 +2,11 @@
 # Accuracy of gi.upsample (bilinear, bilateral, temporal) at half and quarter resolution against
 # full-resolution GI, per camera path (bench/README.md, "GI upsampling"). Hardware-independent
 # figures (llvmpipe rounding aside). Usage, from the repository root after a Release build:
-#   bench/upsample_accuracy.sh [OUT_DIR] [WIDTHxHEIGHT]
+#   bench/upsample_accuracy.sh [OUT_DIR (build/upsample-accuracy)] [WIDTHxHEIGHT (640x360)]
 # Writes OUT_DIR/<resolution>/<mode>/<path>/{frame_NNNN.png,errors.csv,errors.json} and prints
 # the summary table (bench/upsample_table.py).
 set -eu
-out=${1:-bench-out/upsample}
+out=${1:-build/upsample-accuracy}
 size=${2:-640x360}
 width=${size%x*}
 height=${size#*x}

@@ -29,7 +29,7 @@ def load(root, res, mode, path):
 
 
 def main():
-    root = sys.argv[1] if len(sys.argv) > 1 else "bench-out/upsample"
+    root = sys.argv[1] if len(sys.argv) > 1 else "build/upsample-accuracy"
     paths = sorted(
         {p for res in ("half", "quarter") for m in MODES
          for p in os.listdir(os.path.join(root, res, m))
