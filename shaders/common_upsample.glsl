@@ -11,6 +11,7 @@ uniform int u_giDivisor;
 uniform ivec2 u_giJitter;
 uniform highp sampler2D u_gbuffer_normal;
 uniform highp sampler2D u_gbuffer_depth;
+uniform highp sampler2D u_gbuffer_flags;
 uniform mat4 u_relFromClip;
 uniform vec2 u_gbufferInvSize;
 
@@ -34,6 +35,11 @@ float upsampleNormalWeight(vec3 a, vec3 b) {
     return c4 * c4;
 }
 
+// Bit 0 of the GBuffer flags (stored as bits / 255): a dynamic object's pixel.
+bool upsampleIsDynamic(ivec2 px) {
+    return (int(texelFetch(u_gbuffer_flags, px, 0).r * 255.0 + 0.5) & 1) != 0;
+}
+
 // True when this frame's low-resolution sample was evaluated exactly at pixel p.
 bool upsampleIsExactSample(ivec2 p) {
     ivec2 d = p - u_giJitter;
@@ -44,9 +50,12 @@ bool upsampleIsExactSample(ivec2 p) {
 
 // Depth- and normal-aware upsample of pixel p (camera-relative position relP, normal nP):
 // the four neighbouring samples weighted bilinearly x plane test x normal weight, renormalized.
-// Samples on the sky carry nothing and are skipped. When every sample is rejected the one
-// nearest p's plane is taken alone (nearest-depth fallback: still no blend across a step).
+// Samples on the sky carry nothing and are skipped, and so are samples of a dynamic object for
+// a static pixel and the other way round (with gi.dynamic=sh the apply pass leaves dynamic
+// samples empty). When every sample is rejected the one nearest p's plane is taken alone
+// (nearest-depth fallback: still no blend across a step).
 vec4 upsampleBilateral(ivec2 p, vec3 relP, vec3 nP) {
+    bool dynamicP = upsampleIsDynamic(p);
     vec2 f = vec2(p - u_giJitter) / float(u_giDivisor);
     ivec2 i0 = ivec2(floor(f));
     vec2 t = f - vec2(i0);
@@ -61,7 +70,7 @@ vec4 upsampleBilateral(ivec2 p, vec3 relP, vec3 nP) {
         ivec2 i = clamp(i0 + o, ivec2(0), u_giLowSize - 1);
         ivec2 s = i * u_giDivisor + u_giJitter;
         float ds = texelFetch(u_gbuffer_depth, s, 0).r;
-        if (ds >= 1.0) continue;
+        if (ds >= 1.0 || upsampleIsDynamic(s) != dynamicP) continue;
         float plane = abs(dot(nP, upsampleRel(s, ds) - relP)) / distP;
         vec4 v = texelFetch(u_giLow, i, 0);
         if (plane < bestPlane) {

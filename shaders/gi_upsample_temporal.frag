@@ -15,7 +15,6 @@
 #include "common_upsample.glsl"
 layout(location = 0) out vec4 out_gi;
 layout(location = 1) out vec4 out_distance;
-uniform highp sampler2D u_gbuffer_flags;
 uniform highp sampler2D u_historyGi;
 uniform highp sampler2D u_historyDistance;
 uniform int u_historyValid;
@@ -71,8 +70,7 @@ float freshSampleLumaDifference(ivec2 p) {
     ivec2 i = clamp(ivec2(floor(f + 0.5)), ivec2(0), u_giLowSize - 1);
     ivec2 s = i * u_giDivisor + u_giJitter;
     float ds = texelFetch(u_gbuffer_depth, s, 0).r;
-    if (ds >= 1.0 || (int(texelFetch(u_gbuffer_flags, s, 0).r * 255.0 + 0.5) & 1) != 0)
-        return 0.0;
+    if (ds >= 1.0 || upsampleIsDynamic(s)) return 0.0;
     vec3 relS = upsampleRel(s, ds);
     vec3 w = previousWindow(relS);
     if (!onPreviousScreen(w)) return 0.0;
@@ -96,7 +94,7 @@ void main() {
     vec3 rel = upsampleRel(p, depth);
     vec3 n = octDecode(texelFetch(u_gbuffer_normal, p, 0).xy);
     vec4 spatial = upsampleBilateral(p, rel, n);
-    bool dynamic = (int(texelFetch(u_gbuffer_flags, p, 0).r * 255.0 + 0.5) & 1) != 0;
+    bool dynamic = upsampleIsDynamic(p);
     bool exact = upsampleIsExactSample(p);
     out_distance = vec4(dynamic ? -1.0 : length(rel), exact ? 1.0 : 0.0,
                         texelFetch(u_gbuffer_normal, p, 0).xy);
