@@ -6,6 +6,7 @@
 #include "FlyCamera.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
+#include "RenderPath.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
 #include "frame/FrameRenderer.h"
@@ -38,6 +39,7 @@ struct RenderArgs {
     bool listSwitches = false;
     std::string debug; // --debug NAME
     bool verbose = false, json = false;
+    std::string path, outDir, compareTo; // camera path mode (RenderPath.h)
 };
 
 int scenarioIndex(const probes::ProbeSet& set, const RenderArgs& a) {
@@ -151,7 +153,12 @@ int run(RenderArgs& a) {
     if (a.json && a.out.empty()) throw Error("--json: needs --out (a rendered frame to report)");
     if (a.width < 1 || a.height < 1 || a.width > 16384 || a.height > 16384)
         throw Error("--width/--height must be in 1..16384");
-    if (a.out.empty() && a.platform.name != "glfw")
+    if (a.path.empty() && !(a.outDir.empty() && a.compareTo.empty()))
+        throw Error(std::string(a.outDir.empty() ? "--compare-to" : "--out-dir") +
+                    ": needs --path NAME|FILE");
+    if (!a.path.empty() && (a.outDir.empty() || !a.out.empty()))
+        throw Error("--path: frames go to --out-dir DIR (required; not --out)");
+    if (a.out.empty() && a.path.empty() && a.platform.name != "glfw")
         throw Error("--out is required (the PNG to write)");
     scene::Scene s = loadSceneWithOverrides(a.scene);
     scene::View view = chooseView(s, a);
@@ -175,6 +182,9 @@ int run(RenderArgs& a) {
     const std::uint64_t glMark = debug.mark();
     render::FrameSettings settings = render::defaultFrameSettings(s);
     if (a.exposure > 0) settings.exposure = a.exposure;
+    if (!a.path.empty())
+        return renderPath({&s, view, gi, settings, a.path, a.outDir, a.compareTo, a.frames, a.width,
+                           a.height, &debug});
     render::FrameRenderer renderer(s, settings, gi);
     // Counting reads the GPU back after every volume: only when asked for.
     if (renderer.giApplyPass() && (a.verbose || a.json || coverage))
@@ -255,7 +265,15 @@ const RegisterCommand reg{
          cmd.add_option("--dump-gbuffer", a->dumpDir, "Folder to write every GBuffer channel to");
          cmd.add_option("--exposure", a->exposure, "Linear exposure scale (default: the scene's)");
          cmd.add_option("--frames", a->frames,
-                        "glfw: close the window after N frames (0 = on ESC)");
+                        "glfw: close the window after N frames (0 = on ESC); --path: frames to "
+                        "render (0 = all of it)");
+         cmd.add_option("--path", a->path,
+                        "Play a camera path: static, slow_pan, fast_turn, doorway_walk (rooms) or "
+                        "a TOML file; it starts at --view/--camera");
+         cmd.add_option("--out-dir", a->outDir, "--path: folder for frame_NNNN.png (and errors.*)");
+         cmd.add_option("--compare-to", a->compareTo,
+                        "--path: 'full' also renders full-resolution GI per frame and writes "
+                        "errors.csv/errors.json (PSNR, FLIP, disocclusion error)");
          cmd.add_option("--probes", a->probes, "Probe file (probebench bake): render with DDGI");
          cmd.add_option("--scenario", a->scenario,
                         "Lighting scenario of --probes (default: its first)");

@@ -4,10 +4,13 @@
 uniform mat4 u_relFromClip;  // inverse of the camera's clip-from-camera-relative matrix
 uniform vec2 u_gbufferInvSize;
 uniform int u_giDivisor;     // GBuffer pixels per target texel, per axis (gi.resolution)
+uniform ivec2 u_giJitter;    // the GBuffer pixel of the texel's footprint sampled this frame
 
-// The GBuffer pixel nearest the target texel's centre (top-left of the middle four).
+// The GBuffer pixel this frame samples in the texel's footprint: (divisor - 1) / 2 (nearest the
+// centre, top-left of the middle four) unless gi.upsample=temporal jitters it (GiUpsamplePass,
+// common_upsample.glsl).
 ivec2 giGBufferPixel() {
-    return ivec2(gl_FragCoord.xy) * u_giDivisor + (u_giDivisor - 1) / 2;
+    return ivec2(gl_FragCoord.xy) * u_giDivisor + u_giJitter;
 }
 
 // Camera-relative surface position of GBuffer pixel px at depth-buffer value `depth`.

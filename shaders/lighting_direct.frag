@@ -31,7 +31,7 @@ uniform vec4 u_lightCone[MAX_LIGHTS];      // x: cos outer, y: cos inner
 const float PI = 3.14159265358979;
 
 #ifdef GI_ENABLED
-uniform highp sampler2D u_giIrradiance; // gi_ddgi_apply.frag's target
+uniform highp sampler2D u_giIrradiance; // gi_ddgi_apply.frag's layout, full resolution
 #ifdef GI_DYNAMIC_SH
 uniform sampler2D u_gbuffer_flags;      // bit 0: dynamic, bits 1-7: object (bits / 255)
 uniform highp sampler2D u_giDynamicSh;  // texel (k, object): gi_dynamic_sh_project.frag
@@ -52,11 +52,8 @@ vec3 indirectIrradiance(vec3 n, ivec2 px) {
         return sh.rgb + (1.0 - min(sh.a, 1.0)) * ambient;
     }
 #endif
-#ifdef GI_RESOLUTION_FULL
+    // Full resolution: the apply pass's target, or at half/quarter the upsample pass's output.
     vec4 gi = texelFetch(u_giIrradiance, px, 0);
-#else
-    vec4 gi = texture(u_giIrradiance, v_uv); // bilinear upsample (better modes: next issue)
-#endif
 #ifdef GI_TARGET_R11G11B10F
     // No alpha: the apply pass blended the ambient in; all zero = no volume drew here.
     return gi.rgb == vec3(0.0) ? ambient : gi.rgb;

@@ -8,6 +8,7 @@
 #include "passes/DynamicShPass.h"
 #include "passes/GBufferPass.h"
 #include "passes/GiApplyPass.h"
+#include "passes/GiUpsamplePass.h"
 #include "passes/ProbeDebugPass.h"
 #include "passes/ShadowPass.h"
 #include "profile/VolumeLod.h"
@@ -39,6 +40,11 @@ FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& set
         giApply_ = apply.get();
         giApply_->setCountPixels(gi.debugView == GiDebugView::VolumeCoverage);
         passes_.push_back(std::move(apply));
+        if (gi.profile.gi.resolution != profile::GiResolution::Full) {
+            auto upsample = std::make_unique<GiUpsamplePass>(gi.profile);
+            upsample_ = upsample.get();
+            passes_.push_back(std::move(upsample));
+        }
     }
     settings_.indirectOnly = gi.probes && gi.debugView == GiDebugView::GiOnly;
     passes_.push_back(std::make_unique<DirectLightingPass>());
@@ -57,12 +63,17 @@ void FrameRenderer::render(const RenderView& view, FrameTimer* timer) {
         targets_ = std::make_unique<FrameTargets>(view.width, view.height);
     lastView_ = view;
     FrameContext ctx{gpu_, view, settings_, programs_, *targets_, quirks_, {}, {}, timer};
+    if (upsample_) upsample_->beginFrame(view, ctx);
     for (auto& pass : passes_) {
         TimedSection section(timer, pass->name());
         pass->execute(ctx);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glUseProgram(0);
+}
+
+void FrameRenderer::resetGiHistory() {
+    if (upsample_) upsample_->resetHistory();
 }
 
 image::Image8 FrameRenderer::readOutput() const {

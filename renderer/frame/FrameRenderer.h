@@ -1,8 +1,9 @@
 #pragma once
-// Builds the pass list and runs frames: shadow -> gbuffer -> [gi-dynamic-sh] -> [gi-apply] ->
-// direct -> composite. Owns the scene's GPU resources, the probes' GPU copy, the program cache
-// and the render targets (re-created when the resolution changes). Requires a current GL
-// context (platforms/). Without probes there is no GI pass and no GI resource at all.
+// Builds the pass list and runs frames: shadow -> gbuffer -> [gi-dynamic-sh] -> [gi-apply ->
+// [upsample]] -> direct -> composite (upsample only at gi.resolution half/quarter). Owns the
+// scene's GPU resources, the probes' GPU copy, the program cache and the render targets
+// (re-created when the resolution changes). Requires a current GL context (platforms/).
+// Without probes there is no GI pass and no GI resource at all.
 #include "image/Image.h"
 #include "passes/FrameContext.h"
 #include "passes/GiDebugView.h"
@@ -15,6 +16,8 @@
 #include <vector>
 
 namespace pb::render {
+
+class GiUpsamplePass;
 
 // Defaults derived from the scene: its exposure, and an ambient of a quarter of the sky's
 // irradiance from above, less from below (a crude stand-in for sky visibility until the GI
@@ -53,6 +56,10 @@ public:
     const FrameTargets* targets() const { return targets_.get(); }
     const GpuProbes* gpuProbes() const { return probes_.get(); } // null without GI
     GiApplyPass* giApplyPass() const { return giApply_; }        // null without GI
+    // gi.upsample=temporal: the next frame starts a fresh GI history (a camera cut the caller
+    // knows about; sudden jumps are also detected). No effect without an upsample pass.
+    void resetGiHistory();
+    const GiUpsamplePass* giUpsample() const { return upsample_; } // null at full resolution
 
 private:
     GpuScene gpu_;
@@ -63,6 +70,7 @@ private:
     std::unique_ptr<FrameTargets> targets_;
     std::vector<std::unique_ptr<Pass>> passes_;
     GiApplyPass* giApply_ = nullptr;
+    GiUpsamplePass* upsample_ = nullptr; // owned by passes_
     RenderView lastView_;
 };
 

@@ -1,6 +1,7 @@
 #include "frame/GBufferDump.h"
 
 #include "core/Error.h"
+#include "frame/DepthReadback.h"
 #include "frame/Readback.h"
 
 #include <algorithm>
@@ -23,26 +24,6 @@ image::Image8 toImage8(const image::ImageF& f, float (*map)(float)) {
     return out;
 }
 
-void dumpDepth(const std::string& path, FrameTargets& t, const RenderView& view,
-               gl::ProgramCache& programs) {
-    gl::TextureDesc d;
-    d.format = gl::TextureFormat::RGBA32F;
-    d.width = t.gbuffer.width();
-    d.height = t.gbuffer.height();
-    d.filter = gl::Filter::Nearest;
-    gl::Texture distance(d);
-    gl::Framebuffer fbo("depth-dump", {&distance}, nullptr);
-    fbo.bind();
-    const gl::Program& prog = programs.get("fullscreen.vert", "debug_depth_copy.frag");
-    prog.use();
-    t.gbuffer.depth().bind(0);
-    prog.set("u_depth", 0);
-    prog.set("u_relFromClip", view.relFromClip);
-    drawFullscreenTriangle(t);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    image::writePfm(path, readFloat(distance));
-}
 } // namespace
 
 void writeGBufferDump(const std::string& dir, FrameTargets& targets, const RenderView& view,
@@ -57,7 +38,8 @@ void writeGBufferDump(const std::string& dir, FrameTargets& targets, const Rende
         if (gl::formatInfo(c.format).isFloat) {
             image::ImageF f = readFloat(tex);
             if (c.encoding == ChannelEncoding::OctNormal)
-                image::writePng(base + ".png", toImage8(f, [](float v) { return v * 0.5f + 0.5f; }));
+                image::writePng(base + ".png",
+                                toImage8(f, [](float v) { return v * 0.5f + 0.5f; }));
             else
                 image::writePfm(base + ".pfm", f);
         } else {
@@ -69,7 +51,7 @@ void writeGBufferDump(const std::string& dir, FrameTargets& targets, const Rende
             image::writePng(base + ".png", img);
         }
     }
-    dumpDepth(dir + "/depth.pfm", targets, view, programs);
+    image::writePfm(dir + "/depth.pfm", readDepthDistance(targets, view, programs));
 }
 
 } // namespace pb::render

@@ -62,6 +62,9 @@ struct FrameContext {
     ShadowResult shadow;
     GiResult gi;
     FrameTimer* timer = nullptr; // sections for the bench; null when nobody measures
+    // The GBuffer pixel inside each low-resolution GI texel's footprint the apply pass
+    // evaluates this frame (GiUpsamplePass::beginFrame; 0 at full resolution).
+    glm::ivec2 giJitter{0};
 };
 
 class Pass {

@@ -57,6 +57,7 @@ void setPixelUniforms(const gl::Program& prog, const FrameContext& frame, int di
     prog.set("u_relFromClip", frame.view.relFromClip);
     prog.set("u_gbufferInvSize", glm::vec2(1.0f / float(gb.width()), 1.0f / float(gb.height())));
     prog.set("u_giDivisor", divisor);
+    prog.set("u_giJitter", frame.giJitter); // gi.upsample: where in the footprint to sample
     prog.set("u_ambientUp", frame.settings.ambientUp);
     prog.set("u_ambientDown", frame.settings.ambientDown);
 }

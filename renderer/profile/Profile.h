@@ -21,6 +21,7 @@ enum class GiLoops { Fused, Split };
 enum class GiProbeOrder { Xyz, SliceFirst };
 enum class GiMultiVolume { Naive, Stencil };
 enum class GiDynamic { PerPixel, Sh };
+enum class GiUpsample { Bilinear, Bilateral, Temporal };
 
 struct GiSwitches {
     GiTechnique technique;
@@ -31,6 +32,7 @@ struct GiSwitches {
     GiProbeOrder probeOrder;
     GiMultiVolume multiVolume;
     GiDynamic dynamic;
+    GiUpsample upsample; // used when resolution is half or quarter
     std::string
         volumeLod; // "all" | "omit:NAME[,NAME...]" | "min_spacing:METRES" | "budget_mib:MIB"
 };

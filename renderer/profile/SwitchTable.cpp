@@ -74,7 +74,7 @@ std::vector<SwitchInfo> buildTable() {
                                    {GiResolution::Half, "half"},
                                    {GiResolution::Quarter, "quarter"}},
                "full", D::ChoiceFlag, "GI_RESOLUTION",
-               "GI evaluation target size per axis (half = 1/2 on each axis); bilinear upsample"),
+               "GI evaluation target size per axis (half = 1/2 on each axis); see gi.upsample"),
         choice("gi.target_format", &GiSwitches::targetFormat,
                Names<GiTargetFormat>{{GiTargetFormat::Rgba16f, "rgba16f"},
                                      {GiTargetFormat::R11g11b10f, "r11g11b10f"},
@@ -103,6 +103,13 @@ std::vector<SwitchInfo> buildTable() {
                Names<GiDynamic>{{GiDynamic::PerPixel, "per_pixel"}, {GiDynamic::Sh, "sh"}},
                "per_pixel", D::ChoiceFlag, "GI_DYNAMIC",
                "GI of dynamic-object pixels: per-pixel probes, or L1 SH per object"),
+        choice("gi.upsample", &GiSwitches::upsample,
+               Names<GiUpsample>{{GiUpsample::Bilinear, "bilinear"},
+                                 {GiUpsample::Bilateral, "bilateral"},
+                                 {GiUpsample::Temporal, "temporal"}},
+               "bilinear", D::HostOnly, "",
+               "half/quarter GI to full resolution (upsample pass): bilinear, depth/normal-aware "
+               "bilateral, or temporal history with jittered samples"),
         text("gi.volume_lod", &GiSwitches::volumeLod, "all", volumeLodProblem,
              "volumes left out: all | omit:A,B | min_spacing:M | budget_mib:MIB"),
     };
