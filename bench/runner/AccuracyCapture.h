@@ -20,8 +20,8 @@ struct AccuracyInputs {
     scene::View view;
     render::FrameSettings settings;
     int width = 0, height = 0;
-    // Frames the irradiance renderer runs before reading: as many as the timed renderer ran,
-    // so a temporal history is in the same state in both.
+    // Frames the irradiance renderer runs before reading; the timed renderers are read on the
+    // first frame after a cut, so 1 puts a temporal history in the same state in both.
     int frames = 1;
     double pixelsPerDegree = 67.0;
 };

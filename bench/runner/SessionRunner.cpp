@@ -166,16 +166,24 @@ SessionResult runSession(const Session& session, const RunnerInputs& in, const R
         summarizeVariant(out.variants[i], live[i]);
 
     say("accuracy against " + session.variants[size_t(session.referenceVariant)].id);
+    // Accuracy is read from a frame right after a camera cut: on the bench's still camera a
+    // temporal upsample would otherwise have converged to full resolution and look free. The
+    // first frame after a cut is its worst case (= bilateral); its error under motion is what
+    // `probebench render --path ... --compare-to full` measures (bench/README.md).
     std::vector<render::FrameRenderer*> renderers(n, nullptr);
-    for (size_t i = 0; i < n; ++i)
+    for (size_t i = 0; i < n; ++i) {
         renderers[i] = live[i].renderer.get();
+        if (!out.variants[i].ok() || !renderers[i]) continue;
+        renderers[i]->resetGiHistory();
+        renderers[i]->render(rv);
+    }
     AccuracyInputs ai{in.scene,
                       in.probes,
                       in.view,
                       in.settings,
                       session.width,
                       session.height,
-                      o.warmup + o.frames * o.rounds,
+                      1, // the irradiance renderer's first frame: also right after a cut
                       o.pixelsPerDegree};
     captureAccuracy(out, renderers, ai, flipMap);
     measureDeltas(out);
