@@ -21,6 +21,7 @@ enum class GiLoops { Fused, Split };
 enum class GiProbeOrder { Xyz, SliceFirst };
 enum class GiMultiVolume { Naive, Stencil };
 enum class GiDynamic { PerPixel, Sh };
+enum class GiGuard { Off, On }; // gi.guard_*: numerical guards (issue 8)
 
 struct GiSwitches {
     GiTechnique technique;
@@ -33,6 +34,8 @@ struct GiSwitches {
     GiDynamic dynamic;
     std::string
         volumeLod; // "all" | "omit:NAME[,NAME...]" | "min_spacing:METRES" | "budget_mib:MIB"
+    GiGuard guardExposure; // pre-exposed irradiance and radiance
+    GiGuard guardClamp;    // finite, in-range values before every store
 };
 
 struct Profile {
