@@ -5,9 +5,12 @@ uniform mat4 u_relFromClip;  // inverse of the camera's clip-from-camera-relativ
 uniform vec2 u_gbufferInvSize;
 uniform int u_giDivisor;     // GBuffer pixels per target texel, per axis (gi.resolution)
 
-// The GBuffer pixel nearest the target texel's centre (top-left of the middle four).
+// The GBuffer pixel nearest the target texel's centre (top-left of the middle four), inside
+// the GBuffer: a frame narrower than the divisor (1x1 at quarter) has no middle pixel, and a
+// fetch outside would read depth 0 - a point on the near plane (probebench stress).
 ivec2 giGBufferPixel() {
-    return ivec2(gl_FragCoord.xy) * u_giDivisor + (u_giDivisor - 1) / 2;
+    ivec2 last = ivec2(floor(1.0 / u_gbufferInvSize + 0.5)) - 1;
+    return min(ivec2(gl_FragCoord.xy) * u_giDivisor + (u_giDivisor - 1) / 2, last);
 }
 
 // Camera-relative surface position of GBuffer pixel px at depth-buffer value `depth`.
