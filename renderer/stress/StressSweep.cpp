@@ -34,6 +34,8 @@ public:
         return cache_.emplace(key, m).first->second;
     }
     bool broken(const StressVariant& v) { return stress::broken(measure(v), thresholds_); }
+    // A frame rendered outside (the reference of this very case): not rendered again.
+    void remember(const StressVariant& v, const Measurement& m) { cache_.emplace(v.settingsKey(), m); }
     int frames() const { return frames_; }
 
 private:
@@ -136,6 +138,8 @@ SweepResult runSweep(const std::vector<StressCase>& cases, const SweepOptions& o
         }
         summary.frames = 1;
         CaseFrames frames(data, truth, renderer, options.thresholds);
+        if (!c.buildTruth && summary.reference.error.empty())
+            frames.remember(result.reference, summary.reference);
         for (const StressVariant& v : options.variants)
             for (const auto& [variant, guardsOff] : runsOf(v, options.guards)) {
                 say(tag + ": " + v.name + (guardsOff ? " (guards off)" : ""));
