@@ -112,6 +112,7 @@ int run(const StressArgs& a) {
               << platform->description() << "\n";
     const auto t0 = std::chrono::steady_clock::now();
     stress::GlStressRenderer renderer(debug);
+    renderer.setReadOutput(!a.images.empty());
     const stress::SweepResult r =
         stress::runSweep(cases, o, renderer, [&](const std::string& line) {
             const double s =

@@ -34,7 +34,7 @@ RenderedFrame GlStressRenderer::render(const CaseData& data, const StressVariant
         r.render(
             render::makeRenderView(data.view, data.scene.worldBounds(), data.width, data.height));
         out.radiance = r.readRadiance();
-        out.output = r.readOutput();
+        if (readOutput_) out.output = r.readOutput();
         if (const render::GiApplyPass* pass = r.giApplyPass())
             out.nonfiniteGiTexels = countNonfinitePixels(render::readFloat(*pass->target()));
     }

@@ -15,11 +15,15 @@ class GlStressRenderer : public StressRenderer {
 public:
     explicit GlStressRenderer(gl::DebugOutput& debug) : debug_(debug) {}
     RenderedFrame render(const CaseData& data, const StressVariant& variant) override;
+    // Also read the tonemapped 8-bit image (RenderedFrame::output; --images). Off by default:
+    // at 4096x4096 every read-back costs seconds on llvmpipe.
+    void setReadOutput(bool on) { readOutput_ = on; }
 
 private:
     const probes::ProbeSet& probesFor(const CaseData& data, probes::StorageFormat f);
 
     gl::DebugOutput& debug_;
+    bool readOutput_ = false;
     std::uint64_t cached_ = 0; // CaseData::id the stored sets below belong to
     std::map<probes::StorageFormat, probes::ProbeSet> sets_;
 };
