@@ -91,7 +91,8 @@ nlohmann::json sweepJson(const SweepResult& r) {
              {"median_rel", number(run.m.medianRel)},
              {"error", run.m.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(run.m.error)},
              {"culprits", run.culprits},
-             {"fixed_by", run.fixedBy}});
+             {"fixed_by", run.fixedBy},
+             {"finite_with", run.finiteWith}});
     }
     j["summary"] = {{"runs", r.runs.size()},
                     {"broken", broken},
@@ -159,6 +160,8 @@ std::string sweepText(const SweepResult& r) {
             out << "; fixed by " << joined(run.fixedBy);
         else if (run.guardsOff)
             out << "; no guard fixes it";
+        if (!run.finiteWith.empty() && run.fixedBy.empty())
+            out << " (no NaN/Inf with " << joined(run.finiteWith) << ")";
         out << "\n";
     }
     if (n == 0) out << "  none\n";

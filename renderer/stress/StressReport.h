@@ -8,7 +8,7 @@
 //             "reference_nonfinite_pixels", "reference_error"}
 //   RUN:     {"case", "variant", "guards": "as_given"|"off", "symptom", "nonfinite_pixels",
 //             "nonfinite_gi_texels", "max_rel", "mean_rel", "median_rel", "error",
-//             "culprits": [...], "fixed_by": [...]}
+//             "culprits": [...], "fixed_by": [...], "finite_with": [...]}
 //   summary: {"runs", "broken", "broken_with_guards", "nonfinite_with_guards", "frames"}
 #include "stress/StressSweep.h"
 

@@ -35,7 +35,9 @@ public:
     }
     bool broken(const StressVariant& v) { return stress::broken(measure(v), thresholds_); }
     // A frame rendered outside (the reference of this very case): not rendered again.
-    void remember(const StressVariant& v, const Measurement& m) { cache_.emplace(v.settingsKey(), m); }
+    void remember(const StressVariant& v, const Measurement& m) {
+        cache_.emplace(v.settingsKey(), m);
+    }
     int frames() const { return frames_; }
 
 private:
@@ -89,6 +91,9 @@ void findGuards(CaseFrames& frames, const StressVariant& run, StressRun& out) {
         StressVariant on = run;
         on.set(g, "on");
         if (!frames.broken(on)) out.fixedBy.push_back(g + "=on");
+        if (out.symptom == "nan/inf" && frames.measure(on).error.empty() &&
+            frames.measure(on).nonfinitePixels == 0)
+            out.finiteWith.push_back(g + "=on");
     }
     if (!out.fixedBy.empty() || off.size() < 2) return;
     StressVariant all = run;

@@ -13,7 +13,8 @@
 //     non-guard key applied alone to base; those that break it are the culprits. If none does
 //     alone, each reverted alone in the run; those whose revert fixes it. Else "combination".
 //   fixed_by: each guard the run has off, turned on alone; those that fix it. Else "all guards
-//     together" when that fixes it.
+//     together" when that fixes it. finite_with: for a NaN/Inf run, the guards that alone
+//     leave no NaN/Inf pixel (the run may still be wrong for another reason).
 // Frames with identical settings are rendered once per case (cache by settings key).
 #include "image/Image.h"
 #include "stress/StressCases.h"
@@ -60,6 +61,9 @@ struct StressRun {
     std::string symptom;
     std::vector<std::string> culprits; // "key=value" or a phrase in parentheses
     std::vector<std::string> fixedBy;  // "gi.guard_x=on" or "(all guards together)"
+    // NaN/Inf runs: guards that alone leave no NaN/Inf pixel, even where another cause keeps
+    // the run broken (e.g. clamped probe storage).
+    std::vector<std::string> finiteWith;
 };
 
 struct CaseSummary {

@@ -158,6 +158,7 @@ TEST(StressSweep, NamesTheSwitchThatBreaksAndTheGuardThatFixes) {
     EXPECT_EQ(fp16off.m.nonfinitePixels, 1);
     EXPECT_EQ(fp16off.culprits, std::vector<std::string>{"gi.precision=fp16"});
     EXPECT_EQ(fp16off.fixedBy, std::vector<std::string>{"gi.guard_exposure=on"});
+    EXPECT_EQ(fp16off.finiteWith, std::vector<std::string>{"gi.guard_exposure=on"});
 
     for (bool off : {false, true}) {
         const StressRun& bc6h = findRun(r, "room", "bc6h", off);
@@ -224,7 +225,7 @@ TEST(StressReport, JsonHasEveryFieldTheReadmeLists) {
     for (const auto& run : j["runs"])
         for (const char* k :
              {"case", "variant", "guards", "symptom", "nonfinite_pixels", "nonfinite_gi_texels",
-              "max_rel", "mean_rel", "median_rel", "error", "culprits", "fixed_by"})
+              "max_rel", "mean_rel", "median_rel", "error", "culprits", "fixed_by", "finite_with"})
             EXPECT_TRUE(run.contains(k)) << k;
     EXPECT_EQ(j["runs"][1]["guards"], "off");
     EXPECT_EQ(j["runs"][1]["fixed_by"][0], "gi.guard_exposure=on");
