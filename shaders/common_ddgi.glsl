@@ -20,9 +20,11 @@
 // may stay fp32 there. unpackHalf2x16 is mediump by definition and its result is a half, so
 // every value of the fp16 part is a real half on llvmpipe too, as on a mobile GPU
 // (tests/gl/GiPrecisionTest.cpp: the sums overflow to Inf past 65504).
-// Irradiance enters the fp16 sums straight from the mediump sampler; an overflow guard (e.g.
-// pre-exposed irradiance: GpuProbes uploads E * 2^-k, the caller multiplies the result by 2^k
-// in highp) can be added as its own switch without touching this structure.
+// Irradiance enters the fp16 sums straight from the mediump sampler, unless
+// GI_GUARD_EXPOSURE_ON (gi.guard_exposure): then it is fetched in highp, multiplied by the
+// frame's pre-exposure u_ddgiIrradianceScale (a power of two, FrameContext.h) and only then
+// rounded by ddgiHalf(), so 1e6 lux irradiance at exposure 1e-6 enters the sums near 1, not as
+// Inf, and 1e-6 near 1, not as a denormal. The caller's result is pre-exposed too.
 #ifdef GI_PRECISION_FP16
 #define hfloat mediump float
 #define hvec2 mediump vec2
@@ -42,7 +44,12 @@ mediump vec3 ddgiHalf(highp vec3 v) {
 #define ddgiHalf(x) (x)
 #endif
 
-uniform DDGI_PROBE_DATA_PRECISION sampler2DArray u_ddgiIrradiance; // RGB = E, tiles of DDGI_IRR_TILE^2 texels
+#ifdef GI_GUARD_EXPOSURE_ON
+#define DDGI_IRRADIANCE_PRECISION highp
+#else
+#define DDGI_IRRADIANCE_PRECISION DDGI_PROBE_DATA_PRECISION
+#endif
+uniform DDGI_IRRADIANCE_PRECISION sampler2DArray u_ddgiIrradiance; // RGB = E, tiles of DDGI_IRR_TILE^2 texels
 uniform DDGI_PROBE_DATA_PRECISION sampler2DArray u_ddgiVisibility; // RG = mean, mean^2 of distance / maxDistance
 uniform highp sampler2DArray u_ddgiState;      // per probe: xyz relocation (local), w = valid
 uniform vec3 u_ddgiCenter;        // volume centre in the caller's space
@@ -55,6 +62,7 @@ uniform vec3 u_ddgiGridStep;
 uniform ivec3 u_ddgiCounts;
 uniform float u_ddgiBiasDistance; // DDGI_BIAS_SCALE * minCell, rounded on the CPU like there
 uniform float u_ddgiInvMaxDistance;
+uniform float u_ddgiIrradianceScale; // gi.guard_exposure: the pre-exposure (GpuProbes::bindVolume)
 uniform vec2 u_ddgiIrrInvSize;    // 1 / (width, height) of an irradiance layer
 uniform vec2 u_ddgiVisInvSize;
 
@@ -134,7 +142,11 @@ hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, hvec3 n, vec3 biased, hvec3 a
 
 hvec3 ddgiProbeIrradiance(ivec3 q, vec2 irrLocal) {
     vec2 c = (vec2(q.xz) * DDGI_IRR_TILE + irrLocal) * u_ddgiIrrInvSize;
+#ifdef GI_GUARD_EXPOSURE_ON
+    return ddgiHalf(texture(u_ddgiIrradiance, vec3(c, float(q.y))).rgb * u_ddgiIrradianceScale);
+#else
     return texture(u_ddgiIrradiance, vec3(c, float(q.y))).rgb;
+#endif
 }
 
 // Irradiance at `pos` (caller's space) for surface normal `normal` seen from direction `view`

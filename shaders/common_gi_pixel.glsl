@@ -8,9 +8,12 @@ uniform ivec2 u_giJitter;    // the GBuffer pixel of the texel's footprint sampl
 
 // The GBuffer pixel this frame samples in the texel's footprint: (divisor - 1) / 2 (nearest the
 // centre, top-left of the middle four) unless gi.upsample=temporal jitters it (GiUpsamplePass,
-// common_upsample.glsl).
+// common_upsample.glsl); kept inside the GBuffer: a frame narrower than the divisor (1x1 at
+// quarter) has no middle pixel, and a fetch outside would read depth 0 - a point on the near
+// plane (probebench stress).
 ivec2 giGBufferPixel() {
-    return ivec2(gl_FragCoord.xy) * u_giDivisor + u_giJitter;
+    ivec2 last = ivec2(floor(1.0 / u_gbufferInvSize + 0.5)) - 1;
+    return min(ivec2(gl_FragCoord.xy) * u_giDivisor + u_giJitter, last);
 }
 
 // Camera-relative surface position of GBuffer pixel px at depth-buffer value `depth`.

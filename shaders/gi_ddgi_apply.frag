@@ -8,6 +8,8 @@
 // Variants: GI_RESOLUTION_* (the target is 1, 1/2 or 1/4 of the GBuffer per axis),
 // GI_DYNAMIC_SH (dynamic-object pixels are lit by their SH in the lighting: skipped here),
 // GI_COUNT_PIXELS (diagnostics: location 1 marks every pixel this draw evaluated).
+// Guards: GI_GUARD_EXPOSURE_ON (the output is pre-exposed: common_ddgi.glsl), GI_GUARD_CLAMP_ON
+// (NaN -> 0, overflow -> the target format's largest value, negatives -> 0 before the store).
 #include "common_octahedral.glsl"
 #include "common_gi_pixel.glsl"
 #include "common_ddgi.glsl"
@@ -22,6 +24,22 @@ uniform highp sampler2D u_gbuffer_flags;
 #endif
 uniform vec3 u_ambientUp;  // GI_TARGET_R11G11B10F only
 uniform vec3 u_ambientDown;
+
+#ifdef GI_GUARD_CLAMP_ON
+#ifdef GI_TARGET_R11G11B10F
+const vec4 GI_TARGET_MAX = vec4(65024.0, 65024.0, 64512.0, 1.0); // 6/6/5 mantissa bits
+#else
+#ifdef GI_TARGET_RGBA16F
+const vec4 GI_TARGET_MAX = vec4(65504.0);
+#else
+const vec4 GI_TARGET_MAX = vec4(3.0e38);
+#endif
+#endif
+// Comparisons are false for NaN, so NaN takes the 0 branch; +Inf takes the max.
+vec4 giStorable(vec4 v) {
+    return min(mix(vec4(0.0), v, greaterThanEqual(v, vec4(0.0))), GI_TARGET_MAX);
+}
+#endif
 
 void main() {
     ivec2 px = giGBufferPixel();
@@ -42,6 +60,9 @@ void main() {
     out_gi = vec4(max(gi.rgb + (1.0 - gi.a) * ambient, vec3(0.0, 0.0, 6.103515625e-05)), 1.0);
 #else
     out_gi = gi;
+#endif
+#ifdef GI_GUARD_CLAMP_ON
+    out_gi = giStorable(out_gi);
 #endif
 #ifdef GI_COUNT_PIXELS
     out_evaluated = vec4(1.0);

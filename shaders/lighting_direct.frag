@@ -2,7 +2,10 @@
 // irradiance input: the GI evaluation target where a probe volume covers the pixel
 // (GI_ENABLED), blended by its weight with the hemispherical ambient, which stays the fallback
 // outside every volume (and the whole input without GI); with GI_DYNAMIC_SH, dynamic-object
-// pixels take their object's L1 SH instead. Output: linear radiance.
+// pixels take their object's L1 SH instead. Output: linear radiance x u_preExposure
+// (gi.guard_exposure, FrameContext.h; 1 without it): the GI inputs arrive pre-exposed and are
+// brought back to scene units here, the lighting is computed in fp32 and pre-exposed once for
+// the RGBA16F target (the GBuffer's emissive is stored pre-exposed). GI_GUARD_CLAMP_ON: NaN -> 0 and overflow -> 65504 before the store.
 #include "common_octahedral.glsl"
 in vec2 v_uv;
 out vec4 out_radiance;
@@ -21,6 +24,7 @@ uniform vec2 u_shadowTexel;
 uniform vec3 u_skyRadiance;
 uniform vec3 u_ambientUp;          // indirect irradiance for an upward normal...
 uniform vec3 u_ambientDown;        // ...and a downward one
+uniform float u_preExposure;       // the radiance target holds radiance x this (a power of 2)
 #define MAX_LIGHTS 16
 uniform int u_lightCount;
 uniform vec4 u_lightPosType[MAX_LIGHTS];   // xyz camera-relative position, w: 0 dir, 1 point, 2 spot
@@ -49,16 +53,16 @@ vec3 indirectIrradiance(vec3 n, ivec2 px) {
                   texelFetch(u_giDynamicSh, ivec2(2, object), 0) * n.y +
                   texelFetch(u_giDynamicSh, ivec2(3, object), 0) * n.z;
         sh = max(sh, vec4(0.0)); // an L1 fit can dip below 0 opposite a bright side
-        return sh.rgb + (1.0 - min(sh.a, 1.0)) * ambient;
+        return sh.rgb / u_preExposure + (1.0 - min(sh.a, 1.0)) * ambient;
     }
 #endif
     // Full resolution: the apply pass's target, or at half/quarter the upsample pass's output.
     vec4 gi = texelFetch(u_giIrradiance, px, 0);
 #ifdef GI_TARGET_R11G11B10F
     // No alpha: the apply pass blended the ambient in; all zero = no volume drew here.
-    return gi.rgb == vec3(0.0) ? ambient : gi.rgb;
+    return gi.rgb == vec3(0.0) ? ambient : gi.rgb / u_preExposure;
 #else
-    return gi.rgb + (1.0 - gi.a) * ambient;
+    return gi.rgb / u_preExposure + (1.0 - gi.a) * ambient;
 #endif
 }
 #else
@@ -106,11 +110,21 @@ vec3 punctualIrradiance(vec3 rel, vec3 n) {
     return e;
 }
 
+// What the RGBA16F target is given: with GI_GUARD_CLAMP_ON, NaN -> 0 (comparisons with NaN are
+// false), negatives -> 0, overflow and +Inf -> 65504.
+vec3 storable(vec3 radiance) {
+#ifdef GI_GUARD_CLAMP_ON
+    return min(mix(vec3(0.0), radiance, greaterThanEqual(radiance, vec3(0.0))), vec3(65504.0));
+#else
+    return radiance;
+#endif
+}
+
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     float depth = texelFetch(u_gbuffer_depth, px, 0).r;
     if (depth >= 1.0) {
-        out_radiance = vec4(u_skyRadiance, 1.0);
+        out_radiance = vec4(storable(u_skyRadiance * u_preExposure), 1.0);
         return;
     }
     vec4 clip = vec4(v_uv * 2.0 - 1.0, depth * 2.0 - 1.0, 1.0);
@@ -121,7 +135,7 @@ void main() {
     vec3 emissive = texelFetch(u_gbuffer_emissive, px, 0).rgb;
 
 #ifdef DEBUG_INDIRECT_ONLY
-    out_radiance = vec4(albedo / PI * indirectIrradiance(n, px), 1.0); // debug view gi_only
+    out_radiance = vec4(storable(albedo / PI * indirectIrradiance(n, px) * u_preExposure), 1.0);
     return;
 #endif
     vec3 irradiance = indirectIrradiance(n, px) + punctualIrradiance(rel, n);
@@ -130,5 +144,6 @@ void main() {
         if (ndl > 0.0) irradiance += u_sunIrradiance * ndl * sunShadow(rel, n);
     }
     // Lambert: outgoing radiance = albedo / pi * irradiance.
-    out_radiance = vec4(emissive + albedo / PI * irradiance, 1.0);
+    vec3 radiance = emissive + albedo / PI * irradiance * u_preExposure; // emissive: pre-exposed
+    out_radiance = vec4(storable(radiance), 1.0);
 }

@@ -27,7 +27,8 @@ FrameSettings defaultFrameSettings(const scene::Scene& scene) {
 
 FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& settings,
                              const GiOptions& gi)
-    : gpu_(scene), settings_(settings), quirks_(gl::detectDriverQuirks()) {
+    : gpu_(scene), settings_(settings), quirks_(gl::detectDriverQuirks()),
+      preExposed_(gi.profile.gi.guardExposure == profile::GiGuard::On) {
     passes_.push_back(std::make_unique<ShadowPass>());
     passes_.push_back(std::make_unique<GBufferPass>());
     if (gi.probes) {
@@ -63,6 +64,8 @@ void FrameRenderer::render(const RenderView& view, FrameTimer* timer) {
         targets_ = std::make_unique<FrameTargets>(view.width, view.height);
     lastView_ = view;
     FrameContext ctx{gpu_, view, settings_, programs_, *targets_, quirks_, {}, {}, timer};
+    ctx.preExposure = preExposed_ ? preExposureScale(settings_.exposure) : 1.0f;
+    lastPreExposure_ = ctx.preExposure;
     if (upsample_) upsample_->beginFrame(view, ctx);
     for (auto& pass : passes_) {
         TimedSection section(timer, pass->name());
@@ -83,7 +86,11 @@ image::Image8 FrameRenderer::readOutput() const {
 
 image::ImageF FrameRenderer::readRadiance() const {
     if (!targets_) throw Error("readRadiance before any frame was rendered");
-    return readFloat(targets_->radiance);
+    image::ImageF img = readFloat(targets_->radiance);
+    if (lastPreExposure_ != 1.0f) // gi.guard_exposure: back to scene units (exact, a power of 2)
+        for (std::size_t i = 0; i < img.pixels.size(); ++i)
+            if (i % 4 != 3) img.pixels[i] /= lastPreExposure_;
+    return img;
 }
 
 void FrameRenderer::dumpGBuffer(const std::string& dir) {

@@ -44,7 +44,7 @@ public:
     void render(const RenderView& view, FrameTimer* timer = nullptr);
 
     image::Image8 readOutput() const;   // tonemapped sRGB, 8-bit
-    image::ImageF readRadiance() const; // linear HDR radiance (RGBA, alpha = 1)
+    image::ImageF readRadiance() const; // linear HDR radiance (RGBA, alpha = 1), scene units
     // Writes every GBuffer channel (PNG for colours and normals, PFM for HDR and depth).
     void dumpGBuffer(const std::string& dir);
     // Copies the output to the default framebuffer of a window of size w x h.
@@ -72,6 +72,8 @@ private:
     GiApplyPass* giApply_ = nullptr;
     GiUpsamplePass* upsample_ = nullptr; // owned by passes_
     RenderView lastView_;
+    bool preExposed_ = false;      // gi.guard_exposure
+    float lastPreExposure_ = 1.0f; // the last frame's FrameContext::preExposure
 };
 
 } // namespace pb::render

@@ -8,7 +8,7 @@ void CompositePass::execute(FrameContext& frame) {
     prog.use();
     frame.targets.radiance.bind(0);
     prog.set("u_radiance", 0);
-    prog.set("u_exposure", frame.settings.exposure);
+    prog.set("u_exposure", frame.settings.exposure / frame.preExposure); // exact: a power of 2
     drawFullscreenTriangle(frame.targets);
     glBindTexture(GL_TEXTURE_2D, 0);
 }

@@ -43,6 +43,7 @@ void DirectLightingPass::execute(FrameContext& frame) {
     prog.set("u_skyRadiance", s.sky.radiance);
     prog.set("u_ambientUp", frame.settings.ambientUp);
     prog.set("u_ambientDown", frame.settings.ambientDown);
+    prog.set("u_preExposure", frame.preExposure);
     bool sun = frame.shadow.enabled;
     prog.set("u_sunEnabled", sun ? 1 : 0);
     prog.set("u_toSun", glm::normalize(s.sun.toSun));

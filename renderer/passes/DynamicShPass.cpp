@@ -85,7 +85,7 @@ void DynamicShPass::execute(FrameContext& frame) {
     eval.set("u_pointNormal", 1);
     eval.set("u_pointView", 1);
     for (int v : probes_.drawOrder()) { // largest first, overwriting: the smallest one wins
-        probes_.bindVolume(eval, v, 2, frame.view.eye);
+        probes_.bindVolume(eval, v, 2, frame.view.eye, frame.preExposure);
         drawFullscreenTriangle(frame.targets);
     }
 

@@ -1,5 +1,7 @@
 #include "passes/FrameContext.h"
 
+#include <cmath>
+
 namespace pb::render {
 
 namespace {
@@ -18,6 +20,11 @@ FrameTargets::FrameTargets(int width, int height)
       radianceFbo("radiance", {&radiance}, nullptr),
       output(makeColour(gl::TextureFormat::RGBA8, width, height)),
       outputFbo("output", {&output}, nullptr), emptyVao(gl::genVertexArray()) {}
+
+float preExposureScale(float exposure) {
+    if (!(exposure > 0.0f) || !std::isfinite(exposure)) return 1.0f;
+    return std::ldexp(1.0f, int(std::trunc(std::log2(exposure))));
+}
 
 void drawFullscreenTriangle(const FrameTargets& targets) {
     glBindVertexArray(targets.emptyVao.id());

@@ -65,7 +65,16 @@ struct FrameContext {
     // The GBuffer pixel inside each low-resolution GI texel's footprint the apply pass
     // evaluates this frame (GiUpsamplePass::beginFrame; 0 at full resolution).
     glm::ivec2 giJitter{0};
+    // gi.guard_exposure: the radiance target (and GI target, SH, probe spheres) hold values x
+    // this; the composite divides it out. 1 without the guard.
+    float preExposure = 1.0f;
 };
+
+// gi.guard_exposure's scale for a frame exposure: 2^trunc(log2(exposure)) - a power of two, so
+// scaling and un-scaling are exact in float, and 1 for exposures in (1/2, 2) (frames of usual
+// brightness store exactly what they would without the guard). 1 for a non-finite or
+// non-positive exposure.
+float preExposureScale(float exposure);
 
 class Pass {
 public:

@@ -41,7 +41,8 @@ void GBufferPass::execute(FrameContext& frame) {
         prog.set("u_relFromLocal", frame.view.relFromLocal(inst.transform));
         prog.set("u_normalFromLocal", glm::mat3(glm::inverseTranspose(inst.transform)));
         prog.set("u_baseColor", m.baseColor);
-        prog.set("u_emissive", m.emissive);
+        // Pre-exposed (gi.guard_exposure) so a bright emitter fits the RGBA16F channel.
+        prog.set("u_emissive", m.emissive * frame.preExposure);
         prog.set("u_doubleSided", m.doubleSided ? 1 : 0);
         // Deferred shading has no transparency: BLEND is drawn alpha-tested at 0.5.
         float cutoff = m.alphaMode == scene::AlphaMode::Mask    ? m.alphaCutoff

@@ -58,8 +58,9 @@ void setPixelUniforms(const gl::Program& prog, const FrameContext& frame, int di
     prog.set("u_gbufferInvSize", glm::vec2(1.0f / float(gb.width()), 1.0f / float(gb.height())));
     prog.set("u_giDivisor", divisor);
     prog.set("u_giJitter", frame.giJitter); // gi.upsample: where in the footprint to sample
-    prog.set("u_ambientUp", frame.settings.ambientUp);
-    prog.set("u_ambientDown", frame.settings.ambientDown);
+    // r11g11b10f blends the ambient in here: pre-exposed like the irradiance.
+    prog.set("u_ambientUp", frame.settings.ambientUp * frame.preExposure);
+    prog.set("u_ambientDown", frame.settings.ambientDown * frame.preExposure);
 }
 
 void resetState() {
@@ -180,7 +181,8 @@ void GiApplyPass::execute(FrameContext& frame) {
 
 void GiApplyPass::drawNaive(Draw& d, int v) {
     d.applyFullscreen->use();
-    probes_.bindVolume(*d.applyFullscreen, v, kFirstProbeUnit, d.frame.view.eye);
+    probes_.bindVolume(*d.applyFullscreen, v, kFirstProbeUnit, d.frame.view.eye,
+                       d.frame.preExposure);
     drawFullscreenTriangle(d.frame.targets);
 }
 
@@ -204,7 +206,7 @@ void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r) {
             TimedSection section(d.frame.timer, "gi-fill");
             d.fill->use();
             d.fill->set("u_clipFromBox", r.clipFromBox);
-            probes_.bindVolume(*d.fill, v, kFirstProbeUnit, d.frame.view.eye);
+            probes_.bindVolume(*d.fill, v, kFirstProbeUnit, d.frame.view.eye, d.frame.preExposure);
             glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
             glCullFace(GL_BACK);
             glDepthFunc(GL_LEQUAL);
@@ -220,7 +222,7 @@ void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r) {
         glStencilMask(kStencilAny | kStencilCurrent);
         d.applyBox->use();
         d.applyBox->set("u_clipFromBox", r.clipFromBox);
-        probes_.bindVolume(*d.applyBox, v, kFirstProbeUnit, d.frame.view.eye);
+        probes_.bindVolume(*d.applyBox, v, kFirstProbeUnit, d.frame.view.eye, d.frame.preExposure);
         drawBox(d.frame.targets);
     } else {
         // Where 'any' is clear: 'any' on, 'current' off (a stale one included).
@@ -232,13 +234,15 @@ void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r) {
             glDepthFunc(GL_GEQUAL);
             d.applyBox->use();
             d.applyBox->set("u_clipFromBox", r.clipFromBox);
-            probes_.bindVolume(*d.applyBox, v, kFirstProbeUnit, d.frame.view.eye);
+            probes_.bindVolume(*d.applyBox, v, kFirstProbeUnit, d.frame.view.eye,
+                               d.frame.preExposure);
             drawBox(d.frame.targets);
         } else {
             glDisable(GL_DEPTH_TEST);
             glDisable(GL_CULL_FACE);
             d.applyFullscreen->use();
-            probes_.bindVolume(*d.applyFullscreen, v, kFirstProbeUnit, d.frame.view.eye);
+            probes_.bindVolume(*d.applyFullscreen, v, kFirstProbeUnit, d.frame.view.eye,
+                               d.frame.preExposure);
             drawFullscreenTriangle(d.frame.targets);
         }
     }

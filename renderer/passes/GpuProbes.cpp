@@ -168,7 +168,7 @@ std::vector<int> GpuProbes::drawOrder() const {
 }
 
 void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,
-                           const glm::dvec3& origin) const {
+                           const glm::dvec3& origin, float irradianceScale) const {
     const GpuProbeVolume& g = volumes_[size_t(v)];
     g.irradiance.bind(firstUnit);
     g.visibility.bind(firstUnit + 1);
@@ -186,6 +186,7 @@ void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,
     program.set("u_ddgiCounts", g.counts);
     program.set("u_ddgiBiasDistance", g.biasDistance);
     program.set("u_ddgiInvMaxDistance", g.invMaxDistance);
+    program.set("u_ddgiIrradianceScale", irradianceScale);
     const gl::TextureDesc &irr = g.irradiance.desc(), &vis = g.visibility.desc();
     program.set("u_ddgiIrrInvSize", glm::vec2(1.0f / float(irr.width), 1.0f / float(irr.height)));
     program.set("u_ddgiVisInvSize", glm::vec2(1.0f / float(vis.width), 1.0f / float(vis.height)));

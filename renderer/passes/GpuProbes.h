@@ -49,9 +49,10 @@ public:
 
     // Binds volume v's textures to units firstUnit..firstUnit+2 and sets the u_ddgi* uniforms
     // of the program in use. `origin` is the origin of the shader's space in world units (the
-    // eye for camera-relative rendering, 0 for world space).
-    void bindVolume(const gl::Program& program, int v, int firstUnit,
-                    const glm::dvec3& origin) const;
+    // eye for camera-relative rendering, 0 for world space). `irradianceScale` multiplies the
+    // irradiance in shaders built with gi.guard_exposure (the frame's pre-exposure).
+    void bindVolume(const gl::Program& program, int v, int firstUnit, const glm::dvec3& origin,
+                    float irradianceScale = 1.0f) const;
     static constexpr int kUnitsPerVolume = 3;
 
 private:

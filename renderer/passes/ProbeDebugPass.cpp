@@ -23,15 +23,16 @@ void ProbeDebugPass::execute(FrameContext& frame) {
     glDisable(GL_BLEND);
     gl::Defines defines = ddgiConstantDefines();
     if (visibility_) defines["DEBUG_VISIBILITY"] = "";
+    defines["GI_GUARD_EXPOSURE_ON"] = ""; // the radiance target is pre-exposed (FrameContext.h)
     const gl::Program& prog =
         frame.programs.get("debug_probe_sphere.vert", "debug_probe_sphere.frag", defines);
     prog.use();
     prog.set("u_clipFromRel", frame.view.clipFromRel);
-    prog.set("u_visibilityScale", 0.5f / frame.settings.exposure);
+    prog.set("u_visibilityScale", 0.5f * frame.preExposure / frame.settings.exposure);
     glBindVertexArray(frame.targets.emptyVao.id());
     for (size_t v = 0; v < probes_.volumes().size(); ++v) {
         const GpuProbeVolume& vol = probes_.volumes()[v];
-        probes_.bindVolume(prog, int(v), 0, frame.view.eye);
+        probes_.bindVolume(prog, int(v), 0, frame.view.eye, frame.preExposure);
         // An eighth of the smallest cell (biasDistance = kBiasScale x it): spheres never touch.
         prog.set("u_sphereRadius", 0.125f * vol.biasDistance / probes::kBiasScale);
         glDrawArraysInstanced(GL_TRIANGLES, 0, 6 * 12 * 6,

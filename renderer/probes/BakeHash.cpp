@@ -9,7 +9,7 @@
 namespace pb::probes {
 namespace {
 
-constexpr std::uint32_t kBakeAlgorithmVersion = 1;
+constexpr std::uint32_t kBakeAlgorithmVersion = 2; // 2: far scenes bake in a moved frame
 
 void hashSun(Hasher& h, const scene::Sun& s) {
     h.pod(std::uint8_t(s.enabled));

@@ -1,6 +1,7 @@
 #include "probes/Baker.h"
 
 #include "core/Error.h"
+#include "probes/BakeOrigin.h"
 #include "probes/GeometryPass.h"
 #include "probes/NestingBlend.h"
 #include "probes/ParallelFor.h"
@@ -75,6 +76,9 @@ void checkRequest(const BakeRequest& r) {
 ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats* statsOut,
                     const BakeProgressFn& progress) {
     checkRequest(req);
+    // Far from the origin: bake in a moved frame (BakeOrigin.h), then this returns origin 0.
+    if (const glm::dvec3 origin = bakeOrigin(scene, req.volumes); origin != glm::dvec3(0.0))
+        return bakeProbesAround(origin, scene, req, statsOut, progress);
     const auto t0 = Clock::now();
     const std::vector<int> parents = validateVolumes(req.volumes, "volumes");
     const BakeSettings& cfg = req.settings;

@@ -22,6 +22,7 @@ enum class GiProbeOrder { Xyz, SliceFirst };
 enum class GiMultiVolume { Naive, Stencil };
 enum class GiDynamic { PerPixel, Sh };
 enum class GiUpsample { Bilinear, Bilateral, Temporal };
+enum class GiGuard { Off, On }; // gi.guard_*: numerical guards (issue 8)
 
 struct GiSwitches {
     GiTechnique technique;
@@ -35,6 +36,8 @@ struct GiSwitches {
     GiUpsample upsample; // used when resolution is half or quarter
     std::string
         volumeLod; // "all" | "omit:NAME[,NAME...]" | "min_spacing:METRES" | "budget_mib:MIB"
+    GiGuard guardExposure; // pre-exposed irradiance and radiance
+    GiGuard guardClamp;    // finite, in-range values before every store
 };
 
 struct Profile {

@@ -54,6 +54,10 @@ SwitchInfo text(const char* key, std::string GiSwitches::*field, const char* def
     return s;
 }
 
+Names<GiGuard> guardNames() {
+    return {{GiGuard::Off, "off"}, {GiGuard::On, "on"}};
+}
+
 std::string volumeLodProblem(const std::string& v) {
     try {
         parseVolumeLod(v);
@@ -112,6 +116,15 @@ std::vector<SwitchInfo> buildTable() {
                "bilateral, or temporal history with jittered samples"),
         text("gi.volume_lod", &GiSwitches::volumeLod, "all", volumeLodProblem,
              "volumes left out: all | omit:A,B | min_spacing:M | budget_mib:MIB"),
+        // Guards (issue 8; `probebench stress` finds what they fix, README.md has the table).
+        choice("gi.guard_exposure", &GiSwitches::guardExposure, guardNames(), "on", D::ChoiceFlag,
+               "GI_GUARD_EXPOSURE",
+               "pre-exposure: probe irradiance x the exposure's power of two before fp16 math "
+               "and the GI/radiance targets; keeps 1e-6..1e6 lighting in range"),
+        choice("gi.guard_clamp", &GiSwitches::guardClamp, guardNames(), "on", D::ChoiceFlag,
+               "GI_GUARD_CLAMP",
+               "NaN -> 0, overflow -> the format's max, no negatives, before the GI target and "
+               "the radiance are stored"),
     };
 }
 
