@@ -5,6 +5,7 @@
 // that fixes it (renderer/stress/). Built-in scenes and small bakes: minutes on 2 cores.
 #include "CommandRegistry.h"
 #include "PlatformOptions.h"
+#include "ProfileOptions.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "gl/DebugOutput.h"
@@ -22,7 +23,7 @@ namespace {
 
 struct StressArgs {
     platform::PlatformOptions platform;
-    std::vector<std::string> variants, sets, cases;
+    std::vector<std::string> variants, profiles, sets, cases;
     std::string guards = "both", json, images;
     double threshold = 0.05;
     int width = 64, height = 48, maxResolution = 4096, rays = 64;
@@ -36,6 +37,13 @@ std::vector<stress::StressVariant> resolveVariants(const StressArgs& a) {
     std::vector<stress::StressVariant> out;
     for (const std::string& spec : a.variants)
         out.push_back(stress::parseVariantSpec(spec));
+    for (const std::string& name : a.profiles) {
+        const profile::PlatformProfile p = profile::loadProfile(name, profileSearch());
+        stress::StressVariant v;
+        v.name = p.name;
+        v.profile = p.switches;
+        out.push_back(v);
+    }
     if (out.empty()) out = stress::defaultVariants();
     for (stress::StressVariant& v : out)
         for (const std::string& kv : a.sets) {
@@ -148,6 +156,10 @@ const RegisterCommand reg{
                         "NAME:key=value,... - switches (gi.*) and probes.format "
                         "(rgba16f|rgba32f|bc6h) of one variant (repeatable; default: defaults, "
                         "fp16, r11g11b10f, bc6h, quarter, handheld)");
+         cmd.add_option("--profiles", a->profiles,
+                        "Platform profiles (names or files, comma-separated) swept as variants "
+                        "with their switches and rgba16f probes; with --variant, both")
+             ->delimiter(',');
          cmd.add_option("--set", a->sets,
                         "key=value applied to every variant, not to the reference (repeatable)");
          cmd.add_option("--cases", a->cases,

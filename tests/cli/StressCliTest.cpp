@@ -51,6 +51,22 @@ TEST(StressCli, WritesTheSweepAsJson) {
     EXPECT_TRUE(j["platform"].is_string());
 }
 
+TEST(StressCli, SweepsPlatformProfilesWithTheirSwitches) {
+    const fs::path out = outputDir() / "stress_profiles.json";
+    auto r = runProbebench(tiny({"--cases", "hot_spot", "--profiles", "handheld,reference",
+                                 "--guards", "as_given", "--json", out.string()}));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    std::ifstream in(out);
+    ASSERT_TRUE(in) << out;
+    const nlohmann::json j = nlohmann::json::parse(in);
+    ASSERT_EQ(j["runs"].size(), 2u); // one case x two profiles, guards as the profiles give them
+    EXPECT_EQ(j["runs"][0]["variant"], "handheld");
+    EXPECT_EQ(j["runs"][1]["variant"], "reference");
+    auto bad = runProbebench(tiny({"--profiles", "no-such-profile"}));
+    EXPECT_NE(bad.exitCode, 0);
+    EXPECT_NE(bad.output.find("no-such-profile"), std::string::npos) << bad.output;
+}
+
 TEST(StressCli, ListsItsCases) {
     auto r = runProbebench({"stress", "--list-cases"});
     ASSERT_EQ(r.exitCode, 0) << r.output;
