@@ -18,6 +18,7 @@
 #include "frame/FrameRenderer.h"
 #include "gl/DebugOutput.h"
 #include "metrics/ImageMetrics.h"
+#include "passes/GiDebugInjection.h"
 #include "probes/ProbeFile.h"
 #include "views/WorstCaseView.h"
 
@@ -154,6 +155,8 @@ void writeOutputs(const BenchArgs& a, bench::BenchResult& r,
 int run(const BenchArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
     validate(a);
+    if (const std::string inj = render::giDebugInjectionSummary(); !inj.empty())
+        std::fprintf(stderr, "warning: test-only fault injection active: %s\n", inj.c_str());
     const profile::ProfileSearch search = profileSearch();
     profile::PlatformProfile reference = profile::loadProfile(a.reference, search);
     std::vector<profile::PlatformProfile> profiles = loadProfiles(a, search);
