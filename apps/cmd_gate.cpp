@@ -79,38 +79,39 @@ void checkGl(gl::DebugOutput& debug, std::uint64_t mark, const std::string& what
                     " error(s): " + errors.front().text);
 }
 
-// Ratio timing (one process) or --against timing (two workers): rows, and the ratios of
-// this run into `now` (a baseline records them).
-std::vector<gate::GateRow> runTiming(const GateArgs& a, gate::GateRecord& now,
-                                     const gate::GateRecord* base,
-                                     std::vector<std::unique_ptr<gate::GateRenderer>>& renderers,
-                                     size_t ref, const gate::GateInputs& in,
-                                     const bench::TimingChoice& timing, bool es,
-                                     const std::string& probesFile) {
-    const gate::GateSuite& s = now.suite;
-    const int budget = a.quick ? s.timing.quickMaxRounds : s.timing.maxRounds;
+// --against: this binary and the other one as two workers, every profile. Rows: frame and
+// GI passes per profile.
+std::vector<gate::GateRow> againstTiming(const GateArgs& a, const gate::GateSuite& s, int budget,
+                                         const std::string& probesFile) {
+    gate::WorkerProcess cand(workerArgs(gate::selfExecutable(), s, probesFile, a), {},
+                             "candidate worker (this binary)");
+    gate::WorkerProcess basew(workerArgs(a.against, s, probesFile, a), {},
+                              "baseline worker (" + a.against + ")");
+    for (gate::WorkerProcess* w : {&cand, &basew})
+        if (w->readLine() != gate::kWorkerHello)
+            throw Error(w->label() + ": not a probebench gate worker");
     std::vector<gate::GateRow> rows;
-    if (!a.against.empty()) {
-        gate::WorkerProcess cand(workerArgs(gate::selfExecutable(), s, probesFile, a), {},
-                                 "candidate worker (this binary)");
-        gate::WorkerProcess basew(workerArgs(a.against, s, probesFile, a), {},
-                                  "baseline worker (" + a.against + ")");
-        for (gate::WorkerProcess* w : {&cand, &basew})
-            if (w->readLine() != gate::kWorkerHello)
-                throw Error(w->label() + ": not a probebench gate worker");
-        for (const std::string& name : s.profiles) {
-            auto say = [&](const std::string& l) { progress("timing " + name + " against: " + l); };
-            const gate::SequentialTiming t =
-                gate::timeAgainst(basew, cand, name, s.timing, budget, say);
-            for (const gate::TimedQuantity& q : t.quantities)
-                rows.push_back(gate::timingRow(
-                    name, (q.name == "gi" ? "GI passes ms vs " : "frame ms vs ") + a.against,
-                    q.comparison, "ms", t.rounds, t.budgetReached));
-        }
-        (void)in;
-        (void)renderers;
-        return rows;
+    for (const std::string& name : s.profiles) {
+        auto say = [&](const std::string& l) { progress("timing " + name + " against: " + l); };
+        const gate::SequentialTiming t =
+            gate::timeAgainst(basew, cand, name, s.timing, budget, say);
+        for (const gate::TimedQuantity& q : t.quantities)
+            rows.push_back(gate::timingRow(
+                name, (q.name == "gi" ? "GI passes ms vs " : "frame ms vs ") + a.against,
+                q.comparison, "ms", t.rounds, t.budgetReached));
     }
+    return rows;
+}
+
+// In this process: each profile's frame over the reference's, round by round, against the
+// baseline's ratios (recorded into `now` for --update).
+std::vector<gate::GateRow> ratioTiming(const GateArgs& a, gate::GateRecord& now,
+                                       const gate::GateRecord* base,
+                                       std::vector<std::unique_ptr<gate::GateRenderer>>& renderers,
+                                       size_t ref, const bench::TimingChoice& timing, bool es,
+                                       int budget) {
+    const gate::GateSuite& s = now.suite;
+    std::vector<gate::GateRow> rows;
     bench::SectionTimer timer(timing, es);
     for (size_t i = 0; i < renderers.size(); ++i) {
         if (i == ref) continue;
@@ -213,9 +214,12 @@ int run(GateArgs& a) {
         }
 
     std::vector<gate::GateRow> timingRows;
-    if (!a.noTiming)
-        timingRows = runTiming(a, now, base ? &*base : nullptr, renderers, ref, in, timing, caps.es,
-                               probesFile);
+    const int budget = a.quick ? s.timing.quickMaxRounds : s.timing.maxRounds;
+    if (!a.noTiming && !a.against.empty())
+        timingRows = againstTiming(a, s, budget, probesFile);
+    else if (!a.noTiming)
+        timingRows =
+            ratioTiming(a, now, base ? &*base : nullptr, renderers, ref, timing, caps.es, budget);
     gate::GateOutcome outcome;
     outcome.recording = a.update;
     const gate::GateRecord empty{s, {}, "", {}, {}};

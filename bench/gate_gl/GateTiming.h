@@ -6,7 +6,7 @@
 //   ratio:   in one process, a profile's frame over the reference's in the same round,
 //            compared with the ratios stored in the baseline (never with absolute times);
 //   against: the same profile in two worker processes - this binary and --against's -
-//            compared round by round (AgainstTiming.h).
+//            compared round by round (GateWorker.h).
 #include "GateMeasure.h"
 #include "bench/gate/GateRecord.h"
 #include "bench/gate/TimingDecision.h"
