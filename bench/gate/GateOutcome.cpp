@@ -120,6 +120,14 @@ void compareCounters(const ProfileRecord* base, const ProfileRecord& now, GateOu
                                 (g.now.at(f) > g.base.at(f) ? "+" : "") +
                                 std::to_string(g.now.at(f) - g.base.at(f));
         }
+        if (row.note.empty() && g.name == "model.fetches" && g.inNow) {
+            // The "texture fetches per pixel": all fetches over the GI pixels.
+            std::int64_t sum = 0;
+            for (const auto& [f, v] : g.now)
+                sum += v;
+            const std::int64_t pixels = valueOr(now.counters, "model.gi_pixels", 0);
+            if (pixels > 0) row.note = num(double(sum) / double(pixels), "%.2f per GI pixel");
+        }
         out.rows.push_back(row);
     }
 }
