@@ -20,7 +20,7 @@ void addGateSuiteOptions(CLI::App& cmd, GateSuiteArgs& a) {
         cmd.add_option("--scene", a.scene, "Scene of the suite (default: rooms)")->group(g),
         cmd.add_option("--volumes", a.volumes,
                        "Probe volumes to bake: a volumes file, auto or auto-uniform (default: "
-                       "bench/volumes/rooms_nested.toml)")
+                       "bench/baselines/rooms_gate.toml)")
             ->group(g),
         cmd.add_option("--camera", a.camera,
                        "Camera px,py,pz,tx,ty,tz[,fovdeg] (default: the worst-case view, searched "

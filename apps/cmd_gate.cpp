@@ -61,15 +61,20 @@ std::string probeIdentity(const probes::ProbeSet& set, const std::string& file) 
 // The worker command line shared by --against and --callgrind.
 std::vector<std::string> workerArgs(const std::string& binary, const gate::GateSuite& s,
                                     const std::string& probesFile, const GateArgs& a) {
-    return {binary,       "gate-worker",
-            "--scene",    s.scene,
-            "--probes",   probesFile,
-            "--camera",   s.camera,
-            "--width",    std::to_string(s.width),
-            "--height",   std::to_string(s.height),
-            "--timing",   s.timing.method,
-            "--warmup",   std::to_string(s.timing.warmup),
-            "--platform", a.platform.name};
+    std::vector<std::string> v{binary,       "gate-worker",
+                               "--scene",    s.scene,
+                               "--probes",   probesFile,
+                               "--camera",   s.camera,
+                               "--width",    std::to_string(s.width),
+                               "--height",   std::to_string(s.height),
+                               "--timing",   s.timing.method,
+                               "--warmup",   std::to_string(s.timing.warmup),
+                               "--platform", a.platform.name};
+    if (a.platform.device >= 0) {
+        v.push_back("--device");
+        v.push_back(std::to_string(a.platform.device));
+    }
+    return v;
 }
 
 void checkGl(gl::DebugOutput& debug, std::uint64_t mark, const std::string& what) {

@@ -36,7 +36,7 @@ struct AccuracyTolerance {
 
 struct GateSuite {
     std::string scene = "rooms";
-    std::string volumes = "bench/volumes/rooms_nested.toml"; // relative: to the repository
+    std::string volumes = "bench/baselines/rooms_gate.toml"; // relative: to the repository
     std::string camera; // px,py,pz,tx,ty,tz,fov (fixed, so every run renders the same frame)
     int width = 384, height = 216;
     std::vector<std::string> profiles; // every one measured; the reference among them
