@@ -10,6 +10,7 @@
 #include "bench/report/MarkdownSummary.h"
 #include "bench/report/ResultJson.h"
 #include "bench/runner/BenchContext.h"
+#include "bench/runner/CacheModelRun.h"
 #include "bench/runner/ProbeCache.h"
 #include "bench/runner/SessionRunner.h"
 #include "core/Error.h"
@@ -17,6 +18,7 @@
 #include "frame/FrameRenderer.h"
 #include "gl/DebugOutput.h"
 #include "metrics/ImageMetrics.h"
+#include "passes/GiDebugInjection.h"
 #include "probes/ProbeFile.h"
 #include "views/WorstCaseView.h"
 
@@ -36,7 +38,7 @@ struct BenchArgs {
     platform::PlatformOptions platform;
     std::vector<std::string> profiles, sets;
     std::string reference = "reference";
-    bool ablate = false, strict = false, noFloor = false;
+    bool ablate = false, strict = false, noFloor = false, noCacheModel = false;
     int frames = 3, rounds = 7, warmup = 2, width = 0, height = 0;
     std::string view, camera, probes, volumes = "auto", cacheDir, json, html, heatmaps,
                                       timing = "auto";
@@ -153,6 +155,8 @@ void writeOutputs(const BenchArgs& a, bench::BenchResult& r,
 int run(const BenchArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
     validate(a);
+    if (const std::string inj = render::giDebugInjectionSummary(); !inj.empty())
+        std::fprintf(stderr, "warning: test-only fault injection active: %s\n", inj.c_str());
     const profile::ProfileSearch search = profileSearch();
     profile::PlatformProfile reference = profile::loadProfile(a.reference, search);
     std::vector<profile::PlatformProfile> profiles = loadProfiles(a, search);
@@ -204,6 +208,7 @@ int run(const BenchArgs& a) {
     bench::RunnerInputs in{&s, &set, view, render::defaultFrameSettings(s), &debug};
     std::vector<image::ImageF> flipMaps;
     result.sessions = bench::runBenchPlan(plan, in, o, &flipMaps);
+    if (!a.noCacheModel) result.cacheModel = bench::cacheModelEntries(plan, s, set, view, progress);
     result.context["load_average_end"] = bench::loadAverage();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -290,6 +295,8 @@ const RegisterCommand reg{
                         "steadier on a shared machine), or query")
              ->capture_default_str();
          cmd.add_flag("--no-floor", a->noFloor, "Skip the GI pass's texture-fetch floor");
+         cmd.add_flag("--no-cache-model", a->noCacheModel,
+                      "Skip the report's texture-cache model (GL-free; minutes at 1440p)");
          cmd.add_option("--ppd", a->ppd, "FLIP viewing condition, pixels per degree")
              ->capture_default_str();
          cmd.add_flag("--strict", a->strict,

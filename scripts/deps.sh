@@ -7,6 +7,7 @@ PB_PACKAGES=(
     libglm-dev libglfw3-dev xvfb xauth
     libtinygltf-dev libembree-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev
     libcli11-dev python3-glad libgtest-dev libbenchmark-dev
+    valgrind
 )
 
 pb_install_deps() {

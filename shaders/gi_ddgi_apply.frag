@@ -40,6 +40,23 @@ vec4 giStorable(vec4 v) {
     return min(mix(vec4(0.0), v, greaterThanEqual(v, vec4(0.0))), GI_TARGET_MAX);
 }
 #endif
+#ifdef GI_DEBUG_DROP_MANTISSA_BIT
+// Test-only (passes/GiDebugInjection.h): one mantissa bit less than the target keeps
+// (R11F_G11F_B10F 6/6/5, RGBA16F 10, RGBA32F 23), truncated so its rounding cannot restore it.
+highp vec3 giDropMantissaBit(highp vec3 v) {
+#ifdef GI_TARGET_R11G11B10F
+    uvec3 keep = uvec3(5u, 5u, 4u);
+#else
+#ifdef GI_TARGET_RGBA16F
+    uvec3 keep = uvec3(9u);
+#else
+    uvec3 keep = uvec3(22u);
+#endif
+#endif
+    uvec3 mask = ~((uvec3(1u) << (uvec3(23u) - keep)) - uvec3(1u));
+    return uintBitsToFloat(floatBitsToUint(v) & mask);
+}
+#endif
 
 void main() {
     ivec2 px = giGBufferPixel();
@@ -54,12 +71,23 @@ void main() {
     vec3 n = octDecode(texelFetch(u_gbuffer_normal, px, 0).xy);
     // The eye is the origin of camera-relative space: the view direction is -rel.
     vec4 gi = ddgiSample(rel, n, -rel);
+#ifdef GI_DEBUG_EXTRA_FETCHES
+    // Test-only (passes/GiDebugInjection.h): fetches that cannot change the result (irradiance
+    // >= 0) but that the compiler cannot drop.
+    vec3 extra = vec3(0.0);
+    for (int i = 0; i < GI_DEBUG_EXTRA_FETCHES; ++i)
+        extra += texture(u_ddgiIrradiance, vec3((vec2(px) + float(i)) * u_ddgiIrrInvSize, 0.0)).rgb;
+    gi.rgb = max(gi.rgb, -abs(extra));
+#endif
 #ifdef GI_TARGET_R11G11B10F
     vec3 ambient = mix(u_ambientDown, u_ambientUp, n.y * 0.5 + 0.5);
     // Blue never 0 where a volume drew: the lighting reads all-zero as "not covered".
     out_gi = vec4(max(gi.rgb + (1.0 - gi.a) * ambient, vec3(0.0, 0.0, 6.103515625e-05)), 1.0);
 #else
     out_gi = gi;
+#endif
+#ifdef GI_DEBUG_DROP_MANTISSA_BIT
+    out_gi.rgb = giDropMantissaBit(out_gi.rgb);
 #endif
 #ifdef GI_GUARD_CLAMP_ON
     out_gi = giStorable(out_gi);

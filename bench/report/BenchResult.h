@@ -2,6 +2,7 @@
 // Everything one benchmark run measured, GL-free, for the JSON, the Markdown summary and the
 // HTML report (ResultJson.h, MarkdownSummary.h, HtmlReport.h). Times in milliseconds.
 #include "AblationPlan.h"
+#include "CacheModelSection.h"
 #include "metrics/Statistics.h"
 
 #include <nlohmann/json.hpp>
@@ -82,6 +83,7 @@ struct BenchResult {
     std::vector<SessionResult> sessions;
     double heatmapScale = 1; // FLIP value shown as the ramp's brightest colour in every heat map
     double seconds = 0;      // wall time of the whole run
+    std::vector<CacheModelEntry> cacheModel; // per profile (empty: not modelled)
 };
 
 } // namespace pb::bench

@@ -199,6 +199,7 @@ std::string htmlReport(const BenchResult& r) {
     profileTable(h, r);
     charts(h, r);
     ablation(h, r);
+    h << cacheModelHtml(r.cacheModel);
     heatmaps(h, r);
     context(h, r);
     h << "</body></html>\n";

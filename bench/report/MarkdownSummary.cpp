@@ -113,6 +113,7 @@ std::string markdownSummary(const BenchResult& r) {
     profileTable(out, r);
     passTable(out, r);
     ablationTables(out, r);
+    out << cacheModelMarkdown(r.cacheModel);
     return out.str();
 }
 

@@ -161,6 +161,7 @@ nlohmann::json benchJson(const BenchResult& r) {
     }
     j["profiles"] = profiles;
     j["variants"] = variants;
+    j["cache_model"] = cacheModelJson(r.cacheModel);
     return j;
 }
 

@@ -8,6 +8,8 @@
 #include "probes/ParallelFor.h"
 #include "probes/ProbeSampler.h"
 
+#include <algorithm>
+
 namespace pb::costmodel {
 
 namespace {
@@ -28,20 +30,24 @@ int targetBytes(profile::GiTargetFormat f) {
     return 8;
 }
 
-// What one fragment of one draw did.
+// What one pixel of one volume's draw did. Skipped: no fragment of the apply draw (stencil:
+// the pixel is sky, outside the influence or taken by a smaller volume - the fill pass and the
+// stencil test, not modelled fragment by fragment, kept it out).
 struct Lookup {
-    enum Stage : std::uint8_t { Sky, Outside, Evaluated } stage = Sky;
+    enum Stage : std::uint8_t { Skipped, Sky, Outside, Evaluated } stage = Sky;
     probes::SampleTrace trace;
 };
 
 void countLookup(const Lookup& l, const std::vector<Fetch>& fetches, const TextureTable& table,
-                 VolumeCounters& c) {
+                 bool shFlags, VolumeCounters& c) {
+    if (l.stage == Lookup::Skipped) return;
     ++c.fragments;
     ++c.depthFetches;
     if (l.stage == Lookup::Sky) {
         ++c.skySkipped;
         return;
     }
+    c.flagsFetches += shFlags; // gi_ddgi_apply.frag: the SH early-out before the influence test
     if (l.stage == Lookup::Outside) {
         ++c.outsideSkipped;
         return;
@@ -84,6 +90,8 @@ void replayChunk(CacheReplay& replay, const VariantStructure& vs, const TextureT
         for (size_t i = 0; i < m; ++i) {
             std::vector<Fetch>& f = pixel[i];
             f.clear();
+            next[i] = 0;
+            if (lookups[g + i].stage == Lookup::Skipped) continue;
             const glm::ivec2 px = gbufferPx[g + i];
             f.push_back({FetchKind::GBufferDepth, table.gbufferDepth, px.x, px.y, 0, false, 0});
             if (lookups[g + i].stage == Lookup::Evaluated) {
@@ -91,7 +99,6 @@ void replayChunk(CacheReplay& replay, const VariantStructure& vs, const TextureT
                     {FetchKind::GBufferNormal, table.gbufferNormal, px.x, px.y, 0, false, 1});
                 appendProbeFetches(lookups[g + i].trace, vs, tex, f);
             }
-            next[i] = 0;
         }
         // Warps interleave per instruction (slot); inside a warp, pixels in order.
         for (int s = 0; s < slots; ++s)
@@ -130,8 +137,12 @@ CostReport runCostModel(const views::CoverageTester& tester, const scene::View& 
     std::vector<float> boxes;
     for (int v : kept)
         boxes.push_back(set.volumes[size_t(v)].boxVolume());
-    const std::vector<int> drawOrder = render::volumeDrawOrder(boxes, kept);
+    std::vector<int> drawOrder = render::volumeDrawOrder(boxes, kept); // largest first
+    const bool stencil = o.profile.gi.multiVolume == profile::GiMultiVolume::Stencil;
+    const bool shFlags = o.profile.gi.dynamic == profile::GiDynamic::Sh;
+    if (stencil) std::reverse(drawOrder.begin(), drawOrder.end()); // smallest first
     GiPassCounters& c = r.counters;
+    c.multiVolume = o.profile.get("gi.multi_volume");
     c.gbufferWidth = o.width;
     c.gbufferHeight = o.height;
     c.divisor = profile::resolutionDivisor(o.profile.gi.resolution);
@@ -164,14 +175,22 @@ CostReport runCostModel(const views::CoverageTester& tester, const scene::View& 
         for (const CacheConfig& cfg : caches)
             replays.emplace_back(cfg, table);
 
-    std::vector<std::uint8_t> covered(order.size(), 0);
+    std::vector<std::uint8_t> covered(order.size(), 0); // stencil: 'any' set
     std::vector<int> winner(order.size(), -1);
     std::vector<Lookup> lookups(kChunk);
+    int drawn = 0;
     for (int d : drawOrder) {
         const int fileIndex = kept[size_t(d)];
         VolumeCounters vc;
         vc.name = set.volumes[size_t(fileIndex)].name;
         vc.fileIndex = fileIndex;
+        vc.culled = std::find(o.culledVolumes.begin(), o.culledVolumes.end(), fileIndex) !=
+                    o.culledVolumes.end();
+        if (vc.culled) {
+            c.volumes.push_back(vc);
+            continue;
+        }
+        ++drawn;
         const TextureTable::Volume& tex = table.volumes[size_t(d)];
         for (size_t start = 0; start < order.size(); start += kChunk) {
             const size_t n = std::min(kChunk, order.size() - start);
@@ -179,9 +198,12 @@ CostReport runCostModel(const views::CoverageTester& tester, const scene::View& 
             probes::parallelFor(n, 0, [&](size_t i, int) {
                 const views::SurfacePoint& s = surface[start + i];
                 Lookup& l = lookups[i];
+                const Lookup::Stage miss = stencil ? Lookup::Skipped : Lookup::Outside;
                 l.stage = !s.hit                                           ? Lookup::Sky
+                          : stencil && covered[start + i]                  ? Lookup::Skipped
                           : sampler.influencesPoint(fileIndex, s.position) ? Lookup::Evaluated
-                                                                           : Lookup::Outside;
+                                                                           : miss;
+                if (stencil && l.stage == Lookup::Sky) l.stage = Lookup::Skipped;
                 if (l.stage == Lookup::Evaluated)
                     sampler.sampleVolume(fileIndex, s.position, s.normal,
                                          view.position - s.position, {}, &l.trace);
@@ -195,7 +217,7 @@ CostReport runCostModel(const views::CoverageTester& tester, const scene::View& 
                     covered[start + i] = 1;
                     winner[start + i] = d;
                 }
-                countLookup(lookups[i], fetches, table, vc);
+                countLookup(lookups[i], fetches, table, shFlags, vc);
             }
             // 3. Every (variant, cache) replays the chunk in shading order (parallel: each
             //    replay owns its cache).
@@ -214,11 +236,17 @@ CostReport runCostModel(const views::CoverageTester& tester, const scene::View& 
             for (size_t k = 0; k < drawOrder.size(); ++k)
                 if (drawOrder[k] == winner[i]) ++c.volumes[k].won;
     }
-    c.drawCalls = int(kept.size());
-    c.textureBinds = kGBufferTexturesBound + 3 * int(kept.size());
-    c.textureUnbinds = 2 * kUnitsUnbound;
+    if (stencil) {
+        c.drawCalls = c.programBinds = c.textureBinds = c.textureUnbinds = -1;
+        c.depthCopyFetches = c.targetPixels; // gi_depth_copy.frag: one depth read per texel
+    } else {
+        c.drawCalls = drawn;
+        c.textureBinds = kGBufferTexturesBound + 3 * drawn;
+        c.textureUnbinds = 2 * kUnitsUnbound;
+    }
+    c.gbufferFetches = c.depthCopyFetches;
     for (const VolumeCounters& v : c.volumes) {
-        c.gbufferFetches += v.depthFetches + v.normalFetches;
+        c.gbufferFetches += v.depthFetches + v.normalFetches + v.flagsFetches;
         c.probeFetches += v.stateFetches + v.visibilityFetches + v.irradianceFetches;
         c.probeFootprintBytes += v.probeFootprintBytes;
         c.renderTargetBytesWritten += v.evaluated * std::uint64_t(c.targetBytesPerPixel);

@@ -1,8 +1,10 @@
 #pragma once
 // The deterministic cost model of the GI apply pass (issue 7, items 1 and 2): for a scene,
-// probe set, view and profile it replays what the pass does on a GPU - one full-screen draw
-// per kept volume (largest first), per pixel of the GI target the GBuffer reads, the sky and
-// influence discards, and the 8-probe lookup of common_ddgi.glsl - on the CPU:
+// probe set, view and profile it replays what the pass does on a GPU - per kept volume not
+// culled, gi.multi_volume=naive: one full-screen draw (largest first) with the sky and influence
+// discards; =stencil: each pixel evaluated once, by the smallest volume containing it - per
+// pixel of the GI target the GBuffer reads (+ the flags with gi.dynamic=sh) and the 8-probe
+// lookup of common_ddgi.glsl - on the CPU:
 //   - exact counters (pixels per volume, fetches by kind, footprint bytes, render-target
 //     bytes, draws and binds, GPU memory of the probe data): hardware-independent;
 //   - each shader variant's texel-address stream through set-associative LRU caches: hit
@@ -37,6 +39,9 @@ struct CostModelOptions {
     // through the same cache. 1 and 1 = one pixel after the other.
     int warpPixels = 32;
     int warpsInFlight = 4;
+    // File indices of volumes the pass culls (outside the view frustum: GiApplyPass::stats()
+    // says which); empty: none culled. A culled volume is not drawn: no fragment, no fetch.
+    std::vector<int> culledVolumes;
 };
 
 struct VolumeCounters {
@@ -48,22 +53,28 @@ struct VolumeCounters {
     std::uint64_t evaluated = 0;      // ran the lookup (and wrote the target)
     std::uint64_t fadedOut = 0;       // of those: edge fade 0, returned before any probe
     std::uint64_t won = 0;            // pixels whose final value is this volume's
+    bool culled = false;
     std::uint64_t depthFetches = 0, normalFetches = 0;
+    std::uint64_t flagsFetches = 0; // gi.dynamic=sh: the early-out's flags read
     std::uint64_t stateFetches = 0, visibilityFetches = 0, irradianceFetches = 0;
     std::uint64_t probeFootprintBytes = 0; // distinct texel (block) bytes of its probe fetches
 };
 
 struct GiPassCounters {
+    std::string multiVolume; // gi.multi_volume
     int gbufferWidth = 0, gbufferHeight = 0, targetWidth = 0, targetHeight = 0, divisor = 1;
     std::string targetFormat;
     int targetBytesPerPixel = 0;
     std::uint64_t targetPixels = 0;
     std::uint64_t giPixels = 0; // target pixels evaluated by at least one volume
-    // Pass structure (passes/GiApplyPass.cpp): one clear, one program, the GBuffer's 5
-    // textures (4 channels + depth) once, 3 textures and one draw per kept volume, then
-    // units 0..7 unbound for 2D and 2D-array targets.
+    // Pass structure of gi.multi_volume=naive (passes/GiApplyPass.cpp): one clear, one
+    // program, the GBuffer's 5 textures (4 channels + depth) once, 3 textures and one draw per
+    // drawn volume, then units 0..7 unbound for 2D and 2D-array targets. -1 for stencil (depth
+    // copy, fill and box draws depend on the eye's position: `probebench gate` counts the GL
+    // calls of the real pass instead).
     int drawCalls = 0, clears = 1, programBinds = 1, textureBinds = 0, textureUnbinds = 0;
-    std::uint64_t gbufferFetches = 0, probeFetches = 0;
+    std::uint64_t gbufferFetches = 0, probeFetches = 0; // gbuffer: apply + depth copy
+    std::uint64_t depthCopyFetches = 0; // stencil: the GI depth copy, one per target pixel
     double fetchesPerGiPixel = 0;
     int maxFetchesPerLookup = 0; // the shader's structure: GBuffer + 8 probes x fetches
     std::uint64_t probeFootprintBytes = 0;

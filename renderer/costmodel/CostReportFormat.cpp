@@ -1,6 +1,7 @@
 // reportJson / reportText of CostModel.h: the machine and the people form of one report.
 #include "costmodel/CostModel.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace pb::costmodel {
@@ -21,9 +22,11 @@ nlohmann::json volumeJson(const VolumeCounters& v) {
             {"evaluated", v.evaluated},
             {"faded_out", v.fadedOut},
             {"won", v.won},
+            {"culled", v.culled},
             {"fetches",
              {{"gbuffer_depth", v.depthFetches},
               {"gbuffer_normal", v.normalFetches},
+              {"gbuffer_flags", v.flagsFetches},
               {"probe_state", v.stateFetches},
               {"visibility", v.visibilityFetches},
               {"irradiance", v.irradianceFetches}}},
@@ -41,6 +44,14 @@ std::string bytesText(double b) {
     return buf;
 }
 
+// The naive pass structure's counts; stencil's are not modelled (-1): null / "n/a".
+nlohmann::json structureJson(int n) {
+    return n < 0 ? nlohmann::json(nullptr) : nlohmann::json(n);
+}
+std::string structureText(int n) {
+    return n < 0 ? "n/a" : std::to_string(n);
+}
+
 } // namespace
 
 nlohmann::json reportJson(const CostReport& r) {
@@ -48,7 +59,8 @@ nlohmann::json reportJson(const CostReport& r) {
     nlohmann::json volumes = nlohmann::json::array();
     for (const VolumeCounters& v : c.volumes)
         volumes.push_back(volumeJson(v));
-    nlohmann::json pass{{"gbuffer_width", c.gbufferWidth},
+    nlohmann::json pass{{"multi_volume", c.multiVolume},
+                        {"gbuffer_width", c.gbufferWidth},
                         {"gbuffer_height", c.gbufferHeight},
                         {"target_width", c.targetWidth},
                         {"target_height", c.targetHeight},
@@ -57,12 +69,13 @@ nlohmann::json reportJson(const CostReport& r) {
                         {"target_bytes_per_pixel", c.targetBytesPerPixel},
                         {"target_pixels", c.targetPixels},
                         {"gi_pixels", c.giPixels},
-                        {"draw_calls", c.drawCalls},
+                        {"draw_calls", structureJson(c.drawCalls)},
                         {"clears", c.clears},
-                        {"program_binds", c.programBinds},
-                        {"texture_binds", c.textureBinds},
-                        {"texture_unbinds", c.textureUnbinds},
+                        {"program_binds", structureJson(c.programBinds)},
+                        {"texture_binds", structureJson(c.textureBinds)},
+                        {"texture_unbinds", structureJson(c.textureUnbinds)},
                         {"gbuffer_fetches", c.gbufferFetches},
+                        {"depth_copy_fetches", c.depthCopyFetches},
                         {"probe_fetches", c.probeFetches},
                         {"fetches_per_gi_pixel", c.fetchesPerGiPixel},
                         {"max_fetches_per_lookup", c.maxFetchesPerLookup},
@@ -112,22 +125,24 @@ std::string reportText(const CostReport& r) {
     std::snprintf(line, sizeof line,
                   "cost model: scene %s, view %s, probes %s, memory layout %s, %dx%d tiles, "
                   "warps of %d pixels, %d in flight\n"
-                  "gi-apply: GBuffer %dx%d, target %dx%d (%s, %d B/pixel), %llu of %llu target "
-                  "pixels need GI\n",
+                  "gi-apply (gi.multi_volume=%s): GBuffer %dx%d, target %dx%d (%s, %d B/pixel), "
+                  "%llu of %llu target pixels need GI\n",
                   r.scene.c_str(), r.view.c_str(), r.probeFormat.c_str(), r.layout.c_str(), r.tile,
-                  r.tile, r.warpPixels, r.warpsInFlight, c.gbufferWidth, c.gbufferHeight,
-                  c.targetWidth, c.targetHeight, c.targetFormat.c_str(), c.targetBytesPerPixel,
-                  (unsigned long long)c.giPixels, (unsigned long long)c.targetPixels);
+                  r.tile, r.warpPixels, r.warpsInFlight, c.multiVolume.c_str(), c.gbufferWidth,
+                  c.gbufferHeight, c.targetWidth, c.targetHeight, c.targetFormat.c_str(),
+                  c.targetBytesPerPixel, (unsigned long long)c.giPixels,
+                  (unsigned long long)c.targetPixels);
     out += line;
     std::snprintf(line, sizeof line,
-                  "  draws %d, clears %d, program binds %d, texture binds %d (+%d unbinds)\n"
+                  "  draws %s, clears %d, program binds %s, texture binds %s (+%s unbinds)\n"
                   "  fetches: %llu GBuffer + %llu probe = %.2f per GI pixel (shader maximum "
                   "%d per lookup)\n"
                   "  probe footprint read %s, render target written %s (+ clear %s), probe data "
                   "on the GPU %s\n",
-                  c.drawCalls, c.clears, c.programBinds, c.textureBinds, c.textureUnbinds,
-                  (unsigned long long)c.gbufferFetches, (unsigned long long)c.probeFetches,
-                  c.fetchesPerGiPixel, c.maxFetchesPerLookup,
+                  structureText(c.drawCalls).c_str(), c.clears,
+                  structureText(c.programBinds).c_str(), structureText(c.textureBinds).c_str(),
+                  structureText(c.textureUnbinds).c_str(), (unsigned long long)c.gbufferFetches,
+                  (unsigned long long)c.probeFetches, c.fetchesPerGiPixel, c.maxFetchesPerLookup,
                   bytesText(double(c.probeFootprintBytes)).c_str(),
                   bytesText(double(c.renderTargetBytesWritten)).c_str(),
                   bytesText(double(c.clearBytes)).c_str(),
@@ -137,6 +152,12 @@ std::string reportText(const CostReport& r) {
                   "evaluated", "won", "sky", "outside", "faded", "fetch");
     out += line;
     for (const VolumeCounters& v : c.volumes) {
+        if (v.culled) {
+            std::snprintf(line, sizeof line, "  %-16s culled (outside the view: not drawn)\n",
+                          v.name.c_str());
+            out += line;
+            continue;
+        }
         const std::uint64_t probe = v.stateFetches + v.visibilityFetches + v.irradianceFetches;
         std::snprintf(line, sizeof line, "  %-16s %10llu %8llu %8llu %9llu %8llu %6.2f\n",
                       v.name.c_str(), (unsigned long long)v.evaluated, (unsigned long long)v.won,

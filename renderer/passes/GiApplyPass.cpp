@@ -1,6 +1,7 @@
 #include "passes/GiApplyPass.h"
 
 #include "core/Error.h"
+#include "passes/GiDebugInjection.h"
 #include "passes/GiVolumeRaster.h"
 #include "profile/SwitchTable.h"
 
@@ -115,6 +116,7 @@ void GiApplyPass::execute(FrameContext& frame) {
 
     gl::Defines applyDefines = defines_;
     if (countPixels_) applyDefines["GI_COUNT_PIXELS"] = "";
+    applyDefines.merge(giDebugInjectionDefines()); // test-only, normally empty
     Draw d{frame,
            {gb.width(), gb.height()},
            {spec.width, spec.height},

@@ -125,5 +125,30 @@ TEST(BenchReport, ParetoFrontKeepsPointsNothingBeatsOnBothAxes) {
     EXPECT_NE(svg.find("<polyline"), std::string::npos);
 }
 
+TEST(BenchReport, CacheModelSectionComparesTheVariantsPerProfile) {
+    BenchResult r = result();
+    EXPECT_EQ(cacheModelMarkdown(r.cacheModel), ""); // not modelled: no section
+    EXPECT_EQ(benchJson(r)["cache_model"], nlohmann::json::array());
+    CacheModelEntry e{
+        "handheld", "handheld: 16 KiB, 64 B lines, 4-way", 512, 288, "slice_first/split", {}};
+    e.variants = {{"xyz/fused", 0.9950, 10.0},
+                  {"xyz/split", 0.9952, 9.5},
+                  {"slice_first/fused", 0.9955, 9.0},
+                  {"slice_first/split", 0.9956, 8.8}};
+    r.cacheModel = {e};
+    const std::string md = markdownSummary(r);
+    EXPECT_NE(md.find("| handheld | handheld: 16 KiB, 64 B lines, 4-way | 99.50% / 10.0 |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("99.56% / 8.8 * |"), std::string::npos);   // the profile's own variant
+    EXPECT_NE(md.find("| -10.0% | -5.0% |"), std::string::npos); // slice_first, split vs xyz/fused
+    const std::string html = htmlReport(r);
+    EXPECT_NE(html.find("<table id=\"cache-model\">"), std::string::npos);
+    const nlohmann::json j = benchJson(r)["cache_model"];
+    ASSERT_EQ(j.size(), 1u);
+    EXPECT_EQ(j[0]["profile_variant"], "slice_first/split");
+    EXPECT_DOUBLE_EQ(j[0]["variants"][2]["probe_bytes_missed_per_pixel"].get<double>(), 9.0);
+}
+
 } // namespace
 } // namespace pb::test

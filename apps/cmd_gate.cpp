@@ -1,0 +1,319 @@
+// probebench gate: the CI regression gate (bench/gate/README.md). Runs the baseline's suite -
+// exact counters (GL calls per pass, the cost model's pixels, fetches and bytes, the cache
+// model), accuracy against the reference within the baseline's tolerances, timing decided as
+// Chromium's Pinpoint does (profile/reference ratios in one run, or this binary against
+// another with --against), optionally callgrind instruction counts - prints a table and exits
+// non-zero on a regression. --update rewrites the baseline on purpose.
+#include "CommandRegistry.h"
+#include "GateSuiteOptions.h"
+#include "PlatformOptions.h"
+#include "ProfileOptions.h"
+#include "SceneOptions.h"
+#include "bench/gate/GateOutcome.h"
+#include "bench/gate_gl/CallgrindFrame.h"
+#include "bench/gate_gl/GateWorker.h"
+#include "bench/gate_gl/WorkerProcess.h"
+#include "bench/runner/BenchContext.h"
+#include "bench/runner/ProbeCache.h"
+#include "core/Error.h"
+#include "core/FileIO.h"
+#include "gl/DebugOutput.h"
+#include "passes/GiDebugInjection.h"
+#include "probes/ProbeFile.h"
+#include "views/WorstCaseView.h"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+namespace pb::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct GateArgs {
+    std::string baseline, against, json, cacheDir;
+    bool quick = false, update = false, callgrind = false, noTiming = false;
+    platform::PlatformOptions platform;
+    GateSuiteArgs suite;
+};
+
+void progress(const std::string& line) {
+    std::fprintf(stderr, "gate: %s\n", line.c_str());
+    std::fflush(stderr);
+}
+
+std::string probeIdentity(const probes::ProbeSet& set, const std::string& file) {
+    std::uint64_t h = 1469598103934665603ull; // FNV-1a 64 of the probe file
+    for (unsigned char b : readFileBytes(file))
+        h = (h ^ b) * 1099511628211ull;
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%lld probes, %zu volumes, %s, fnv1a %016llx",
+                  static_cast<long long>(set.probeCount()), set.volumes.size(),
+                  probes::formatName(set.format()), static_cast<unsigned long long>(h));
+    return buf;
+}
+
+// The worker command line shared by --against and --callgrind.
+std::vector<std::string> workerArgs(const std::string& binary, const gate::GateSuite& s,
+                                    const std::string& probesFile, const GateArgs& a) {
+    std::vector<std::string> v{binary,       "gate-worker",
+                               "--scene",    s.scene,
+                               "--probes",   probesFile,
+                               "--camera",   s.camera,
+                               "--width",    std::to_string(s.width),
+                               "--height",   std::to_string(s.height),
+                               "--timing",   s.timing.method,
+                               "--warmup",   std::to_string(s.timing.warmup),
+                               "--platform", a.platform.name};
+    if (a.platform.device >= 0) {
+        v.push_back("--device");
+        v.push_back(std::to_string(a.platform.device));
+    }
+    return v;
+}
+
+void checkGl(gl::DebugOutput& debug, std::uint64_t mark, const std::string& what) {
+    const auto errors = debug.errorsSince(mark);
+    if (!errors.empty())
+        throw Error(what + ": the GL reported " + std::to_string(errors.size()) +
+                    " error(s): " + errors.front().text);
+}
+
+// --against: this binary and the other one as two workers, every profile. Rows: frame and
+// GI passes per profile.
+std::vector<gate::GateRow> againstTiming(const GateArgs& a, const gate::GateSuite& s, int budget,
+                                         const std::string& probesFile) {
+    gate::WorkerProcess cand(workerArgs(gate::selfExecutable(), s, probesFile, a), {},
+                             "candidate worker (this binary)");
+    gate::WorkerProcess basew(workerArgs(a.against, s, probesFile, a), {},
+                              "baseline worker (" + a.against + ")");
+    for (gate::WorkerProcess* w : {&cand, &basew})
+        if (w->readLine() != gate::kWorkerHello)
+            throw Error(w->label() + ": not a probebench gate worker");
+    std::vector<gate::GateRow> rows;
+    for (const std::string& name : s.profiles) {
+        auto say = [&](const std::string& l) { progress("timing " + name + " against: " + l); };
+        const gate::SequentialTiming t =
+            gate::timeAgainst(basew, cand, name, s.timing, budget, say);
+        for (const gate::TimedQuantity& q : t.quantities)
+            rows.push_back(gate::timingRow(
+                name, (q.name == "gi" ? "GI passes ms vs " : "frame ms vs ") + a.against,
+                q.comparison, "ms", t.rounds, t.budgetReached));
+    }
+    return rows;
+}
+
+// In this process: each profile's frame over the reference's, round by round, against the
+// baseline's ratios (recorded into `now` for --update).
+std::vector<gate::GateRow> ratioTiming(const GateArgs& a, gate::GateRecord& now,
+                                       const gate::GateRecord* base,
+                                       std::vector<std::unique_ptr<gate::GateRenderer>>& renderers,
+                                       size_t ref, const bench::TimingChoice& timing, bool es,
+                                       int budget) {
+    const gate::GateSuite& s = now.suite;
+    std::vector<gate::GateRow> rows;
+    bench::SectionTimer timer(timing, es);
+    for (size_t i = 0; i < renderers.size(); ++i) {
+        if (i == ref) continue;
+        gate::ProfileRecord& rec = now.profiles[i];
+        const gate::ProfileRecord* b = base ? base->profile(rec.name) : nullptr;
+        const std::vector<double> stored = b ? b->ratioSamples : std::vector<double>{};
+        const bool decide = !a.update && stored.size() >= 2;
+        auto measure = [&](int round) {
+            gate::RoundTimes p, r;
+            if (round % 2 == 0) {
+                p = gate::timeRound(*renderers[i], timer, s.timing.frames);
+                r = gate::timeRound(*renderers[ref], timer, s.timing.frames);
+            } else {
+                r = gate::timeRound(*renderers[ref], timer, s.timing.frames);
+                p = gate::timeRound(*renderers[i], timer, s.timing.frames);
+            }
+            return std::vector<std::pair<double, double>>{{0.0, p.frameMs / r.frameMs}};
+        };
+        auto say = [&](const std::string& l) {
+            progress("timing " + rec.name + "/reference: " + l);
+        };
+        if (!decide) say("recording " + std::to_string(budget) + " rounds");
+        const gate::SequentialTiming t = gate::runSequential(
+            {"ratio"}, measure, {stored}, decide, s.timing, s.timing.ratioThreshold, budget, say);
+        rec.ratioSamples = t.quantities[0].candidate;
+        if (t.decided)
+            rows.push_back(gate::timingRow(rec.name, "frame ratio to " + s.reference,
+                                           t.quantities[0].comparison, "x", t.rounds,
+                                           t.budgetReached));
+        else if (!a.update)
+            rows.push_back({rec.name, "timing", "frame ratio to " + s.reference, "-", "measured",
+                            gate::RowStatus::Skipped, "the baseline has no ratios (--update)"});
+    }
+    return rows;
+}
+
+int run(GateArgs& a) {
+    const auto t0 = std::chrono::steady_clock::now();
+    std::optional<gate::GateRecord> base;
+    if (fs::exists(a.baseline))
+        base = gate::readGateRecord(a.baseline);
+    else if (!a.update)
+        throw fileError(a.baseline, "no such baseline (create it with --update)");
+    if (!a.against.empty() && !fs::exists(a.against) && a.against.find('/') != std::string::npos)
+        throw Error("--against " + a.against + ": no such file");
+    const profile::ProfileSearch search = profileSearch();
+    gate::GateRecord now;
+    now.suite = resolveGateSuite(a.suite, a.update, base ? &base->suite : nullptr,
+                                 profile::profileNames(search));
+    gate::GateSuite& s = now.suite;
+    if (const std::string inj = render::giDebugInjectionSummary(); !inj.empty())
+        std::fprintf(stderr, "warning: test-only fault injection active: %s\n", inj.c_str());
+
+    SceneArgs sceneArgs;
+    sceneArgs.scene = s.scene;
+    const scene::Scene scene = loadSceneWithOverrides(sceneArgs);
+    std::string probesFile;
+    const probes::ProbeSet set = bench::benchProbes(
+        scene, resolveSuiteVolumes(s.volumes),
+        a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir, &probesFile, progress);
+    now.probes = probeIdentity(set, probesFile);
+    scene::View view;
+    if (s.camera.empty()) {
+        progress("searching the worst-case view (stored in the baseline)");
+        view =
+            views::findWorstCaseView(scene, set, 320, std::max(16, 320 * s.height / s.width)).view;
+        s.camera = gateCameraSpec(view);
+    }
+    view = chooseView(scene, "", s.camera);
+
+    auto platform = platform::createPlatform(a.platform);
+    gl::DebugOutput debug;
+    const gl::GlCaps caps = gl::queryCaps();
+    const bench::TimingChoice timing =
+        bench::chooseTiming(s.timing.method, caps, gl::detectDriverQuirks());
+    now.recorded = bench::benchContext(*platform, caps);
+    const gate::GateInputs in{
+        &scene,  &set,     view,           render::defaultFrameSettings(scene),
+        s.width, s.height, s.timing.warmup};
+
+    // Counters and accuracy: every profile's renderer through the same frame sequence.
+    gate::ModelScenes scenes(in);
+    std::vector<std::unique_ptr<gate::GateRenderer>> renderers;
+    size_t ref = 0;
+    for (size_t i = 0; i < s.profiles.size(); ++i) {
+        progress("counting " + s.profiles[i] + " (" + std::to_string(s.width) + "x" +
+                 std::to_string(s.height) + ")");
+        const std::uint64_t mark = debug.mark();
+        renderers.push_back(
+            std::make_unique<gate::GateRenderer>(in, profile::loadProfile(s.profiles[i], search)));
+        now.profiles.emplace_back();
+        gate::measureCounters(*renderers.back(), in, scenes, now.profiles.back());
+        checkGl(debug, mark, "profile " + s.profiles[i]);
+        if (s.profiles[i] == s.reference) ref = i;
+    }
+    for (size_t i = 0; i < renderers.size(); ++i)
+        if (i != ref) {
+            progress("accuracy of " + s.profiles[i] + " against " + s.reference);
+            now.profiles[i].accuracy = gate::measureAccuracy(*renderers[i], *renderers[ref], in);
+        }
+
+    std::vector<gate::GateRow> timingRows;
+    const int budget = a.quick ? s.timing.quickMaxRounds : s.timing.maxRounds;
+    if (!a.noTiming && !a.against.empty())
+        timingRows = againstTiming(a, s, budget, probesFile);
+    else if (!a.noTiming)
+        timingRows =
+            ratioTiming(a, now, base ? &*base : nullptr, renderers, ref, timing, caps.es, budget);
+    gate::GateOutcome outcome;
+    outcome.recording = a.update;
+    const gate::GateRecord empty{s, {}, "", {}, {}};
+    gate::compareRecords(base ? *base : empty, now, outcome);
+    outcome.rows.insert(outcome.rows.end(), timingRows.begin(), timingRows.end());
+    if (a.noTiming) outcome.notes.push_back("timing: not run (--no-timing)");
+
+    if (a.callgrind) {
+        const fs::path dir =
+            fs::temp_directory_path() / ("probebench-callgrind-" + std::to_string(::getpid()));
+        progress("callgrind: one frame per profile under valgrind, LP_NUM_THREADS=0 (minutes)");
+        std::vector<std::string> argv = workerArgs(gate::selfExecutable(), s, probesFile, a);
+        argv.push_back("--callgrind-profiles");
+        std::string list;
+        for (const std::string& p : s.profiles)
+            list += (list.empty() ? "" : ",") + p;
+        argv.push_back(list);
+        const gate::CallgrindRecord cg =
+            gate::runCallgrind(argv, caps.version, caps.renderer, dir.string());
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+        now.callgrind = {cg};
+        gate::compareCallgrind(base ? *base : empty, cg, outcome);
+    } else if (base && !base->callgrind.empty()) {
+        outcome.notes.push_back("callgrind: not run (--callgrind runs it)");
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    now.recorded["load_average_end"] = bench::loadAverage();
+    now.recorded["seconds"] = seconds;
+    now.recorded["quick"] = a.quick;
+    outcome.notes.push_back("ran " + std::to_string(int(seconds + 0.5)) + " s, load average " +
+                            bench::loadAverage() + (a.quick ? ", --quick" : ""));
+
+    std::cout << gate::gateTable(outcome);
+    if (!a.json.empty()) {
+        nlohmann::json j = gate::gateJson(outcome);
+        j["measured"] = gate::recordJson(now);
+        const std::string text = j.dump(2) + "\n";
+        writeFileAtomic(a.json, text.data(), text.size());
+    }
+    if (a.update) {
+        gate::GateRecord out = now;
+        if (!a.callgrind && base) out.callgrind = base->callgrind;
+        if (a.callgrind && base)
+            for (const gate::CallgrindRecord& c : base->callgrind)
+                if (!(c.key == now.callgrind.front().key)) out.callgrind.push_back(c);
+        gate::writeGateRecord(a.baseline, out);
+        std::cout << "updated " << a.baseline
+                  << " (review `git diff` of it and commit it with the change that explains "
+                     "it)\n";
+        return 0;
+    }
+    return outcome.exitCode();
+}
+
+const RegisterCommand reg{
+    {"gate",
+     "CI regression gate: exact counters, accuracy, timing (Pinpoint-style) against a baseline", 55,
+     [](CLI::App& cmd) {
+         auto a = std::make_shared<GateArgs>();
+         cmd.add_option("--baseline", a->baseline,
+                        "Baseline file (bench/baselines/NAME.json): the suite and what it measured")
+             ->required();
+         cmd.add_flag("--quick", a->quick,
+                      "Smaller timing budget (the baseline's quick_max_rounds): the CI mode; "
+                      "counters and accuracy are the same");
+         cmd.add_flag("--update", a->update,
+                      "Rewrite the baseline with this run's measurements (on purpose: review and "
+                      "commit it); exit 0. With the suite options it creates or changes the suite");
+         cmd.add_option("--against", a->against,
+                        "Time this binary against another probebench binary (same profiles, "
+                        "interleaved rounds in two worker processes) instead of the "
+                        "profile/reference ratios");
+         cmd.add_flag("--callgrind", a->callgrind,
+                      "Also count instructions of one frame per profile under valgrind callgrind "
+                      "(LP_NUM_THREADS=0; gated when the baseline has counts for this Mesa, LLVM, "
+                      "compiler and valgrind, skipped otherwise)");
+         cmd.add_flag("--no-timing", a->noTiming,
+                      "Skip the timing gate (counters and accuracy only)");
+         cmd.add_option("--json", a->json, "Write the verdicts and the measurements as JSON here");
+         cmd.add_option("--cache-dir", a->cacheDir,
+                        "Folder of the baked-probe cache (default: ~/.cache/probebench)");
+         addPlatformOptions(cmd, a->platform);
+         addGateSuiteOptions(cmd, a->suite);
+         cmd.footer("Exit codes: 0 pass (or --update done), 1 error, 3 a counter, accuracy, "
+                    "instruction-count or model-vs-GL failure, 4 timing regressions only.");
+         return [a] { return run(*a); };
+     }}};
+
+} // namespace
+} // namespace pb::app

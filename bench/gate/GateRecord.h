@@ -1,0 +1,100 @@
+#pragma once
+// What the regression gate compares (bench/gate/README.md): the suite it runs and, per
+// profile, what one run measured - exact counters, accuracy against the reference, and the
+// profile/reference frame-time ratios of its interleaved rounds - plus callgrind instruction
+// counts keyed by the toolchain that produced them. A baseline file (bench/baselines/*.json)
+// is one such record written on purpose (`probebench gate --update`). GL-free.
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pb::gate {
+
+inline constexpr const char* kGateSchema = "probebench.gate/1";
+
+struct TimingSettings {
+    std::string method = "cpu-time"; // the bench's SectionTimer method (bench --timing)
+    int frames = 3;                  // K: frames per round; the round's value is their median
+    int warmup = 2;                  // frames per renderer before any round (never counted)
+    int minRounds = 9;
+    int maxRounds = 30;           // budget while the verdict is unknown
+    int quickMaxRounds = 15;      // the same with --quick
+    int roundStep = 6;            // rounds added per step while unknown
+    double alpha = 0.01;          // p for "different"
+    double threshold = 0.03;      // --against: relative frame-time shift that matters
+    double ratioThreshold = 0.10; // profile/reference ratio against the baseline's ratios
+};
+
+struct AccuracyTolerance {
+    double flipAbs = 2e-4, flipRel = 0.10;     // FLIP mean may rise by max(abs, rel x baseline)
+    double psnrDb = 0.5;                       // PSNR may fall by this
+    double relMseAbs = 1e-7, relMseRel = 0.25; // relative MSE of the GI may rise by abs + rel x
+};
+
+struct GateSuite {
+    std::string scene = "rooms";
+    std::string volumes = "bench/baselines/rooms_gate.toml"; // relative: to the repository
+    std::string camera; // px,py,pz,tx,ty,tz,fov (fixed, so every run renders the same frame)
+    int width = 384, height = 216;
+    std::vector<std::string> profiles; // every one measured; the reference among them
+    std::string reference = "reference";
+    TimingSettings timing;
+    AccuracyTolerance tolerance;
+    double callgrindTolerance = 0.005; // relative, of the frame's instructions
+};
+
+struct AccuracyValues {
+    bool measured = false;
+    double flipMean = 0, psnr = 0, relMseGi = 0; // psnr +inf: identical
+};
+
+using Counters = std::vector<std::pair<std::string, std::int64_t>>;
+
+struct ProfileRecord {
+    std::string name;
+    Counters counters; // exact
+    // Informational (not compared): the GL pass's evaluated pixels per volume, for the
+    // model-vs-GL agreement check.
+    Counters glPixels;
+    AccuracyValues accuracy;          // against the suite's reference (not for the reference)
+    std::vector<double> ratioSamples; // per round: profile frame / reference frame
+    const std::int64_t* counter(const std::string& key) const;
+};
+
+// The toolchain an instruction count depends on; a baseline with another key is skipped.
+struct CallgrindKey {
+    std::string mesa, llvm, compiler, valgrind;
+    bool operator==(const CallgrindKey& o) const;
+    std::string text() const; // "Mesa 22.3.6, LLVM 15.0.6, GCC 12.2.0, valgrind-3.19.0"
+};
+
+struct CallgrindRecord {
+    CallgrindKey key;
+    // Per profile: instructions per frame section (exclusive) and "frame" (their sum).
+    std::vector<std::pair<std::string, Counters>> profiles;
+    const Counters* profile(const std::string& name) const;
+};
+
+struct GateRecord {
+    GateSuite suite;
+    nlohmann::json recorded = nlohmann::json::object(); // where and when (never compared)
+    std::string probes; // identity of the probe data: "<count> probes, fnv1a <hex>"
+    std::vector<ProfileRecord> profiles;
+    std::vector<CallgrindRecord> callgrind; // at most one per key
+    const ProfileRecord* profile(const std::string& name) const;
+    const CallgrindRecord* callgrindFor(const CallgrindKey& key) const;
+};
+
+nlohmann::json recordJson(const GateRecord& r);
+// Throws pb::Error "<source>: <key>: <problem>" for a wrong schema, a missing or mistyped key.
+GateRecord recordFromJson(const nlohmann::json& j, const std::string& source);
+// Throws pb::Error "<path>: <problem>" (missing file, not JSON, wrong content).
+GateRecord readGateRecord(const std::string& path);
+// Atomic (temporary file + rename); 2-space JSON with a final newline, keys sorted, so a
+// baseline's diff shows exactly what changed.
+void writeGateRecord(const std::string& path, const GateRecord& r);
+
+} // namespace pb::gate

@@ -1,0 +1,84 @@
+// gateTable / gateJson of GateOutcome.h: the people and the machine form of the verdicts.
+#include "GateOutcome.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <sstream>
+
+namespace pb::gate {
+
+namespace {
+
+int groupRank(const std::string& g) {
+    static const char* order[] = {"probes",   "counters", "model-vs-gl",
+                                  "accuracy", "timing",   "callgrind"};
+    for (int i = 0; i < 6; ++i)
+        if (g == order[i]) return i;
+    return 6;
+}
+
+} // namespace
+
+std::string gateTable(const GateOutcome& o) {
+    std::vector<GateRow> rows = o.rows; // one block per group, profiles in suite order inside
+    std::stable_sort(rows.begin(), rows.end(), [](const GateRow& a, const GateRow& b) {
+        return groupRank(a.group) < groupRank(b.group);
+    });
+    std::ostringstream out;
+    char line[640];
+    const char* fmt = "%-13s %-52s %-32s %-32s %-9s %s\n";
+    std::snprintf(line, sizeof line, fmt, "profile", "counter", "baseline", "now", "verdict",
+                  "note");
+    out << line;
+    std::string group;
+    for (const GateRow& r : rows) {
+        if (r.group != group) {
+            group = r.group;
+            out << "-- " << group;
+            if (group == "counters")
+                out << " (exact; gl.<pass> = draws/programs/texture binds/unbinds/clears/"
+                       "framebuffer binds of the real frame)";
+            else if (group == "accuracy")
+                out << " (against the reference profile, tolerances from the baseline)";
+            else if (group == "model-vs-gl")
+                out << " (GI pixels evaluated: cost model vs the GL pass's own count)";
+            out << "\n";
+        }
+        std::snprintf(line, sizeof line, fmt, r.profile.c_str(), r.name.c_str(), r.baseline.c_str(),
+                      r.now.c_str(), rowStatusName(r.status), r.note.c_str());
+        out << line;
+    }
+    for (const std::string& n : o.notes)
+        out << "note: " << n << "\n";
+    const int d = o.deterministicFailures(), t = o.timingFailures();
+    if (o.recording)
+        out << "gate: --update: " << o.rows.size() << " rows recorded, " << d
+            << " of them new or different from the previous baseline\n";
+    else
+        out << "gate: " << (o.exitCode() == 0 ? "PASS" : "FAIL") << " - " << o.rows.size()
+            << " rows, " << d << " counter/accuracy/instruction failure(s), " << t
+            << " timing regression(s)\n";
+    return out.str();
+}
+
+nlohmann::json gateJson(const GateOutcome& o) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const GateRow& r : o.rows)
+        rows.push_back({{"profile", r.profile},
+                        {"group", r.group},
+                        {"name", r.name},
+                        {"baseline", r.baseline},
+                        {"now", r.now},
+                        {"verdict", rowStatusName(r.status)},
+                        {"fails", failsDeterministic(r.status) || r.status == RowStatus::Slower},
+                        {"note", r.note}});
+    return {{"schema", "probebench.gate-result/1"},
+            {"pass", o.exitCode() == 0},
+            {"exit_code", o.exitCode()},
+            {"deterministic_failures", o.deterministicFailures()},
+            {"timing_regressions", o.timingFailures()},
+            {"rows", rows},
+            {"notes", o.notes}};
+}
+
+} // namespace pb::gate

@@ -1,0 +1,45 @@
+#pragma once
+// The timing worker behind `probebench gate --against` (apps/cmd_gate_worker.cpp runs it):
+// one process per binary, each rendering only when asked, so baseline and candidate rounds
+// interleave in time while neither process's state (heap, JIT code, caches) touches the
+// other's. Protocol, one line each way (WorkerProcess.h):
+//   worker: "ready probebench-gate-worker/1"
+//   gate:   "load NAME"      -> "ok"                 (builds the profile, warm-up frames)
+//   gate:   "round NAME K"   -> "times FRAME_MS GI_MS" (K frames: the medians)
+//   gate:   "quit"
+//   any failure -> "error <one line>" and exit 1.
+// The same command, under valgrind, renders the callgrind frames (CallgrindFrame.h).
+#include "GateMeasure.h"
+#include "GateTiming.h"
+#include "bench/runner/SectionTimer.h"
+#include "profile/ProfileLoader.h"
+
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace pb::gate {
+
+inline constexpr const char* kWorkerHello = "ready probebench-gate-worker/1";
+
+struct WorkerOptions {
+    GateInputs inputs;
+    bench::TimingChoice timing;
+    bool es = true;
+    profile::ProfileSearch search;
+};
+
+// Serves the protocol on in/out until "quit" (0) or a failure (1, after "error ...").
+int serveGateWorker(const WorkerOptions& o, std::istream& in, std::ostream& out);
+
+class WorkerProcess;
+// The against timing of one profile: `baseline` and `candidate` workers (both ready); two
+// quantities per round, each decided per TimingDecision.h: "frame" (the whole frame, what a
+// user sees) and "gi" (the GI passes, gi-*: where this testbed's changes land, and a smaller
+// denominator for them).
+SequentialTiming timeAgainst(WorkerProcess& baseline, WorkerProcess& candidate,
+                             const std::string& profile, const TimingSettings& s, int budget,
+                             const std::function<void(const std::string&)>& progress);
+
+} // namespace pb::gate

@@ -1,0 +1,148 @@
+#include "GlCallCounter.h"
+
+#include "core/Error.h"
+
+#include <glad/gl.h>
+
+namespace pb::gate {
+
+namespace {
+
+GlCallCounter* active = nullptr;
+
+// The driver's entry points while the shims are installed.
+struct Originals {
+    PFNGLDRAWARRAYSPROC drawArrays;
+    PFNGLDRAWELEMENTSPROC drawElements;
+    PFNGLDRAWARRAYSINSTANCEDPROC drawArraysInstanced;
+    PFNGLDRAWELEMENTSINSTANCEDPROC drawElementsInstanced;
+    PFNGLDRAWRANGEELEMENTSPROC drawRangeElements;
+    PFNGLUSEPROGRAMPROC useProgram;
+    PFNGLBINDTEXTUREPROC bindTexture;
+    PFNGLCLEARPROC clear;
+    PFNGLCLEARBUFFERFVPROC clearBufferfv;
+    PFNGLCLEARBUFFERIVPROC clearBufferiv;
+    PFNGLCLEARBUFFERUIVPROC clearBufferuiv;
+    PFNGLCLEARBUFFERFIPROC clearBufferfi;
+    PFNGLBINDFRAMEBUFFERPROC bindFramebuffer;
+} orig;
+
+void GLAD_API_PTR drawArrays(GLenum m, GLint f, GLsizei n) {
+    ++active->current().draws;
+    orig.drawArrays(m, f, n);
+}
+void GLAD_API_PTR drawElements(GLenum m, GLsizei n, GLenum t, const void* i) {
+    ++active->current().draws;
+    orig.drawElements(m, n, t, i);
+}
+void GLAD_API_PTR drawArraysInstanced(GLenum m, GLint f, GLsizei n, GLsizei k) {
+    ++active->current().draws;
+    orig.drawArraysInstanced(m, f, n, k);
+}
+void GLAD_API_PTR drawElementsInstanced(GLenum m, GLsizei n, GLenum t, const void* i, GLsizei k) {
+    ++active->current().draws;
+    orig.drawElementsInstanced(m, n, t, i, k);
+}
+void GLAD_API_PTR drawRangeElements(GLenum m, GLuint s, GLuint e, GLsizei n, GLenum t,
+                                    const void* i) {
+    ++active->current().draws;
+    orig.drawRangeElements(m, s, e, n, t, i);
+}
+void GLAD_API_PTR useProgram(GLuint p) {
+    if (p) ++active->current().programs;
+    orig.useProgram(p);
+}
+void GLAD_API_PTR bindTexture(GLenum target, GLuint t) {
+    ++(t ? active->current().texBinds : active->current().texUnbinds);
+    orig.bindTexture(target, t);
+}
+void GLAD_API_PTR clear(GLbitfield mask) {
+    ++active->current().clears;
+    orig.clear(mask);
+}
+void GLAD_API_PTR clearBufferfv(GLenum b, GLint d, const GLfloat* v) {
+    ++active->current().clears;
+    orig.clearBufferfv(b, d, v);
+}
+void GLAD_API_PTR clearBufferiv(GLenum b, GLint d, const GLint* v) {
+    ++active->current().clears;
+    orig.clearBufferiv(b, d, v);
+}
+void GLAD_API_PTR clearBufferuiv(GLenum b, GLint d, const GLuint* v) {
+    ++active->current().clears;
+    orig.clearBufferuiv(b, d, v);
+}
+void GLAD_API_PTR clearBufferfi(GLenum b, GLint d, GLfloat depth, GLint stencil) {
+    ++active->current().clears;
+    orig.clearBufferfi(b, d, depth, stencil);
+}
+void GLAD_API_PTR bindFramebuffer(GLenum target, GLuint fbo) {
+    ++active->current().fboBinds;
+    orig.bindFramebuffer(target, fbo);
+}
+
+// Swaps each loader pointer with its shim (install) or back (uninstall); a pointer the
+// context never loaded stays null.
+template <class F> void swapIn(F& loader, F& saved, F shim) {
+    saved = loader;
+    if (loader) loader = shim;
+}
+template <class F> void swapOut(F& loader, F saved) {
+    if (saved) loader = saved;
+}
+
+} // namespace
+
+GlCallCounter::GlCallCounter() {
+    if (active) throw Error("GL call counter: another counter is installed");
+    active = this;
+    sections_.push_back({"frame", {}});
+    swapIn(glad_glDrawArrays, orig.drawArrays, &drawArrays);
+    swapIn(glad_glDrawElements, orig.drawElements, &drawElements);
+    swapIn(glad_glDrawArraysInstanced, orig.drawArraysInstanced, &drawArraysInstanced);
+    swapIn(glad_glDrawElementsInstanced, orig.drawElementsInstanced, &drawElementsInstanced);
+    swapIn(glad_glDrawRangeElements, orig.drawRangeElements, &drawRangeElements);
+    swapIn(glad_glUseProgram, orig.useProgram, &useProgram);
+    swapIn(glad_glBindTexture, orig.bindTexture, &bindTexture);
+    swapIn(glad_glClear, orig.clear, &clear);
+    swapIn(glad_glClearBufferfv, orig.clearBufferfv, &clearBufferfv);
+    swapIn(glad_glClearBufferiv, orig.clearBufferiv, &clearBufferiv);
+    swapIn(glad_glClearBufferuiv, orig.clearBufferuiv, &clearBufferuiv);
+    swapIn(glad_glClearBufferfi, orig.clearBufferfi, &clearBufferfi);
+    swapIn(glad_glBindFramebuffer, orig.bindFramebuffer, &bindFramebuffer);
+}
+
+GlCallCounter::~GlCallCounter() {
+    swapOut(glad_glDrawArrays, orig.drawArrays);
+    swapOut(glad_glDrawElements, orig.drawElements);
+    swapOut(glad_glDrawArraysInstanced, orig.drawArraysInstanced);
+    swapOut(glad_glDrawElementsInstanced, orig.drawElementsInstanced);
+    swapOut(glad_glDrawRangeElements, orig.drawRangeElements);
+    swapOut(glad_glUseProgram, orig.useProgram);
+    swapOut(glad_glBindTexture, orig.bindTexture);
+    swapOut(glad_glClear, orig.clear);
+    swapOut(glad_glClearBufferfv, orig.clearBufferfv);
+    swapOut(glad_glClearBufferiv, orig.clearBufferiv);
+    swapOut(glad_glClearBufferuiv, orig.clearBufferuiv);
+    swapOut(glad_glClearBufferfi, orig.clearBufferfi);
+    swapOut(glad_glBindFramebuffer, orig.bindFramebuffer);
+    active = nullptr;
+}
+
+GlCallCounts& GlCallCounter::current() {
+    return sections_[open_.empty() ? 0 : open_.back()].second;
+}
+
+void GlCallCounter::begin(const char* section) {
+    size_t i = 0;
+    while (i < sections_.size() && sections_[i].first != section)
+        ++i;
+    if (i == sections_.size()) sections_.push_back({section, {}});
+    open_.push_back(i);
+}
+
+void GlCallCounter::end(const char*) {
+    if (!open_.empty()) open_.pop_back();
+}
+
+} // namespace pb::gate

@@ -1,0 +1,223 @@
+// `probebench gate` as CI runs it, on a tiny suite (cornell, 64x36, three profiles): --update
+// writes a baseline the next run passes with identical counters; a changed counter fails
+// (exit 3) until --update rewrites it; one mantissa bit less in the GI (the test-only
+// injection) fails the accuracy gate; a callgrind baseline of another toolchain never fails;
+// the timing plumbing (ratio rounds, --against worker processes) runs end to end - its
+// verdicts are not asserted: timings are never pass/fail here (bench/README.md measures them);
+// errors are one line with exit 1.
+#include "support/RunCommand.h"
+#include "support/TestEnv.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace pb::test;
+
+namespace {
+
+nlohmann::json readJson(const fs::path& p) {
+    std::ifstream in(p);
+    return nlohmann::json::parse(in);
+}
+
+void writeJson(const fs::path& p, const nlohmann::json& j) {
+    std::ofstream(p) << j.dump(2);
+}
+
+std::string probeCache() {
+    return (fs::path(PB_TEST_OUTPUT_DIR) / "gate-probe-cache").string();
+}
+
+std::vector<std::string> gate(const fs::path& baseline, std::vector<std::string> extra = {}) {
+    std::vector<std::string> a{"gate", "--baseline", baseline.string(), "--cache-dir",
+                               probeCache()};
+    a.insert(a.end(), extra.begin(), extra.end());
+    return a;
+}
+
+// A fresh tiny baseline (no timing) in `dir`.
+fs::path tinyBaseline(const fs::path& dir) {
+    const fs::path b = dir / "tiny.json";
+    auto r = runProbebench(gate(b, {"--update", "--no-timing", "--scene", "cornell", "--volumes",
+                                    "auto", "--camera", "0,1,0.9,0,1.2,-1,80", "--width", "64",
+                                    "--height", "36", "--profiles", "reference,handheld,pc-high"}));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("updated " + b.string()), std::string::npos) << r.output;
+    return b;
+}
+
+bool firstLineIsTheError(const CommandResult& r, const std::string& text) {
+    return r.output.rfind("probebench: error: " + text, 0) == 0 &&
+           std::count(r.output.begin(), r.output.end(), '\n') == 1;
+}
+
+// Verdicts of the JSON outcome's rows in one group.
+std::multiset<std::string> verdicts(const nlohmann::json& outcome, const std::string& group) {
+    std::multiset<std::string> v;
+    for (const auto& r : outcome["rows"])
+        if (r["group"] == group) v.insert(r["verdict"].get<std::string>());
+    return v;
+}
+
+} // namespace
+
+TEST(GateCli, UpdateWritesABaselineThatTheNextRunPassesWithIdenticalCounters) {
+    const fs::path dir = outputDir();
+    const fs::path b = tinyBaseline(dir);
+    const nlohmann::json base = readJson(b);
+    EXPECT_EQ(base["schema"], "probebench.gate/1");
+    ASSERT_EQ(base["profiles"].size(), 3u);
+    EXPECT_EQ(base["suite"]["width"], 64);
+    EXPECT_GT(base["profiles"][1]["counters"]["gl.gi-apply.draws"].get<int>(), 0);
+    EXPECT_TRUE(base["profiles"][1].contains("accuracy")); // handheld against the reference
+
+    auto r = runProbebench(gate(b, {"--no-timing", "--json", (dir / "out.json").string()}));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("gate: PASS"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("cache.slice_first/split"), std::string::npos); // the cache model
+    const nlohmann::json out = readJson(dir / "out.json");
+    EXPECT_EQ(out["exit_code"], 0);
+    for (const std::string group : {"counters", "model-vs-gl", "accuracy"})
+        for (const std::string& v : verdicts(out, group))
+            EXPECT_EQ(v, "ok") << group;
+    // Stable across runs: the second run measured exactly the baseline's counters.
+    for (size_t i = 0; i < 3; ++i)
+        EXPECT_EQ(out["measured"]["profiles"][i]["counters"], base["profiles"][i]["counters"]);
+}
+
+TEST(GateCli, AChangedCounterFailsUntilTheBaselineIsUpdated) {
+    const fs::path dir = outputDir();
+    const fs::path b = tinyBaseline(dir);
+    nlohmann::json j = readJson(b);
+    const int draws = j["profiles"][2]["counters"]["gl.shadow.draws"].get<int>();
+    j["profiles"][2]["counters"]["gl.shadow.draws"] = draws + 1;
+    writeJson(b, j);
+    auto r = runProbebench(gate(b, {"--no-timing"}));
+    EXPECT_EQ(r.exitCode, 3) << r.output;
+    EXPECT_TRUE(
+        std::regex_search(r.output, std::regex(R"(pc-high +gl\.shadow .* CHANGED +draws -1)")))
+        << r.output;
+    EXPECT_NE(r.output.find("gate: FAIL - "), std::string::npos);
+
+    auto u = runProbebench(gate(b, {"--no-timing", "--update"}));
+    EXPECT_EQ(u.exitCode, 0) << u.output;
+    EXPECT_EQ(readJson(b)["profiles"][2]["counters"]["gl.shadow.draws"], draws);
+    EXPECT_EQ(runProbebench(gate(b, {"--no-timing"})).exitCode, 0);
+}
+
+TEST(GateCli, OneMantissaBitLessFailsTheAccuracyGate) {
+    const fs::path dir = outputDir();
+    const fs::path b = tinyBaseline(dir);
+    std::vector<std::string> args{"env", "PB_DEBUG_GI_DROP_MANTISSA_BIT=1", binaryPath().string()};
+    for (const std::string& a : gate(b, {"--no-timing", "--json", (dir / "out.json").string()}))
+        args.push_back(a);
+    const CommandResult r = runCommand(args);
+    EXPECT_EQ(r.exitCode, 3) << r.output;
+    EXPECT_NE(r.output.find("warning: test-only fault injection active: "
+                            "PB_DEBUG_GI_DROP_MANTISSA_BIT=1"),
+              std::string::npos);
+    const nlohmann::json out = readJson(dir / "out.json");
+    EXPECT_EQ(verdicts(out, "counters").count("CHANGED"), 0u) << "the counters do not move";
+    bool worse = false;
+    for (const auto& row : out["rows"])
+        worse = worse || (row["group"] == "accuracy" && row["verdict"] == "WORSE");
+    EXPECT_TRUE(worse) << r.output;
+}
+
+TEST(GateCli, ACallgrindBaselineOfAnotherToolchainNeverFails) {
+    const fs::path dir = outputDir();
+    const fs::path b = tinyBaseline(dir);
+    nlohmann::json j = readJson(b);
+    j["callgrind"] = {{{"key",
+                        {{"mesa", "Mesa 1.0"},
+                         {"llvm", "1.0"},
+                         {"compiler", "GCC 1.0"},
+                         {"valgrind", "valgrind-1.0"}}},
+                       {"profiles", {{"reference", {{"frame", 12345}}}}}}};
+    writeJson(b, j);
+    auto r = runProbebench(gate(b, {"--no-timing"}));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("note: callgrind: not run (--callgrind runs it)"), std::string::npos);
+    // --update keeps the other toolchain's counts.
+    EXPECT_EQ(runProbebench(gate(b, {"--no-timing", "--update"})).exitCode, 0);
+    EXPECT_EQ(readJson(b)["callgrind"][0]["key"]["mesa"], "Mesa 1.0");
+}
+
+TEST(GateCli, TimingRunsRatioRoundsAndWorkersEndToEnd) {
+    const fs::path dir = outputDir();
+    const fs::path b = tinyBaseline(dir);
+    nlohmann::json j = readJson(b);
+    j["suite"]["timing"] = {{"frames", 1},           {"warmup", 1},     {"min_rounds", 2},
+                            {"quick_max_rounds", 3}, {"max_rounds", 3}, {"round_step", 1}};
+    writeJson(b, j);
+    auto u = runProbebench(gate(b, {"--update", "--quick"})); // records 3 ratio rounds
+    ASSERT_EQ(u.exitCode, 0) << u.output;
+    EXPECT_EQ(readJson(b)["profiles"][1]["ratio_samples"].size(), 3u);
+
+    const std::set<std::string> allowed{"same", "unknown", "faster", "SLOWER"};
+    auto r = runProbebench(gate(b, {"--quick", "--json", (dir / "ratio.json").string()}));
+    EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 4) << r.output;
+    auto ratio = verdicts(readJson(dir / "ratio.json"), "timing");
+    EXPECT_EQ(ratio.size(), 2u); // handheld and pc-high against the reference
+    for (const std::string& v : ratio)
+        EXPECT_TRUE(allowed.count(v)) << v;
+
+    auto a = runProbebench(gate(b, {"--quick", "--against", binaryPath().string(), "--json",
+                                    (dir / "against.json").string()}));
+    EXPECT_TRUE(a.exitCode == 0 || a.exitCode == 4) << a.output;
+    auto against = verdicts(readJson(dir / "against.json"), "timing");
+    EXPECT_EQ(against.size(), 6u); // frame and GI passes, for each of the 3 profiles
+    for (const std::string& v : against)
+        EXPECT_TRUE(allowed.count(v)) << v;
+    EXPECT_NE(a.output.find("GI passes ms vs "), std::string::npos) << a.output;
+}
+
+TEST(GateCli, ErrorsAreOneLine) {
+    const fs::path dir = outputDir();
+    const fs::path missing = dir / "missing.json";
+    auto r = runProbebench(gate(missing));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_TRUE(
+        firstLineIsTheError(r, missing.string() + ": no such baseline (create it with --update)"))
+        << r.output;
+
+    std::ofstream(dir / "bad.json") << "{\"schema\": \"probebench.gate/1\"}";
+    r = runProbebench(gate(dir / "bad.json"));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_TRUE(firstLineIsTheError(r, (dir / "bad.json").string() + ": suite.scene: missing"))
+        << r.output;
+
+    const fs::path b = tinyBaseline(dir);
+    r = runProbebench(gate(b, {"--width", "32", "--height", "32"}));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_TRUE(firstLineIsTheError(r, "--width: only with --update (the suite is the baseline's)"))
+        << r.output;
+
+    r = runProbebench(gate(b, {"--against", (dir / "no-such-binary").string()}));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_TRUE(
+        firstLineIsTheError(r, "--against " + (dir / "no-such-binary").string() + ": no such file"))
+        << r.output;
+
+    r = runCommand({"env", "PB_DEBUG_GI_EXTRA_FETCHES=lots", binaryPath().string(), "gate",
+                    "--baseline", b.string()});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_TRUE(firstLineIsTheError(
+        r, "PB_DEBUG_GI_EXTRA_FETCHES: must be an integer in 0..16 (test-only fault injection)"))
+        << r.output;
+
+    // A binary that is not a gate worker: named, one error line at the end.
+    r = runProbebench(gate(b, {"--no-timing", "--against", "/bin/true"}));
+    EXPECT_EQ(r.exitCode, 0) << "--no-timing starts no worker: " << r.output;
+    r = runProbebench(gate(b, {"--quick", "--against", "/bin/true"}));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_TRUE(std::regex_search(
+        r.output, std::regex(R"(\nprobebench: error: baseline worker \(/bin/true\): [^\n]*\n$)")))
+        << r.output;
+}
