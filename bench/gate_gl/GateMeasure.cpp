@@ -22,7 +22,6 @@ GateRenderer::GateRenderer(const GateInputs& in, const profile::PlatformProfile&
 
 void GateRenderer::frame(render::FrameTimer* timer) {
     renderer_->render(view_, timer);
-    ++frames_;
 }
 
 const views::CoverageTester& ModelScenes::forVolumeLod(const std::string& volumeLod) {
@@ -105,10 +104,15 @@ void measureCounters(GateRenderer& r, const GateInputs& in, ModelScenes& scenes,
     add(out.counters, "memory.gpu_probe_bytes", std::int64_t(r.renderer().gpuProbes()->bytes()));
     add(out.counters, "memory.gi_target_bytes", std::int64_t(gi->targetBytes()));
 
+    // The counted frame and the last one come right after a camera cut: gi.upsample=temporal
+    // then samples each footprint's centre pixel - the pixel the cost model evaluates - and the
+    // accuracy is read on the frame the bench reads (bench/runner/SessionRunner.cpp).
+    r.renderer().resetGiHistory();
     gi->setCountPixels(true);
     r.frame();
     gi->setCountPixels(false);
     const render::GiPassStats stats = gi->stats();
+    r.renderer().resetGiHistory();
     r.frame(); // a plain last frame: what the accuracy reads
     std::vector<int> culled;
     for (const render::GiVolumeStats& v : stats.volumes) {
@@ -145,8 +149,7 @@ AccuracyValues measureAccuracy(GateRenderer& profile, GateRenderer& reference,
     s.variants[0].variant = pv;
     s.variants[1].variant = rv;
     bench::AccuracyInputs ai{
-        in.scene, in.probes, in.view, in.settings, in.width, in.height, profile.framesRendered(),
-        67.0};
+        in.scene, in.probes, in.view, in.settings, in.width, in.height, 1, 67.0};
     bench::captureAccuracy(s, {&profile.renderer(), &reference.renderer()}, ai, nullptr);
     const bench::AccuracyResult& a = s.variants[0].accuracy;
     if (!a.measured) throw Error("gate: the accuracy of '" + pv.id + "' could not be measured");

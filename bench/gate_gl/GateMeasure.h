@@ -40,13 +40,11 @@ public:
     const render::RenderView& view() const { return view_; }
     const profile::PlatformProfile& profile() const { return profile_; }
     void frame(render::FrameTimer* timer = nullptr); // one frame, counted
-    int framesRendered() const { return frames_; }
 
 private:
     profile::PlatformProfile profile_;
     std::unique_ptr<render::FrameRenderer> renderer_;
     render::RenderView view_;
-    int frames_ = 0;
 };
 
 // CPU ray scenes for the cost model, one per gi.volume_lod (building one builds a BVH).
