@@ -18,6 +18,7 @@
 #include "gl/DebugOutput.h"
 #include "metrics/ImageMetrics.h"
 #include "probes/ProbeFile.h"
+#include "probes/VolumeRanksFile.h"
 #include "views/WorstCaseView.h"
 
 #include <algorithm>
@@ -169,7 +170,7 @@ int run(const BenchArgs& a) {
             ? bench::benchProbes(s, a.volumes,
                                  a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir,
                                  &probesPath, progress)
-            : probes::readProbeFile(a.probes);
+            : probes::readProbeFileWithRanks(a.probes);
 
     bench::BenchResult result;
     scene::View view;

@@ -15,6 +15,7 @@
 #include "image/Image.h"
 #include "passes/GiApplyPass.h"
 #include "probes/ProbeFile.h"
+#include "probes/VolumeRanksFile.h"
 #include "profile/SwitchTable.h"
 
 #include <chrono>
@@ -170,7 +171,7 @@ int run(RenderArgs& a) {
     probes::ProbeSet probeSet;
     render::GiOptions gi;
     if (!a.probes.empty()) {
-        probeSet = probes::readProbeFile(a.probes);
+        probeSet = probes::readProbeFileWithRanks(a.probes);
         gi.probes = &probeSet;
         gi.scenario = scenarioIndex(probeSet, a);
         gi.profile = prof;
