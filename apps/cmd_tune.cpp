@@ -124,6 +124,10 @@ public:
 
     const scene::View& view() const { return view_; }
     const nlohmann::json& context() const { return context_; }
+    // "cpu-finish (...why)": how frame ms were taken (cpu-time: process CPU-ms, all threads).
+    std::string timing() const {
+        return options_.timing.name + " (" + options_.timing.reason + ")";
+    }
     int sessions() const { return sessions_; }
     // Frames rendered per session of n candidates (+ the reference): warm-up, timed rounds,
     // the accuracy frame after a cut and the irradiance-only frame.
@@ -256,11 +260,12 @@ int run(const TuneArgs& a) {
     info.height = height;
     info.budgetMs = a.budgetMs;
     info.budgetMiB = a.budgetMiB;
-    char measured[300];
+    char measured[600];
     std::snprintf(measured, sizeof measured,
-                  "measured: %.2f ms per frame (median), GI memory %.3f MiB (probes + GI "
-                  "targets), FLIP %.4f vs profile '%s'",
-                  best.m.frameMs, best.memoryMiB, best.m.flip, reference.name.c_str());
+                  "measured: %.2f ms per frame (median, timing %s), GI memory %.3f MiB (probes + "
+                  "GI targets), FLIP %.4f vs profile '%s'",
+                  best.m.frameMs, measurer.timing().c_str(), best.memoryMiB, best.m.flip,
+                  reference.name.c_str());
     info.comments = {
         "Written by `probebench tune`: the most accurate configuration found that fits the "
         "budgets below on the device named here.",
@@ -282,9 +287,12 @@ int run(const TuneArgs& a) {
               << " switch(es) by " << r.method << "; " << r.overMemory
               << " over the memory budget (not rendered); " << r.variantsMeasured
               << " candidate measurement(s) in " << r.sessions << " session(s), "
-              << measurer.rendersPerVariant() << " frames each (+ the reference per session)\n";
+              << measurer.rendersPerVariant() << " frames each (+ the reference per session): "
+              << (r.variantsMeasured + r.sessions) * measurer.rendersPerVariant()
+              << " frames rendered\n";
     for (const std::string& f : space.fixed)
         std::cout << "  held at the base: " << f << "\n";
+    std::cout << "frame ms: timing " << measurer.timing() << "\n";
     std::cout << bench::paretoTable(r, o);
     std::printf("chosen: %s: %.2f ms (budget %g), %.3f MiB (budget %g), FLIP %.4f\nwrote %s\n",
                 best.label.c_str(), best.m.frameMs, a.budgetMs, best.memoryMiB, a.budgetMiB,
@@ -308,6 +316,8 @@ int run(const TuneArgs& a) {
         j["reference"] = reference.name;
         j["out"] = a.out;
         j["renders_per_candidate"] = measurer.rendersPerVariant();
+        j["timing"] = measurer.timing();
+        j["frames_rendered"] = (r.variantsMeasured + r.sessions) * measurer.rendersPerVariant();
         j["remeasure"] = {{"frame_ms", again.frameMs},
                           {"flip", again.flip},
                           {"memory_mib", memory(loaded.switches)}};

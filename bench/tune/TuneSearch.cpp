@@ -183,8 +183,14 @@ TuneResult runTune(const TuneSpace& space, const MemoryFn& memory, const Measure
         std::vector<int> order(r.candidates.size());
         for (size_t i = 0; i < order.size(); ++i)
             order[i] = int(i);
+        // Least memory first; among equals, the fewest switches changed from the base.
+        auto changes = [&](int i) {
+            const std::string& l = r.candidates[size_t(i)].label;
+            return l == "base" ? 0L : long(std::count(l.begin(), l.end(), ' ')) + 1;
+        };
         std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-            return r.candidates[size_t(a)].memoryMiB < r.candidates[size_t(b)].memoryMiB;
+            return std::make_pair(r.candidates[size_t(a)].memoryMiB, changes(a)) <
+                   std::make_pair(r.candidates[size_t(b)].memoryMiB, changes(b));
         });
         order.resize(std::min<size_t>(3, order.size()));
         r.closest = order;
