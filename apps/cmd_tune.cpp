@@ -104,7 +104,6 @@ public:
         bench::RunnerInputs in{&scene_, &set_, view_, render::defaultFrameSettings(scene_),
                                debug_.get()};
         const std::vector<bench::SessionResult> got = bench::runBenchPlan(plan, in, options_);
-        ++sessions_;
         const bench::SessionResult& r = got.front();
         std::vector<bench::TuneMeasurement> out;
         for (size_t i = 0; i < batch.size(); ++i) {
@@ -128,7 +127,7 @@ public:
     std::string timing() const {
         return options_.timing.name + " (" + options_.timing.reason + ")";
     }
-    int sessions() const { return sessions_; }
+    const std::string& timingName() const { return options_.timing.name; }
     // Frames rendered per session of n candidates (+ the reference): warm-up, timed rounds,
     // the accuracy frame after a cut and the irradiance-only frame.
     int rendersPerVariant() const { return a_.warmup + a_.rounds * a_.frames + 2; }
@@ -173,7 +172,6 @@ private:
     std::unique_ptr<gl::DebugOutput> debug_;
     bench::RunnerOptions options_;
     nlohmann::json context_;
-    int sessions_ = 0;
 };
 
 probes::ProbeSet tuneProbes(const TuneArgs& a, const scene::Scene& s, std::string& path) {
@@ -264,7 +262,7 @@ int run(const TuneArgs& a) {
     std::snprintf(measured, sizeof measured,
                   "measured: %.2f ms per frame (median, timing %s), GI memory %.3f MiB (probes + "
                   "GI targets), FLIP %.4f vs profile '%s'",
-                  best.m.frameMs, measurer.timing().c_str(), best.memoryMiB, best.m.flip,
+                  best.m.frameMs, measurer.timingName().c_str(), best.memoryMiB, best.m.flip,
                   reference.name.c_str());
     info.comments = {
         "Written by `probebench tune`: the most accurate configuration found that fits the "
