@@ -33,7 +33,8 @@ struct GiSwitches {
     GiMultiVolume multiVolume;
     GiDynamic dynamic;
     GiUpsample upsample; // used when resolution is half or quarter
-    std::string volumeLod; // "all" | "omit:NAME[,...]" | "min_spacing:M" | "[rank_]budget_mib:MIB"
+    std::string
+        volumeLod; // "all" | "omit:NAME[,NAME...]" | "min_spacing:METRES" | "budget_mib:MIB"
 };
 
 struct Profile {
