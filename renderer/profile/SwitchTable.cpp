@@ -111,8 +111,7 @@ std::vector<SwitchInfo> buildTable() {
                "half/quarter GI to full resolution (upsample pass): bilinear, depth/normal-aware "
                "bilateral, or temporal history with jittered samples"),
         text("gi.volume_lod", &GiSwitches::volumeLod, "all", volumeLodProblem,
-             "volumes left out: all | omit:A,B | min_spacing:M | budget_mib:MIB | "
-             "rank_budget_mib:MIB"),
+             "volumes left out: all | omit:A,B | min_spacing:M | budget_mib:MIB"),
     };
 }
 
