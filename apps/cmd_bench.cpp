@@ -20,6 +20,7 @@
 #include "metrics/ImageMetrics.h"
 #include "passes/GiDebugInjection.h"
 #include "probes/ProbeFile.h"
+#include "probes/VolumeRanksFile.h"
 #include "views/WorstCaseView.h"
 
 #include <algorithm>
@@ -173,7 +174,7 @@ int run(const BenchArgs& a) {
             ? bench::benchProbes(s, a.volumes,
                                  a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir,
                                  &probesPath, progress)
-            : probes::readProbeFile(a.probes);
+            : probes::readProbeFileWithRanks(a.probes);
 
     bench::BenchResult result;
     scene::View view;

@@ -10,6 +10,7 @@
 #include "costmodel/CostModel.h"
 #include "costmodel/GiVolumeLod.h"
 #include "probes/ProbeFile.h"
+#include "probes/VolumeRanksFile.h"
 
 #include <cstdio>
 #include <iostream>
@@ -78,7 +79,7 @@ int run(CostArgs& a) {
     o.layout = costmodel::parseMemoryLayout(a.layout);
     o.caches = chooseCaches(a, platformProfile);
     scene::Scene s = loadSceneWithOverrides(a.scene);
-    probes::ProbeSet set = probes::readProbeFile(a.probes);
+    probes::ProbeSet set = probes::readProbeFileWithRanks(a.probes);
     if (!a.scenario.empty()) {
         o.scenario = set.findScenario(a.scenario);
         if (o.scenario < 0) throw Error("--scenario '" + a.scenario + "': not in " + a.probes);

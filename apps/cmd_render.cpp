@@ -15,6 +15,7 @@
 #include "image/Image.h"
 #include "passes/GiApplyPass.h"
 #include "probes/ProbeFile.h"
+#include "probes/VolumeRanksFile.h"
 #include "profile/SwitchTable.h"
 
 #include <chrono>
@@ -109,6 +110,9 @@ nlohmann::json renderJson(const RenderArgs& a, const scene::Scene& s, const scen
     j["first_frame_ms"] = ms;
     j["out"] = a.out;
     j["out_hdr"] = orNull(a.outHdr);
+    j["skipped"] = nlohmann::json::array();
+    for (const render::SkippedWork& w : r.skipped())
+        j["skipped"].push_back({{"what", w.what}, {"why", w.why}});
     j["gi"] = nullptr;
     if (const render::GpuProbes* gp = r.gpuProbes()) {
         const render::GiApplyPass* pass = r.giApplyPass();
@@ -119,7 +123,9 @@ nlohmann::json renderJson(const RenderArgs& a, const scene::Scene& s, const scen
         gi["probe_gpu_bytes"] = gp->bytes();
         gi["target_gpu_bytes"] = pass->targetBytes();
         gi["debug_view"] = orNull(a.debug);
-        gi["pass"] = render::giPassStatsJson(pass->stats());
+        gi["skipped_this_frame"] = r.giSkippedLastFrame();
+        gi["pass"] = r.giSkippedLastFrame() ? nlohmann::json(nullptr)
+                                            : render::giPassStatsJson(pass->stats());
     }
     return j;
 }
@@ -165,7 +171,7 @@ int run(RenderArgs& a) {
     probes::ProbeSet probeSet;
     render::GiOptions gi;
     if (!a.probes.empty()) {
-        probeSet = probes::readProbeFile(a.probes);
+        probeSet = probes::readProbeFileWithRanks(a.probes);
         gi.probes = &probeSet;
         gi.scenario = scenarioIndex(probeSet, a);
         gi.profile = prof;
@@ -206,6 +212,10 @@ int run(RenderArgs& a) {
              << "\n";
     }
 
+    if (a.verbose)
+        for (const render::SkippedWork& w : renderer.skipped())
+            info << render::skippedLine(w) << "\n";
+
     if (platform->isWindowed() && a.out.empty())
         return runInteractive(*platform, renderer, s, view, a.frames);
 
@@ -233,14 +243,25 @@ int run(RenderArgs& a) {
     const render::GiApplyPass* giPass = renderer.giApplyPass();
     info << "rendered " << a.width << "x" << a.height << " in " << ms
          << " ms (one frame, includes shader compilation"
-         << (giPass && giPass->stats().counted ? " and per-volume pixel counting" : "") << ")\n"
+         << (giPass && giPass->stats().counted && !renderer.giSkippedLastFrame()
+                 ? " and per-volume pixel counting"
+                 : "")
+         << ")\n"
          << "wrote " << a.out << (a.outHdr.empty() ? "" : " and " + a.outHdr)
          << (a.dumpDir.empty() ? "" : ", GBuffer channels in " + a.dumpDir) << "\n";
     if (coverage)
         info << "volume_coverage: left = the volume that shaded each pixel:\n"
              << render::giCoverageLegend(giPass->stats())
              << "right = full evaluations per pixel: 1 blue, 2 green, 3 yellow, 4+ red\n";
-    if (giPass && a.verbose) info << render::giPassStatsText(giPass->stats());
+    if (giPass && a.verbose) {
+        if (renderer.giSkippedLastFrame())
+            info << "skipped passes gi-apply" << (renderer.giUpsample() ? ", upsample" : "")
+                 << " this frame: none of the " << renderer.gpuProbes()->volumes().size()
+                 << " loaded volume(s) is in the view frustum (the lighting took its no-GI "
+                    "path; probe textures and GI targets stay allocated)\n";
+        else
+            info << render::giPassStatsText(giPass->stats());
+    }
     if (a.json) std::cout << renderJson(a, s, view, *platform, renderer, ms).dump(2) << "\n";
     if (platform->isWindowed()) return runInteractive(*platform, renderer, s, view, a.frames);
     return 0;
@@ -286,7 +307,8 @@ const RegisterCommand reg{
                         "volume | evaluations per pixel)");
          cmd.add_flag("--verbose", a->verbose,
                       "Report the GI pass per volume: how it was drawn, "
-                      "pixels evaluated (counting reads back per volume)");
+                      "pixels evaluated (counting reads back per volume); and one line per "
+                      "pass or resource the frame skipped, with why");
          cmd.add_flag("--json", a->json,
                       "Print the frame's report as JSON on stdout (human "
                       "lines go to stderr); counts pixels like --verbose");

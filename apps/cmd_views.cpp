@@ -7,6 +7,7 @@
 #include "core/Error.h"
 #include "passes/GiVolumeLod.h"
 #include "probes/ProbeFile.h"
+#include "probes/VolumeRanksFile.h"
 #include "profile/Profile.h"
 #include "views/WorstCaseView.h"
 
@@ -67,7 +68,7 @@ int run(ViewsArgs& a) {
     if (a.worstCase && (!a.view.empty() || !a.camera.empty()))
         throw Error("--worst-case searches a camera: leave out --view and --camera");
     scene::Scene s = loadSceneWithOverrides(a.scene);
-    probes::ProbeSet set = probes::readProbeFile(a.probes);
+    probes::ProbeSet set = probes::readProbeFileWithRanks(a.probes);
     // gi.volume_lod: coverage counts only the volumes the renderer would load.
     std::vector<bool> kept(set.volumes.size(), false);
     for (int v : render::selectVolumes(set, profile::parseVolumeLod(prof.gi.volumeLod)))

@@ -22,7 +22,60 @@ void dropOrphans(const std::vector<int>& parents, std::vector<bool>& keep) {
         if (parents[size_t(v)] >= 0 && !keep[size_t(parents[size_t(v)])]) keep[size_t(v)] = false;
 }
 
+// The subtree of v among the volumes still kept (v first).
+std::vector<int> keptSubtree(const std::vector<int>& parents, const std::vector<bool>& keep,
+                             int v) {
+    std::vector<int> out{v};
+    for (size_t i = 0; i < out.size(); ++i)
+        for (size_t c = 0; c < parents.size(); ++c)
+            if (parents[c] == out[i] && keep[c]) out.push_back(int(c));
+    return out;
+}
+
+std::string mib(double bytes) {
+    std::ostringstream s;
+    s << bytes / (1024.0 * 1024.0);
+    return s.str();
+}
+
 } // namespace
+
+std::vector<RankDropStep> rankDropOrder(const probes::ProbeSet& set) {
+    if (!set.ranks)
+        throw Error("no volume ranks for this probe set (" + set.ranksNote +
+                    "); rank it with `probebench volumes --rank --write-ranks`");
+    const std::vector<int> parents = probes::validateVolumes(set.volumes, "probe set");
+    const size_t n = set.volumes.size();
+    std::vector<double> loss(n, 0.0);
+    for (size_t v = 0; v < n; ++v) {
+        const probes::VolumeRank* r = set.ranks->find(set.volumes[v].name);
+        if (!r) throw Error("volume ranks: no rank for volume '" + set.volumes[v].name + "'");
+        loss[v] = r->loss;
+    }
+    std::vector<std::size_t> bytes(n);
+    std::size_t kept = 0;
+    for (size_t v = 0; v < n; ++v)
+        kept += bytes[v] = gpuVolumeBytes(set.volumes[v], set.format());
+    std::vector<bool> keep(n, true);
+    std::vector<RankDropStep> steps;
+    while (kept > 0) {
+        int best = -1;
+        double bestValue = 0;
+        for (size_t v = 0; v < n; ++v) {
+            if (!keep[v] || keptSubtree(parents, keep, int(v)).size() > 1) continue; // not a leaf
+            const double value = loss[v] / double(std::max<std::size_t>(bytes[v], 1));
+            if (best < 0 || value < bestValue ||
+                (value == bestValue && bytes[v] >= bytes[size_t(best)])) {
+                best = int(v);
+                bestValue = value;
+            }
+        }
+        keep[size_t(best)] = false;
+        kept -= bytes[size_t(best)];
+        steps.push_back(RankDropStep{best, kept});
+    }
+    return steps;
+}
 
 std::vector<int> selectVolumes(const probes::ProbeSet& set, const profile::VolumeLod& lod) {
     using Mode = profile::VolumeLod::Mode;
@@ -63,6 +116,31 @@ std::vector<int> selectVolumes(const probes::ProbeSet& set, const profile::Volum
                     << " MiB more than fits";
                 throw Error(msg.str());
             }
+        }
+    } else if (lod.mode == Mode::RankBudgetMiB) {
+        // Ranks are required even when everything fits: the profile must not depend on luck.
+        const std::string form = "gi.volume_lod=rank_budget_mib:" + mib(lod.value * 1048576.0);
+        std::vector<RankDropStep> steps;
+        try {
+            steps = rankDropOrder(set);
+        } catch (const Error& e) {
+            throw Error(form + ": " + e.what());
+        }
+        const double budget = lod.value * 1024.0 * 1024.0;
+        std::size_t total = 0;
+        for (const probes::ProbeVolume& v : set.volumes)
+            total += gpuVolumeBytes(v, set.format());
+        for (size_t i = 0; double(total) > budget && i < steps.size(); ++i) {
+            keep[size_t(steps[i].volume)] = false;
+            if (double(steps[i].keptBytes) <= budget) break;
+        }
+        if (std::find(keep.begin(), keep.end(), true) == keep.end()) {
+            std::size_t smallest = total;
+            for (size_t v = 0; v < n; ++v)
+                if (parents[v] < 0)
+                    smallest = std::min(smallest, gpuVolumeBytes(set.volumes[v], set.format()));
+            throw Error(form + ": keeps no volume (the smallest root alone needs " +
+                        mib(double(smallest)) + " MiB)");
         }
     }
     dropOrphans(parents, keep);

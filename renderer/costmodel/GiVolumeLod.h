@@ -17,8 +17,22 @@ namespace pb::render {
 std::size_t gpuVolumeBytes(const probes::ProbeVolume& v, probes::StorageFormat format);
 
 // Indices into set.volumes of the volumes to load, in file order. Throws pb::Error when a
-// name in omit: is not in the set or when budget_mib: cannot hold a root volume.
+// name in omit: is not in the set, when budget_mib: cannot hold a root volume, or when
+// rank_budget_mib: has no ranks (ProbeSet::ranks) or keeps no volume.
 std::vector<int> selectVolumes(const probes::ProbeSet& set, const profile::VolumeLod& lod);
+
+// rank_budget_mib's order of dropping (needs set.ranks), peeling the tree from its leaves:
+// among the kept volumes with no kept child, the one losing the least accuracy per byte
+// (VolumeRank::loss / its own GPU bytes; ties: the larger, then the later in the file) goes
+// first, so a parent goes only after its children and a smaller budget keeps a subset of what
+// a larger one keeps. Returns the volumes in that order, each with the bytes still kept after
+// it went (the last entry keeps 0). A budget of B bytes keeps what remains after the first
+// step whose remaining bytes fit B.
+struct RankDropStep {
+    int volume = 0;            // file index of the volume dropped
+    std::size_t keptBytes = 0; // GPU bytes still kept after this step
+};
+std::vector<RankDropStep> rankDropOrder(const probes::ProbeSet& set);
 
 // The apply pass's draw order for "each draw overwrites": largest box first, among equal boxes
 // the later file index first, so the last draw covering a pixel is the CPU sampler's choice

@@ -9,6 +9,7 @@
 #include "passes/GBufferPass.h"
 #include "passes/GiApplyPass.h"
 #include "passes/GiUpsamplePass.h"
+#include "passes/GiVolumeRaster.h"
 #include "passes/ProbeDebugPass.h"
 #include "passes/ShadowPass.h"
 #include "profile/VolumeLod.h"
@@ -26,26 +27,51 @@ FrameSettings defaultFrameSettings(const scene::Scene& scene) {
 }
 
 FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& settings,
-                             const GiOptions& gi)
+                             const GiOptions& gi, const FrameBuild& build)
     : gpu_(scene), settings_(settings), quirks_(gl::detectDriverQuirks()),
       preExposed_(gi.profile.gi.guardExposure == profile::GiGuard::On) {
-    passes_.push_back(std::make_unique<ShadowPass>());
+    const bool lean = build.skipUnneeded;
+    // The shadow pass returned early without a sun anyway (and allocated nothing): now it is
+    // not built, and the lighting's sun term stays off exactly as before.
+    if (std::string why = shadowSkipReason(scene); lean && !why.empty())
+        skipped_.push_back({"pass shadow (no shadow map)", why});
+    else
+        passes_.push_back(std::make_unique<ShadowPass>());
     passes_.push_back(std::make_unique<GBufferPass>());
     if (gi.probes) {
-        checkGiProfileSupported(gi.profile);
+        profile::Profile prof = gi.profile;
+        checkGiProfileSupported(prof);
+        if (std::string why = dynamicShSkipReason(scene, prof); lean && !why.empty()) {
+            skipped_.push_back({"pass gi-dynamic-sh", why});
+            prof.gi.dynamic = profile::GiDynamic::PerPixel;
+        }
         probes_ = std::make_unique<GpuProbes>(*gi.probes, gi.scenario,
-                                              profile::parseVolumeLod(gi.profile.gi.volumeLod));
-        if (gi.profile.gi.dynamic == profile::GiDynamic::Sh)
-            passes_.push_back(std::make_unique<DynamicShPass>(*probes_, gi.profile, scene));
-        auto apply = std::make_unique<GiApplyPass>(*probes_, gi.profile);
+                                              profile::parseVolumeLod(prof.gi.volumeLod));
+        std::vector<int> kept;
+        for (const GpuProbeVolume& v : probes_->volumes())
+            kept.push_back(v.fileIndex);
+        for (SkippedWork& w : omittedVolumes(*gi.probes, kept, prof.gi.volumeLod))
+            skipped_.push_back(std::move(w));
+        if (prof.gi.dynamic == profile::GiDynamic::Sh) {
+            auto sh = std::make_unique<DynamicShPass>(*probes_, prof, scene);
+            dynamicSh_ = sh.get();
+            passes_.push_back(std::move(sh));
+        }
+        auto apply = std::make_unique<GiApplyPass>(*probes_, prof);
         giApply_ = apply.get();
         giApply_->setCountPixels(gi.debugView == GiDebugView::VolumeCoverage);
         passes_.push_back(std::move(apply));
-        if (gi.profile.gi.resolution != profile::GiResolution::Full) {
-            auto upsample = std::make_unique<GiUpsamplePass>(gi.profile);
+        if (prof.gi.resolution != profile::GiResolution::Full) {
+            auto upsample = std::make_unique<GiUpsamplePass>(prof);
             upsample_ = upsample.get();
             passes_.push_back(std::move(upsample));
         }
+        // Per frame, a view that sees no volume skips the GI passes. Not with the SH pass (an
+        // object's centre may lie in a volume the view does not see) nor under a debug view
+        // (they show the GI passes' work).
+        skipGiWhenUnseen_ = lean && !dynamicSh_ && gi.debugView == GiDebugView::None;
+    } else {
+        skipped_.push_back({"GI passes", "no probes (render --probes FILE)"});
     }
     settings_.indirectOnly = gi.probes && gi.debugView == GiDebugView::GiOnly;
     passes_.push_back(std::make_unique<DirectLightingPass>());
@@ -58,21 +84,48 @@ FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& set
 
 FrameRenderer::~FrameRenderer() = default;
 
+// The apply pass's own culling test (GiVolumeRaster: all 8 corners beyond one clip plane),
+// which does not depend on the GI target's size.
+bool FrameRenderer::anyVolumeVisible(const RenderView& view) const {
+    const glm::ivec2 size(view.width, view.height);
+    for (const GpuProbeVolume& v : probes_->volumes())
+        if (volumeRaster(v, view, size, 1, size).visible) return true;
+    return false;
+}
+
 void FrameRenderer::render(const RenderView& view, FrameTimer* timer) {
     if (!targets_ || targets_->gbuffer.width() != view.width ||
         targets_->gbuffer.height() != view.height)
         targets_ = std::make_unique<FrameTargets>(view.width, view.height);
     lastView_ = view;
+    // All volumes culled: the apply pass would clear its target to weight 0 and draw nothing,
+    // and the lighting would add 0 + 1 x ambient - exactly its no-GI path, taken instead.
+    giSkipped_ = skipGiWhenUnseen_ && !anyVolumeVisible(view);
     FrameContext ctx{gpu_, view, settings_, programs_, *targets_, quirks_, {}, {}, timer};
     ctx.preExposure = preExposed_ ? preExposureScale(settings_.exposure) : 1.0f;
     lastPreExposure_ = ctx.preExposure;
-    if (upsample_) upsample_->beginFrame(view, ctx);
+    if (upsample_) {
+        if (giSkipped_)
+            upsample_->resetHistory(); // the history misses the skipped frames
+        else
+            upsample_->beginFrame(view, ctx);
+    }
     for (auto& pass : passes_) {
+        if (giSkipped_ && (pass.get() == giApply_ || pass.get() == upsample_)) continue;
         TimedSection section(timer, pass->name());
         pass->execute(ctx);
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glUseProgram(0);
+}
+
+GiMemory FrameRenderer::giMemory() const {
+    GiMemory m;
+    if (probes_) m.probes = probes_->bytes();
+    if (giApply_) m.evaluation = giApply_->targetBytes();
+    if (upsample_) m.upsample = upsample_->bytes();
+    if (dynamicSh_) m.dynamicSh = dynamicSh_->bytes();
+    return m;
 }
 
 void FrameRenderer::resetGiHistory() {

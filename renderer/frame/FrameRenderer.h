@@ -1,9 +1,14 @@
 #pragma once
-// Builds the pass list and runs frames: shadow -> gbuffer -> [gi-dynamic-sh] -> [gi-apply ->
+// Builds the pass list and runs frames: [shadow] -> gbuffer -> [gi-dynamic-sh] -> [gi-apply ->
 // [upsample]] -> direct -> composite (upsample only at gi.resolution half/quarter). Owns the
 // scene's GPU resources, the probes' GPU copy, the program cache and the render targets
 // (re-created when the resolution changes). Requires a current GL context (platforms/).
 // Without probes there is no GI pass and no GI resource at all.
+// Only what the scene and profile need is built (frame/FrameSkips.h: no shadow pass without a
+// shadow-casting light, no SH pass without dynamic objects, no textures for omitted volumes),
+// and a frame whose view sees no loaded volume runs no GI pass (renderer/README.md).
+#include "frame/FrameSkips.h"
+#include "frame/GiMemory.h"
 #include "image/Image.h"
 #include "passes/FrameContext.h"
 #include "passes/GiDebugView.h"
@@ -33,11 +38,18 @@ struct GiOptions {
 };
 
 class GiApplyPass;
+class DynamicShPass;
+
+struct FrameBuild {
+    // false: build every pass the scene and profile name and run the GI passes on every frame,
+    // even where they add nothing (tests check that skipping changes no pixel).
+    bool skipUnneeded = true;
+};
 
 class FrameRenderer {
 public:
     FrameRenderer(const scene::Scene& scene, const FrameSettings& settings,
-                  const GiOptions& gi = {});
+                  const GiOptions& gi = {}, const FrameBuild& build = {});
     ~FrameRenderer();
 
     // One frame; with a timer, every pass is a timed section named by Pass::name().
@@ -61,7 +73,17 @@ public:
     void resetGiHistory();
     const GiUpsamplePass* giUpsample() const { return upsample_; } // null at full resolution
 
+    // Passes and resources left out at construction, one entry each (render --verbose).
+    const std::vector<SkippedWork>& skipped() const { return skipped_; }
+    // The last frame ran no GI pass: no loaded volume was in its view frustum (the lighting
+    // took its no-GI path; probe textures and targets stay allocated for the next frame).
+    bool giSkippedLastFrame() const { return giSkipped_; }
+    // GPU memory of the GI as allocated so far (targets exist after the first frame).
+    GiMemory giMemory() const;
+
 private:
+    bool anyVolumeVisible(const RenderView& view) const;
+
     GpuScene gpu_;
     FrameSettings settings_;
     gl::ProgramCache programs_;
@@ -71,6 +93,9 @@ private:
     std::vector<std::unique_ptr<Pass>> passes_;
     GiApplyPass* giApply_ = nullptr;
     GiUpsamplePass* upsample_ = nullptr; // owned by passes_
+    DynamicShPass* dynamicSh_ = nullptr; // owned by passes_
+    std::vector<SkippedWork> skipped_;
+    bool skipGiWhenUnseen_ = false, giSkipped_ = false;
     RenderView lastView_;
     bool preExposed_ = false;      // gi.guard_exposure
     float lastPreExposure_ = 1.0f; // the last frame's FrameContext::preExposure

@@ -59,6 +59,11 @@ DynamicShPass::DynamicShPass(const GpuProbes& probes, const profile::Profile& pr
     weights_.upload(shFitWeights(dirs).data());
 }
 
+std::size_t DynamicShPass::bytes() const {
+    return directions_.bytes() + positions_.bytes() + weights_.bytes() + lookups_.bytes() +
+           coefficients_.bytes();
+}
+
 void DynamicShPass::execute(FrameContext& frame) {
     frame.gi.dynamicSh = &coefficients_;
     if (objects_.objects.empty()) return; // no dynamic pixel will read it

@@ -33,6 +33,7 @@ public:
     // Texel (k, o): coefficient k (of 1, n.x, n.y, n.z) of object o; rgb = E * fade, a = fade.
     const gl::Texture& coefficients() const { return coefficients_; }
     const DynamicObjects& objects() const { return objects_; }
+    std::size_t bytes() const; // GPU memory of its textures
 
 private:
     const GpuProbes& probes_;

@@ -63,6 +63,13 @@ const gl::Texture* GiUpsamplePass::output() const {
     return targets_[current_] ? &targets_[current_]->gi : nullptr;
 }
 
+std::size_t GiUpsamplePass::bytes() const {
+    std::size_t b = 0;
+    for (const auto& t : targets_)
+        if (t) b += t->gi.bytes() + (t->distance ? t->distance.bytes() : 0);
+    return b;
+}
+
 void GiUpsamplePass::beginFrame(const RenderView& view, FrameContext& frame) {
     now_ = cameraState(view);
     const bool temporal = mode_ == profile::GiUpsample::Temporal;

@@ -44,6 +44,7 @@ public:
     // Frames since the history was last reset (0 on the reset frame itself).
     std::uint64_t framesSinceReset() const { return frameIndex_; }
     const gl::Texture* output() const;
+    std::size_t bytes() const; // GPU memory of the output (and history) targets
 
 private:
     struct Target;

@@ -7,8 +7,10 @@
 #include "probes/ProbeVolume.h"
 #include "probes/Scenario.h"
 #include "probes/StorageFormat.h"
+#include "probes/VolumeRank.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +43,10 @@ struct ProbeSet {
     std::vector<ProbeTexture> visibility;        // [volume]
     std::vector<Scenario> scenarios;
     std::vector<std::vector<ProbeTexture>> irradiance; // [scenario][volume]
+    // Not part of the probe file: the volume ranks of its sidecar FILE.ranks.json when one was
+    // read and matches (VolumeRanksFile.h); otherwise empty and `ranksNote` says why.
+    std::optional<VolumeRanks> ranks;
+    std::string ranksNote;
 
     StorageFormat format() const { return settings.format; }
     // -1 when absent.

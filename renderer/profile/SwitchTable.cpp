@@ -115,7 +115,8 @@ std::vector<SwitchInfo> buildTable() {
                "half/quarter GI to full resolution (upsample pass): bilinear, depth/normal-aware "
                "bilateral, or temporal history with jittered samples"),
         text("gi.volume_lod", &GiSwitches::volumeLod, "all", volumeLodProblem,
-             "volumes left out: all | omit:A,B | min_spacing:M | budget_mib:MIB"),
+             "volumes left out: all | omit:A,B | min_spacing:M | budget_mib:MIB | "
+             "rank_budget_mib:MIB (needs volumes --rank --write-ranks)"),
         // Guards (issue 8; `probebench stress` finds what they fix, README.md has the table).
         choice("gi.guard_exposure", &GiSwitches::guardExposure, guardNames(), "on", D::ChoiceFlag,
                "GI_GUARD_EXPOSURE",

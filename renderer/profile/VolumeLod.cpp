@@ -8,7 +8,8 @@
 namespace pb::profile {
 
 namespace {
-const char* kForms = "expected all, omit:NAME[,NAME...], min_spacing:METRES or budget_mib:MIB";
+const char* kForms = "expected all, omit:NAME[,NAME...], min_spacing:METRES, budget_mib:MIB or "
+                     "rank_budget_mib:MIB";
 
 double positiveNumber(const std::string& text, const std::string& whole) {
     std::istringstream in(text);
@@ -37,6 +38,9 @@ VolumeLod parseVolumeLod(const std::string& text) {
         lod.value = positiveNumber(arg, text);
     } else if (mode == "budget_mib") {
         lod.mode = VolumeLod::Mode::BudgetMiB;
+        lod.value = positiveNumber(arg, text);
+    } else if (mode == "rank_budget_mib") {
+        lod.mode = VolumeLod::Mode::RankBudgetMiB;
         lod.value = positiveNumber(arg, text);
     } else {
         throw Error("'" + text + "': " + kForms);

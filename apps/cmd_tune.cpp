@@ -1,0 +1,388 @@
+// probebench tune: searches the switch space for the most accurate configuration that fits a
+// frame-time budget on THIS device and a GI memory budget (probe textures under gi.volume_lod +
+// GI targets), measuring every candidate with the bench runner (pb_bench: interleaved rounds,
+// FLIP against the reference profile on the same frame); prints the Pareto front (time,
+// memory, FLIP), writes the winner as a profile inheriting the base, loads it back and
+// re-measures it. The search itself is bench/tune (GL-free); this file wires it to GL.
+#include "CommandRegistry.h"
+#include "PlatformOptions.h"
+#include "ProfileOptions.h"
+#include "SceneOptions.h"
+#include "bench/runner/BenchContext.h"
+#include "bench/runner/ProbeCache.h"
+#include "bench/runner/SessionRunner.h"
+#include "bench/tune/TuneReport.h"
+#include "bench/tune/TunedProfile.h"
+#include "bench/tune/VolumeLodLevels.h"
+#include "core/Error.h"
+#include "core/FileIO.h"
+#include "frame/FrameRenderer.h"
+#include "frame/GiMemory.h"
+#include "gl/DebugOutput.h"
+#include "passes/DynamicObjects.h"
+#include "probes/VolumeRanksFile.h"
+#include "views/WorstCaseView.h"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <memory>
+
+namespace pb::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct TuneArgs {
+    SceneArgs scene;
+    platform::PlatformOptions platform;
+    std::string base = "reference", reference = "reference", out, json, probes, volumes = "auto",
+                cacheDir, view, camera, timing = "auto";
+    std::vector<std::string> search, sets;
+    double budgetMs = 0, budgetMiB = 0, ppd = 67.0;
+    int width = 0, height = 0, frames = 2, rounds = 3, warmup = 2, maxExhaustive = 24,
+        maxPasses = 2;
+};
+
+void progress(const std::string& line) {
+    std::fprintf(stderr, "tune: %s\n", line.c_str());
+    std::fflush(stderr);
+}
+
+void validate(const TuneArgs& a) {
+    if (!(a.budgetMs > 0 && a.budgetMs <= 1000)) throw Error("--budget-ms must be in (0, 1000]");
+    if (!(a.budgetMiB > 0 && a.budgetMiB <= 65536))
+        throw Error("--budget-mib must be in (0, 65536]");
+    if (fs::path(a.out).extension() != ".toml")
+        throw Error("--out " + a.out + ": not a .toml file");
+    if ((a.width > 0) != (a.height > 0)) throw Error("--width and --height go together");
+    if (a.width != 0 && (a.width < 16 || a.height < 16 || a.width > 16384 || a.height > 16384))
+        throw Error("--width/--height must be in 16..16384");
+    if (a.frames < 1 || a.rounds < 1 || a.warmup < 1)
+        throw Error("--frames, --rounds and --warmup must be at least 1");
+    if (a.maxExhaustive < 1 || a.maxPasses < 1)
+        throw Error("--max-exhaustive and --max-passes must be at least 1");
+    if (!a.view.empty() && !a.camera.empty()) throw Error("give --view or --camera, not both");
+}
+
+// What `inherit` in the written file says for the base: its name, or its path from the file.
+std::string inheritRef(const TuneArgs& a, const profile::PlatformProfile& base) {
+    if (!profile::looksLikeProfilePath(a.base)) return base.name;
+    const fs::path from = fs::absolute(fs::path(a.out)).parent_path();
+    return fs::relative(fs::absolute(base.file), from).string();
+}
+
+// Everything the measurements need; GL is created on the first measurement, so a search that
+// fails on memory alone renders nothing.
+class Measurer {
+public:
+    Measurer(const TuneArgs& a, const scene::Scene& s, const probes::ProbeSet& set,
+             const profile::PlatformProfile& base, const profile::PlatformProfile& reference,
+             int width, int height)
+        : a_(a), scene_(s), set_(set), base_(base), reference_(reference), width_(width),
+          height_(height) {}
+
+    std::vector<bench::TuneMeasurement> operator()(const std::vector<profile::Profile>& batch) {
+        start();
+        bench::BenchPlan plan;
+        plan.reference = reference_;
+        bench::Session session;
+        session.profile = base_;
+        session.profile.name = "tune";
+        session.width = width_;
+        session.height = height_;
+        for (size_t i = 0; i < batch.size(); ++i)
+            session.variants.push_back({"candidate " + std::to_string(i + 1),
+                                        bench::candidateLabel(batch[i], base_.switches),
+                                        bench::VariantRole::Profile, "", batch[i]});
+        session.variants.push_back(
+            {"reference", "reference", bench::VariantRole::Reference, "", reference_.switches});
+        session.referenceVariant = int(batch.size());
+        plan.sessions.push_back(session);
+        bench::RunnerInputs in{&scene_, &set_, view_, render::defaultFrameSettings(scene_),
+                               debug_.get()};
+        const std::vector<bench::SessionResult> got = bench::runBenchPlan(plan, in, options_);
+        const bench::SessionResult& r = got.front();
+        std::vector<bench::TuneMeasurement> out;
+        for (size_t i = 0; i < batch.size(); ++i) {
+            const bench::VariantResult& v = r.variants[i];
+            bench::TuneMeasurement m;
+            m.ok = v.ok() && v.accuracy.measured;
+            m.error = !v.ok() ? v.error
+                      : m.ok  ? ""
+                              : "the reference did not run: " + r.reference().error;
+            m.frameMs = v.frameMs.median;
+            m.flip = v.accuracy.flipMean;
+            m.relativeMseGi = v.accuracy.relativeMseGi;
+            out.push_back(m);
+        }
+        return out;
+    }
+
+    const scene::View& view() const { return view_; }
+    const nlohmann::json& context() const { return context_; }
+    // "cpu-finish (...why)": how frame ms were taken (cpu-time: process CPU-ms, all threads).
+    std::string timing() const {
+        return options_.timing.name + " (" + options_.timing.reason + ")";
+    }
+    const std::string& timingName() const { return options_.timing.name; }
+    // Frames rendered per session of n candidates (+ the reference): warm-up, timed rounds,
+    // the accuracy frame after a cut and the irradiance-only frame.
+    int rendersPerVariant() const { return a_.warmup + a_.rounds * a_.frames + 2; }
+
+private:
+    void start() {
+        if (platform_) return;
+        if (!a_.camera.empty() || !a_.view.empty()) {
+            view_ = chooseView(scene_, a_.view, a_.camera);
+        } else {
+            const int h = std::min(height_, 180);
+            const int w = std::max(16, int(double(width_) * h / height_ + 0.5));
+            progress("searching the worst-case view (every pixel needs GI) at " +
+                     std::to_string(w) + "x" + std::to_string(h));
+            view_ = views::findWorstCaseView(scene_, set_, w, h).view;
+        }
+        platform_ = platform::createPlatform(a_.platform);
+        debug_ = std::make_unique<gl::DebugOutput>();
+        const gl::GlCaps caps = gl::queryCaps();
+        options_.frames = a_.frames;
+        options_.rounds = a_.rounds;
+        options_.warmup = a_.warmup;
+        options_.timing = bench::chooseTiming(a_.timing, caps, gl::detectDriverQuirks());
+        options_.es = caps.es;
+        options_.fetchFloor = false;
+        options_.pixelsPerDegree = a_.ppd;
+        options_.progress = [](const std::string& line) { progress("  " + line); };
+        context_ = bench::benchContext(*platform_, caps);
+        progress("timing " + options_.timing.name + " on " + caps.renderer + ", " +
+                 std::to_string(width_) + "x" + std::to_string(height_) + ", " +
+                 std::to_string(a_.rounds) + " round(s) x " + std::to_string(a_.frames) +
+                 " frame(s) per candidate");
+    }
+
+    const TuneArgs& a_;
+    const scene::Scene& scene_;
+    const probes::ProbeSet& set_;
+    const profile::PlatformProfile &base_, &reference_;
+    int width_, height_;
+    scene::View view_;
+    std::unique_ptr<platform::Platform> platform_;
+    std::unique_ptr<gl::DebugOutput> debug_;
+    bench::RunnerOptions options_;
+    nlohmann::json context_;
+};
+
+probes::ProbeSet tuneProbes(const TuneArgs& a, const scene::Scene& s, std::string& path) {
+    if (!a.probes.empty()) {
+        path = a.probes;
+        return probes::readProbeFileWithRanks(a.probes);
+    }
+    probes::ProbeSet set = bench::benchProbes(
+        s, a.volumes, a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir, &path,
+        progress);
+    probes::attachVolumeRanks(set, path);
+    return set;
+}
+
+void printComparison(const bench::TuneCandidate& found, const bench::TuneMeasurement& again,
+                     double memoryAgain, const std::string& file) {
+    const double ratio = again.frameMs / found.m.frameMs;
+    std::printf("\nre-measured %s as loaded from the file:\n", file.c_str());
+    std::printf("  %-10s %12s %12s\n", "", "search", "re-measured");
+    std::printf("  %-10s %12.2f %12.2f  (%+.1f%%)\n", "frame ms", found.m.frameMs, again.frameMs,
+                100.0 * (ratio - 1.0));
+    std::printf("  %-10s %12.3f %12.3f\n", "GI MiB", found.memoryMiB, memoryAgain);
+    std::printf("  %-10s %12.4f %12.4f\n", "FLIP", found.m.flip, again.flip);
+    // Accuracy and memory are deterministic; time is within noise when it moved less than
+    // llvmpipe's run-to-run spread (DESIGN.md: about +-20% between runs).
+    const bool same = again.flip == found.m.flip && memoryAgain == found.memoryMiB;
+    std::printf("  %s\n", same && std::abs(ratio - 1.0) <= 0.2
+                              ? "reproduces: FLIP and memory identical, time within +-20%"
+                          : same ? "FLIP and memory identical; time moved more than +-20% "
+                                   "(noisy machine? see the load average)"
+                                 : "warning: FLIP or memory differ from the search's");
+}
+
+int run(const TuneArgs& a) {
+    validate(a);
+    const profile::ProfileSearch search = profileSearch();
+    profile::PlatformProfile base = profile::loadProfile(a.base, search);
+    for (const std::string& kv : a.sets)
+        base.switches.applyOverride(kv);
+    const profile::PlatformProfile reference = profile::loadProfile(a.reference, search);
+    const int width = a.width > 0 ? a.width : base.width;
+    const int height = a.height > 0 ? a.height : base.height;
+    const scene::Scene s = loadSceneWithOverrides(a.scene);
+    std::string probesPath;
+    const probes::ProbeSet set = tuneProbes(a, s, probesPath);
+    const int dynamicObjects = int(render::findDynamicObjects(s).objects.size());
+
+    bench::TuneContext context;
+    context.dynamicObjects = dynamicObjects;
+    context.volumeLodValues = bench::volumeLodLevels(set);
+    const bench::TuneSpace space = bench::makeTuneSpace(base.switches, context, a.search);
+    const bench::MemoryFn memory = [&](const profile::Profile& p) {
+        try {
+            return render::estimateGiMemory(p, set, width, height, dynamicObjects).totalMiB();
+        } catch (const Error&) {
+            return std::numeric_limits<double>::infinity(); // gi.volume_lod cannot apply
+        }
+    };
+    Measurer measurer(a, s, set, base, reference, width, height);
+    const bench::MeasureFn measure = [&](const std::vector<profile::Profile>& batch) {
+        return measurer(batch);
+    };
+    bench::TuneOptions o;
+    o.budgetMs = a.budgetMs;
+    o.budgetMiB = a.budgetMiB;
+    o.maxExhaustive = a.maxExhaustive;
+    o.maxPasses = a.maxPasses;
+    o.progress = progress;
+    const bench::TuneResult r = bench::runTune(space, memory, measure, o);
+    if (r.chosen < 0) throw Error("tune: " + bench::nothingFitsMessage(r, o));
+    const bench::TuneCandidate& best = r.candidates[size_t(r.chosen)];
+
+    // Write the profile, load it back and re-measure it in a session of its own.
+    std::error_code ec;
+    if (fs::path parent = fs::path(a.out).parent_path(); !parent.empty())
+        fs::create_directories(parent, ec);
+    bench::TunedProfileInfo info;
+    info.inherit = inheritRef(a, base);
+    char desc[200];
+    std::snprintf(desc, sizeof desc, "tuned from %s for %g ms and %g MiB GI at %dx%d",
+                  base.name.c_str(), a.budgetMs, a.budgetMiB, width, height);
+    info.description = desc;
+    info.width = width;
+    info.height = height;
+    info.budgetMs = a.budgetMs;
+    info.budgetMiB = a.budgetMiB;
+    char measured[600];
+    std::snprintf(measured, sizeof measured,
+                  "measured: %.2f ms per frame (median, timing %s), GI memory %.3f MiB (probes + "
+                  "GI targets), FLIP %.4f vs profile '%s'",
+                  best.m.frameMs, measurer.timingName().c_str(), best.memoryMiB, best.m.flip,
+                  reference.name.c_str());
+    info.comments = {
+        "Written by `probebench tune`: the most accurate configuration found that fits the "
+        "budgets below on the device named here.",
+        "device: " + measurer.context().value("gl_renderer", std::string("?")) + "; load average " +
+            bench::loadAverage(),
+        "scene " + s.name + ", probes " + probesPath + ", search: " + r.method + ", " +
+            std::to_string(r.variantsMeasured) + " candidate measurement(s) in " +
+            std::to_string(r.sessions) + " session(s)",
+        measured,
+        "[budget] gi_memory_mib is the tune budget: probe textures AND GI targets (stricter than "
+        "the probe-only meaning elsewhere)."};
+    const std::string text = bench::tunedProfileToml(base.switches, best.switches, info);
+    writeFileAtomic(a.out, text.data(), text.size());
+    const profile::PlatformProfile loaded = profile::loadProfileFile(a.out, search);
+    if (!(loaded.switches == best.switches) || loaded.width != width || loaded.height != height)
+        throw Error(a.out + ": the written profile does not load back to the tuned switches");
+
+    std::cout << "searched " << r.distinct << " distinct configuration(s) of " << space.axes.size()
+              << " switch(es) by " << r.method << "; " << r.overMemory
+              << " over the memory budget (not rendered); " << r.variantsMeasured
+              << " candidate measurement(s) in " << r.sessions << " session(s), "
+              << measurer.rendersPerVariant() << " frames each (+ the reference per session): "
+              << (r.variantsMeasured + r.sessions) * measurer.rendersPerVariant()
+              << " frames rendered\n";
+    for (const std::string& f : space.fixed)
+        std::cout << "  held at the base: " << f << "\n";
+    std::cout << "frame ms: timing " << measurer.timing() << "\n";
+    std::cout << bench::paretoTable(r, o);
+    std::printf("chosen: %s: %.2f ms (budget %g), %.3f MiB (budget %g), FLIP %.4f\nwrote %s\n",
+                best.label.c_str(), best.m.frameMs, a.budgetMs, best.memoryMiB, a.budgetMiB,
+                best.m.flip, a.out.c_str());
+    progress("re-measuring " + a.out);
+    const bench::TuneMeasurement again = measurer({loaded.switches}).front();
+    if (!again.ok) throw Error(a.out + ": the written profile did not run: " + again.error);
+    printComparison(best, again, memory(loaded.switches), a.out);
+    if (again.frameMs > a.budgetMs)
+        std::printf("  note: the re-measured time is over the %g ms budget (the search's "
+                    "measurement fit; the device's noise decides near the edge)\n",
+                    a.budgetMs);
+    if (!a.json.empty()) {
+        nlohmann::json j = bench::tuneJson(r, o);
+        j["context"] = measurer.context();
+        j["scene"] = s.name;
+        j["probes_file"] = probesPath;
+        j["width"] = width;
+        j["height"] = height;
+        j["base"] = base.name;
+        j["reference"] = reference.name;
+        j["out"] = a.out;
+        j["renders_per_candidate"] = measurer.rendersPerVariant();
+        j["timing"] = measurer.timing();
+        j["frames_rendered"] = (r.variantsMeasured + r.sessions) * measurer.rendersPerVariant();
+        j["remeasure"] = {{"frame_ms", again.frameMs},
+                          {"flip", again.flip},
+                          {"memory_mib", memory(loaded.switches)}};
+        const std::string out = j.dump(2) + "\n";
+        writeFileAtomic(a.json, out.data(), out.size());
+        std::printf("wrote %s\n", a.json.c_str());
+    }
+    return 0;
+}
+
+const RegisterCommand reg{
+    {"tune",
+     "Search the switches for the most accurate configuration within a frame-time and a GI "
+     "memory budget on this device; write it as a profile",
+     52, [](CLI::App& cmd) {
+         auto a = std::make_shared<TuneArgs>();
+         addSceneOptions(cmd, a->scene);
+         addPlatformOptions(cmd, a->platform);
+         cmd.add_option("--budget-ms", a->budgetMs,
+                        "Frame-time budget: median frame ms on THIS device at the output size")
+             ->required();
+         cmd.add_option("--budget-mib", a->budgetMiB,
+                        "GI memory budget, MiB: probe textures under gi.volume_lod + GI targets "
+                        "(evaluation, upsample/history, SH)")
+             ->required();
+         cmd.add_option("--out", a->out, "Profile to write (.toml; inherits --base)")->required();
+         cmd.add_option("--base", a->base,
+                        "Profile the search starts from and the written profile inherits (name "
+                        "or .toml); its output size unless --width/--height")
+             ->capture_default_str();
+         cmd.add_option("--reference", a->reference, "Accuracy baseline profile (FLIP vs it)")
+             ->capture_default_str();
+         cmd.add_option("--set", a->sets, "Switch key=value applied to the base (repeatable)");
+         cmd.add_option("--search", a->search,
+                        "Only these switches are searched, comma-separated (default: every "
+                        "switch of the table)")
+             ->delimiter(',');
+         cmd.add_option("--width", a->width, "Output width (default: the base profile's)");
+         cmd.add_option("--height", a->height, "Output height (default: the base profile's)");
+         cmd.add_option("--probes", a->probes,
+                        "Probe file (probebench bake; its FILE.ranks.json adds rank_budget_mib "
+                        "levels); default: bake --volumes once and cache it");
+         cmd.add_option("--volumes", a->volumes,
+                        "Without --probes: the volumes to bake (auto, auto-uniform or a file)")
+             ->capture_default_str();
+         cmd.add_option("--cache-dir", a->cacheDir, "Folder of the baked-probe cache");
+         cmd.add_option("--view", a->view, "A named view instead of the worst case");
+         cmd.add_option("--camera", a->camera, "Camera px,py,pz,tx,ty,tz[,fovdeg] instead");
+         cmd.add_option("--frames", a->frames, "Timed frames per candidate per round")
+             ->capture_default_str();
+         cmd.add_option("--rounds", a->rounds, "Interleaved rounds per session")
+             ->capture_default_str();
+         cmd.add_option("--warmup", a->warmup, "Untimed frames per candidate first")
+             ->capture_default_str();
+         cmd.add_option("--timing", a->timing, "auto, cpu, cpu-time or query (as bench)")
+             ->capture_default_str();
+         cmd.add_option("--max-exhaustive", a->maxExhaustive,
+                        "Measure every candidate when at most this many fit the memory budget; "
+                        "else coordinate descent")
+             ->capture_default_str();
+         cmd.add_option("--max-passes", a->maxPasses, "Coordinate-descent passes at most")
+             ->capture_default_str();
+         cmd.add_option("--ppd", a->ppd, "FLIP viewing condition, pixels per degree")
+             ->capture_default_str();
+         cmd.add_option("--json", a->json, "Write the whole search as JSON to this file");
+         return [a] { return run(*a); };
+     }}};
+
+} // namespace
+} // namespace pb::app
