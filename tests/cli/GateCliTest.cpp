@@ -95,19 +95,19 @@ TEST(GateCli, AChangedCounterFailsUntilTheBaselineIsUpdated) {
     const fs::path dir = outputDir();
     const fs::path b = tinyBaseline(dir);
     nlohmann::json j = readJson(b);
-    const int draws = j["profiles"][2]["counters"]["gl.shadow.draws"].get<int>();
-    j["profiles"][2]["counters"]["gl.shadow.draws"] = draws + 1;
+    const int draws = j["profiles"][2]["counters"]["gl.direct.draws"].get<int>();
+    j["profiles"][2]["counters"]["gl.direct.draws"] = draws + 1;
     writeJson(b, j);
     auto r = runProbebench(gate(b, {"--no-timing"}));
     EXPECT_EQ(r.exitCode, 3) << r.output;
     EXPECT_TRUE(
-        std::regex_search(r.output, std::regex(R"(pc-high +gl\.shadow .* CHANGED +draws -1)")))
+        std::regex_search(r.output, std::regex(R"(pc-high +gl\.direct .* CHANGED +draws -1)")))
         << r.output;
     EXPECT_NE(r.output.find("gate: FAIL - "), std::string::npos);
 
     auto u = runProbebench(gate(b, {"--no-timing", "--update"}));
     EXPECT_EQ(u.exitCode, 0) << u.output;
-    EXPECT_EQ(readJson(b)["profiles"][2]["counters"]["gl.shadow.draws"], draws);
+    EXPECT_EQ(readJson(b)["profiles"][2]["counters"]["gl.direct.draws"], draws);
     EXPECT_EQ(runProbebench(gate(b, {"--no-timing"})).exitCode, 0);
 }
 
