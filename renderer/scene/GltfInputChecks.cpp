@@ -90,6 +90,7 @@ std::string imageProblem(const tinygltf::Model& model, const tinygltf::Image& im
     const ImageHeader header = readImageHeader(bytes, std::size_t(size));
     if (header.kind == ImageHeader::Kind::Unknown)
         return "not a PNG or JPEG file (the formats glTF allows)";
+    if (header.problem) return std::string("corrupt image: ") + header.problem;
     if (header.width == 0 || header.height == 0) return "corrupt image header (no size)";
     const std::uint64_t pixels = std::uint64_t(header.width) * header.height;
     const std::string size2 = std::to_string(header.width) + "x" + std::to_string(header.height);

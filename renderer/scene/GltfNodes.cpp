@@ -115,7 +115,8 @@ void addLight(Context& ctx, int node, const glm::mat4& world, const tinygltf::Va
         !finiteWithin(l.color, 1e30f) || glm::any(glm::lessThan(l.color, glm::vec3(0.0f))))
         ctx.fail("light '" + src.name +
                  "' has a negative or non-finite colour, intensity or range");
-    // The spec: 0 <= inner < outer <= pi/2 (the shader divides by their cosines' difference).
+    // The spec: 0 <= inner < outer <= pi/2 (the shader's smoothstep(cos outer, cos inner) is
+    // undefined in GLSL unless cos outer < cos inner).
     if (l.type == LightType::Spot &&
         !(l.innerConeAngle >= 0.0f && l.innerConeAngle < l.outerConeAngle &&
           l.outerConeAngle <= 1.5707964f))

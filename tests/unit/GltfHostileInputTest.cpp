@@ -9,6 +9,7 @@
 #include "support/TestEnv.h"
 #include "unit/GltfTestWriter.h"
 
+#include <algorithm>
 #include <gtest/gtest.h>
 #include <set>
 #include <sys/stat.h>
@@ -67,6 +68,20 @@ std::vector<std::uint8_t> glbFromJson(std::string json) {
     u32(0x4E4F534A); // JSON
     out.insert(out.end(), json.begin(), json.end());
     return out;
+}
+
+// SOI, SOF0 (8x8, one component), then a DHT whose 16 code counts add up to `codes`.
+std::vector<std::uint8_t> jpegWithHuffmanCodes(int codes) {
+    std::vector<std::uint8_t> b = {0xFF, 0xD8, 0xFF, 0xC0, 0, 11, 8, 0, 8, 0, 8, 1, 1, 0x11, 0};
+    const int length = 2 + 17 + codes;
+    b.insert(b.end(), {0xFF, 0xC4, std::uint8_t(length >> 8), std::uint8_t(length), 0x00});
+    for (int i = 0; i < 16; ++i) {
+        const int n = std::min(255, std::max(0, codes - 255 * i));
+        b.push_back(std::uint8_t(n));
+    }
+    b.insert(b.end(), std::size_t(codes), 0);
+    b.insert(b.end(), {0xFF, 0xD9});
+    return b;
 }
 
 GltfWriter withImage(const std::vector<std::uint8_t>& bytes) {
@@ -192,6 +207,10 @@ TEST(GltfHostileInput, ImagesAreCheckedBeforeDecoding) {
     const std::vector<std::uint8_t> jpegWithoutFrame = {0xFF, 0xD8, 0xFF, 0xDA, 0, 2};
     EXPECT_CONTAINS(loadError(withImage(jpegWithoutFrame).write(dir, "jpeg")),
                     "image 0: corrupt image header (no size)");
+    // The fuzzer's JPEG: a Huffman table of 16 x 255 codes overflowed stb_image's 257-byte
+    // code-size array (heap corruption in the shipped build, no check in Debian's stb).
+    EXPECT_CONTAINS(loadError(withImage(jpegWithHuffmanCodes(16 * 255)).write(dir, "dht")),
+                    "image 0: corrupt image: a Huffman table with more than 256 codes");
 }
 
 TEST(GltfHostileInput, ImageGuardCountsPixelsOverAllImages) {
@@ -221,6 +240,12 @@ TEST(GltfHostileInput, ImageHeaderSizes) {
     EXPECT_EQ(h.kind, ImageHeader::Kind::Jpeg);
     EXPECT_EQ(h.width, 500u);
     EXPECT_EQ(h.height, 300u);
+    // Huffman tables: 256 codes is the most a decoder may be given.
+    EXPECT_EQ(
+        readImageHeader(jpegWithHuffmanCodes(256).data(), jpegWithHuffmanCodes(256).size()).problem,
+        nullptr);
+    const std::vector<std::uint8_t> dht = jpegWithHuffmanCodes(257);
+    EXPECT_NE(readImageHeader(dht.data(), dht.size()).problem, nullptr);
     // Cut-off headers give no size, never a read past the end.
     for (std::size_t keep = 0; keep < 18; ++keep) // the width ends at byte 18
         EXPECT_EQ(readImageHeader(jpeg.data(), keep).width, 0u) << keep;
