@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (clang, coverage + ASan + UBSan) into build-fuzz/ and runs each
-# for a bounded time on a working corpus seeded from fuzz/seeds/ plus probe files baked by
-# build/probebench (when it exists). fuzz/README.md explains the targets and the results.
+# for a bounded time on a working corpus (build-fuzz/corpus/<target>/) plus the committed
+# seeds (fuzz/seeds/<target>/) and probe files baked by build/probebench (when it exists).
+# fuzz/README.md explains the targets and the results.
 #
 #   fuzz/run.sh [SECONDS_PER_TARGET=300] [TARGET...]     targets: gltf glb volume_toml probe_file
 #
@@ -41,7 +42,6 @@ for t in "${targets[@]}"; do
     corpus=$out/corpus/$t
     artifacts=$out/artifacts/$t
     mkdir -p "$corpus" "$artifacts" "$out/logs"
-    [ -d "fuzz/seeds/$t" ] && cp -n fuzz/seeds/"$t"/* "$corpus"/
     [ "$t" = probe_file ] && seed_probes
     dict=()
     case $t in
@@ -52,8 +52,9 @@ for t in "${targets[@]}"; do
     # -timeout: an input running 10 s is a hang; -rss_limit_mb: 2 GiB is an out-of-memory
     # finding (a few bytes must never make the loader allocate gigabytes).
     set +e
-    "$out/fuzz/fuzz_$t" "$corpus" "${dict[@]}" -max_total_time="$seconds" -timeout=10 \
-        -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$artifacts/" \
+    # New inputs go to the first folder; the committed seeds are read, never written.
+    "$out/fuzz/fuzz_$t" "$corpus" "fuzz/seeds/$t" "${dict[@]}" -max_total_time="$seconds" \
+        -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$artifacts/" \
         >"$out/logs/$t.log" 2>&1
     rc=$?
     set -e
