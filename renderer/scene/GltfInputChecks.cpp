@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 #include "core/FileIO.h"
+#include "scene/ImageDecode.h"
 #include "scene/ImageHeader.h"
 
 #include <cstdint>
@@ -90,7 +91,6 @@ std::string imageProblem(const tinygltf::Model& model, const tinygltf::Image& im
     const ImageHeader header = readImageHeader(bytes, std::size_t(size));
     if (header.kind == ImageHeader::Kind::Unknown)
         return "not a PNG or JPEG file (the formats glTF allows)";
-    if (header.problem) return std::string("corrupt image: ") + header.problem;
     if (header.width == 0 || header.height == 0) return "corrupt image header (no size)";
     const std::uint64_t pixels = std::uint64_t(header.width) * header.height;
     const std::string size2 = std::to_string(header.width) + "x" + std::to_string(header.height);
@@ -146,7 +146,21 @@ bool checkedImageLoader(tinygltf::Image* image, int index, std::string* err, std
         if (err) *err += "image " + std::to_string(index) + ": " + problem + "\n";
         return false;
     }
-    return tinygltf::LoadImageData(image, index, err, warn, width, height, bytes, size, nullptr);
+    // libpng / libjpeg-turbo, not tinygltf's stb_image (ImageDecode.h says why).
+    Rgba8Image decoded;
+    const std::string decodeProblem =
+        decodeImageRgba8(bytes, std::size_t(size), kMaxImageSide, kMaxImagePixels, decoded);
+    if (!decodeProblem.empty()) {
+        if (err) *err += "image " + std::to_string(index) + ": " + decodeProblem + "\n";
+        return false;
+    }
+    image->width = int(decoded.width);
+    image->height = int(decoded.height);
+    image->component = 4;
+    image->bits = 8;
+    image->pixel_type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    image->image = std::move(decoded.pixels);
+    return true;
 }
 
 } // namespace pb::scene::gltf

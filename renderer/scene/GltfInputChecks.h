@@ -34,8 +34,9 @@ struct ImageGuard {
     std::uint64_t pixels = 0;               // declared pixels of the images decoded so far
 };
 
-// tinygltf's image callback with the checks first: a bufferView inside its buffer, a PNG or
-// JPEG signature, the declared size within the limits above. User data: an ImageGuard.
+// tinygltf's image callback: a bufferView inside its buffer, a PNG or JPEG signature, the
+// declared size within the limits above; then decoded with libpng / libjpeg-turbo
+// (ImageDecode.h), never stb_image. User data: an ImageGuard.
 bool checkedImageLoader(tinygltf::Image* image, int index, std::string* err, std::string* warn,
                         int width, int height, const unsigned char* bytes, int size,
                         void* userData);

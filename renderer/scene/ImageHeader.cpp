@@ -1,6 +1,5 @@
 #include "scene/ImageHeader.h"
 
-#include <algorithm>
 #include <cstring>
 
 namespace pb::scene {
@@ -25,49 +24,28 @@ void readPng(const unsigned char* b, std::size_t size, ImageHeader& out) {
 
 // JPEG: a chain of segments, each 0xFF <marker> <16-bit length incl. itself> <payload>; the
 // first start-of-frame segment (SOF0..SOF15 except DHT C4, JPG C8, DAC CC) holds precision,
-// height, width. Markers without a payload: SOI D8, TEM 01, RST0-7 D0-D7. After a start of
-// scan (DA) come entropy-coded bytes (0xFF stuffed as FF 00) up to the next marker; later
-// segments (more scans, more tables) follow in progressive files. All of them are walked:
-// every Huffman table (DHT) must hold at most 256 codes, since Debian's stb_image (2022-09)
-// writes a table's code sizes into a 257-byte array without checking the count.
+// height, width. Markers without a payload: SOI D8, TEM 01, RST0-7 D0-D7.
 void readJpeg(const unsigned char* b, std::size_t size, ImageHeader& out) {
     std::size_t pos = 2;
     while (pos + 1 < size) {
-        if (b[pos] != 0xFF) { // entropy-coded data (or junk): on to the next marker
-            ++pos;
-            continue;
-        }
+        if (b[pos] != 0xFF) return;
         const unsigned char marker = b[pos + 1];
         if (marker == 0xFF) { // fill byte
             ++pos;
             continue;
         }
         pos += 2;
-        if (marker == 0x00 || marker == 0xD8 || marker == 0x01 ||
-            (marker >= 0xD0 && marker <= 0xD7))
-            continue;                                 // stuffed 0xFF, or a marker without a payload
-        if (marker == 0xD9 || pos + 2 > size) return; // end of image or of the bytes
+        if (marker == 0xD8 || marker == 0x01 || (marker >= 0xD0 && marker <= 0xD7)) continue;
+        if (marker == 0xD9 || marker == 0xDA || pos + 2 > size) return; // end or scan data
         const std::uint32_t length = bigEndian16(b + pos);
         if (length < 2) return;
-        const unsigned char* payload = b + pos + 2;
-        const std::size_t payloadSize = std::min<std::size_t>(length - 2, size - pos - 2);
         const bool startOfFrame =
             marker >= 0xC0 && marker <= 0xCF && marker != 0xC4 && marker != 0xC8 && marker != 0xCC;
-        if (startOfFrame && out.width == 0 && payloadSize >= 5) {
-            out.height = bigEndian16(payload + 1);
-            out.width = bigEndian16(payload + 3);
-        }
-        if (marker == 0xC4) { // tables: class/id byte, 16 code counts, the symbols
-            for (std::size_t t = 0; t + 17 <= payloadSize;) {
-                std::size_t codes = 0;
-                for (int i = 1; i <= 16; ++i)
-                    codes += payload[t + std::size_t(i)];
-                if (codes > 256) {
-                    out.problem = "a Huffman table with more than 256 codes";
-                    return;
-                }
-                t += 17 + codes;
-            }
+        if (startOfFrame) {
+            if (length < 7 || pos + 7 > size) return;
+            out.height = bigEndian16(b + pos + 3);
+            out.width = bigEndian16(b + pos + 5);
+            return;
         }
         pos += length;
     }

@@ -13,8 +13,6 @@ struct ImageHeader {
     Kind kind = Kind::Unknown;
     // 0 when the header is cut off or has no size (a JPEG without a frame header).
     std::uint32_t width = 0, height = 0;
-    // Set when the file holds what a decoder must not be given (see readJpeg).
-    const char* problem = nullptr;
 };
 
 ImageHeader readImageHeader(const unsigned char* bytes, std::size_t size);
