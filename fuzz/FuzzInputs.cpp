@@ -7,6 +7,7 @@
 #include "scene/SceneLoader.h"
 
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <unistd.h>
@@ -59,6 +60,12 @@ std::filesystem::path scratchDir() {
         std::filesystem::create_directories(d);
         return d;
     }();
+    // Removed when the fuzzer exits normally (the end of -max_total_time); a crash leaves it.
+    static const bool cleanup = std::atexit([] {
+                                    std::error_code ec;
+                                    std::filesystem::remove_all(scratchDir(), ec);
+                                }) == 0;
+    (void)cleanup;
     return dir;
 }
 
