@@ -37,6 +37,10 @@ std::vector<unsigned char> readFileBytes(const std::string& path) {
     std::error_code ec;
     if (!std::filesystem::exists(path, ec)) throw fileError(path, "file not found");
     if (std::filesystem::is_directory(path, ec)) throw fileError(path, "is a folder, not a file");
+    // A FIFO or a device would block the open or never end (a glTF buffer URI can name any
+    // path): only regular files are read.
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw fileError(path, "not a regular file (a device, FIFO or socket)");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw fileError(path, "cannot open for reading");
     in.seekg(0, std::ios::end);

@@ -9,7 +9,8 @@ namespace pb {
 // a full disk never leaves a partial file behind. Throws pb::Error naming the path.
 void writeFileAtomic(const std::string& path, const void* bytes, std::size_t size);
 
-// Reads a whole file; throws pb::Error naming the path when it cannot.
+// Reads a whole regular file; throws pb::Error naming the path when it cannot (missing, a
+// folder, a device or FIFO, unreadable).
 std::vector<unsigned char> readFileBytes(const std::string& path);
 
 } // namespace pb

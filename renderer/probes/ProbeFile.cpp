@@ -5,6 +5,7 @@
 #include "probes/BinaryIO.h"
 #include "probes/Hash.h"
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 
@@ -12,6 +13,72 @@ namespace pb::probes {
 namespace {
 
 constexpr std::size_t kFixedHeader = 8 + 4 + 8; // magic, version, file size
+
+bool finite(const glm::vec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+bool finiteNonNegative(const glm::vec3& v) {
+    return finite(v) && v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f;
+}
+
+// The checksum only proves the bytes are the ones written; a file written by something else
+// (or crafted) with a valid checksum must still not hand NaN, negative light or wild offsets
+// to the sampler and the GPU. What the bake itself guarantees is checked here.
+void checkSettings(const BakeSettings& b, const std::string& path) {
+    if (b.raysPerProbe < 1 || b.raysPerProbe > 65536 || b.bounces < 1 || b.bounces > 64 ||
+        !(b.backfaceThreshold >= 0.0f && b.backfaceThreshold <= 1.0f))
+        throw fileError(path, "corrupt bake settings (rays " + std::to_string(b.raysPerProbe) +
+                                  ", bounces " + std::to_string(b.bounces) + ")");
+}
+
+void checkScenario(const Scenario& s, const std::string& path) {
+    const std::string what = "scenario '" + s.name + "'";
+    if (s.name.empty()) throw fileError(path, "corrupt: a scenario without a name");
+    const scene::Sun& sun = s.sun;
+    if (!finite(sun.toSun) || (sun.enabled && !(glm::length(sun.toSun) > 0.0f)) ||
+        !finiteNonNegative(sun.color) || !std::isfinite(sun.intensity) || sun.intensity < 0.0f ||
+        !finiteNonNegative(s.sky.radiance))
+        throw fileError(path, "corrupt " + what +
+                                  ": sun or sky not finite and non-negative, or no sun direction");
+}
+
+void checkStates(const ProbeVolume& v, const std::vector<ProbeState>& states,
+                 const std::string& path) {
+    // Relocation stays within kMaxRelocation of a cell; a whole cell is the corrupt limit.
+    const glm::vec3 cell = v.cellSize();
+    for (const ProbeState& p : states)
+        if (!finite(p.offset) || std::abs(p.offset.x) > cell.x || std::abs(p.offset.y) > cell.y ||
+            std::abs(p.offset.z) > cell.z || !(p.backfaceRatio >= 0.0f && p.backfaceRatio <= 1.0f))
+            throw fileError(path, "corrupt probe state in volume '" + v.name +
+                                      "' (offset beyond a cell, or not finite)");
+}
+
+// The stored bytes, not the decoded texels: decodeStored turns inf/NaN into 0 for the CPU
+// sampler, but the GPU uploads the stored bytes as they are. BC6H (unsigned) has no sign,
+// infinity or NaN to check.
+void checkStoredValues(const ProbeTexture& t, StorageFormat f, const std::string& path,
+                       const char* what) {
+    bool bad = false;
+    const std::uint8_t* p = t.stored.data();
+    if (f == StorageFormat::Rgba32f) {
+        for (std::size_t i = 0; i + 4 <= t.stored.size() && !bad; i += 4) {
+            float v;
+            std::memcpy(&v, p + i, 4);
+            bad = !(v >= 0.0f && v <= 3.4028235e38f); // NaN fails both
+        }
+    } else if (f == StorageFormat::Rgba16f) {
+        for (std::size_t i = 0; i + 2 <= t.stored.size() && !bad; i += 2) {
+            std::uint16_t h;
+            std::memcpy(&h, p + i, 2);
+            const bool negative = (h & 0x8000) != 0 && (h & 0x7FFF) != 0; // -0 is fine
+            bad = negative || (h & 0x7C00) == 0x7C00;                     // inf or NaN
+        }
+    }
+    if (bad)
+        throw fileError(path, std::string("corrupt ") + what +
+                                  " data (a negative, infinite or NaN texel)");
+}
 
 void writeTexture(ByteWriter& w, const ProbeTexture& t) {
     w.pod(std::uint64_t(t.stored.size()));
@@ -28,6 +95,7 @@ void readTexture(ByteReader& r, ProbeTexture& t, const TextureShape& shape, Stor
     const std::uint8_t* p = r.take(std::size_t(size), what);
     t.shape = shape;
     t.stored.assign(p, p + size);
+    checkStoredValues(t, f, path, what);
     decodeStored(t, f);
 }
 
@@ -121,6 +189,7 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
     b.seed = body.pod<std::uint64_t>("seed");
     b.relocate = body.pod<std::uint8_t>("relocate") != 0;
     b.backfaceThreshold = body.pod<float>("backface threshold");
+    checkSettings(b, path);
     if (body.pod<std::uint32_t>("tile") != std::uint32_t(kIrradianceTile) ||
         body.pod<std::uint32_t>("tile") != std::uint32_t(kVisibilityTile))
         throw fileError(path, "unsupported probe tile sizes");
@@ -152,6 +221,9 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
         s.sun.color = body.pod<glm::vec3>("sun colour");
         s.sun.intensity = body.pod<float>("sun intensity");
         s.sky.radiance = body.pod<glm::vec3>("sky");
+        checkScenario(s, path);
+        if (set.findScenario(s.name) >= 0)
+            throw fileError(path, "corrupt: scenario '" + s.name + "' appears twice");
         set.scenarios.push_back(s);
     }
     for (const ProbeVolume& v : set.volumes) {
@@ -165,6 +237,7 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
             p.backfaceRatio = body.pod<float>("probe ratio");
             p.valid = body.pod<std::uint8_t>("probe validity") != 0;
         }
+        checkStates(v, states, path);
         set.states.push_back(std::move(states));
     }
     for (const ProbeVolume& v : set.volumes) {

@@ -87,6 +87,12 @@ std::string volumeProblem(const ProbeVolume& v) {
     if (!finite(v.halfExtents) || v.halfExtents.x <= 0.0f || v.halfExtents.y <= 0.0f ||
         v.halfExtents.z <= 0.0f)
         return "half extents must be positive (got " + vecText(v.halfExtents) + ")";
+    // Beyond these, cell sizes and their inverses leave the float range (NaN in the bake).
+    if (glm::any(glm::greaterThan(glm::abs(v.center), glm::vec3(1e10f))))
+        return "center is beyond 1e10";
+    if (glm::any(glm::greaterThan(v.halfExtents, glm::vec3(1e10f))) ||
+        glm::any(glm::lessThan(v.halfExtents, glm::vec3(1e-6f))))
+        return "half extents must lie in [1e-6, 1e10] (got " + vecText(v.halfExtents) + ")";
     if (!(v.edgeBlend >= 0.0f && v.edgeBlend <= 1.0f)) return "edge_blend must be in [0, 1]";
     float ql = glm::length(glm::vec4(v.rotation.x, v.rotation.y, v.rotation.z, v.rotation.w));
     if (!std::isfinite(ql) || std::abs(ql - 1.0f) > 1e-3f)

@@ -2,10 +2,13 @@
 
 #include "core/Error.h"
 #include "core/FileIO.h"
+#include "core/TomlText.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <map>
 #include <set>
 #include <toml++/toml.h>
@@ -50,6 +53,9 @@ public:
         for (const toml::node& e : *a) {
             std::optional<double> d = e.value<double>();
             if (!d || !std::isfinite(*d)) fail(n.source(), what + ": " + expect);
+            // Every number ends up a float: 1e300 is a finite double but an infinite float.
+            if (std::abs(*d) > double(std::numeric_limits<float>::max()))
+                fail(n.source(), what + ": key '" + key + "': a number is too large for a float");
             out.push_back(*d);
         }
         return out;
@@ -99,9 +105,12 @@ ProbeVolume parseVolume(const Parser& P, const toml::table& t, std::size_t i, Vo
     if (!pa || pa->size() != 3)
         P.fail(probes.source(), what + ": key 'probes' must be an array of 3 integers");
     for (int a = 0; a < 3; ++a) {
-        std::optional<std::int64_t> c = (*pa)[size_t(a)].value<std::int64_t>();
-        if (!c || (*pa)[size_t(a)].is_floating_point())
-            P.fail(probes.source(), what + ": key 'probes' must be an array of 3 integers");
+        // Integers only: toml++ 3.3 converts a float such as 5e300 to int64 without a range
+        // check (undefined behaviour), so value<int64_t>() is never asked for one.
+        const toml::node& n = (*pa)[size_t(a)];
+        const std::optional<std::int64_t> c =
+            n.is_integer() ? n.value<std::int64_t>() : std::nullopt;
+        if (!c) P.fail(probes.source(), what + ": key 'probes' must be an array of 3 integers");
         if (*c < 1)
             P.fail(probes.source(), what + ": key 'probes': every axis needs at least 1 probe "
                                            "(a volume with zero probes bakes nothing)");
@@ -152,15 +161,21 @@ ScenarioSpec parseScenario(const Parser& P, const toml::table& t, std::size_t i)
         } else if (const auto* st = sun->as_table()) {
             P.checkKeys(*st, {"direction", "intensity", "color"}, what + " sun");
             glm::vec3 dir = P.vec3(P.require(*st, "direction", what + " sun"), what, "direction");
-            if (!(glm::length(dir) > 0.0f))
-                P.fail(st->source(), what + ": sun direction must not be zero");
-            out.toSun = glm::normalize(dir);
+            // Scaled first: the length of (3e38, 3e38, 0) overflows a float.
+            const glm::vec3 a = glm::abs(dir);
+            const float largest = std::max(a.x, std::max(a.y, a.z));
+            if (!(largest > 0.0f)) P.fail(st->source(), what + ": sun direction must not be zero");
+            out.toSun = glm::normalize(dir / largest);
             std::optional<double> in = P.require(*st, "intensity", what + " sun").value<double>();
-            if (!in || !(*in >= 0.0))
-                P.fail(st->source(), what + ": sun intensity must be a number >= 0");
+            if (!in || !(*in >= 0.0) || *in > double(std::numeric_limits<float>::max()))
+                P.fail(st->source(), what + ": sun intensity must be a finite number >= 0");
             out.intensity = float(*in);
             out.color = glm::vec3(1.0f);
-            if (const toml::node* c = st->get("color")) out.color = P.vec3(*c, what, "color");
+            if (const toml::node* c = st->get("color")) {
+                out.color = P.vec3(*c, what, "color");
+                if (glm::any(glm::lessThan(out.color, glm::vec3(0.0f))))
+                    P.fail(c->source(), what + ": sun color must be >= 0");
+            }
         } else {
             P.fail(sun->source(), what + ": key 'sun' must be \"off\" or a table");
         }
@@ -189,6 +204,7 @@ void forEachTable(const Parser& P, const toml::table& root, const char* key, F f
 
 VolumeFile parseVolumeToml(std::string_view text, const std::string& path) {
     Parser P(path);
+    checkTomlText(text, path); // what toml++ 3.3 cannot read without undefined behaviour
     toml::table root;
     try {
         root = toml::parse(text, path);

@@ -113,13 +113,15 @@ AccessorView viewAccessor(const Context& ctx, int index, const std::string& what
                  ") reaches past the end of buffer " + std::to_string(bv.buffer) + " (" +
                  std::to_string(buffer.size()) + " bytes)");
     if (bv.byteStride != 0) {
+        if (bv.byteStride > 252) // the spec's limit; it also keeps the product below in range
+            ctx.fail(name + ": byteStride " + std::to_string(bv.byteStride) + " is above 252");
         if (bv.byteStride < elementSize)
             ctx.fail(name + ": byteStride " + std::to_string(bv.byteStride) +
                      " is smaller than one element (" + std::to_string(elementSize) + " bytes)");
         v.stride = bv.byteStride;
     }
-    // The last element ends at byteOffset + (count - 1) * stride + elementSize; count is
-    // bounded above, so the product cannot overflow.
+    // The last element ends at byteOffset + (count - 1) * stride + elementSize; count and
+    // stride are bounded above, so the product cannot overflow.
     const std::size_t span = a.count == 0 ? 0 : (a.count - 1) * v.stride + elementSize;
     if (!fits(a.byteOffset, span, bv.byteLength))
         ctx.fail(name + ": " + std::to_string(a.count) + " elements from byte " +

@@ -2,6 +2,7 @@
 #include "core/FileIO.h"
 #include "scene/DefaultView.h"
 #include "scene/GltfContext.h"
+#include "scene/GltfInputChecks.h"
 #include "scene/GltfMaterials.h"
 #include "scene/GltfMeshes.h"
 #include "scene/GltfNodes.h"
@@ -13,6 +14,8 @@
 #include <limits>
 
 namespace pb::scene {
+
+using namespace gltf; // the checks tinygltf is wrapped in
 
 namespace {
 
@@ -48,34 +51,6 @@ std::vector<std::string> lines(const std::string& text) {
     return out;
 }
 
-// tinygltf hands an image that lives in a bufferView to the decoder without checking that
-// the bufferView lies inside its buffer; this check runs first (user data: the Model being
-// filled, whose buffers and bufferViews are parsed before images).
-bool checkedImageLoader(tinygltf::Image* image, const int index, std::string* err,
-                        std::string* warn, int width, int height, const unsigned char* bytes,
-                        int size, void* userData) {
-    const auto* model = static_cast<const tinygltf::Model*>(userData);
-    if (image->bufferView >= 0) {
-        const size_t bvIndex = size_t(image->bufferView);
-        bool inside = bvIndex < model->bufferViews.size();
-        if (inside) {
-            const tinygltf::BufferView& bv = model->bufferViews[bvIndex];
-            inside = bv.buffer >= 0 && size_t(bv.buffer) < model->buffers.size();
-            if (inside) {
-                const size_t bufferSize = model->buffers[size_t(bv.buffer)].data.size();
-                inside = bv.byteOffset <= bufferSize && bv.byteLength <= bufferSize - bv.byteOffset;
-            }
-        }
-        if (!inside) {
-            if (err)
-                *err += "image " + std::to_string(index) +
-                        ": its bufferView reaches past the end of its buffer\n";
-            return false;
-        }
-    }
-    return tinygltf::LoadImageData(image, index, err, warn, width, height, bytes, size, nullptr);
-}
-
 void parseWithTinygltf(const std::string& path, tinygltf::Model& model,
                        std::vector<std::string>& warnings) {
     const std::vector<unsigned char> bytes = readFileBytes(path); // "path: file not found" etc.
@@ -85,18 +60,14 @@ void parseWithTinygltf(const std::string& path, tinygltf::Model& model,
     if (dir.empty()) dir = ".";
     const std::string baseDir = dir.string();
 
+    checkRawGltf(path, bytes); // GLB structure, JSON nesting
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(&checkedImageLoader, &model);
+    loader.SetFsCallbacks(regularFileCallbacks());
+    ImageGuard imageGuard{&model};
+    loader.SetImageLoader(&checkedImageLoader, &imageGuard);
     std::string err, warn;
     const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     const auto size = static_cast<unsigned int>(bytes.size());
-    if (binary && size >= 12) { // tinygltf only says "Invalid glTF binary." for a cut-off file
-        std::uint32_t declared;
-        std::memcpy(&declared, bytes.data() + 8, 4);
-        if (declared > size)
-            throw fileError(path, "truncated GLB: its header declares " + std::to_string(declared) +
-                                      " bytes, the file has " + std::to_string(size));
-    }
     const bool ok =
         binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, baseDir)
                : loader.LoadASCIIFromString(&model, &err, &warn,
@@ -166,6 +137,7 @@ Scene loadGltfUnchecked(const std::string& path, const SceneOptions& options) {
     // "default" comes first and is reserved before glTF cameras are named; its pose needs the
     // bounds, known once the nodes are walked.
     scene.views.push_back(View{"default"});
+    ctx.viewNames.insert("default");
     gltf::convertMaterials(ctx);
     gltf::traverseNodes(ctx, options.dynamicNodes);
     if (scene.materials.empty()) gltf::defaultMaterial(ctx);

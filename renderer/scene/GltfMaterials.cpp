@@ -102,6 +102,8 @@ void convertMaterials(Context& ctx) {
             if (!std::isfinite(strength) || strength < 0.0f)
                 ctx.fail(label + " emissiveStrength must be a non-negative number");
             m.emissive *= strength;
+            if (!std::isfinite(m.emissive.x + m.emissive.y + m.emissive.z)) // 1e30 x 1e30
+                ctx.fail(label + " emissive x emissiveStrength is not a finite number");
         }
         m.emissiveTexture = textureFor(ctx, g.emissiveTexture.index, label);
         m.doubleSided = g.doubleSided;

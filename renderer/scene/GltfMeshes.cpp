@@ -39,9 +39,12 @@ bool convertPrimitive(Context& ctx, int meshIndex, size_t primIndex, Primitive& 
         return false;
     }
 
-    readVec3(viewAccessor(ctx, position, "POSITION of " + mesh, TINYGLTF_TYPE_VEC3,
-                          {kFloat, kByte, kUByte, kShort, kUShort}),
-             out.positions);
+    const AccessorView positions =
+        viewAccessor(ctx, position, "POSITION of " + mesh, TINYGLTF_TYPE_VEC3,
+                     {kFloat, kByte, kUByte, kShort, kUShort});
+    // Normals are read or generated for every vertex: charged with the positions.
+    ctx.reserveGeometry(positions.count, 2 * sizeof(glm::vec3), "POSITION of " + mesh);
+    readVec3(positions, out.positions);
     for (size_t i = 0; i < out.positions.size(); ++i) {
         const glm::vec3& p = out.positions[i];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
@@ -50,14 +53,16 @@ bool convertPrimitive(Context& ctx, int meshIndex, size_t primIndex, Primitive& 
     const size_t vertexCount = out.positions.size();
 
     if (src.indices >= 0) {
-        readIndices(viewAccessor(ctx, src.indices, "indices of " + mesh, TINYGLTF_TYPE_SCALAR,
-                                 {kUByte, kUShort, kUInt}),
-                    out.indices);
+        const AccessorView indices = viewAccessor(ctx, src.indices, "indices of " + mesh,
+                                                  TINYGLTF_TYPE_SCALAR, {kUByte, kUShort, kUInt});
+        ctx.reserveGeometry(indices.count, sizeof(std::uint32_t), "indices of " + mesh);
+        readIndices(indices, out.indices);
         for (std::uint32_t index : out.indices)
             if (index >= vertexCount)
                 ctx.fail("index " + std::to_string(index) + " out of range (" +
                          std::to_string(vertexCount) + " vertices) in " + mesh);
     } else {
+        ctx.reserveGeometry(vertexCount, sizeof(std::uint32_t), "indices of " + mesh);
         out.indices.resize(vertexCount);
         for (size_t i = 0; i < vertexCount; ++i)
             out.indices[i] = std::uint32_t(i);
@@ -73,12 +78,12 @@ bool convertPrimitive(Context& ctx, int meshIndex, size_t primIndex, Primitive& 
     const int normal = findAttribute(src, "NORMAL");
     bool haveNormals = false;
     if (normal >= 0) {
-        readVec3(viewAccessor(ctx, normal, "NORMAL of " + mesh, TINYGLTF_TYPE_VEC3,
-                              {kFloat, kByte, kShort}),
-                 out.normals);
-        if (out.normals.size() != vertexCount)
-            ctx.fail("NORMAL of " + mesh + " has " + std::to_string(out.normals.size()) +
+        const AccessorView normals = viewAccessor(ctx, normal, "NORMAL of " + mesh,
+                                                  TINYGLTF_TYPE_VEC3, {kFloat, kByte, kShort});
+        if (normals.count != vertexCount) // checked before anything is allocated for them
+            ctx.fail("NORMAL of " + mesh + " has " + std::to_string(normals.count) +
                      " elements, POSITION " + std::to_string(vertexCount));
+        readVec3(normals, out.normals);
         haveNormals = normalizeNormals(out.normals);
         if (!haveNormals) ++ctx.regeneratedNormals; // zero or NaN normals in the file
     }
@@ -86,12 +91,13 @@ bool convertPrimitive(Context& ctx, int meshIndex, size_t primIndex, Primitive& 
 
     const int uv = findAttribute(src, "TEXCOORD_0");
     if (uv >= 0) {
-        readVec2(viewAccessor(ctx, uv, "TEXCOORD_0 of " + mesh, TINYGLTF_TYPE_VEC2,
-                              {kFloat, kByte, kUByte, kShort, kUShort}),
-                 out.uvs);
-        if (out.uvs.size() != vertexCount)
-            ctx.fail("TEXCOORD_0 of " + mesh + " has " + std::to_string(out.uvs.size()) +
+        const AccessorView uvs = viewAccessor(ctx, uv, "TEXCOORD_0 of " + mesh, TINYGLTF_TYPE_VEC2,
+                                              {kFloat, kByte, kUByte, kShort, kUShort});
+        if (uvs.count != vertexCount)
+            ctx.fail("TEXCOORD_0 of " + mesh + " has " + std::to_string(uvs.count) +
                      " elements, POSITION " + std::to_string(vertexCount));
+        ctx.reserveGeometry(uvs.count, sizeof(glm::vec2), "TEXCOORD_0 of " + mesh);
+        readVec2(uvs, out.uvs);
         for (size_t i = 0; i < out.uvs.size(); ++i)
             if (!std::isfinite(out.uvs[i].x) || !std::isfinite(out.uvs[i].y))
                 ctx.fail("NaN or infinite TEXCOORD_0 (vertex " + std::to_string(i) + ") in " +

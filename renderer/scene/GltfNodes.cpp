@@ -12,6 +12,13 @@ namespace pb::scene::gltf {
 
 namespace {
 
+// Positions beyond this are refused, as checkExtent does for the geometry (GltfLoader.cpp).
+constexpr float kMaxCoordinate = 1e10f;
+
+bool finiteWithin(const glm::vec3& v, float limit) {
+    return std::abs(v.x) <= limit && std::abs(v.y) <= limit && std::abs(v.z) <= limit;
+}
+
 glm::mat4 localMatrix(const Context& ctx, int index) {
     const tinygltf::Node& n = ctx.model.nodes[size_t(index)];
     auto check = [&](const std::vector<double>& v, size_t size, const char* what) {
@@ -62,13 +69,15 @@ void addCamera(Context& ctx, int node, const glm::mat4& world) {
         return;
     }
     View v;
-    v.name = uniqueViewName(ctx.scene, !cam.name.empty() ? cam.name
-                                       : !n.name.empty() ? n.name
-                                                         : "camera" + std::to_string(n.camera));
+    v.name = ctx.uniqueViewName(!cam.name.empty() ? cam.name
+                                : !n.name.empty() ? n.name
+                                                  : "camera" + std::to_string(n.camera));
     v.position = glm::vec3(world[3]);
+    if (!finiteWithin(v.position, kMaxCoordinate))
+        ctx.fail(ctx.nodeLabel(node) + ": camera position is not finite or beyond 1e10");
     // A glTF camera looks down its local -Z; the target only has to fix the direction.
     const glm::vec3 forward = glm::vec3(world * glm::vec4(0, 0, -1, 0));
-    if (!(glm::length(forward) > 0.0f))
+    if (!(glm::length(forward) > 0.0f) || !finiteWithin(forward, 1e30f))
         ctx.fail(ctx.nodeLabel(node) + ": camera transform has no direction (zero scale)");
     v.target = v.position + glm::normalize(forward);
     const double yfov = cam.perspective.yfov * 180.0 / 3.14159265358979;
@@ -103,12 +112,21 @@ void addLight(Context& ctx, int node, const glm::mat4& world, const tinygltf::Va
     l.innerConeAngle = float(src.spot.innerConeAngle);
     l.outerConeAngle = float(src.spot.outerConeAngle);
     if (!std::isfinite(l.intensity) || l.intensity < 0.0f || !(l.range >= 0.0f) ||
-        glm::any(glm::lessThan(l.color, glm::vec3(0.0f))))
+        !finiteWithin(l.color, 1e30f) || glm::any(glm::lessThan(l.color, glm::vec3(0.0f))))
         ctx.fail("light '" + src.name +
                  "' has a negative or non-finite colour, intensity or range");
+    // The spec: 0 <= inner < outer <= pi/2 (the shader's smoothstep(cos outer, cos inner) is
+    // undefined in GLSL unless cos outer < cos inner).
+    if (l.type == LightType::Spot &&
+        !(l.innerConeAngle >= 0.0f && l.innerConeAngle < l.outerConeAngle &&
+          l.outerConeAngle <= 1.5707964f))
+        ctx.fail("light '" + src.name + "': spot cone angles must be 0 <= inner < outer <= pi/2");
     l.position = glm::vec3(world[3]);
+    if (!finiteWithin(l.position, kMaxCoordinate))
+        ctx.fail(ctx.nodeLabel(node) + ": light position is not finite or beyond 1e10");
     const glm::vec3 dir = glm::vec3(world * glm::vec4(0, 0, -1, 0)); // lights point down -Z
-    l.direction = glm::length(dir) > 0.0f ? glm::normalize(dir) : glm::vec3(0, 0, -1);
+    l.direction = glm::length(dir) > 0.0f && finiteWithin(dir, 1e30f) ? glm::normalize(dir)
+                                                                      : glm::vec3(0, 0, -1);
 
     // The first directional light is the sun (shadow map, bake sun term, --sun).
     if (l.type == LightType::Directional && !ctx.sunFromFile) {
@@ -187,7 +205,11 @@ void traverseNodes(Context& ctx, const std::vector<std::string>& dynamicNodes) {
             if (size_t(n.mesh) >= m.meshes.size())
                 ctx.fail(ctx.nodeLabel(node) + " refers to missing mesh " + std::to_string(n.mesh));
             const std::string name = n.name.empty() ? "node" + std::to_string(node) : n.name;
-            for (int prim : meshPrimitives(ctx, n.mesh))
+            const std::vector<int>& prims = meshPrimitives(ctx, n.mesh);
+            if (prims.size() > kMaxInstances - ctx.scene.instances.size())
+                ctx.fail("more than " + std::to_string(kMaxInstances) +
+                         " mesh instances (nodes x primitives)");
+            for (int prim : prims)
                 ctx.scene.instances.push_back(Instance{name, prim, world, dynamic});
         }
         if (n.camera >= 0) addCamera(ctx, node, world);

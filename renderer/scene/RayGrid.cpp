@@ -9,6 +9,17 @@ namespace pb::scene {
 namespace {
 constexpr float kInf = std::numeric_limits<float>::infinity();
 constexpr int kMaxDim = 128; // 2 M cells at most: a few MB for the largest scenes
+
+// floor(v) as a cell index in [0, dims - 1]; clamped as floats first, so that NaN or a value
+// beyond the int range (a degenerate or hostile scene) never reaches an int conversion.
+glm::ivec3 clampedCell(const glm::vec3& v, const glm::ivec3& dims) {
+    glm::ivec3 c;
+    for (int a = 0; a < 3; ++a) {
+        const float f = std::floor(v[a]);
+        c[a] = f >= 0.0f ? (f < float(dims[a] - 1) ? int(f) : dims[a] - 1) : 0;
+    }
+    return c;
+}
 } // namespace
 
 RayGrid::RayGrid(const Scene& scene) {
@@ -46,10 +57,17 @@ RayGrid::RayGrid(const Scene& scene) {
 }
 
 void RayGrid::build() {
-    // About one cell per triangle, cells as close to cubes as the bounds allow.
-    const glm::vec3 size = glm::max(bounds_.size(), glm::vec3(1e-3f * glm::length(bounds_.size())));
-    const float cell = std::cbrt(size.x * size.y * size.z / float(tris_.size()));
-    dims_ = glm::clamp(glm::ivec3(glm::ceil(size / cell)), glm::ivec3(1), glm::ivec3(kMaxDim));
+    // About one cell per triangle, cells as close to cubes as the bounds allow. Every side
+    // gets a positive size, even when all triangles collapse to one point (relative to the
+    // position, so that it stays representable far from the origin).
+    const glm::vec3 far = glm::max(glm::abs(bounds_.min), glm::abs(bounds_.max));
+    const float minSide = std::max(
+        {1e-3f * glm::length(bounds_.size()), 1e-6f, 1e-6f * std::max({far.x, far.y, far.z})});
+    const glm::vec3 size = glm::max(bounds_.size(), glm::vec3(minSide));
+    // In double: the product of three tiny sides underflows a float.
+    const double cell = std::cbrt(double(size.x) * size.y * size.z / double(tris_.size()));
+    for (int a = 0; a < 3; ++a)
+        dims_[a] = int(std::clamp(std::ceil(double(size[a]) / cell), 1.0, double(kMaxDim)));
     cellSize_ = size / glm::vec3(dims_);
     bounds_.max = bounds_.min + size;
 
@@ -58,10 +76,8 @@ void RayGrid::build() {
         const glm::vec3 a = t.v0, b = t.v0 + t.e1, c = t.v0 + t.e2;
         const glm::vec3 mn = glm::min(a, glm::min(b, c)) - bounds_.min;
         const glm::vec3 mx = glm::max(a, glm::max(b, c)) - bounds_.min;
-        const glm::ivec3 lo =
-            glm::clamp(glm::ivec3(glm::floor(mn / cellSize_)), glm::ivec3(0), dims_ - 1);
-        const glm::ivec3 hi =
-            glm::clamp(glm::ivec3(glm::floor(mx / cellSize_)), glm::ivec3(0), dims_ - 1);
+        const glm::ivec3 lo = clampedCell(mn / cellSize_, dims_);
+        const glm::ivec3 hi = clampedCell(mx / cellSize_, dims_);
         for (int z = lo.z; z <= hi.z; ++z)
             for (int y = lo.y; y <= hi.y; ++y)
                 for (int x = lo.x; x <= hi.x; ++x)
@@ -99,7 +115,7 @@ RayHit RayGrid::cast(const glm::vec3& o, const glm::vec3& d, float maxDistance) 
     if (t0 > t1) return best;
     // Walk the cells the ray crosses, nearest first (Amanatides & Woo).
     const glm::vec3 start = (o + d * t0 - bounds_.min) / cellSize_;
-    glm::ivec3 cell = glm::clamp(glm::ivec3(glm::floor(start)), glm::ivec3(0), dims_ - 1);
+    glm::ivec3 cell = clampedCell(start, dims_);
     glm::ivec3 step;
     glm::vec3 tNext, tDelta;
     for (int a = 0; a < 3; ++a) {
