@@ -4,6 +4,7 @@
 #include "core/FileIO.h"
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -12,10 +13,9 @@
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_STATIC
 #include <stb_image_write.h>
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_STATIC
-#define STBI_ONLY_PNG
-#include <stb_image.h>
+// PNGs are read with libpng (as glTF textures are, renderer/scene/ImageDecode.h): `compare`
+// reads files users hand it, and stb_image is not made for hostile files.
+#include <png.h>
 
 namespace pb::image {
 
@@ -51,14 +51,28 @@ void writePfm(const std::string& path, const ImageF& img) {
 }
 
 Image8 readPng(const std::string& path) {
-    int w = 0, h = 0, n = 0;
-    unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 4);
-    if (!data) throw fileError(path, std::string("cannot read PNG: ") + stbi_failure_reason());
+    // Larger than any frame this tool writes (4096x4096 is the stress sweep's largest); the
+    // size is checked from the header before a pixel is allocated.
+    constexpr std::uint32_t kMaxSide = 16384;
+    png_image png;
+    std::memset(&png, 0, sizeof png);
+    png.version = PNG_IMAGE_VERSION;
+    // The simplified API reports errors as a message, never by a longjmp through this frame.
+    if (!png_image_begin_read_from_file(&png, path.c_str()))
+        throw fileError(path, std::string("cannot read PNG: ") + png.message);
+    if (png.width == 0 || png.height == 0 || png.width > kMaxSide || png.height > kMaxSide) {
+        const std::string size = std::to_string(png.width) + "x" + std::to_string(png.height);
+        png_image_free(&png);
+        throw fileError(path, "PNG of " + size + " pixels: empty or larger than " +
+                                  std::to_string(kMaxSide) + " on a side");
+    }
+    png.format = PNG_FORMAT_RGBA;
     Image8 img;
-    img.width = w;
-    img.height = h;
-    img.pixels.assign(data, data + size_t(w) * h * 4);
-    stbi_image_free(data);
+    img.width = int(png.width);
+    img.height = int(png.height);
+    img.pixels.resize(PNG_IMAGE_SIZE(png));
+    if (!png_image_finish_read(&png, nullptr, img.pixels.data(), 0, nullptr))
+        throw fileError(path, std::string("cannot read PNG: ") + png.message);
     return img;
 }
 
