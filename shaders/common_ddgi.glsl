@@ -28,8 +28,9 @@
 // u_ddgiIrradianceScale also holds 1 / the probe file's storage scale (probes/StorageScale.h:
 // irradiance far outside fp16's range is stored times a power of two), folded in on the CPU,
 // so with the guard the storage scale costs nothing. Without the guard the probes are fetched
-// as stored and ddgiSample multiplies its result once by u_ddgiIrradianceScale (then exactly
-// 1 / the storage scale; 1 for every ordinary bake).
+// as stored and ddgiSample multiplies its result once, in highp, by u_ddgiIrradianceScale
+// (then exactly 1 / the storage scale; 1 for every ordinary bake). The stored maximum 2^14
+// (StorageScale.h) also keeps the fp16 sums finite: the weights sum to about 1.2 at most.
 #ifdef GI_PRECISION_FP16
 #define hfloat mediump float
 #define hvec2 mediump vec2
@@ -210,6 +211,7 @@ hvec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
 #ifdef GI_GUARD_EXPOSURE_ON
     return vec4(sumE / sumW * fadeH, fadeH);
 #else
-    return vec4(sumE / sumW * ddgiHalf(fade * u_ddgiIrradianceScale), fadeH);
+    // highp: 1 / the storage scale of a dim scenario (2^-25 at light x1e-4) is not an fp16.
+    return vec4(sumE / sumW * fadeH * u_ddgiIrradianceScale, fadeH);
 #endif
 }
