@@ -203,6 +203,13 @@ nlohmann::json volumesJson(const ProbeSet& set) {
     return out;
 }
 
+// Per scenario, the irradiance's storage scale (probes/StorageScale.h; 1 when in range).
+float scenarioScale(const ProbeSet& set, std::size_t s) {
+    return s < set.irradiance.size() && !set.irradiance[s].empty()
+               ? set.irradiance[s].front().storageScale
+               : 1.0f;
+}
+
 void printSummary(const BakeArgs& a, const PlacementInfo& placement, const ProbeSet& set,
                   const BakeStats* st, bool upToDate) {
     MemoryReport mem = memoryReport(set);
@@ -220,9 +227,13 @@ void printSummary(const BakeArgs& a, const PlacementInfo& placement, const Probe
                          {"volumes", volumesJson(set)},
                          {"memory", memoryReportJson(mem)}};
         nlohmann::json sc = nlohmann::json::array();
-        for (const Scenario& s : set.scenarios)
-            sc.push_back(s.name);
+        nlohmann::json scales = nlohmann::json::object();
+        for (std::size_t i = 0; i < set.scenarios.size(); ++i) {
+            sc.push_back(set.scenarios[i].name);
+            scales[set.scenarios[i].name] = scenarioScale(set, i);
+        }
         j["scenarios"] = sc;
+        j["storage_scales"] = scales;
         if (st) {
             double rays = double(st->primaryRays + st->shadowRays);
             j["relocated_probes"] = st->relocatedProbes;
@@ -272,6 +283,11 @@ void printSummary(const BakeArgs& a, const PlacementInfo& placement, const Probe
             std::printf("%s quantisation: max relative error %.2g\n", formatName(set.format()),
                         worst);
     }
+    for (std::size_t i = 0; i < set.scenarios.size(); ++i)
+        if (scenarioScale(set, i) != 1.0f)
+            std::printf("scenario %s: irradiance stored x2^%d (outside %s's comfortable range)\n",
+                        set.scenarios[i].name.c_str(), std::ilogb(scenarioScale(set, i)),
+                        formatName(set.format()));
     std::cout << "memory (one scenario resident): " << formatBytes(mem.total.uncompressed.total())
               << " uncompressed, " << formatBytes(mem.total.bc6h.total()) << " bc6h; file holds "
               << set.scenarios.size() << " scenario(s) as " << formatName(set.format()) << "\n";

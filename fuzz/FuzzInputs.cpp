@@ -4,6 +4,7 @@
 #include "probes/Hash.h"
 #include "probes/ProbeFile.h"
 #include "probes/ProbeSampler.h"
+#include "profile/ProfileLoader.h"
 #include "scene/SceneLoader.h"
 
 #include <cmath>
@@ -82,6 +83,10 @@ Outcome runGltfWithBin(const std::uint8_t* data, std::size_t size,
 Outcome runGlb(const std::uint8_t* data, std::size_t size, const std::filesystem::path& dir) {
     writeBytes(dir / "fuzz.glb", data, size);
     return loadScene(dir / "fuzz.glb");
+}
+
+void parseProfileText(std::string_view text, const std::string& name) {
+    profile::parseProfileToml(std::string(text), name, profile::ProfileSearch{});
 }
 
 Outcome runProbeFile(const std::uint8_t* data, std::size_t size) {

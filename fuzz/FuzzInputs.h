@@ -32,6 +32,9 @@ Outcome runGlb(const std::uint8_t* data, std::size_t size, const std::filesystem
 // A TOML file through `parse(text, name)`, e.g. probes::parseVolumeToml: one line per TOML
 // reader (a profile parser joins the same way).
 template <class Parse> Outcome runToml(const std::uint8_t* data, std::size_t size, Parse&& parse);
+// A platform profile through profile::parseProfileToml with no search folders (the parse
+// that runToml hands a profile to; `inherit` finds only files next to `name`).
+void parseProfileText(std::string_view text, const std::string& name);
 // A probe data file (renderer/probes/ProbeFile), parsed as is, then with its size field and
 // checksum made to match (so the parser behind the checksum is reached); a set that loads is
 // sampled by the CPU reference sampler, which must return finite irradiance.

@@ -4,7 +4,8 @@
 # seeds (fuzz/seeds/<target>/) and probe files baked by build/probebench (when it exists).
 # fuzz/README.md explains the targets and the results.
 #
-#   fuzz/run.sh [SECONDS_PER_TARGET=300] [TARGET...]     targets: gltf glb volume_toml probe_file
+#   fuzz/run.sh [SECONDS_PER_TARGET=300] [TARGET...]
+#   targets: gltf glb volume_toml profile_toml probe_file
 #
 # Findings land in build-fuzz/artifacts/<target>/ (crash-*, timeout-*, oom-*, leak-*); replay
 # one with `build-fuzz/fuzz/fuzz_<target> FILE`, then keep it as a regression test by copying
@@ -14,7 +15,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-300}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(gltf glb volume_toml probe_file)
+[ ${#targets[@]} -gt 0 ] || targets=(gltf glb volume_toml profile_toml probe_file)
 out=build-fuzz
 
 CC=clang CXX=clang++ cmake -S . -B "$out" -DCMAKE_BUILD_TYPE=Release -DPB_FUZZ=ON \

@@ -25,6 +25,12 @@
 // frame's pre-exposure u_ddgiIrradianceScale (a power of two, FrameContext.h) and only then
 // rounded by ddgiHalf(), so 1e6 lux irradiance at exposure 1e-6 enters the sums near 1, not as
 // Inf, and 1e-6 near 1, not as a denormal. The caller's result is pre-exposed too.
+// u_ddgiIrradianceScale also holds 1 / the probe file's storage scale (probes/StorageScale.h:
+// irradiance far outside fp16's range is stored times a power of two), folded in on the CPU,
+// so with the guard the storage scale costs nothing. Without the guard the probes are fetched
+// as stored and ddgiSample multiplies its result once, in highp, by u_ddgiIrradianceScale
+// (then exactly 1 / the storage scale; 1 for every ordinary bake). The stored maximum 2^14
+// (StorageScale.h) also keeps the fp16 sums finite: the weights sum to about 1.2 at most.
 #ifdef GI_PRECISION_FP16
 #define hfloat mediump float
 #define hvec2 mediump vec2
@@ -62,7 +68,7 @@ uniform vec3 u_ddgiGridStep;
 uniform ivec3 u_ddgiCounts;
 uniform float u_ddgiBiasDistance; // DDGI_BIAS_SCALE * minCell, rounded on the CPU like there
 uniform float u_ddgiInvMaxDistance;
-uniform float u_ddgiIrradianceScale; // gi.guard_exposure: the pre-exposure (GpuProbes::bindVolume)
+uniform float u_ddgiIrradianceScale; // pre-exposure / storage scale (GpuProbes::bindVolume)
 uniform vec2 u_ddgiIrrInvSize;    // 1 / (width, height) of an irradiance layer
 uniform vec2 u_ddgiVisInvSize;
 
@@ -202,5 +208,10 @@ hvec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
     // 5. Normalise, then fade.
     if (!(sumW > 0.0)) return vec4(0.0);
     hfloat fadeH = ddgiHalf(fade);
+#ifdef GI_GUARD_EXPOSURE_ON
     return vec4(sumE / sumW * fadeH, fadeH);
+#else
+    // highp: 1 / the storage scale of a dim scenario (2^-25 at light x1e-4) is not an fp16.
+    return vec4(sumE / sumW * fadeH * u_ddgiIrradianceScale, fadeH);
+#endif
 }

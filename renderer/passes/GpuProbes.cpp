@@ -138,8 +138,10 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
         g.name = v.name;
         g.fileIndex = vi;
         g.root = parents[size_t(vi)] < 0;
-        g.irradiance = uploadProbeTexture(set.irradiance[size_t(scenario)][size_t(vi)],
-                                          irradianceFormat(format_), format_, what + " irradiance");
+        const probes::ProbeTexture& irr = set.irradiance[size_t(scenario)][size_t(vi)];
+        g.irradiance =
+            uploadProbeTexture(irr, irradianceFormat(format_), format_, what + " irradiance");
+        g.irradianceDecode = 1.0f / irr.storageScale;
         g.visibility = uploadProbeTexture(set.visibility[size_t(vi)], visibilityFormat(format_),
                                           format_, what + " visibility");
         if (set.states[size_t(vi)].size() != size_t(v.probeCount()))
@@ -186,7 +188,7 @@ void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,
     program.set("u_ddgiCounts", g.counts);
     program.set("u_ddgiBiasDistance", g.biasDistance);
     program.set("u_ddgiInvMaxDistance", g.invMaxDistance);
-    program.set("u_ddgiIrradianceScale", irradianceScale);
+    program.set("u_ddgiIrradianceScale", irradianceScale * g.irradianceDecode);
     const gl::TextureDesc &irr = g.irradiance.desc(), &vis = g.visibility.desc();
     program.set("u_ddgiIrrInvSize", glm::vec2(1.0f / float(irr.width), 1.0f / float(irr.height)));
     program.set("u_ddgiVisInvSize", glm::vec2(1.0f / float(vis.width), 1.0f / float(vis.height)));

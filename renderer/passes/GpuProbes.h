@@ -28,6 +28,8 @@ struct GpuProbeVolume {
     glm::vec3 half{0.0f}, fadeWidth{0.0f}, invCell{0.0f}, gridOrigin{0.0f}, gridStep{0.0f};
     glm::ivec3 counts{1};
     float biasDistance = 0, invMaxDistance = 0, boxVolume = 0;
+    // 1 / the irradiance's storage scale (probes/StorageScale.h): fetched * this = true E.
+    float irradianceDecode = 1.0f;
     std::size_t bytes() const { return irradiance.bytes() + visibility.bytes() + state.bytes(); }
 };
 
@@ -49,8 +51,10 @@ public:
 
     // Binds volume v's textures to units firstUnit..firstUnit+2 and sets the u_ddgi* uniforms
     // of the program in use. `origin` is the origin of the shader's space in world units (the
-    // eye for camera-relative rendering, 0 for world space). `irradianceScale` multiplies the
-    // irradiance in shaders built with gi.guard_exposure (the frame's pre-exposure).
+    // eye for camera-relative rendering, 0 for world space). `irradianceScale` is the frame's
+    // pre-exposure (gi.guard_exposure; 1 without it). u_ddgiIrradianceScale gets it times the
+    // volume's irradianceDecode (both powers of two: exact), so the storage scale costs no
+    // instruction in shaders built with the guard (common_ddgi.glsl).
     void bindVolume(const gl::Program& program, int v, int firstUnit, const glm::dvec3& origin,
                     float irradianceScale = 1.0f) const;
     static constexpr int kUnitsPerVolume = 3;

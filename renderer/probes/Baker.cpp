@@ -8,6 +8,7 @@
 #include "probes/RadiancePass.h"
 #include "probes/RayDirections.h"
 #include "probes/RayScene.h"
+#include "probes/StorageScale.h"
 
 #include <chrono>
 #include <cmath>
@@ -231,11 +232,13 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         all.push_back(&set.visibility[v]);
         errors.push_back({set.volumes[v].name, "visibility"});
     }
-    for (size_t s = 0; s < set.irradiance.size(); ++s)
+    for (size_t s = 0; s < set.irradiance.size(); ++s) {
+        assignStorageScale(set.irradiance[s], cfg.format); // 1 unless out of range
         for (size_t v = 0; v < set.irradiance[s].size(); ++v) {
             all.push_back(&set.irradiance[s][v]);
             errors.push_back({set.volumes[v].name, "irradiance " + set.scenarios[s].name});
         }
+    }
     parallelFor(all.size(), threads, [&](std::size_t i, int) {
         std::vector<float> before = all[i]->texels;
         quantise(*all[i], cfg.format);

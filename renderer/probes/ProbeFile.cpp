@@ -4,6 +4,7 @@
 #include "core/FileIO.h"
 #include "probes/BinaryIO.h"
 #include "probes/Hash.h"
+#include "probes/StorageScale.h"
 
 #include <cmath>
 #include <cstring>
@@ -80,13 +81,38 @@ void checkStoredValues(const ProbeTexture& t, StorageFormat f, const std::string
                                   " data (a negative, infinite or NaN texel)");
 }
 
+// The storage-scale record (version 2, StorageScale.h): one f32 per scenario, shared by the
+// scenario's volumes. Kept as its own record after the scenarios.
+void writeStorageScales(ByteWriter& w, const ProbeSet& set) {
+    for (const auto& textures : set.irradiance) {
+        const float s = textures.empty() ? 1.0f : textures.front().storageScale;
+        for (const ProbeTexture& t : textures)
+            if (std::memcmp(&t.storageScale, &s, sizeof s) != 0) // bits: a NaN is written too
+                throw Error("probe set: the volumes of one scenario have different storage "
+                            "scales (the file holds one per scenario)");
+        w.pod(s);
+    }
+}
+
+std::vector<float> readStorageScales(ByteReader& r, std::uint32_t scenarios,
+                                     const std::vector<Scenario>& named, const std::string& path) {
+    std::vector<float> scales;
+    for (std::uint32_t i = 0; i < scenarios; ++i) {
+        scales.push_back(r.pod<float>("storage scale"));
+        if (!isValidStorageScale(scales.back()))
+            throw fileError(path, "corrupt storage scale of scenario '" + named[i].name +
+                                      "' (not a power of two in 2^-64..2^64)");
+    }
+    return scales;
+}
+
 void writeTexture(ByteWriter& w, const ProbeTexture& t) {
     w.pod(std::uint64_t(t.stored.size()));
     w.raw(t.stored.data(), t.stored.size());
 }
 
 void readTexture(ByteReader& r, ProbeTexture& t, const TextureShape& shape, StorageFormat f,
-                 const std::string& path, const char* what) {
+                 const std::string& path, const char* what, float storageScale = 1.0f) {
     auto size = r.pod<std::uint64_t>(what);
     if (size != storedBytes(shape, f))
         throw fileError(path, std::string("corrupt ") + what + " size (" + std::to_string(size) +
@@ -94,6 +120,7 @@ void readTexture(ByteReader& r, ProbeTexture& t, const TextureShape& shape, Stor
                                   ")");
     const std::uint8_t* p = r.take(std::size_t(size), what);
     t.shape = shape;
+    t.storageScale = storageScale;
     t.stored.assign(p, p + size);
     checkStoredValues(t, f, path, what);
     decodeStored(t, f);
@@ -136,6 +163,10 @@ std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
         w.pod(s.sun.intensity);
         w.pod(s.sky.radiance);
     }
+    if (set.irradiance.size() != set.scenarios.size())
+        throw Error("probe set: irradiance for " + std::to_string(set.irradiance.size()) +
+                    " scenarios, " + std::to_string(set.scenarios.size()) + " named");
+    writeStorageScales(w, set);
     for (const auto& states : set.states)
         for (const ProbeState& p : states) {
             w.pod(p.offset);
@@ -226,6 +257,7 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
             throw fileError(path, "corrupt: scenario '" + s.name + "' appears twice");
         set.scenarios.push_back(s);
     }
+    const std::vector<float> scales = readStorageScales(body, scenarioCount, set.scenarios, path);
     for (const ProbeVolume& v : set.volumes) {
         // 17 bytes per probe must still be there before anything is allocated for them.
         if (std::size_t(v.probeCount()) > body.remaining() / 17)
@@ -250,7 +282,7 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
         for (const ProbeVolume& v : set.volumes) {
             set.irradiance.back().emplace_back();
             readTexture(body, set.irradiance.back().back(), irradianceShape(v.counts), b.format,
-                        path, "irradiance");
+                        path, "irradiance", scales[s]);
         }
     }
     if (body.remaining() != 0)

@@ -35,10 +35,13 @@ TextureShape visibilityShape(const glm::ivec3& counts);
 // One texture array: `texels` holds the values a GL sampler returns (already quantised to the
 // storage format once the bake is finished); `stored` the bytes in the file's format, ready
 // for glTexImage3D / glCompressedTexImage3D (filled by quantisation and by the file reader).
+// `storageScale` (irradiance only, StorageScale.h): the stored RGB is texels * storageScale, a
+// power of two; texels always hold true values.
 struct ProbeTexture {
     TextureShape shape;
     std::vector<float> texels;
     std::vector<std::uint8_t> stored;
+    float storageScale = 1.0f;
 
     static ProbeTexture make(const TextureShape& s);
     float* at(int col, int row, int layer) {

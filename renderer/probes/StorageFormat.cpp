@@ -51,6 +51,15 @@ float clampForHalf(float v) {
 std::size_t layerFloats(const TextureShape& s) {
     return std::size_t(s.width) * s.height * s.channels;
 }
+
+// Multiplies the scaled channels (all but an RGBA texture's alpha) by `factor`. A power of two
+// times a float is exact, and a factor of 1 is skipped: unscaled textures stay bit for bit.
+void scaleTexels(ProbeTexture& t, float factor) {
+    if (factor == 1.0f) return;
+    const std::size_t channels = std::size_t(t.shape.channels);
+    for (std::size_t i = 0; i < t.texels.size(); ++i)
+        if (channels != 4 || i % channels != 3) t.texels[i] *= factor;
+}
 } // namespace
 
 std::size_t storedBytes(const TextureShape& s, StorageFormat f) {
@@ -65,6 +74,7 @@ float quantiseHalf(float v) {
 void quantise(ProbeTexture& t, StorageFormat f) {
     const TextureShape& s = t.shape;
     t.stored.assign(storedBytes(s, f), 0);
+    scaleTexels(t, t.storageScale);
     if (f == StorageFormat::Rgba32f) {
         for (float& v : t.texels)
             v = std::isfinite(v) ? v : 0.0f;
@@ -117,6 +127,7 @@ void decodeStored(ProbeTexture& t, StorageFormat f) {
     // Only a hand-made file can hold inf/NaN here (the checksum matched): never sample them.
     for (float& v : t.texels)
         v = std::isfinite(v) ? v : 0.0f;
+    scaleTexels(t, 1.0f / t.storageScale); // exact: the scale is a power of two
 }
 
 } // namespace pb::probes

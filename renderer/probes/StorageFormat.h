@@ -31,10 +31,12 @@ struct ProbeBytes {
 ProbeBytes bytesPerProbe(StorageFormat f);
 std::size_t storedBytes(const TextureShape& s, StorageFormat f);
 
-// Encodes t.texels into t.stored in format `f`, then replaces t.texels by the decoded values
-// (what GL will sample). Deterministic.
+// Encodes t.texels * t.storageScale (RGB; alpha unscaled) into t.stored in format `f`, then
+// replaces t.texels by the decoded values divided by the scale (what GL samples, times
+// 1 / storageScale: the true values). Deterministic; with scale 1 exactly as without one.
 void quantise(ProbeTexture& t, StorageFormat f);
-// Fills t.texels from t.stored (t.shape set). Throws pb::Error when the size is wrong.
+// Fills t.texels from t.stored (t.shape and t.storageScale set). Throws pb::Error when the
+// size is wrong.
 void decodeStored(ProbeTexture& t, StorageFormat f);
 
 // Half-float round trip of one value with the clamping above (what RGBA16F stores).

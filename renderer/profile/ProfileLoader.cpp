@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 #include "core/FileIO.h"
+#include "core/TomlText.h"
 #include "profile/ProfileSettings.h"
 #include "profile/SwitchTable.h"
 
@@ -167,6 +168,7 @@ PlatformProfile loadChain(const std::string& path, const ProfileSearch& search,
 PlatformProfile parseChain(const std::string& text, const std::string& path,
                            const ProfileSearch& search, std::vector<std::string>& chain) {
     Parser P(path, search);
+    checkTomlText(text, path); // what toml++ 3.3 cannot read without undefined behaviour
     toml::table root;
     try {
         root = toml::parse(text, path);

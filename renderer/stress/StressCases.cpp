@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "probes/Baker.h"
 #include "probes/Octahedral.h"
+#include "probes/StorageScale.h"
 #include "stress/StressScene.h"
 
 #include <algorithm>
@@ -232,9 +233,11 @@ ProbeSet inStorageFormat(const ProbeSet& rgba32f, probes::StorageFormat format) 
     if (format == probes::StorageFormat::Rgba32f) return out;
     for (probes::ProbeTexture& t : out.visibility)
         probes::quantise(t, format);
-    for (auto& scenario : out.irradiance)
+    for (auto& scenario : out.irradiance) {
+        probes::assignStorageScale(scenario, format); // as the bake does
         for (probes::ProbeTexture& t : scenario)
             probes::quantise(t, format);
+    }
     return out;
 }
 

@@ -9,6 +9,7 @@
 
 #include "frame/GiPointEvaluator.h"
 #include "probes/ProbeSampler.h"
+#include "stress/StressCases.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -112,6 +113,32 @@ TEST_P(GiCrossCheckTest, GpuMatchesCpuForHalfAndBc6hProbes) {
         std::printf("[ cross-check ] %s, %s probes: N = %d, max rel %.3g, mean rel %.3g\n",
                     GetParam().c_str(), probes::formatName(f), r.points, r.maxRel, r.meanRel);
         EXPECT_LE(r.maxRel, 1e-3) << probes::formatName(f) << ", worst point #" << r.worst;
+    }
+}
+
+// Irradiance far outside fp16's range is stored times a power of two (probes/StorageScale.h):
+// the GPU multiplies 1/scale back in - folded into gi.guard_exposure's per-fetch multiply, or
+// once per pixel without the guard - and must still match the CPU, which sees true values.
+TEST_P(GiCrossCheckTest, StorageScaledProbesMatchTheCpuWithAndWithoutTheExposureGuard) {
+    for (float k : {1e6f, 1e-6f}) {
+        probes::ProbeSet bright = giTestProbes(probes::StorageFormat::Rgba32f);
+        for (probes::ProbeTexture& t : bright.irradiance[0])
+            for (std::size_t i = 0; i < t.texels.size(); ++i)
+                t.texels[i] *= i % 4 == 3 ? 1.0f : k;
+        for (probes::StorageFormat f :
+             {probes::StorageFormat::Rgba16f, probes::StorageFormat::Bc6h}) {
+            const probes::ProbeSet set = stress::inStorageFormat(bright, f);
+            EXPECT_NE(set.irradiance[0][0].storageScale, 1.0f);
+            for (const char* guard : {"on", "off"}) {
+                profile::Profile prof;
+                prof.applyOverride("gi.target_format=rgba32f");
+                prof.applyOverride(std::string("gi.guard_exposure=") + guard);
+                CheckResult r = crossCheck(set, prof, 1000);
+                std::printf("[ cross-check ] %s, light x%g, %s probes, guard %s: max rel %.3g\n",
+                            GetParam().c_str(), double(k), probes::formatName(f), guard, r.maxRel);
+                EXPECT_LE(r.maxRel, 1e-3) << k << " " << probes::formatName(f) << " " << guard;
+            }
+        }
     }
 }
 

@@ -92,6 +92,19 @@ TEST_F(StressGuardTest, ExposureGuardKeepsBrightLightingFinite) {
     EXPECT_LT(on.medianRel, 0.01);
 }
 
+// Light x 1e6 and x 1e-6 with fp16 and BC6H probes: the bake's storage scale
+// (probes/StorageScale.h) keeps the stored irradiance inside the format's normals, where it
+// used to be clamped to 65504 (median 0.56) or stored as denormals (bc6h: 0.058).
+TEST_F(StressGuardTest, StorageScaleKeepsExtremeLightingInTheProbeFormat) {
+    for (const char* light : {"light=1e+06", "light=1e-06"})
+        for (const char* format : {"rgba16f", "bc6h"}) {
+            const stress::Measurement m =
+                measure(light, variant(std::string("p:probes.format=") + format, "on", "on"));
+            EXPECT_EQ(m.nonfinitePixels, 0) << light << " " << format;
+            EXPECT_LT(m.medianRel, 0.05) << light << " " << format;
+        }
+}
+
 // An emissive of 1e6 at exposure 1 (no pre-exposure can help): fp16 sums next to it pass
 // 65504. The clamp stores the format's largest value instead of Inf.
 TEST_F(StressGuardTest, ClampGuardKeepsAHotSpotFinite) {

@@ -38,6 +38,10 @@ const Target kTargets[] = {
      [](const std::vector<std::uint8_t>& b, const fs::path&) {
          return pb::fuzz::runToml(b.data(), b.size(), &pb::probes::parseVolumeToml);
      }},
+    {"profile_toml",
+     [](const std::vector<std::uint8_t>& b, const fs::path&) {
+         return pb::fuzz::runToml(b.data(), b.size(), &pb::fuzz::parseProfileText);
+     }},
     {"probe_file", [](const std::vector<std::uint8_t>& b,
                       const fs::path&) { return pb::fuzz::runProbeFile(b.data(), b.size()); }},
 };

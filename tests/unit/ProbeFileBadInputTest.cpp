@@ -107,3 +107,16 @@ TEST(ProbeFileBadInput, TexelsMustBeFiniteAndNonNegative) {
         }
     }
 }
+
+// Version 2's per-scenario storage scale: a power of two within 2^-64..2^64, nothing else.
+TEST(ProbeFileBadInput, StorageScaleMustBeAPowerOfTwo) {
+    for (float bad :
+         {kNan, std::numeric_limits<float>::infinity(), 0.0f, -2.0f, 3.0f, std::ldexp(1.0f, 100)}) {
+        ProbeSet s = tinySet();
+        s.irradiance[0][0].storageScale = bad;
+        EXPECT_CONTAINS(errorOf(s), "corrupt storage scale of scenario 'day'") << bad;
+    }
+    ProbeSet ok = tinySet();
+    ok.irradiance[0][0].storageScale = 0.25f;
+    EXPECT_EQ(errorOf(ok), "(no error)");
+}

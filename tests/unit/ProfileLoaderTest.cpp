@@ -120,6 +120,15 @@ TEST(ProfileLoader, MissingSettingsAndSyntaxErrors) {
     EXPECT_NE(e.find("dir/p.toml:9: TOML syntax error"), std::string::npos) << e;
 }
 
+// core/TomlText.h screens the text before toml++ sees it (toml++ 3.3.0 reaches undefined
+// behaviour on some non-ASCII outside strings); non-ASCII in strings and comments is fine.
+TEST(ProfileLoader, NonAsciiOutsideStringsIsRefusedBeforeParsing) {
+    EXPECT_EQ(errorOf(std::string(kRoot) + "[gi]\nresolution = \"half\" \xC3\xA9\n"),
+              "dir/p.toml:10: non-ASCII character outside a string or comment");
+    EXPECT_EQ(errorOf(std::string("description = \"caf\xC3\xA9\" # \xC2\xA0\n") + kRoot),
+              "(no error)");
+}
+
 TEST(ProfileLoader, InheritanceAppliesTheParentThenTheChild) {
     fs::path dir = outputDir();
     write(dir / "base.toml", std::string("description = \"base\"\n") + kRoot +
