@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 namespace pb::probes {
 namespace {
@@ -18,6 +19,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+double processCpuSeconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 // Flat probe numbering over all volumes.
@@ -86,6 +92,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     RayScene rs(scene);
     const double buildSeconds = since(t0);
     const auto tTrace = Clock::now();
+    const double cpuTrace = processCpuSeconds();
     if (req.recordRays) rs.startRecording();
 
     ProbeSet set;
@@ -221,6 +228,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         set.irradiance.push_back(std::move(prev));
     }
     const double traceSeconds = since(tTrace);
+    const double traceCpuSeconds = processCpuSeconds() - cpuTrace;
     if (req.recordRays) *req.recordRays = rs.stopRecording();
 
     // 3. Storage format.
@@ -256,6 +264,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         st.triangles = rs.triangleCount();
         st.buildSeconds = buildSeconds;
         st.traceSeconds = traceSeconds;
+        st.traceCpuSeconds = traceCpuSeconds;
         st.quantiseSeconds = since(tq);
         st.seconds = since(t0);
         st.threads = threads;
