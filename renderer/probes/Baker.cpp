@@ -192,7 +192,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
                     if (!st.valid) return;
                     glm::ivec3 c = vol.probeCoords(p);
                     slab.trace(i, rs, sc, scene.lights, vol.localToWorldRotation(),
-                               vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous != nullptr,
+                               vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
                                counters[size_t(t)]);
                 });
                 if (previous) slab.lookUp(*previous, threads);

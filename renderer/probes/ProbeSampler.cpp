@@ -68,18 +68,32 @@ template <int CH, int T> inline void prefetchTexels(const float* tile, glm::vec2
     __builtin_prefetch(p + T * CH);
 }
 
-// Tile-major copy of a texture array: probe after probe, `channels` of its channels.
-std::vector<float> copyTiles(const ProbeVolume& v, const ProbeTexture& t, int tile, int channels) {
-    std::vector<float> out(std::size_t(v.probeCount()) * std::size_t(tile * tile * channels));
+// Tile-major copy of a texture array: probe after probe, `channels` of its channels. A tile
+// row is contiguous in the source layer, so it is copied row by row (no per-texel indexing:
+// the bake builds a sampler per pass, serially, and the visibility alone is 16 MiB).
+HugePageVector<float> copyTiles(const ProbeVolume& v, const ProbeTexture& t, int tile,
+                                int channels) {
+    HugePageVector<float> out(std::size_t(v.probeCount()) * std::size_t(tile * tile * channels));
     float* dst = out.data();
+    const std::size_t stride = std::size_t(t.shape.channels);
     for (int p = 0; p < v.probeCount(); ++p) {
         glm::ivec3 c = v.probeCoords(p);
-        for (int y = 0; y < tile; ++y)
-            for (int x = 0; x < tile; ++x) {
-                const float* src = t.at(c.x * tile + x, c.z * tile + y, c.y);
+        for (int y = 0; y < tile; ++y) {
+            const float* src =
+                t.texels.data() +
+                ((std::size_t(c.y) * std::size_t(t.shape.height) + std::size_t(c.z * tile + y)) *
+                     std::size_t(t.shape.width) +
+                 std::size_t(c.x * tile)) *
+                    stride;
+            if (std::size_t(channels) == stride) {
+                std::copy(src, src + std::size_t(tile) * stride, dst);
+                dst += std::size_t(tile) * stride;
+                continue;
+            }
+            for (int x = 0; x < tile; ++x, src += stride)
                 for (int ch = 0; ch < channels; ++ch)
                     *dst++ = src[ch];
-            }
+        }
     }
     return out;
 }
