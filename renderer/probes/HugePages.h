@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#include <utility>
 #include <vector>
 
 #if defined(__linux__)
@@ -39,6 +40,15 @@ template <class T> struct HugePageAllocator {
     }
     void deallocate(T* p, std::size_t) noexcept {
         std::free(p);
+    }
+    // vector(n) and resize(n) default-initialise (no zero fill for floats): these arrays are
+    // written in full right after, often by several threads, which then also take the page
+    // faults in parallel.
+    template <class U> void construct(U* p) noexcept {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <class U, class... Args> void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
     }
 
     template <class U> bool operator==(const HugePageAllocator<U>&) const {

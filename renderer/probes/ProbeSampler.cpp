@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 #include "probes/Octahedral.h"
+#include "probes/ParallelFor.h"
 
 #include <cmath>
 #include <cstring>
@@ -60,16 +61,19 @@ inline void bilinear(const ProbeTexture& t, float x, float y, int layer, float* 
 }
 
 // Tile-major copy of a texture array: probe after probe, `channels` of its channels. A tile
-// row is contiguous in the source layer, so it is copied row by row (no per-texel indexing:
-// the bake builds a sampler per pass, serially, and the visibility alone is 16 MiB).
+// row is contiguous in the source layer, so it is copied row by row. The bake builds a
+// sampler per pass between its parallel loops (the visibility alone is 16 MiB for 32x8x32):
+// large volumes are copied on all cores, into memory that was not zeroed first.
 HugePageVector<float> copyTiles(const ProbeVolume& v, const ProbeTexture& t, int tile,
                                 int channels) {
-    HugePageVector<float> out(std::size_t(v.probeCount()) * std::size_t(tile * tile * channels) +
-                              kTilePadding);
-    float* dst = out.data();
+    const std::size_t tileFloats = std::size_t(tile * tile * channels);
+    HugePageVector<float> out(std::size_t(v.probeCount()) * tileFloats + kTilePadding);
+    std::fill(out.end() - kTilePadding, out.end(), 0.0f);
     const std::size_t stride = std::size_t(t.shape.channels);
-    for (int p = 0; p < v.probeCount(); ++p) {
-        glm::ivec3 c = v.probeCoords(p);
+    const int threads = v.probeCount() >= 4096 ? resolveThreadCount(0) : 1;
+    parallelFor(std::size_t(v.probeCount()), threads, [&](std::size_t p, int) {
+        const glm::ivec3 c = v.probeCoords(int(p));
+        float* dst = out.data() + p * tileFloats;
         for (int y = 0; y < tile; ++y) {
             const float* src =
                 t.texels.data() +
@@ -86,7 +90,7 @@ HugePageVector<float> copyTiles(const ProbeVolume& v, const ProbeTexture& t, int
                 for (int ch = 0; ch < channels; ++ch)
                     *dst++ = src[ch];
         }
-    }
+    });
     return out;
 }
 
