@@ -12,6 +12,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <ctime>
 
 namespace pb::probes {
 namespace {
@@ -19,6 +20,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+double processCpuSeconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 // Flat probe numbering over all volumes.
@@ -87,6 +93,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     RayScene rs(scene);
     const double buildSeconds = since(t0);
     const auto tTrace = Clock::now();
+    const double cpuTrace = processCpuSeconds();
     if (req.recordRays) rs.startRecording();
 
     ProbeSet set;
@@ -186,7 +193,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
                     if (!st.valid) return;
                     glm::ivec3 c = vol.probeCoords(p);
                     slab.trace(i, rs, sc, scene.lights, vol.localToWorldRotation(),
-                               vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous != nullptr,
+                               vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
                                counters[size_t(t)]);
                 });
                 if (previous) slab.lookUp(*previous, threads);
@@ -222,6 +229,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         set.irradiance.push_back(std::move(prev));
     }
     const double traceSeconds = since(tTrace);
+    const double traceCpuSeconds = processCpuSeconds() - cpuTrace;
     if (req.recordRays) *req.recordRays = rs.stopRecording();
 
     // 3. Storage format.
@@ -259,6 +267,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         st.triangles = rs.triangleCount();
         st.buildSeconds = buildSeconds;
         st.traceSeconds = traceSeconds;
+        st.traceCpuSeconds = traceCpuSeconds;
         st.quantiseSeconds = since(tq);
         st.seconds = since(t0);
         st.threads = threads;

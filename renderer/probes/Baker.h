@@ -46,9 +46,12 @@ struct BakeStats {
     std::size_t probes = 0, invalidProbes = 0, relocatedProbes = 0;
     std::uint64_t primaryRays = 0, shadowRays = 0;
     std::size_t triangles = 0;
-    double seconds = 0.0;         // whole bake, wall clock
-    double buildSeconds = 0.0;    // Embree BVH build
-    double traceSeconds = 0.0;    // geometry + radiance passes (all the ray tracing)
+    double seconds = 0.0;      // whole bake, wall clock
+    double buildSeconds = 0.0; // Embree BVH build
+    double traceSeconds = 0.0; // geometry + radiance passes (all the ray tracing)
+    // CPU seconds of the whole process (all threads) over traceSeconds: unlike the wall time
+    // it hardly changes when other processes share the cores (bench_bake).
+    double traceCpuSeconds = 0.0;
     double quantiseSeconds = 0.0; // encoding to the storage format
     int threads = 1;
     std::vector<QuantisationError> quantisation;

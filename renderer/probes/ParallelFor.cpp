@@ -19,10 +19,27 @@ int resolveThreadCount(int requested) {
 void parallelFor(std::size_t count, int threads, const std::function<void(std::size_t, int)>& body,
                  const std::function<void(std::size_t)>& tick) {
     threads = std::max(1, std::min<int>(threads, int(std::max<std::size_t>(count, 1))));
-    const std::size_t chunk =
-        std::max<std::size_t>(1, std::min<std::size_t>(16, count / (std::size_t(threads) * 8) + 1));
     std::atomic<std::size_t> next{0}, done{0};
     std::atomic<bool> failed{false};
+    // Guided chunks: up to 16 items per claim while much is left, fewer towards the end, so
+    // no thread idles long waiting for another's last chunk (the bake runs ~40 of these
+    // loops, each ending on such a barrier).
+    const std::size_t maxChunk =
+        std::max<std::size_t>(1, std::min<std::size_t>(16, count / (std::size_t(threads) * 8) + 1));
+    auto claim = [&](std::size_t& begin, std::size_t& end) {
+        std::size_t cur = next.load(std::memory_order_relaxed);
+        for (;;) {
+            if (cur >= count) return false;
+            const std::size_t left = count - cur;
+            const std::size_t n =
+                std::max<std::size_t>(1, std::min(maxChunk, left / (std::size_t(threads) * 4)));
+            if (next.compare_exchange_weak(cur, cur + n, std::memory_order_relaxed)) {
+                begin = cur;
+                end = cur + n;
+                return true;
+            }
+        }
+    };
     std::exception_ptr error;
     std::mutex m;
     std::condition_variable cv;
@@ -30,10 +47,8 @@ void parallelFor(std::size_t count, int threads, const std::function<void(std::s
 
     auto worker = [&](int t) {
         try {
-            while (!failed.load(std::memory_order_relaxed)) {
-                std::size_t begin = next.fetch_add(chunk);
-                if (begin >= count) break;
-                std::size_t end = std::min(count, begin + chunk);
+            std::size_t begin = 0, end = 0;
+            while (!failed.load(std::memory_order_relaxed) && claim(begin, end)) {
                 for (std::size_t i = begin; i < end; ++i)
                     body(i, t);
                 done.fetch_add(end - begin, std::memory_order_relaxed);

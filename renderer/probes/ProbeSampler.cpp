@@ -2,8 +2,10 @@
 
 #include "core/Error.h"
 #include "probes/Octahedral.h"
+#include "probes/ParallelFor.h"
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace pb::probes {
@@ -13,6 +15,20 @@ namespace {
 // floor() for the texel math: an int conversion (libm's floor is a call without SSE4.1).
 constexpr std::size_t kIrrTileFloats = kIrradianceTile * kIrradianceTile * 3;
 constexpr std::size_t kVisTileFloats = kVisibilityTile * kVisibilityTile * 2;
+
+// GCC/Clang vector type for the fetches: lane-wise IEEE operations, as scalar code.
+typedef float Float4 __attribute__((vector_size(16)));
+inline Float4 load4(const float* p) {
+    Float4 v;
+    std::memcpy(&v, p, sizeof(v));
+    return v;
+}
+inline Float4 splat(float x) {
+    return Float4{x, x, x, x};
+}
+// load4 of an irradiance texel's RGB reads one float past it: the tile arrays keep that much
+// padding after the last tile.
+constexpr std::size_t kTilePadding = 4;
 
 inline int floorToInt(float v) {
     int i = int(v);
@@ -44,43 +60,37 @@ inline void bilinear(const ProbeTexture& t, float x, float y, int layer, float* 
     }
 }
 
-// GL_LINEAR inside one tile of T x T texels, CH floats each, at tile-local continuous texel
-// coordinates. Valid coordinates (octahedral interior + 1) keep x0, y0 in [0, T-2]; the clamp
-// only guards against NaN input.
-template <int CH, int T>
-inline void tileBilinear(const float* tile, float lx, float ly, float* out) {
-    const TileFootprint fp = tileFootprint(lx, ly, T);
-    const float ax = fp.fx, by = fp.fy;
-    const float* t00 = tile + (fp.y0 * T + fp.x0) * CH;
-    const float* t01 = t00 + T * CH;
-    for (int c = 0; c < CH; ++c) {
-        float top = t00[c] + (t00[CH + c] - t00[c]) * ax;
-        float bottom = t01[c] + (t01[CH + c] - t01[c]) * ax;
-        out[c] = top + (bottom - top) * by;
-    }
-}
-
-// Hints the two texel rows a tileBilinear at (lx, ly) will read into the cache.
-template <int CH, int T> inline void prefetchTexels(const float* tile, glm::vec2 l) {
-    const TileFootprint fp = tileFootprint(l.x, l.y, T);
-    const float* p = tile + (fp.y0 * T + fp.x0) * CH;
-    __builtin_prefetch(p);
-    __builtin_prefetch(p + T * CH);
-}
-
-// Tile-major copy of a texture array: probe after probe, `channels` of its channels.
-std::vector<float> copyTiles(const ProbeVolume& v, const ProbeTexture& t, int tile, int channels) {
-    std::vector<float> out(std::size_t(v.probeCount()) * std::size_t(tile * tile * channels));
-    float* dst = out.data();
-    for (int p = 0; p < v.probeCount(); ++p) {
-        glm::ivec3 c = v.probeCoords(p);
-        for (int y = 0; y < tile; ++y)
-            for (int x = 0; x < tile; ++x) {
-                const float* src = t.at(c.x * tile + x, c.z * tile + y, c.y);
+// Tile-major copy of a texture array: probe after probe, `channels` of its channels. A tile
+// row is contiguous in the source layer, so it is copied row by row. The bake builds a
+// sampler per pass between its parallel loops (the visibility alone is 16 MiB for 32x8x32):
+// large volumes are copied on all cores, into memory that was not zeroed first.
+HugePageVector<float> copyTiles(const ProbeVolume& v, const ProbeTexture& t, int tile,
+                                int channels) {
+    const std::size_t tileFloats = std::size_t(tile * tile * channels);
+    HugePageVector<float> out(std::size_t(v.probeCount()) * tileFloats + kTilePadding);
+    std::fill(out.end() - kTilePadding, out.end(), 0.0f);
+    const std::size_t stride = std::size_t(t.shape.channels);
+    const int threads = v.probeCount() >= 4096 ? resolveThreadCount(0) : 1;
+    parallelFor(std::size_t(v.probeCount()), threads, [&](std::size_t p, int) {
+        const glm::ivec3 c = v.probeCoords(int(p));
+        float* dst = out.data() + p * tileFloats;
+        for (int y = 0; y < tile; ++y) {
+            const float* src =
+                t.texels.data() +
+                ((std::size_t(c.y) * std::size_t(t.shape.height) + std::size_t(c.z * tile + y)) *
+                     std::size_t(t.shape.width) +
+                 std::size_t(c.x * tile)) *
+                    stride;
+            if (std::size_t(channels) == stride) {
+                std::copy(src, src + std::size_t(tile) * stride, dst);
+                dst += std::size_t(tile) * stride;
+                continue;
+            }
+            for (int x = 0; x < tile; ++x, src += stride)
                 for (int ch = 0; ch < channels; ++ch)
                     *dst++ = src[ch];
-            }
-    }
+        }
+    });
     return out;
 }
 
@@ -231,6 +241,11 @@ struct ProbeSampler::Lookup {
     alignas(16) float px[8], py[8], pz[8]; // probe position (local)
     alignas(16) float dist[8];             // |biased - probe|
     alignas(16) float vx[8], vy[8];        // visibility tile coordinates
+    // tileFootprint of each corner's visibility fetch (x0, y0 as a float offset in its tile)
+    // and of the irradiance fetch (the same texel coordinate in every corner's tile).
+    alignas(16) float visFx[8], visFy[8];
+    alignas(16) int visOffset[8];
+    TileFootprint irrFoot;
     const float* visTile[8];
     const float* irrTile[8];
     bool live[8];
@@ -346,12 +361,30 @@ void ProbeSampler::prepare(int vi, const glm::vec3& pos, const glm::vec3& normal
         k.vx[i] = ((lower ? fu : u) * 0.5f + 0.5f) * interior + 1.0f;
         k.vy[i] = ((lower ? fv : v) * 0.5f + 0.5f) * interior + 1.0f;
     }
+    // tileFootprint() of the 8 visibility fetches (a SIMD loop: the same operations), and
+    // of the irradiance fetch once (its coordinate is the same in every corner's tile).
+    for (int i = 0; i < 8; ++i) {
+        const float a = k.vx[i] - 0.5f, b = k.vy[i] - 0.5f;
+        int x0 = int(a), y0 = int(b);
+        x0 = float(x0) > a ? x0 - 1 : x0;
+        y0 = float(y0) > b ? y0 - 1 : y0;
+        k.visFx[i] = a - float(x0);
+        k.visFy[i] = b - float(y0);
+        x0 = std::min(std::max(x0, 0), kVisibilityTile - 2);
+        y0 = std::min(std::max(y0, 0), kVisibilityTile - 2);
+        k.visOffset[i] = (y0 * kVisibilityTile + x0) * 2;
+    }
+    k.irrFoot = tileFootprint(k.irrCoord.x, k.irrCoord.y, kIrradianceTile);
+    const int irrOffset = (k.irrFoot.y0 * kIrradianceTile + k.irrFoot.x0) * 3;
     for (int i = 0; i < 8; ++i) {
         k.visTile[i] = f.visibilityTiles.data() + std::size_t(index[i]) * kVisTileFloats;
         k.irrTile[i] = f.irradianceTiles.data() + std::size_t(index[i]) * kIrrTileFloats;
         if (!k.live[i]) continue;
-        prefetchTexels<2, kVisibilityTile>(k.visTile[i], {k.vx[i], k.vy[i]});
-        prefetchTexels<3, kIrradianceTile>(k.irrTile[i], k.irrCoord);
+        const float* v = k.visTile[i] + k.visOffset[i];
+        __builtin_prefetch(v);
+        __builtin_prefetch(v + kVisibilityTile * 2);
+        __builtin_prefetch(k.irrTile[i] + irrOffset);
+        __builtin_prefetch(k.irrTile[i] + irrOffset + kIrradianceTile * 3);
         if (trace) recordFootprints(trace->corners[i], {k.vx[i], k.vy[i]}, k.irrCoord);
     }
     if (trace) trace->probesRead = true;
@@ -369,14 +402,31 @@ IrradianceSample ProbeSampler::finish(const Lookup& k) const {
     const Frame& f = *k.frame;
     const glm::vec3 &p = k.p, &n = k.n, &alpha = k.alpha;
 
-    // The texel fetches (scalar: they are gathers).
-    alignas(16) float mean[8], meanSq[8], irr[8][3];
+    // The texel fetches: GL_LINEAR inside the tile (TileFootprint), lane by lane on 4-float
+    // vectors: top/bottom row lerps along x, then along y (each lane
+    // computes exactly the scalar expression, so the bits are the same).
+    alignas(16) float mean[8], meanSq[8];
+    Float4 irr[8];
+    const int irrOffset = (k.irrFoot.y0 * kIrradianceTile + k.irrFoot.x0) * 3;
+    const Float4 irrFx = splat(k.irrFoot.fx), irrFy = splat(k.irrFoot.fy);
     for (int i = 0; i < 8; ++i) {
-        float vis[2];
-        tileBilinear<2, kVisibilityTile>(k.visTile[i], k.vx[i], k.vy[i], vis);
+        // Visibility: a row of the 2x2 footprint is 4 floats (mean, meanSq of x0 and x0+1).
+        const float* v = k.visTile[i] + k.visOffset[i];
+        const Float4 r0 = load4(v), r1 = load4(v + kVisibilityTile * 2);
+        const Float4 left = __builtin_shufflevector(r0, r1, 0, 1, 4, 5);  // x0: top, bottom
+        const Float4 right = __builtin_shufflevector(r0, r1, 2, 3, 6, 7); // x0 + 1
+        const Float4 rows = left + (right - left) * splat(k.visFx[i]);    // top, bottom
+        const Float4 bottom = __builtin_shufflevector(rows, rows, 2, 3, 2, 3);
+        const Float4 vis = rows + (bottom - rows) * splat(k.visFy[i]);
         mean[i] = vis[0];
         meanSq[i] = vis[1];
-        tileBilinear<3, kIrradianceTile>(k.irrTile[i], k.irrCoord.x, k.irrCoord.y, irr[i]);
+        // Irradiance: RGB of x0 at t, of x0 + 1 at t + 3 (lane 3 is a neighbour's, unused).
+        const float* t = k.irrTile[i] + irrOffset;
+        const Float4 t00 = load4(t), t10 = load4(t + 3);
+        const Float4 t01 = load4(t + kIrradianceTile * 3), t11 = load4(t + kIrradianceTile * 3 + 3);
+        const Float4 top = t00 + (t10 - t00) * irrFx;
+        const Float4 bot = t01 + (t11 - t01) * irrFx;
+        irr[i] = top + (bot - top) * irrFy;
     }
 
     // The weights, per corner (SIMD).
@@ -411,16 +461,17 @@ IrradianceSample ProbeSampler::finish(const Lookup& k) const {
         weight[i] = w * std::max(tri, kMinTrilinear);
     }
 
-    // 4e. Sum in corner order (the order fixes the rounding).
-    glm::vec3 sumE(0.0f);
+    // 4e. Sum in corner order (the order fixes the rounding; per lane as glm's vec3 math).
+    Float4 sum4 = splat(0.0f);
     float sumW = 0.0f;
     for (int i = 0; i < 8; ++i) {
         if (!k.live[i]) continue;
         const float w = weight[i];
-        sumE += w * glm::vec3(irr[i][0], irr[i][1], irr[i][2]);
+        sum4 += splat(w) * irr[i];
         sumW += w;
         ++out.probes;
     }
+    const glm::vec3 sumE(sum4[0], sum4[1], sum4[2]);
 
     // 5. Normalise, then apply the fade.
     if (!(sumW > 0.0f)) {

@@ -11,6 +11,7 @@
 // Outside every volume the result is irradiance 0 with weight 0: the caller decides the
 // fallback (e.g. ambient). All probes invalid, or all weights zero, also give weight 0 and
 // irradiance 0 - never NaN.
+#include "probes/HugePages.h"
 #include "probes/ProbeSet.h"
 
 #include <algorithm>
@@ -124,9 +125,9 @@ private:
         SamplerVolume src;
         glm::mat3 toLocal;
         glm::vec3 center, half, cell, invCell, fadeWidth;
-        glm::vec3 gridOrigin, gridStep;     // probe (i,j,k) at gridOrigin + (i,j,k) * gridStep
-        std::vector<float> irradianceTiles; // per probe: 8x8 texels, RGB
-        std::vector<float> visibilityTiles; // per probe: 16x16 texels, mean + meanSq
+        glm::vec3 gridOrigin, gridStep;        // probe (i,j,k) at gridOrigin + (i,j,k) * gridStep
+        HugePageVector<float> irradianceTiles; // per probe: 8x8 texels, RGB
+        HugePageVector<float> visibilityTiles; // per probe: 16x16 texels, mean + meanSq
         glm::ivec3 counts;
         float minCell, invMaxDistance, boxVolume;
         std::uint32_t firstKey; // localityKey of the volume's probe 0

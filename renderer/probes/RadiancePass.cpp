@@ -13,17 +13,22 @@ void RadianceSlab::reset(std::size_t probes, int rays) {
     radiance_.resize(n);
     hits_.resize(n);
     pending_.resize(probes);
+    keys_.resize(probes);
     for (auto& p : pending_)
         p.clear();
+    for (auto& k : keys_)
+        k.clear();
 }
 
 void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& sc,
                          const std::vector<scene::Light>& lights, const glm::mat3& rot,
-                         const glm::vec3& origin, const std::vector<glm::vec3>& dirs, bool indirect,
-                         RayCounters& counters) {
+                         const glm::vec3& origin, const std::vector<glm::vec3>& dirs,
+                         const ProbeSampler* previous, RayCounters& counters) {
     const std::size_t n = std::size_t(rays_), first = slot * n;
     std::vector<Pending>& pending = pending_[slot];
+    std::vector<std::uint32_t>& keys = keys_[slot];
     pending.clear();
+    keys.clear();
     const float invPi = float(1.0 / M_PI);
     // All rays first, then the shading: the face normal of each hit is prefetched while the
     // following rays are traced (results are per ray: the order of the calls does not matter).
@@ -51,10 +56,11 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
                 if (surf.albedo != glm::vec3(0.0f)) {
                     const glm::vec3 x = origin + d * h.t;
                     glm::vec3 e = directIrradiance(rs, sc, lights, x, nrm, counters.shadow);
-                    if (indirect) // finished in convolve(), once lookUp() has E_indirect
+                    if (previous) { // finished in convolve(), once lookUp() has E_indirect
                         pending.push_back(
                             {{x, nrm, -d}, e, surf.albedo * invPi, std::uint32_t(first + i)});
-                    else
+                        keys.push_back(previous->localityKey(x));
+                    } else
                         L += surf.albedo * invPi * e;
                 }
             }
@@ -67,23 +73,20 @@ void RadianceSlab::lookUp(const ProbeSampler& previous, int threads) {
     // Counting sort of the pending hits by locality key (the grid cell of the previous pass
     // they fall in); an entry of `order` is slot << 32 | index within the slot.
     const std::size_t keys = previous.localityKeyCount();
-    std::vector<std::uint32_t> start(keys + 1, 0), key;
+    // The keys were computed by trace().
+    std::vector<std::uint32_t> start(keys + 1, 0);
     std::size_t total = 0;
-    for (const auto& p : pending_)
-        total += p.size();
-    key.reserve(total);
-    for (const auto& p : pending_)
-        for (const Pending& h : p) {
-            key.push_back(previous.localityKey(h.query.pos));
-            ++start[key.back() + 1];
-        }
+    for (const auto& slotKeys : keys_) {
+        total += slotKeys.size();
+        for (std::uint32_t k : slotKeys)
+            ++start[k + 1];
+    }
     for (std::size_t k = 0; k < keys; ++k)
         start[k + 1] += start[k];
     std::vector<std::uint64_t> order(total);
-    std::size_t i = 0;
-    for (std::size_t s = 0; s < pending_.size(); ++s)
-        for (std::size_t j = 0; j < pending_[s].size(); ++j)
-            order[start[key[i++]]++] = std::uint64_t(s) << 32 | j;
+    for (std::size_t s = 0; s < keys_.size(); ++s)
+        for (std::size_t j = 0; j < keys_[s].size(); ++j)
+            order[start[keys_[s][j]]++] = std::uint64_t(s) << 32 | j;
 
     indirect_.resize(radiance_.size());
     constexpr std::size_t kChunk = 2048;

@@ -37,12 +37,13 @@ public:
     // Room for `probes` probes of `rays` rays each; forgets the previous slab.
     void reset(std::size_t probes, int rays);
     // Phase 1, one slot per probe (slots are independent: any thread). Traces the probe's
-    // rays from probeWorld (directions localDirs rotated by volumeRotation); with `indirect`,
-    // hits that need E_indirect are queued for lookUp.
+    // rays from probeWorld (directions localDirs rotated by volumeRotation); with a
+    // `previous` pass, hits that need E_indirect are queued for lookUp with their locality
+    // key (computed here, on the tracing threads, so lookUp's sort stays a short serial step).
     void trace(std::size_t slot, const RayScene& rs, const Scenario& sc,
                const std::vector<scene::Light>& lights, const glm::mat3& volumeRotation,
-               const glm::vec3& probeWorld, const std::vector<glm::vec3>& localDirs, bool indirect,
-               RayCounters& counters);
+               const glm::vec3& probeWorld, const std::vector<glm::vec3>& localDirs,
+               const ProbeSampler* previous, RayCounters& counters);
     // Phase 2, once per slab after every trace: E_indirect of every queued hit, sorted by
     // the previous pass's grid cell, on `threads` threads.
     void lookUp(const ProbeSampler& previous, int threads);
@@ -56,10 +57,11 @@ private:
         std::uint32_t ray; // slot * rays + ray index
     };
     int rays_ = 0;
-    std::vector<RayHit> hits_;                  // per ray, slot-major
-    std::vector<glm::vec4> radiance_;           // per ray, slot-major: RGB + unused
-    std::vector<std::vector<Pending>> pending_; // per slot
-    std::vector<glm::vec3> indirect_;           // E_indirect per ray (pending hits only)
+    std::vector<RayHit> hits_;                     // per ray, slot-major
+    std::vector<glm::vec4> radiance_;              // per ray, slot-major: RGB + unused
+    std::vector<std::vector<Pending>> pending_;    // per slot
+    std::vector<std::vector<std::uint32_t>> keys_; // per slot: localityKey of each pending hit
+    std::vector<glm::vec3> indirect_;              // E_indirect per ray (pending hits only)
 };
 
 } // namespace pb::probes
