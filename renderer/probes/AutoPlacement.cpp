@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "probes/MemoryReport.h"
 #include "probes/RayScene.h"
+#include "probes/SparseStorage.h"
 
 #include <cmath>
 #include <limits>
@@ -72,9 +73,15 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
     std::vector<WorldTriangle> triangles;
     bool defaultBudget = false;
     double budget = req.budgetBytes;
+    if (adaptive || req.sparse) triangles = staticBakeTriangles(scene);
+    // What the bake will store of these volumes, as the memory report counts it.
+    auto storedBytes = [&](const std::vector<ProbeVolume>& volumes) {
+        if (!req.sparse) return memoryReport(volumes, req.format).total.storedTotal();
+        const std::vector<std::size_t> kept = sparseProbeCounts(volumes, triangles);
+        return memoryReport(volumes, req.format, &kept).total.storedTotal();
+    };
     if (adaptive) {
         rays = std::make_unique<RayScene>(scene);
-        triangles = staticBakeTriangles(scene);
         if (!(spacing > 0.0f)) {
             // Default: the memory of the default uniform grid, spent where the scene needs it,
             // starting from half the uniform spacing near surfaces.
@@ -110,7 +117,7 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
         }
         for (const ProbeVolume& v : r.volumes)
             r.probes += v.probeCount();
-        r.bytes = memoryReport(r.volumes, req.format).total.stored.total();
+        r.bytes = storedBytes(r.volumes);
         return r;
     };
     auto fits = [&](const AutoPlacementResult& r) {

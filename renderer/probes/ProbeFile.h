@@ -5,7 +5,9 @@
 //   magic "PBPROBES", u32 version, u64 file size, u64 input hash, bake settings, tile sizes,
 //   volumes, scenarios, per-volume probe states, per-volume visibility bytes, per-scenario
 //   per-volume irradiance bytes (each texture as u64 size + bytes in the storage format),
-//   u64 FNV-1a checksum of every byte before it.
+//   u64 FNV-1a checksum of every byte before it. Version 2 adds, after the probe states, the
+//   sparse storage record (per volume dense / sparse + presence bitmap; sparse volumes store
+//   only their present probes' tiles, packed: SparseLayout.h). Version 1 files still read.
 // Written atomically (temporary file + rename). Reading checks magic, version, size and
 // checksum before parsing, and every size while parsing: a wrong, truncated or corrupted
 // file gives a one-line pb::Error naming the file, never a crash or garbage.
@@ -18,7 +20,8 @@
 namespace pb::probes {
 
 inline constexpr char kProbeFileMagic[8] = {'P', 'B', 'P', 'R', 'O', 'B', 'E', 'S'};
-inline constexpr std::uint32_t kProbeFileVersion = 1;
+inline constexpr std::uint32_t kProbeFileVersion = 2;      // 2: the sparse storage record
+inline constexpr std::uint32_t kProbeFileFirstVersion = 1; // oldest version still read
 
 std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set);
 // `path` only names the source in errors.
