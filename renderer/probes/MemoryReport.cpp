@@ -32,9 +32,9 @@ nlohmann::json volumeJson(const VolumeMemory& v, bool sparse) {
     nlohmann::json j = {{"name", v.name},
                         {"counts", {v.counts.x, v.counts.y, v.counts.z}},
                         {"probes", v.probes},
-                        {"uncompressed", bytesJson(v.uncompressed, v.probes)},
-                        {"bc6h", bytesJson(v.bc6h, v.probes)},
-                        {"stored", bytesJson(v.stored, v.probes)},
+                        {"uncompressed", bytesJson(v.uncompressed, v.storedProbes)},
+                        {"bc6h", bytesJson(v.bc6h, v.storedProbes)},
+                        {"stored", bytesJson(v.stored, v.storedProbes)},
                         {"stored_probes", v.storedProbes},
                         {"indirection", v.indirection},
                         {"stored_total", v.storedTotal()}};
@@ -124,7 +124,9 @@ std::string formatMemoryReport(const MemoryReport& r) {
     std::ostringstream s;
     auto line = [&](const VolumeMemory& v) {
         char buf[512];
-        std::size_t p = v.probes ? v.probes : 1;
+        // Per stored probe: a sparse volume's tiles (packing padding included) over its stored
+        // probes, not over the grid.
+        std::size_t p = std::max<std::size_t>(v.storedProbes ? v.storedProbes : v.probes, 1);
         std::snprintf(
             buf, sizeof buf, "%-16s %-12s %8zu  %10s (%zu+%zu B/probe)  %10s (%zu+%zu B/probe)\n",
             v.name.c_str(),

@@ -14,6 +14,7 @@
 #include "frame/GiPointEvaluator.h"
 #include "frame/Readback.h"
 #include "passes/GiApplyPass.h"
+#include "passes/GiVolumeLod.h"
 #include "probes/SparseStorage.h"
 #include "probes/StaticTriangles.h"
 
@@ -109,6 +110,9 @@ TEST_F(GiSparseTest, SparseSetRendersTheDenseImage) {
     ASSERT_LT(sparse.storedCount(), dense.probeCount() - invalid)
         << "no valid probe was left out: the test would not exercise the packing";
     EXPECT_LT(render::GpuProbes(sparse, 0).bytes(), render::GpuProbes(dense, 0).bytes());
+    // The memory estimates (gi.volume_lod budgets, the cost model) count what is uploaded.
+    EXPECT_EQ(render::GpuProbes(sparse, 0).bytes(),
+              render::gpuVolumeBytes(sparse, 0) + render::gpuVolumeBytes(sparse, 1));
 
     const image::ImageF expected = renderGi(dense), got = renderGi(sparse);
     ASSERT_EQ(got.pixels.size(), expected.pixels.size());
