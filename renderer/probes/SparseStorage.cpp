@@ -42,9 +42,10 @@ std::vector<std::uint8_t> surfaceCornerProbes(const ProbeVolume& v, bool root,
     std::vector<std::uint8_t> needed(std::size_t(v.probeCount()), 0);
     const glm::vec3 cell = v.cellSize(), h = v.halfExtents;
     const glm::vec3 fade = root ? kEdgeFadeCells * cell : glm::vec3(0.0f);
-    // Boxes grow by a little so a point on a cell face marks the cells on both sides, whatever
-    // the sampler's float rounding decides.
-    const glm::vec3 eps = 1e-3f * cell;
+    // Cells grow by kSurfaceCellMargin so a surface on or near a cell face keeps the cells on
+    // both sides: shading positions sit a little off their surface (GBuffer depth precision,
+    // the placement benchmark's 1e-4 scene offset) and the sampler's rounding decides the cell.
+    const glm::vec3 eps = kSurfaceCellMargin * cell;
     const glm::ivec3 cells = glm::max(v.counts - 1, glm::ivec3(1));
     // Extent of cell `b` along axis a, widened into the fade margin at the volume's faces.
     auto cellLo = [&](int a, int b) {

@@ -17,6 +17,10 @@
 
 namespace pb::probes {
 
+// A surface within this fraction of a cell of a cell's face counts for the cell behind the
+// face too (SparseStorage.cpp says why).
+constexpr float kSurfaceCellMargin = 0.01f;
+
 // Per probe of `v`: 1 when it is a corner of a cell with surface in it. `root`: the volume
 // has no parent (its influence reaches kEdgeFadeCells beyond its box).
 std::vector<std::uint8_t> surfaceCornerProbes(const ProbeVolume& v, bool root,
