@@ -168,7 +168,8 @@ std::string formatMemoryReport(const MemoryReport& r) {
           << " probes far from every surface, " << t.sparse.invalid
           << " inside geometry; storing only the other " << needed << " would take "
           << formatBytes(scaled(t.stored.total(), needed, t.probes)) << " as "
-          << formatName(r.format) << " (bricks and an index not counted)\n";
+          << formatName(r.format) << " (an estimate from the visibility; `bake --sparse` keeps "
+          << "the probes at surface cells)\n";
     }
     return s.str();
 }
