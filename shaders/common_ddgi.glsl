@@ -52,7 +52,7 @@ mediump vec3 ddgiHalf(highp vec3 v) {
 uniform DDGI_IRRADIANCE_PRECISION sampler2DArray u_ddgiIrradiance; // RGB = E, tiles of DDGI_IRR_TILE^2 texels
 uniform DDGI_PROBE_DATA_PRECISION sampler2DArray u_ddgiVisibility; // RG = mean, mean^2 of distance / maxDistance
 uniform highp sampler2DArray u_ddgiState;      // per probe: xyz relocation (local), w = tile
-uniform ivec2 u_ddgiTileGrid;     // tiles per row, rows per layer of the probe textures
+uniform ivec2 u_ddgiTileGrid;     // sparse: tiles per row, rows per layer; dense: (0, 0)
 uniform vec3 u_ddgiCenter;        // volume centre in the caller's space
 uniform mat3 u_ddgiToLocal;       // R^T: caller's axes -> volume axes
 uniform vec3 u_ddgiHalf;          // half extents
@@ -105,9 +105,10 @@ ivec3 ddgiCorner(int i) {
 #endif
 }
 
-// The probe's tile (column, row, layer) from its state's w: +-(slot + 1), 0 = absent. Sparse
-// volumes pack their stored tiles (renderer/probes/SparseLayout.h); dense ones have slot =
-// probe index, i.e. tile (i, k, layer j). Riding on the state fetch costs no extra fetch.
+// The tile (column, row, layer) of a sparse volume's probe from its state's w: +-(slot + 1),
+// 0 = absent; the stored tiles are packed (renderer/probes/SparseLayout.h). Riding on the
+// state fetch costs no extra fetch, only these integer operations; dense volumes skip them
+// (a uniform branch): their probe (i, j, k) owns tile (i, k, layer j).
 ivec3 ddgiTile(float stateW) {
     int slot = int(abs(stateW) + 0.5) - 1;
     return ivec3(slot % u_ddgiTileGrid.x, (slot / u_ddgiTileGrid.x) % u_ddgiTileGrid.y,
@@ -122,7 +123,10 @@ hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, hvec3 n, vec3 biased, hvec3 a
     if (any(greaterThanEqual(q, u_ddgiCounts))) return -1.0;
     vec4 state = texelFetch(u_ddgiState, ivec3(q.x, q.z, q.y), 0);
     if (state.w < 0.5) return -1.0;
-    tile = ddgiTile(state.w);
+    if (u_ddgiTileGrid.x > 0)
+        tile = ddgiTile(state.w);
+    else
+        tile = ivec3(q.x, q.z, q.y);
     vec3 probe = u_ddgiGridOrigin + vec3(q) * u_ddgiGridStep + state.xyz;
 
     // 4a. Wrap shading: probes behind the surface count less (never zero).

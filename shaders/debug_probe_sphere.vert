@@ -31,9 +31,9 @@ void main() {
     vec3 local = u_ddgiGridOrigin + vec3(q) * u_ddgiGridStep + state.xyz + dir * u_sphereRadius;
     vec3 rel = u_ddgiCenter + transpose(u_ddgiToLocal) * local;
     v_localDir = dir;
-    int slot = int(abs(state.w) + 0.5) - 1;
-    v_tile = ivec3(slot % u_ddgiTileGrid.x, (slot / u_ddgiTileGrid.x) % u_ddgiTileGrid.y,
-                   slot / (u_ddgiTileGrid.x * u_ddgiTileGrid.y));
+    int slot = int(abs(state.w) + 0.5) - 1; // common_ddgi.glsl's ddgiTile
+    ivec2 grid = u_ddgiTileGrid.x > 0 ? u_ddgiTileGrid : u_ddgiCounts.xz; // (0, 0): dense
+    v_tile = ivec3(slot % grid.x, (slot / grid.x) % grid.y, slot / (grid.x * grid.y));
     v_valid = state.w;
     // Absent probes (sparse storage, w = 0) have no data: no sphere (outside the clip volume).
     gl_Position = slot < 0 ? vec4(2.0, 2.0, 2.0, 1.0) : u_clipFromRel * vec4(rel, 1.0);

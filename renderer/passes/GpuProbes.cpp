@@ -149,7 +149,7 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
             throw Error(what + ": probe state count does not match its grid");
         // Sparse volumes upload only their stored tiles, packed; dense ones as they are.
         const std::vector<probes::ProbeState>& states = set.states[size_t(vi)];
-        const bool sparse = probes::isSparse(states);
+        const bool sparse = g.sparse = probes::isSparse(states);
         g.packedCounts =
             sparse ? probes::packedCounts(probes::storedCount(states), v.counts) : v.counts;
         probes::ProbeTexture scratch;
@@ -205,7 +205,10 @@ void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,
     program.set("u_ddgiGridOrigin", g.gridOrigin);
     program.set("u_ddgiGridStep", g.gridStep);
     program.set("u_ddgiCounts", g.counts);
-    program.set("u_ddgiTileGrid", glm::ivec2(g.packedCounts.x, g.packedCounts.z));
+    // (0, 0) tells the shader the volume is dense: tile = probe, no indirection arithmetic.
+    // A packed grid can have the dense grid's shape (one probe absent): the flag decides.
+    program.set("u_ddgiTileGrid",
+                g.sparse ? glm::ivec2(g.packedCounts.x, g.packedCounts.z) : glm::ivec2(0));
     program.set("u_ddgiBiasDistance", g.biasDistance);
     program.set("u_ddgiInvMaxDistance", g.invMaxDistance);
     program.set("u_ddgiIrradianceScale", irradianceScale);

@@ -30,6 +30,7 @@ struct GpuProbeVolume {
     glm::vec3 half{0.0f}, fadeWidth{0.0f}, invCell{0.0f}, gridOrigin{0.0f}, gridStep{0.0f};
     glm::ivec3 counts{1};
     glm::ivec3 packedCounts{1}; // the tile grid of the textures (= counts unless sparse)
+    bool sparse = false;        // tiles packed, found through the state's w
     float biasDistance = 0, invMaxDistance = 0, boxVolume = 0;
     std::size_t bytes() const { return irradiance.bytes() + visibility.bytes() + state.bytes(); }
 };
