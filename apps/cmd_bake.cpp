@@ -7,6 +7,7 @@
 #include "probes/MemoryReport.h"
 #include "probes/ProbeFile.h"
 #include "probes/RayScene.h"
+#include "probes/SparseStorage.h"
 #include "probes/VolumeFile.h"
 
 #include <cmath>
@@ -36,7 +37,7 @@ struct BakeArgs {
     std::string format = "rgba16f";
     std::uint64_t seed = 1;
     std::string out;
-    bool json = false, force = false, noRelocate = false;
+    bool json = false, force = false, noRelocate = false, sparse = false;
     float backfaceThreshold = 0.25f;
 };
 
@@ -151,6 +152,7 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
         req.adaptive.threads = a.threads;
         req.budgetBytes = a.budgetMib * 1024.0 * 1024.0;
         req.format = format;
+        req.sparse = a.sparse;
         placement.mode = autoModeName(mode);
         placement.result = placeAutoVolumes(s, req);
         for (const std::string& note : placement.result.notes)
@@ -165,7 +167,10 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
         placement.result.volumes = vf.volumes;
         for (const ProbeVolume& v : vf.volumes)
             placement.result.probes += v.probeCount();
-        placement.result.bytes = memoryReport(vf.volumes, format).total.stored.total();
+        std::vector<std::size_t> kept;
+        if (a.sparse) kept = sparseProbeCounts(vf.volumes, staticBakeTriangles(s));
+        placement.result.bytes =
+            memoryReport(vf.volumes, format, a.sparse ? &kept : nullptr).total.storedTotal();
         if (a.budgetMib > 0.0 && double(placement.result.bytes) > a.budgetMib * 1024.0 * 1024.0)
             throw Error(a.volumes + ": the volumes need " + formatBytes(placement.result.bytes) +
                         " as " + formatName(format) + ", over --probe-budget-mib " +
@@ -179,6 +184,7 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
     r.settings.relocate = !a.noRelocate;
     r.settings.backfaceThreshold = a.backfaceThreshold;
     r.threads = a.threads;
+    r.sparse = a.sparse;
     return r;
 }
 
@@ -224,6 +230,7 @@ void printSummary(const BakeArgs& a, const PlacementInfo& placement, const Probe
                          {"seed", set.settings.seed},
                          {"probes", set.probeCount()},
                          {"invalid_probes", set.invalidCount()},
+                         {"stored_probes", set.storedCount()},
                          {"volumes", volumesJson(set)},
                          {"memory", memoryReportJson(mem)}};
         nlohmann::json sc = nlohmann::json::array();
@@ -291,9 +298,14 @@ void printSummary(const BakeArgs& a, const PlacementInfo& placement, const Probe
     std::cout << "memory (one scenario resident): " << formatBytes(mem.total.uncompressed.total())
               << " uncompressed, " << formatBytes(mem.total.bc6h.total()) << " bc6h; file holds "
               << set.scenarios.size() << " scenario(s) as " << formatName(set.format()) << "\n";
-    std::cout << "sparse-storage candidates: " << mem.total.sparse.far
-              << " probe(s) far from every surface, " << mem.total.sparse.invalid
-              << " inside geometry (stored; see `probebench memory --probes`)\n";
+    if (set.storedCount() < set.probeCount())
+        std::cout << "sparse storage: " << set.storedCount() << " of " << set.probeCount()
+                  << " probes stored, " << formatBytes(mem.total.storedTotal()) << " as "
+                  << formatName(set.format()) << " with the indirection\n";
+    else
+        std::cout << "sparse-storage candidates: " << mem.total.sparse.far
+                  << " probe(s) far from every surface, " << mem.total.sparse.invalid
+                  << " inside geometry (stored; --sparse drops what no surface reads)\n";
     if (!upToDate) std::cout << "wrote " << a.out << "\n";
 }
 
@@ -419,6 +431,11 @@ const RegisterCommand reg{{
                        "Back-face hit ratio above which a probe is invalid")
             ->capture_default_str();
         cmd.add_flag("--no-relocate", a->noRelocate, "Do not move probes out of geometry");
+        cmd.add_flag("--sparse", a->sparse,
+                     "Sparse storage: store only valid probes at the corners of grid cells that "
+                     "static surface passes through (no surface's lighting changes; dynamic "
+                     "objects in empty air get the fallback); --probe-budget-mib then counts "
+                     "only what is stored, so auto placement fits a finer spacing");
         cmd.add_option("--out", a->out,
                        "Probe file to write (reused when its inputs match); required unless "
                        "--write-volumes is given");

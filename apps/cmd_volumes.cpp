@@ -64,11 +64,12 @@ void printList(const probes::ProbeSet& set, const std::string& file) {
     std::printf("%s: %zu volume(s), %s\n", file.c_str(), set.volumes.size(),
                 probes::formatName(set.format()));
     std::printf("  %-20s %-16s %-12s %8s %9s\n", "volume", "parent", "probes", "spacing", "MiB");
-    for (const probes::ProbeVolume& v : set.volumes) {
+    for (std::size_t i = 0; i < set.volumes.size(); ++i) {
+        const probes::ProbeVolume& v = set.volumes[i];
         const std::string counts = std::to_string(v.counts.x) + "x" + std::to_string(v.counts.y) +
                                    "x" + std::to_string(v.counts.z);
         std::printf("  %-20s %-16s %-12s %8.3g %9.3f\n", v.name.c_str(), parentOf(v).c_str(),
-                    counts.c_str(), v.minCellSize(), mib(render::gpuVolumeBytes(v, set.format())));
+                    counts.c_str(), v.minCellSize(), mib(render::gpuVolumeBytes(set, i)));
     }
     std::printf("ranks: %s\n",
                 set.ranks ? (probes::volumeRanksPath(file) + " (" + set.ranks->views + ")").c_str()
@@ -109,12 +110,14 @@ int run(const VolumesArgs& a) {
     if (!a.rank) {
         if (a.json) {
             nlohmann::json j{{"probes_file", a.probes}, {"volumes", nlohmann::json::array()}};
-            for (const probes::ProbeVolume& v : set.volumes)
+            for (std::size_t i = 0; i < set.volumes.size(); ++i) {
+                const probes::ProbeVolume& v = set.volumes[i];
                 j["volumes"].push_back({{"name", v.name},
                                         {"parent", v.parent},
                                         {"counts", {v.counts.x, v.counts.y, v.counts.z}},
                                         {"min_spacing", v.minCellSize()},
-                                        {"bytes", render::gpuVolumeBytes(v, set.format())}});
+                                        {"bytes", render::gpuVolumeBytes(set, i)}});
+            }
             j["ranks"] = set.ranks ? probes::volumeRanksJson(*set.ranks) : nlohmann::json(nullptr);
             std::cout << j.dump(2) << "\n";
         } else {

@@ -8,7 +8,9 @@
 //   uniform    the default uniform grid (`--volumes auto-uniform`, about 4096 probes),
 //              --rays rays (default 64), 2 bounces;
 //   uniform/2  a uniform grid within half of `uniform`'s memory (auto-uniform + budget);
-//   adaptive   `--volumes auto` with --probe-budget-mib = half of `uniform`'s memory.
+//   adaptive   `--volumes auto` with --probe-budget-mib = half of `uniform`'s memory;
+//   uniform/2 sparse, adaptive sparse: the same two with `bake --sparse` (only probes at
+//              surface cells stored; the budget counts stored tiles + the indirection).
 // Error: N (--points, default 20000) area-weighted random points on the static triangles
 // (front side of single-sided triangles, a random side of double-sided ones), normal = view =
 // the face normal, each sampled with the CPU ProbeSampler in the candidate and in the
@@ -99,6 +101,7 @@ struct Candidate {
     std::string name;
     std::vector<ProbeVolume> volumes;
     int rays = 64;
+    bool sparse = false;
     ProbeSet set;
     double bakeSeconds = 0.0;
     std::vector<glm::vec3> values; // per point
@@ -112,6 +115,7 @@ void bake(const pb::scene::Scene& s, Candidate& c, int threads) {
     req.settings.raysPerProbe = c.rays;
     req.settings.bounces = 2;
     req.threads = threads;
+    req.sparse = c.sparse;
     auto t0 = Clock::now();
     c.set = bakeProbes(s, req);
     c.bakeSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -205,13 +209,29 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
     adaptive.rays = o.rays;
     adaptive.volumes = a.volumes;
 
+    // The same two under the same budget, stored sparse.
+    uniformReq.sparse = true;
+    Candidate uniformHalfSparse;
+    uniformHalfSparse.name = "uniform/2 sparse";
+    uniformHalfSparse.rays = o.rays;
+    uniformHalfSparse.sparse = true;
+    uniformHalfSparse.volumes = placeAutoVolumes(s, uniformReq).volumes;
+    adaptiveReq.sparse = true;
+    Candidate adaptiveSparse;
+    adaptiveSparse.name = "adaptive sparse";
+    adaptiveSparse.rays = o.rays;
+    adaptiveSparse.sparse = true;
+    AutoPlacementResult as = placeAutoVolumes(s, adaptiveReq);
+    adaptiveSparse.volumes = as.volumes;
+
     RayScene rays(s);
     const glm::vec3 refCell = ref.volumes[0].cellSize();
     std::vector<SurfacePoint> pts =
         surfacePoints(s, rays, o.points, std::min(refCell.x, std::min(refCell.y, refCell.z)));
 
     nlohmann::json rows = nlohmann::json::array();
-    std::vector<Candidate*> all{&ref, &uniform, &uniformHalf, &adaptive};
+    std::vector<Candidate*> all{&ref,      &uniform,           &uniformHalf,
+                                &adaptive, &uniformHalfSparse, &adaptiveSparse};
     for (Candidate* c : all) {
         bake(s, *c, o.threads);
         sampleAll(*c, pts);
@@ -223,7 +243,8 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
         rows.push_back({{"placement", c->name},
                         {"volumes", c->volumes.size()},
                         {"probes", m.total.probes},
-                        {"mib", double(m.total.stored.total()) / (1024.0 * 1024.0)},
+                        {"stored_probes", m.total.storedProbes},
+                        {"mib", double(m.total.storedTotal()) / (1024.0 * 1024.0)},
                         {"finest_spacing", std::max(cell.x, std::max(cell.y, cell.z))},
                         {"far_probes", m.total.sparse.far},
                         {"rays", c->rays},
@@ -237,6 +258,7 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
             {"points_on_surfaces", pts.size()},
             {"adaptive_place_s", placeSeconds},
             {"adaptive_notes", a.notes},
+            {"adaptive_sparse_notes", as.notes},
             {"rows", rows}};
 }
 
@@ -244,15 +266,16 @@ void printTable(const nlohmann::json& r) {
     std::printf("\n%s: %zu surface points (adaptive placement %.2f s)\n",
                 r["scene"].get<std::string>().c_str(), r["points_on_surfaces"].get<std::size_t>(),
                 r["adaptive_place_s"].get<double>());
-    std::printf("  %-10s %7s %8s %9s %8s %8s %5s %9s %7s %8s\n", "placement", "volumes", "probes",
-                "MiB", "finest", "far", "rays", "mean err", "nMAE", "bake s");
+    std::printf("  %-16s %7s %8s %8s %9s %8s %8s %5s %9s %7s %8s\n", "placement", "volumes",
+                "probes", "stored", "MiB", "finest", "far", "rays", "mean err", "nMAE", "bake s");
     for (const auto& row : r["rows"])
-        std::printf("  %-10s %7zu %8zu %9.2f %8.3f %8zu %5d %9.4f %7.4f %8.2f\n",
+        std::printf("  %-16s %7zu %8zu %8zu %9.2f %8.3f %8zu %5d %9.4f %7.4f %8.2f\n",
                     row["placement"].get<std::string>().c_str(), row["volumes"].get<std::size_t>(),
-                    row["probes"].get<std::size_t>(), row["mib"].get<double>(),
-                    row["finest_spacing"].get<double>(), row["far_probes"].get<std::size_t>(),
-                    row["rays"].get<int>(), row["mean_relative_error"].get<double>(),
-                    row["nmae"].get<double>(), row["bake_s"].get<double>());
+                    row["probes"].get<std::size_t>(), row["stored_probes"].get<std::size_t>(),
+                    row["mib"].get<double>(), row["finest_spacing"].get<double>(),
+                    row["far_probes"].get<std::size_t>(), row["rays"].get<int>(),
+                    row["mean_relative_error"].get<double>(), row["nmae"].get<double>(),
+                    row["bake_s"].get<double>());
 }
 
 } // namespace

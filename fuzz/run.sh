@@ -37,6 +37,13 @@ seed_probes() {
                 --scenario day --scenario night --format "$f" --out "$dir/cornell_$f.pbp" \
                 >/dev/null
     done
+    # Sparse storage (the storage record, packed tiles): half the probes in open air.
+    local yard=$out/probe-seed-yard.toml
+    printf '%s\n' '[[volume]]' 'name = "yard"' 'center = [0.0, 8.0, 0.0]' \
+        'half_extents = [4.0, 6.0, 4.0]' 'probes = [3, 4, 3]' >"$yard"
+    [ -f "$dir/courtyard_sparse_bc6h.pbp" ] ||
+        build/probebench bake --scene courtyard --volumes "$yard" --rays 16 --bounces 1 \
+            --format bc6h --sparse --out "$dir/courtyard_sparse_bc6h.pbp" >/dev/null
 }
 
 for t in "${targets[@]}"; do

@@ -57,7 +57,8 @@ mediump vec3 ddgiHalf(highp vec3 v) {
 #endif
 uniform DDGI_IRRADIANCE_PRECISION sampler2DArray u_ddgiIrradiance; // RGB = E, tiles of DDGI_IRR_TILE^2 texels
 uniform DDGI_PROBE_DATA_PRECISION sampler2DArray u_ddgiVisibility; // RG = mean, mean^2 of distance / maxDistance
-uniform highp sampler2DArray u_ddgiState;      // per probe: xyz relocation (local), w = valid
+uniform highp sampler2DArray u_ddgiState;      // per probe: xyz relocation (local), w = tile
+uniform ivec2 u_ddgiTileGrid;     // sparse: tiles per row, rows per layer; dense: (0, 0)
 uniform vec3 u_ddgiCenter;        // volume centre in the caller's space
 uniform mat3 u_ddgiToLocal;       // R^T: caller's axes -> volume axes
 uniform vec3 u_ddgiHalf;          // half extents
@@ -110,11 +111,28 @@ ivec3 ddgiCorner(int i) {
 #endif
 }
 
-// Visibility-and-position weight of probe q (README steps 4a-4d); < 0 when q is skipped.
-hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, hvec3 n, vec3 biased, hvec3 alpha) {
+// The tile (column, row, layer) of a sparse volume's probe from its state's w: +-(slot + 1),
+// 0 = absent; the stored tiles are packed (renderer/probes/SparseLayout.h). Riding on the
+// state fetch costs no extra fetch, only these integer operations; dense volumes skip them
+// (a uniform branch): their probe (i, j, k) owns tile (i, k, layer j).
+ivec3 ddgiTile(float stateW) {
+    int slot = int(abs(stateW) + 0.5) - 1;
+    return ivec3(slot % u_ddgiTileGrid.x, (slot / u_ddgiTileGrid.x) % u_ddgiTileGrid.y,
+                 slot / (u_ddgiTileGrid.x * u_ddgiTileGrid.y));
+}
+
+// Visibility-and-position weight of probe q (README steps 4a-4d); < 0 when q is skipped
+// (outside the grid, invalid or absent). `tile`: where q's texels are.
+hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, hvec3 n, vec3 biased, hvec3 alpha,
+                       out ivec3 tile) {
+    tile = ivec3(0);
     if (any(greaterThanEqual(q, u_ddgiCounts))) return -1.0;
     vec4 state = texelFetch(u_ddgiState, ivec3(q.x, q.z, q.y), 0);
     if (state.w < 0.5) return -1.0;
+    if (u_ddgiTileGrid.x > 0)
+        tile = ddgiTile(state.w);
+    else
+        tile = ivec3(q.x, q.z, q.y);
     vec3 probe = u_ddgiGridOrigin + vec3(q) * u_ddgiGridStep + state.xyz;
 
     // 4a. Wrap shading: probes behind the surface count less (never zero).
@@ -126,9 +144,9 @@ hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, hvec3 n, vec3 biased, hvec3 a
     vec3 toPoint = biased - probe;
     float dist = length(toPoint);
     vec3 dir = dist > 0.0 ? toPoint / dist : vec3(n);
-    vec2 visCoord = (vec2(q.xz) * DDGI_VIS_TILE + ddgiTileLocal(dir, DDGI_VIS_INTERIOR)) *
+    vec2 visCoord = (vec2(tile.xy) * DDGI_VIS_TILE + ddgiTileLocal(dir, DDGI_VIS_INTERIOR)) *
                     u_ddgiVisInvSize;
-    hvec2 vis = texture(u_ddgiVisibility, vec3(visCoord, float(q.y))).rg;
+    hvec2 vis = texture(u_ddgiVisibility, vec3(visCoord, float(tile.z))).rg;
     hfloat d01 = ddgiHalf(dist * u_ddgiInvMaxDistance);
     if (d01 > vis.x) {
         hfloat variance = max(vis.y - vis.x * vis.x, DDGI_VARIANCE_FLOOR);
@@ -146,12 +164,13 @@ hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, hvec3 n, vec3 biased, hvec3 a
     return w * max(tri, DDGI_MIN_TRILINEAR);
 }
 
-hvec3 ddgiProbeIrradiance(ivec3 q, vec2 irrLocal) {
-    vec2 c = (vec2(q.xz) * DDGI_IRR_TILE + irrLocal) * u_ddgiIrrInvSize;
+// Irradiance of the probe whose tile is `tile` (ddgiTile).
+hvec3 ddgiProbeIrradiance(ivec3 tile, vec2 irrLocal) {
+    vec2 c = (vec2(tile.xy) * DDGI_IRR_TILE + irrLocal) * u_ddgiIrrInvSize;
 #ifdef GI_GUARD_EXPOSURE_ON
-    return ddgiHalf(texture(u_ddgiIrradiance, vec3(c, float(q.y))).rgb * u_ddgiIrradianceScale);
+    return ddgiHalf(texture(u_ddgiIrradiance, vec3(c, float(tile.z))).rgb * u_ddgiIrradianceScale);
 #else
-    return texture(u_ddgiIrradiance, vec3(c, float(q.y))).rgb;
+    return texture(u_ddgiIrradiance, vec3(c, float(tile.z))).rgb;
 #endif
 }
 
@@ -188,19 +207,22 @@ hvec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
 #ifdef GI_LOOPS_SPLIT
     // All visibility weights first (the visibility fetches back to back), then irradiance.
     hfloat weights[8];
+    ivec3 tiles[8];
     for (int i = 0; i < 8; ++i)
-        weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), p, nh, biased, alpha);
+        weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), p, nh, biased, alpha,
+                                     tiles[i]);
     for (int i = 0; i < 8; ++i) {
         if (weights[i] < 0.0) continue;
-        sumE += weights[i] * ddgiProbeIrradiance(base + ddgiCorner(i), irrLocal);
+        sumE += weights[i] * ddgiProbeIrradiance(tiles[i], irrLocal);
         sumW += weights[i];
     }
 #else
     for (int i = 0; i < 8; ++i) {
         ivec3 off = ddgiCorner(i);
-        hfloat w = ddgiProbeWeight(base + off, off, p, nh, biased, alpha);
+        ivec3 tile;
+        hfloat w = ddgiProbeWeight(base + off, off, p, nh, biased, alpha, tile);
         if (w < 0.0) continue;
-        sumE += w * ddgiProbeIrradiance(base + off, irrLocal);
+        sumE += w * ddgiProbeIrradiance(tile, irrLocal);
         sumW += w;
     }
 #endif

@@ -4,7 +4,7 @@
 // 1 = open), black when the probe is invalid.
 #include "common_ddgi.glsl"
 in vec3 v_localDir;
-flat in ivec3 v_probe;
+flat in ivec3 v_tile;
 flat in float v_valid;
 out vec4 out_radiance;
 uniform float u_visibilityScale; // radiance of a fully open direction (0.5 after exposure)
@@ -12,12 +12,12 @@ uniform float u_visibilityScale; // radiance of a fully open direction (0.5 afte
 void main() {
     vec3 d = normalize(v_localDir);
 #ifdef DEBUG_VISIBILITY
-    vec2 c = (vec2(v_probe.xz) * DDGI_VIS_TILE + ddgiTileLocal(d, DDGI_VIS_INTERIOR)) *
+    vec2 c = (vec2(v_tile.xy) * DDGI_VIS_TILE + ddgiTileLocal(d, DDGI_VIS_INTERIOR)) *
              u_ddgiVisInvSize;
-    float mean = texture(u_ddgiVisibility, vec3(c, float(v_probe.y))).r;
+    float mean = texture(u_ddgiVisibility, vec3(c, float(v_tile.z))).r;
     out_radiance = vec4(vec3(v_valid >= 0.5 ? mean * u_visibilityScale : 0.0), 1.0);
 #else
-    out_radiance = vec4(ddgiProbeIrradiance(v_probe, ddgiTileLocal(d, DDGI_IRR_INTERIOR)) /
+    out_radiance = vec4(ddgiProbeIrradiance(v_tile, ddgiTileLocal(d, DDGI_IRR_INTERIOR)) /
                             3.14159265358979, 1.0);
 #endif
 }

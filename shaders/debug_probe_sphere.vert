@@ -7,10 +7,11 @@ uniform mat3 u_ddgiToLocal;
 uniform vec3 u_ddgiGridOrigin;
 uniform vec3 u_ddgiGridStep;
 uniform ivec3 u_ddgiCounts;
+uniform ivec2 u_ddgiTileGrid;
 uniform mat4 u_clipFromRel;
 uniform float u_sphereRadius;
 out vec3 v_localDir;
-flat out ivec3 v_probe;
+flat out ivec3 v_tile; // the probe's tile (column, row, layer), as common_ddgi.glsl's ddgiTile
 flat out float v_valid;
 
 const int kSegments = 12, kRings = 6;
@@ -30,7 +31,10 @@ void main() {
     vec3 local = u_ddgiGridOrigin + vec3(q) * u_ddgiGridStep + state.xyz + dir * u_sphereRadius;
     vec3 rel = u_ddgiCenter + transpose(u_ddgiToLocal) * local;
     v_localDir = dir;
-    v_probe = q;
+    int slot = int(abs(state.w) + 0.5) - 1; // common_ddgi.glsl's ddgiTile
+    ivec2 grid = u_ddgiTileGrid.x > 0 ? u_ddgiTileGrid : u_ddgiCounts.xz; // (0, 0): dense
+    v_tile = ivec3(slot % grid.x, (slot / grid.x) % grid.y, slot / (grid.x * grid.y));
     v_valid = state.w;
-    gl_Position = u_clipFromRel * vec4(rel, 1.0);
+    // Absent probes (sparse storage, w = 0) have no data: no sphere (outside the clip volume).
+    gl_Position = slot < 0 ? vec4(2.0, 2.0, 2.0, 1.0) : u_clipFromRel * vec4(rel, 1.0);
 }

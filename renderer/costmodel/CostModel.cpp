@@ -257,7 +257,7 @@ CostReport runCostModel(const views::CoverageTester& tester, const scene::View& 
         maxFetchesPerLookup(GiVariant{o.profile.gi.probeOrder, o.profile.gi.loops});
     c.clearBytes = c.targetPixels * std::uint64_t(c.targetBytesPerPixel);
     for (int v : kept)
-        c.gpuProbeBytes += render::gpuVolumeBytes(set.volumes[size_t(v)], set.format());
+        c.gpuProbeBytes += render::gpuVolumeBytes(set, size_t(v));
 
     for (size_t k = 0; k < replays.size(); ++k) {
         CacheResult res;

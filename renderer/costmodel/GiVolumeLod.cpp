@@ -1,6 +1,7 @@
 #include "costmodel/GiVolumeLod.h"
 
 #include "core/Error.h"
+#include "probes/SparseLayout.h"
 
 #include <algorithm>
 #include <numeric>
@@ -12,6 +13,16 @@ std::size_t gpuVolumeBytes(const probes::ProbeVolume& v, probes::StorageFormat f
     return probes::storedBytes(probes::irradianceShape(v.counts), format) +
            probes::storedBytes(probes::visibilityShape(v.counts), format) +
            std::size_t(v.probeCount()) * 16;
+}
+
+std::size_t gpuVolumeBytes(const probes::ProbeSet& set, std::size_t v) {
+    const probes::ProbeVolume& vol = set.volumes[v];
+    if (v >= set.states.size() || !probes::isSparse(set.states[v]))
+        return gpuVolumeBytes(vol, set.format());
+    const glm::ivec3 tiles = probes::packedCounts(probes::storedCount(set.states[v]), vol.counts);
+    return probes::storedBytes(probes::irradianceShape(tiles), set.format()) +
+           probes::storedBytes(probes::visibilityShape(tiles), set.format()) +
+           std::size_t(vol.probeCount()) * probes::kStateBytesPerProbe;
 }
 
 namespace {
@@ -55,7 +66,7 @@ std::vector<RankDropStep> rankDropOrder(const probes::ProbeSet& set) {
     std::vector<std::size_t> bytes(n);
     std::size_t kept = 0;
     for (size_t v = 0; v < n; ++v)
-        kept += bytes[v] = gpuVolumeBytes(set.volumes[v], set.format());
+        kept += bytes[v] = gpuVolumeBytes(set, size_t(v));
     std::vector<bool> keep(n, true);
     std::vector<RankDropStep> steps;
     while (kept > 0) {
@@ -105,7 +116,7 @@ std::vector<int> selectVolumes(const probes::ProbeSet& set, const profile::Volum
         for (int v : order) {
             const int parent = parents[size_t(v)];
             if (parent >= 0 && !keep[size_t(parent)]) continue;
-            double bytes = double(gpuVolumeBytes(set.volumes[size_t(v)], set.format()));
+            double bytes = double(gpuVolumeBytes(set, size_t(v)));
             if (used + bytes <= budget) {
                 keep[size_t(v)] = true;
                 used += bytes;
@@ -128,8 +139,8 @@ std::vector<int> selectVolumes(const probes::ProbeSet& set, const profile::Volum
         }
         const double budget = lod.value * 1024.0 * 1024.0;
         std::size_t total = 0;
-        for (const probes::ProbeVolume& v : set.volumes)
-            total += gpuVolumeBytes(v, set.format());
+        for (std::size_t v = 0; v < set.volumes.size(); ++v)
+            total += gpuVolumeBytes(set, v);
         for (size_t i = 0; double(total) > budget && i < steps.size(); ++i) {
             keep[size_t(steps[i].volume)] = false;
             if (double(steps[i].keptBytes) <= budget) break;
@@ -137,8 +148,7 @@ std::vector<int> selectVolumes(const probes::ProbeSet& set, const profile::Volum
         if (std::find(keep.begin(), keep.end(), true) == keep.end()) {
             std::size_t smallest = total;
             for (size_t v = 0; v < n; ++v)
-                if (parents[v] < 0)
-                    smallest = std::min(smallest, gpuVolumeBytes(set.volumes[v], set.format()));
+                if (parents[v] < 0) smallest = std::min(smallest, gpuVolumeBytes(set, size_t(v)));
             throw Error(form + ": keeps no volume (the smallest root alone needs " +
                         mib(double(smallest)) + " MiB)");
         }

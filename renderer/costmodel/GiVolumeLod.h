@@ -15,6 +15,9 @@ namespace pb::render {
 // GPU bytes of one volume with one scenario resident: irradiance + visibility in the set's
 // storage format + the per-probe state texture (RGBA32F).
 std::size_t gpuVolumeBytes(const probes::ProbeVolume& v, probes::StorageFormat format);
+// The same for volume `v` of a baked set: a sparse volume (probes/SparseLayout.h) counts only
+// its packed tiles (+ the state texture, its indirection), as GpuProbes uploads it.
+std::size_t gpuVolumeBytes(const probes::ProbeSet& set, std::size_t v);
 
 // Indices into set.volumes of the volumes to load, in file order. Throws pb::Error when a
 // name in omit: is not in the set, when budget_mib: cannot hold a root volume, or when

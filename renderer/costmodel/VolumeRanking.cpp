@@ -137,7 +137,7 @@ probes::VolumeRanks rankVolumes(const RankingInputs& in) {
         r.loss = error[v] / std::max(reference, 1e-30);
         for (size_t u = 0; u < n; ++u)
             if (inSubtree[v][u]) {
-                r.bytes += render::gpuVolumeBytes(set.volumes[u], set.format());
+                r.bytes += render::gpuVolumeBytes(set, size_t(u));
                 r.lookups += naive[u];
             }
         r.pixels = shaded[v];

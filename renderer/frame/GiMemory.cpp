@@ -14,7 +14,7 @@ GiMemory estimateGiMemory(const profile::Profile& p, const probes::ProbeSet& set
                           int height, int dynamicObjects) {
     GiMemory m;
     for (int v : selectVolumes(set, profile::parseVolumeLod(p.gi.volumeLod)))
-        m.probes += gpuVolumeBytes(set.volumes[size_t(v)], set.format());
+        m.probes += gpuVolumeBytes(set, size_t(v));
     // GiApplyPass::execute: the target at size / divisor (at least 1 texel per axis).
     const int div = profile::resolutionDivisor(p.gi.resolution);
     const int w = std::max(1, width / div), h = std::max(1, height / div);

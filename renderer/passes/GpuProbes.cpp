@@ -4,6 +4,7 @@
 #include "gl/Capabilities.h"
 #include "passes/GiVolumeLod.h"
 #include "probes/ProbeSampler.h"
+#include "probes/SparseLayout.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -54,11 +55,17 @@ gl::Texture uploadProbeTexture(const probes::ProbeTexture& t, gl::TextureFormat 
     return tex;
 }
 
+// w is the indirection into the packed tiles (SparseLayout.h): +(slot + 1) valid, -(slot + 1)
+// invalid with a tile, 0 absent (no tile). Exact in float up to 2^24 slots.
 gl::Texture uploadStates(const probes::ProbeVolume& v, const std::vector<probes::ProbeState>& s) {
+    const std::vector<int> slots = probes::packedSlots(s);
     std::vector<float> texels;
     texels.reserve(s.size() * 4);
-    for (const probes::ProbeState& p : s) // probe index order = texel order of (i, k, layer j)
-        texels.insert(texels.end(), {p.offset.x, p.offset.y, p.offset.z, p.valid ? 1.0f : 0.0f});
+    for (std::size_t i = 0; i < s.size(); ++i) { // probe index = texel order of (i, k, layer j)
+        const probes::ProbeState& p = s[i];
+        const float slot = slots[i] < 0 ? 0.0f : float(slots[i] + 1);
+        texels.insert(texels.end(), {p.offset.x, p.offset.y, p.offset.z, p.valid ? slot : -slot});
+    }
     gl::TextureDesc d;
     d.format = gl::TextureFormat::RGBA32F;
     d.width = v.counts.x;
@@ -138,14 +145,28 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
         g.name = v.name;
         g.fileIndex = vi;
         g.root = parents[size_t(vi)] < 0;
-        const probes::ProbeTexture& irr = set.irradiance[size_t(scenario)][size_t(vi)];
-        g.irradiance =
-            uploadProbeTexture(irr, irradianceFormat(format_), format_, what + " irradiance");
-        g.irradianceDecode = 1.0f / irr.storageScale;
-        g.visibility = uploadProbeTexture(set.visibility[size_t(vi)], visibilityFormat(format_),
-                                          format_, what + " visibility");
         if (set.states[size_t(vi)].size() != size_t(v.probeCount()))
             throw Error(what + ": probe state count does not match its grid");
+        // Sparse volumes upload only their stored tiles, packed; dense ones as they are.
+        const std::vector<probes::ProbeState>& states = set.states[size_t(vi)];
+        const bool sparse = g.sparse = probes::isSparse(states);
+        g.packedCounts =
+            sparse ? probes::packedCounts(probes::storedCount(states), v.counts) : v.counts;
+        probes::ProbeTexture scratch;
+        auto packed = [&](const probes::ProbeTexture& t, int tile) -> const probes::ProbeTexture& {
+            if (!sparse) return t;
+            scratch = probes::packTiles(t, probes::packedSlots(states), v.counts, g.packedCounts,
+                                        tile, format_);
+            return scratch;
+        };
+        g.irradiance = uploadProbeTexture(
+            packed(set.irradiance[size_t(scenario)][size_t(vi)], probes::kIrradianceTile),
+            irradianceFormat(format_), format_, what + " irradiance");
+        // The file stores irradiance x the scenario's storage scale (probes/StorageScale.h).
+        g.irradianceDecode = 1.0f / set.irradiance[size_t(scenario)][size_t(vi)].storageScale;
+        g.visibility =
+            uploadProbeTexture(packed(set.visibility[size_t(vi)], probes::kVisibilityTile),
+                               visibilityFormat(format_), format_, what + " visibility");
         g.state = uploadStates(v, set.states[size_t(vi)]);
         fillParameters(g, v);
         volumes_.push_back(std::move(g));
@@ -186,6 +207,10 @@ void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,
     program.set("u_ddgiGridOrigin", g.gridOrigin);
     program.set("u_ddgiGridStep", g.gridStep);
     program.set("u_ddgiCounts", g.counts);
+    // (0, 0) tells the shader the volume is dense: tile = probe, no indirection arithmetic.
+    // A packed grid can have the dense grid's shape (one probe absent): the flag decides.
+    program.set("u_ddgiTileGrid",
+                g.sparse ? glm::ivec2(g.packedCounts.x, g.packedCounts.z) : glm::ivec2(0));
     program.set("u_ddgiBiasDistance", g.biasDistance);
     program.set("u_ddgiInvMaxDistance", g.invMaxDistance);
     program.set("u_ddgiIrradianceScale", irradianceScale * g.irradianceDecode);

@@ -2,7 +2,9 @@
 // One scenario of a probe set on the GPU, exactly in its stored format: per volume two 2D
 // texture arrays (irradiance RGBA16F / RGBA32F / BC6H, visibility RG16F / RG32F / BC6H, one
 // layer per probe plane along local Y) and a per-probe state array (RGBA32F: relocation offset
-// in local axes, w = 1 valid / 0 invalid; texel (i, k, layer j) like the probe tiles), plus
+// in local axes, w = the tile indirection: +(slot+1) valid, -(slot+1) invalid, 0 absent;
+// texel (i, k, layer j) like the probe tiles; sparse volumes pack their stored tiles,
+// renderer/probes/SparseLayout.h), plus
 // the per-volume parameters common_ddgi.glsl reads as uniforms. Volumes left out by
 // gi.volume_lod are never created (no GPU memory). Requires a current GL context.
 #include "gl/Program.h"
@@ -27,6 +29,8 @@ struct GpuProbeVolume {
     glm::mat3 toLocal{1.0f};
     glm::vec3 half{0.0f}, fadeWidth{0.0f}, invCell{0.0f}, gridOrigin{0.0f}, gridStep{0.0f};
     glm::ivec3 counts{1};
+    glm::ivec3 packedCounts{1}; // the tile grid of the textures (= counts unless sparse)
+    bool sparse = false;        // tiles packed, found through the state's w
     float biasDistance = 0, invMaxDistance = 0, boxVolume = 0;
     // 1 / the irradiance's storage scale (probes/StorageScale.h): fetched * this = true E.
     float irradianceDecode = 1.0f;

@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "probes/MemoryReport.h"
 #include "probes/RayScene.h"
+#include "probes/SparseStorage.h"
 
 #include <cmath>
 #include <limits>
@@ -72,9 +73,15 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
     std::vector<WorldTriangle> triangles;
     bool defaultBudget = false;
     double budget = req.budgetBytes;
+    if (adaptive || req.sparse) triangles = staticBakeTriangles(scene);
+    // What the bake will store of these volumes, as the memory report counts it.
+    auto storedBytes = [&](const std::vector<ProbeVolume>& volumes) {
+        if (!req.sparse) return memoryReport(volumes, req.format).total.storedTotal();
+        const std::vector<std::size_t> kept = sparseProbeCounts(volumes, triangles);
+        return memoryReport(volumes, req.format, &kept).total.storedTotal();
+    };
     if (adaptive) {
         rays = std::make_unique<RayScene>(scene);
-        triangles = staticBakeTriangles(scene);
         if (!(spacing > 0.0f)) {
             // Default: the memory of the default uniform grid, spent where the scene needs it,
             // starting from half the uniform spacing near surfaces.
@@ -110,7 +117,7 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
         }
         for (const ProbeVolume& v : r.volumes)
             r.probes += v.probeCount();
-        r.bytes = memoryReport(r.volumes, req.format).total.stored.total();
+        r.bytes = storedBytes(r.volumes);
         return r;
     };
     auto fits = [&](const AutoPlacementResult& r) {
@@ -161,6 +168,30 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
         }
         return best;
     };
+    // Sparse storage: memory follows the surface, not the volume, so the starting spacing often
+    // fits with room to spare: shrink it while it fits, then bisect (the mirror of coarsen).
+    auto refine = [&](const AutoPlacementResult& first, int levels) {
+        float fine = first.spacing, coarse = first.spacing;
+        AutoPlacementResult best = first;
+        for (int i = 0; i < 24; ++i) {
+            fine = coarse / float(std::max(1.05, std::sqrt(1.0 / std::max(excess(best), 1e-6))));
+            AutoPlacementResult next = place(fine, levels);
+            if (!fits(next)) break;
+            coarse = fine;
+            best = std::move(next);
+        }
+        for (int i = 0; i < 5 && coarse > fine * 1.02f; ++i) {
+            float mid = std::sqrt(fine * coarse);
+            AutoPlacementResult m = place(mid, levels);
+            if (fits(m)) {
+                coarse = mid;
+                best = std::move(m);
+            } else {
+                fine = mid;
+            }
+        }
+        return best;
+    };
     auto finest = [](const AutoPlacementResult& r) {
         float f = std::numeric_limits<float>::infinity();
         for (const ProbeVolume& v : r.volumes) {
@@ -202,6 +233,23 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
             note << budgetOption(budget);
         else
             note << "the limit of " << req.maxProbes << " probes";
+        best.notes.push_back(note.str());
+    } else if (req.sparse && budget > 0.0 && !(req.adaptive.spacing > 0.0f)) {
+        // The finest spacing whose stored bytes fit, over the same level choices as above.
+        best = refine(first, levels);
+        if (adaptive)
+            for (int alt : {1, 0}) {
+                if (alt >= levels) continue;
+                AutoPlacementResult a = place(spacing, alt);
+                a = fits(a) ? refine(a, alt) : coarsen(a, alt);
+                if (finest(a) < finest(best) * 0.999f ||
+                    (finest(a) <= finest(best) * 1.001f && a.bytes < best.bytes))
+                    best = std::move(a);
+            }
+        std::ostringstream note;
+        note << option << ": sparse storage fits finest spacing " << finest(best) << " ("
+             << best.volumes.size() << " volume(s), " << best.probes << " probes, "
+             << mib(double(best.bytes)) << " stored) into the budget";
         best.notes.push_back(note.str());
     } else if (!capNote.empty()) {
         best.notes.push_back(capNote);

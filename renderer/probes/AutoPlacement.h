@@ -34,12 +34,15 @@ struct AutoPlacementRequest {
     double budgetBytes = 0.0; // <= 0: no budget
     StorageFormat format = StorageFormat::Rgba16f;
     long long maxProbes = kAutoMaxProbes;
+    // The bake stores sparse (`bake --sparse`, SparseStorage.h): the budget counts only the
+    // probes at surface cells (+ the indirection), so a finer spacing fits the same memory.
+    bool sparse = false;
 };
 
 struct AutoPlacementResult {
     std::vector<ProbeVolume> volumes;
     float spacing = 0.0f;  // the finest spacing used (uniform: the grid spacing)
-    std::size_t bytes = 0; // stored probe memory in the request's format
+    std::size_t bytes = 0; // stored probe memory in the request's format (sparse: as stored)
     long long probes = 0;
     int placements = 0;             // how many placements the budget loop tried
     double budgetBytes = 0.0;       // the budget applied (0: none)

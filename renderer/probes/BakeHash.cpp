@@ -85,6 +85,7 @@ std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& r) {
     h.pod(std::uint32_t(b.format));
     h.pod(std::uint8_t(b.relocate));
     h.pod(b.backfaceThreshold);
+    h.pod(std::uint8_t(r.sparse));
     return h.value();
 }
 

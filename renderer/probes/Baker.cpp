@@ -8,6 +8,7 @@
 #include "probes/RadiancePass.h"
 #include "probes/RayDirections.h"
 #include "probes/RayScene.h"
+#include "probes/SparseStorage.h"
 #include "probes/StorageScale.h"
 
 #include <chrono>
@@ -252,11 +253,13 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         quantise(*all[i], cfg.format);
         errors[i] = measureQuantisation(before, *all[i], errors[i]);
     });
+    if (req.sparse) applySparseStorage(set, staticBakeTriangles(scene));
 
     if (statsOut) {
         BakeStats st;
         st.probes = set.probeCount();
         st.invalidProbes = set.invalidCount();
+        st.storedProbes = set.storedCount();
         for (const auto& vs : set.states)
             for (const ProbeState& p : vs)
                 st.relocatedProbes += p.offset != glm::vec3(0.0f);

@@ -20,6 +20,9 @@ struct BakeRequest {
     std::vector<Scenario> scenarios;
     BakeSettings settings;
     int threads = 0; // 0 = all cores; never changes the result
+    // Sparse storage (SparseStorage.h): after the bake, only valid probes at the corners of
+    // cells with static surface stay stored. Part of the input hash.
+    bool sparse = false;
     // Probes traced before their indirect lookups are sorted and done (RadiancePass.h);
     // 0 = about 2^18 rays per slab. Memory and speed only: never changes the result.
     int slabProbes = 0;
@@ -44,6 +47,7 @@ struct QuantisationError {
 
 struct BakeStats {
     std::size_t probes = 0, invalidProbes = 0, relocatedProbes = 0;
+    std::size_t storedProbes = 0; // all probes unless sparse
     std::uint64_t primaryRays = 0, shadowRays = 0;
     std::size_t triangles = 0;
     double seconds = 0.0;      // whole bake, wall clock

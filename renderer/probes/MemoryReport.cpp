@@ -1,7 +1,9 @@
 #include "probes/MemoryReport.h"
 
 #include "core/Error.h"
+#include "probes/SparseLayout.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -30,9 +32,12 @@ nlohmann::json volumeJson(const VolumeMemory& v, bool sparse) {
     nlohmann::json j = {{"name", v.name},
                         {"counts", {v.counts.x, v.counts.y, v.counts.z}},
                         {"probes", v.probes},
-                        {"uncompressed", bytesJson(v.uncompressed, v.probes)},
-                        {"bc6h", bytesJson(v.bc6h, v.probes)},
-                        {"stored", bytesJson(v.stored, v.probes)}};
+                        {"uncompressed", bytesJson(v.uncompressed, v.storedProbes)},
+                        {"bc6h", bytesJson(v.bc6h, v.storedProbes)},
+                        {"stored", bytesJson(v.stored, v.storedProbes)},
+                        {"stored_probes", v.storedProbes},
+                        {"indirection", v.indirection},
+                        {"stored_total", v.storedTotal()}};
     if (sparse)
         j["sparse_candidates"] = {{"far_from_surfaces", v.sparse.far},
                                   {"invalid", v.sparse.invalid},
@@ -58,19 +63,27 @@ std::string formatBytes(std::size_t bytes) {
     return buf;
 }
 
-MemoryReport memoryReport(const std::vector<ProbeVolume>& volumes, StorageFormat format) {
+MemoryReport memoryReport(const std::vector<ProbeVolume>& volumes, StorageFormat format,
+                          const std::vector<std::size_t>* storedProbes) {
     MemoryReport r;
     r.format = format;
     r.total.name = "total";
-    for (const ProbeVolume& v : volumes) {
+    for (std::size_t i = 0; i < volumes.size(); ++i) {
+        const ProbeVolume& v = volumes[i];
         VolumeMemory m;
         m.name = v.name;
         m.counts = v.counts;
         m.probes = std::size_t(v.probeCount());
-        m.uncompressed = bytesOf(v.counts, StorageFormat::Rgba16f);
-        m.bc6h = bytesOf(v.counts, StorageFormat::Bc6h);
-        m.stored = bytesOf(v.counts, format);
+        m.storedProbes = storedProbes ? std::min((*storedProbes)[i], m.probes) : m.probes;
+        const bool sparse = m.storedProbes < m.probes;
+        const glm::ivec3 tiles = sparse ? packedCounts(m.storedProbes, v.counts) : v.counts;
+        m.uncompressed = bytesOf(tiles, StorageFormat::Rgba16f);
+        m.bc6h = bytesOf(tiles, StorageFormat::Bc6h);
+        m.stored = bytesOf(tiles, format);
+        m.indirection = sparse ? m.probes * kStateBytesPerProbe : 0;
         r.total.probes += m.probes;
+        r.total.storedProbes += m.storedProbes;
+        r.total.indirection += m.indirection;
         add(r.total.uncompressed, m.uncompressed);
         add(r.total.bc6h, m.bc6h);
         add(r.total.stored, m.stored);
@@ -80,7 +93,10 @@ MemoryReport memoryReport(const std::vector<ProbeVolume>& volumes, StorageFormat
 }
 
 MemoryReport memoryReport(const ProbeSet& set) {
-    MemoryReport r = memoryReport(set.volumes, set.format());
+    std::vector<std::size_t> stored;
+    for (const auto& states : set.states)
+        stored.push_back(storedCount(states));
+    MemoryReport r = memoryReport(set.volumes, set.format(), &stored);
     std::vector<SparseCounts> sparse = countSparseCandidates(set);
     for (std::size_t v = 0; v < r.volumes.size(); ++v) {
         r.volumes[v].sparse = sparse[v];
@@ -108,7 +124,9 @@ std::string formatMemoryReport(const MemoryReport& r) {
     std::ostringstream s;
     auto line = [&](const VolumeMemory& v) {
         char buf[512];
-        std::size_t p = v.probes ? v.probes : 1;
+        // Per stored probe: a sparse volume's tiles (packing padding included) over its stored
+        // probes, not over the grid.
+        std::size_t p = std::max<std::size_t>(v.storedProbes ? v.storedProbes : v.probes, 1);
         std::snprintf(
             buf, sizeof buf, "%-16s %-12s %8zu  %10s (%zu+%zu B/probe)  %10s (%zu+%zu B/probe)\n",
             v.name.c_str(),
@@ -138,14 +156,20 @@ std::string formatMemoryReport(const MemoryReport& r) {
     if (r.format != StorageFormat::Rgba16f && r.format != StorageFormat::Bc6h)
         s << "  stored as " << formatName(r.format) << ": " << formatBytes(r.total.stored.total())
           << "\n";
-    if (r.hasSparse) {
+    if (r.total.storedProbes < r.total.probes)
+        s << "sparse storage: " << r.total.storedProbes << " of " << r.total.probes
+          << " probes stored (packed tiles above) + " << formatBytes(r.total.indirection)
+          << " indirection (probe state, 16 B per grid probe) = "
+          << formatBytes(r.total.storedTotal()) << " as " << formatName(r.format) << "\n";
+    if (r.hasSparse && r.total.storedProbes == r.total.probes) {
         const VolumeMemory& t = r.total;
         const std::size_t needed = t.probes - t.sparse.total();
         s << "sparse-storage candidates (all stored now): " << t.sparse.far << " of " << t.probes
           << " probes far from every surface, " << t.sparse.invalid
           << " inside geometry; storing only the other " << needed << " would take "
           << formatBytes(scaled(t.stored.total(), needed, t.probes)) << " as "
-          << formatName(r.format) << " (bricks and an index not counted)\n";
+          << formatName(r.format) << " (an estimate from the visibility; `bake --sparse` keeps "
+          << "the probes at surface cells)\n";
     }
     return s.str();
 }

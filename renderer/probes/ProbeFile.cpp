@@ -5,6 +5,7 @@
 #include "probes/BinaryIO.h"
 #include "probes/Hash.h"
 #include "probes/StorageScale.h"
+#include "probes/SparseLayout.h"
 
 #include <cmath>
 #include <cstring>
@@ -126,6 +127,83 @@ void readTexture(ByteReader& r, ProbeTexture& t, const TextureShape& shape, Stor
     decodeStored(t, f);
 }
 
+// --- Sparse storage record (version 2), kept apart from the rest of the format: per volume
+// u8 layout (0 dense, 1 sparse); sparse: u32 stored count + a presence bitmap, bit i (byte
+// i / 8, least significant bit first) = probe i owns a tile. A sparse volume's textures are
+// then its stored tiles packed in probe order (SparseLayout.h); absent probes are invalid.
+
+void writeStorageRecord(ByteWriter& w, const ProbeSet& set) {
+    for (const auto& states : set.states) {
+        const bool sparse = isSparse(states);
+        w.pod(std::uint8_t(sparse ? 1 : 0));
+        if (!sparse) continue;
+        w.pod(std::uint32_t(storedCount(states)));
+        std::vector<std::uint8_t> bits((states.size() + 7) / 8, 0);
+        for (std::size_t i = 0; i < states.size(); ++i)
+            if (states[i].stored) bits[i / 8] |= std::uint8_t(1u << (i % 8));
+        w.raw(bits.data(), bits.size());
+    }
+}
+
+// Marks the absent probes of every sparse volume (stored = valid = false); returns which
+// volumes are sparse.
+std::vector<bool> readStorageRecord(ByteReader& r, ProbeSet& set, const std::string& path) {
+    std::vector<bool> sparse;
+    for (std::size_t v = 0; v < set.volumes.size(); ++v) {
+        const std::string what = "storage of volume '" + set.volumes[v].name + "'";
+        const auto layout = r.pod<std::uint8_t>("storage layout");
+        if (layout > 1)
+            throw fileError(path, "corrupt " + what + " (layout " + std::to_string(layout) + ")");
+        sparse.push_back(layout == 1);
+        if (layout == 0) continue;
+        std::vector<ProbeState>& states = set.states[v];
+        const auto count = r.pod<std::uint32_t>("stored probe count");
+        const std::size_t n = states.size(), bytes = (n + 7) / 8;
+        const std::uint8_t* bits = r.take(bytes, "presence bitmap");
+        std::size_t present = 0;
+        for (std::size_t i = 0; i < bytes * 8; ++i) {
+            const bool bit = (bits[i / 8] >> (i % 8)) & 1u;
+            if (i >= n) {
+                if (bit) throw fileError(path, "corrupt " + what + " (bits past the last probe)");
+                continue;
+            }
+            states[i].stored = bit;
+            if (!bit) states[i].valid = false;
+            present += bit ? 1 : 0;
+        }
+        if (present != count)
+            throw fileError(path, "corrupt " + what + " (" + std::to_string(count) +
+                                      " stored probes declared, " + std::to_string(present) +
+                                      " present)");
+    }
+    return sparse;
+}
+
+// The dense in-memory texture of volume v from the file: read as stored (packed when the
+// volume is sparse), then unpacked with absent tiles zero.
+void readVolumeTexture(ByteReader& r, ProbeTexture& t, const ProbeVolume& v,
+                       const std::vector<ProbeState>& states, bool sparse, bool irradiance,
+                       StorageFormat f, const std::string& path, float storageScale = 1.0f) {
+    const char* what = irradiance ? "irradiance" : "visibility";
+    const int tile = irradiance ? kIrradianceTile : kVisibilityTile;
+    const auto shapeOf = [&](const glm::ivec3& c) {
+        return irradiance ? irradianceShape(c) : visibilityShape(c);
+    };
+    if (!sparse) return readTexture(r, t, shapeOf(v.counts), f, path, what, storageScale);
+    const glm::ivec3 packed = packedCounts(storedCount(states), v.counts);
+    ProbeTexture p;
+    readTexture(r, p, shapeOf(packed), f, path, what, storageScale);
+    t = unpackTiles(p, packedSlots(states), v.counts, packed, tile, f);
+}
+
+void writeVolumeTexture(ByteWriter& w, const ProbeTexture& t, const ProbeVolume& v,
+                        const std::vector<ProbeState>& states, bool irradiance, StorageFormat f) {
+    if (!isSparse(states)) return writeTexture(w, t);
+    const glm::ivec3 packed = packedCounts(storedCount(states), v.counts);
+    writeTexture(w, packTiles(t, packedSlots(states), v.counts, packed,
+                              irradiance ? kIrradianceTile : kVisibilityTile, f));
+}
+
 } // namespace
 
 std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
@@ -173,11 +251,13 @@ std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
             w.pod(p.backfaceRatio);
             w.pod(std::uint8_t(p.valid));
         }
-    for (const ProbeTexture& t : set.visibility)
-        writeTexture(w, t);
+    writeStorageRecord(w, set);
+    for (std::size_t v = 0; v < set.visibility.size(); ++v)
+        writeVolumeTexture(w, set.visibility[v], set.volumes[v], set.states[v], false,
+                           set.format());
     for (const auto& sc : set.irradiance)
-        for (const ProbeTexture& t : sc)
-            writeTexture(w, t);
+        for (std::size_t v = 0; v < sc.size(); ++v)
+            writeVolumeTexture(w, sc[v], set.volumes[v], set.states[v], true, set.format());
 
     std::uint64_t total = w.data().size() + sizeof(std::uint64_t);
     std::memcpy(w.data().data() + 12, &total, sizeof(total));
@@ -192,9 +272,11 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
     ByteReader r(bytes.data(), bytes.size(), path);
     r.take(sizeof(kProbeFileMagic), "magic");
     auto version = r.pod<std::uint32_t>("version");
-    if (version != kProbeFileVersion)
+    // Version 2 was a development format (scales or sparse storage, never both) never shipped.
+    if (version < kProbeFileFirstVersion || version > kProbeFileVersion || version == 2)
         throw fileError(path, "probe file version " + std::to_string(version) +
-                                  ", this build reads version " +
+                                  ", this build reads versions " +
+                                  std::to_string(kProbeFileFirstVersion) + " and " +
                                   std::to_string(kProbeFileVersion) + " (re-bake it)");
     auto declared = r.pod<std::uint64_t>("file size");
     if (declared != bytes.size())
@@ -257,7 +339,10 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
             throw fileError(path, "corrupt: scenario '" + s.name + "' appears twice");
         set.scenarios.push_back(s);
     }
-    const std::vector<float> scales = readStorageScales(body, scenarioCount, set.scenarios, path);
+    // Version 1 has no storage scales (every scenario stored as is) and no storage record.
+    const std::vector<float> scales =
+        version >= 3 ? readStorageScales(body, scenarioCount, set.scenarios, path)
+                     : std::vector<float>(scenarioCount, 1.0f);
     for (const ProbeVolume& v : set.volumes) {
         // 17 bytes per probe must still be there before anything is allocated for them.
         if (std::size_t(v.probeCount()) > body.remaining() / 17)
@@ -272,17 +357,19 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
         checkStates(v, states, path);
         set.states.push_back(std::move(states));
     }
-    for (const ProbeVolume& v : set.volumes) {
+    const std::vector<bool> sparse = version >= 3 ? readStorageRecord(body, set, path)
+                                                  : std::vector<bool>(set.volumes.size(), false);
+    for (std::size_t v = 0; v < set.volumes.size(); ++v) {
         set.visibility.emplace_back();
-        readTexture(body, set.visibility.back(), visibilityShape(v.counts), b.format, path,
-                    "visibility");
+        readVolumeTexture(body, set.visibility.back(), set.volumes[v], set.states[v], sparse[v],
+                          false, b.format, path);
     }
     for (std::uint32_t s = 0; s < scenarioCount; ++s) {
         set.irradiance.emplace_back();
-        for (const ProbeVolume& v : set.volumes) {
+        for (std::size_t v = 0; v < set.volumes.size(); ++v) {
             set.irradiance.back().emplace_back();
-            readTexture(body, set.irradiance.back().back(), irradianceShape(v.counts), b.format,
-                        path, "irradiance", scales[s]);
+            readVolumeTexture(body, set.irradiance.back().back(), set.volumes[v], set.states[v],
+                              sparse[v], true, b.format, path, scales[s]);
         }
     }
     if (body.remaining() != 0)

@@ -3,9 +3,12 @@
 //
 // Little-endian, no padding, in this order (README.md "File format" has the full table):
 //   magic "PBPROBES", u32 version, u64 file size, u64 input hash, bake settings, tile sizes,
-//   volumes, scenarios, per-scenario storage scales (version 2), per-volume probe states,
-//   per-volume visibility bytes, per-scenario per-volume irradiance bytes (each texture as u64 size
-//   + bytes in the storage format), u64 FNV-1a checksum of every byte before it.
+//   volumes, scenarios, per-scenario storage scales, per-volume probe states, the sparse
+//   storage record (per volume dense / sparse + presence bitmap; sparse volumes store only
+//   their present probes' tiles, packed: SparseLayout.h), per-volume visibility bytes,
+//   per-scenario per-volume irradiance bytes (each texture as u64 size + bytes in the storage
+//   format), u64 FNV-1a checksum of every byte before it. Version 1 files (no scales, every
+//   volume dense) still read; version 2 was a development format that never shipped.
 // Written atomically (temporary file + rename). Reading checks magic, version, size and
 // checksum before parsing, and every size while parsing: a wrong, truncated or corrupted
 // file gives a one-line pb::Error naming the file, never a crash or garbage.
@@ -18,7 +21,9 @@
 namespace pb::probes {
 
 inline constexpr char kProbeFileMagic[8] = {'P', 'B', 'P', 'R', 'O', 'B', 'E', 'S'};
-inline constexpr std::uint32_t kProbeFileVersion = 2; // 2: per-scenario storage scales
+// 3: per-scenario storage scales (StorageScale.h) and the sparse storage record.
+inline constexpr std::uint32_t kProbeFileVersion = 3;
+inline constexpr std::uint32_t kProbeFileFirstVersion = 1; // oldest version still read
 
 std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set);
 // `path` only names the source in errors.

@@ -23,4 +23,12 @@ std::size_t ProbeSet::invalidCount() const {
     return n;
 }
 
+std::size_t ProbeSet::storedCount() const {
+    std::size_t n = 0;
+    for (const auto& s : states)
+        for (const ProbeState& p : s)
+            n += p.stored ? 1 : 0;
+    return n;
+}
+
 } // namespace pb::probes

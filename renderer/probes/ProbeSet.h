@@ -33,6 +33,9 @@ struct ProbeState {
     glm::vec3 offset{0.0f};  // relocation, world units along the volume's LOCAL axes
     bool valid = true;       // false: inside geometry (excluded by the sampler)
     float backfaceRatio = 0; // diagnostic: share of rays that hit single-sided back faces
+    // false: sparse storage left the probe out (SparseLayout.h); it is then invalid too, with
+    // zero texels, and owns no tile in the file or on the GPU.
+    bool stored = true;
 };
 
 struct ProbeSet {
@@ -53,6 +56,7 @@ struct ProbeSet {
     int findScenario(const std::string& name) const;
     std::size_t probeCount() const;
     std::size_t invalidCount() const;
+    std::size_t storedCount() const; // probes that own a tile (all of them unless sparse)
 };
 
 } // namespace pb::probes

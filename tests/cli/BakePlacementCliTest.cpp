@@ -129,6 +129,47 @@ TEST(BakePlacementCli, MemoryReportCountsSparseCandidates) {
     EXPECT_NE(text.output.find("far from every surface"), std::string::npos) << text.output;
 }
 
+// `bake --sparse`: the budget counts what is stored, the file and the memory report hold only
+// the stored probes, and the sparse placement uses a finer spacing than dense in the same memory.
+TEST(BakePlacementCli, SparseBakeStoresOnlySurfaceProbesWithinTheBudget) {
+    const fs::path dir = outputDir();
+    auto bakeWith = [&](bool sparse) {
+        std::vector<std::string> args{"bake",
+                                      "--scene",
+                                      "courtyard",
+                                      "--volumes",
+                                      "auto-uniform",
+                                      "--probe-budget-mib",
+                                      "1",
+                                      "--rays",
+                                      "16",
+                                      "--bounces",
+                                      "1",
+                                      "--json",
+                                      "--out",
+                                      (dir / (sparse ? "sparse.pbp" : "dense.pbp")).string()};
+        if (sparse) args.push_back("--sparse");
+        return runProbebench(args);
+    };
+    auto dense = bakeWith(false), sparse = bakeWith(true);
+    ASSERT_EQ(dense.exitCode, 0) << dense.output;
+    ASSERT_EQ(sparse.exitCode, 0) << sparse.output;
+    auto d = jsonOf(dense.output), s = jsonOf(sparse.output);
+    EXPECT_EQ(d["stored_probes"], d["probes"]);
+    EXPECT_LT(s["stored_probes"].get<std::size_t>(), s["probes"].get<std::size_t>());
+    EXPECT_GT(s["probes"].get<std::size_t>(), d["probes"].get<std::size_t>())
+        << "the same memory must hold a finer sparse grid";
+    EXPECT_LE(s["memory"]["total"]["stored_total"].get<double>(), 1024.0 * 1024.0);
+    EXPECT_LT(fs::file_size(dir / "sparse.pbp"),
+              s["probes"].get<std::size_t>() * 1536u); // fewer tiles than the grid
+    auto text = runProbebench({"memory", "--probes", (dir / "sparse.pbp").string()});
+    ASSERT_EQ(text.exitCode, 0) << text.output;
+    EXPECT_NE(text.output.find("sparse storage: " + std::to_string(s["stored_probes"].get<int>()) +
+                               " of " + std::to_string(s["probes"].get<int>())),
+              std::string::npos)
+        << text.output;
+}
+
 TEST(BakePlacementCli, BadOptionsGiveOneLineErrors) {
     fs::path dir = outputDir();
     const std::string out = (dir / "p.pbp").string(), toml = (dir / "v.toml").string();

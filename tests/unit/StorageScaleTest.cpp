@@ -14,7 +14,8 @@ using namespace pb::probes;
 
 namespace {
 
-ProbeSet roomBake(StorageFormat format, float lightScale) {
+// `sparse`: a taller volume whose upper probe layers see no surface cell, stored sparse.
+ProbeSet roomBake(StorageFormat format, float lightScale, bool sparse = false) {
     pb::scene::Scene s = pb::test::emptyScene(glm::vec3(0.5f, 0.7f, 1.0f) * lightScale);
     s.sun.enabled = true;
     s.sun.intensity *= lightScale;
@@ -26,6 +27,12 @@ ProbeSet roomBake(StorageFormat format, float lightScale) {
     v.center = {0, 1, 0};
     v.halfExtents = {2, 0.9f, 2};
     v.counts = {3, 2, 3};
+    if (sparse) {
+        v.center = {0, 1.5f, 0};
+        v.halfExtents = {2, 1.5f, 2};
+        v.counts = {3, 4, 3};
+        r.sparse = true;
+    }
     r.volumes = {v};
     r.scenarios = resolveScenarios({"day", "night"}, {}, s);
     r.settings.raysPerProbe = 32;
@@ -113,6 +120,26 @@ TEST(StorageScale, ExtremeBakesKeepTheirValuesAndRoundTripThroughTheFile) {
                 EXPECT_EQ(back.irradiance[sc][0].stored, set.irradiance[sc][0].stored);
             }
         }
+    }
+}
+
+// Both records of the file at once: a sparse set (packed tiles) of a scaled scenario keeps its
+// scale and true values through the file, and the packed tiles are what is scaled.
+TEST(StorageScale, SparseScaledBakesRoundTripThroughTheFile) {
+    for (StorageFormat f : {StorageFormat::Rgba16f, StorageFormat::Bc6h}) {
+        const ProbeSet set = roomBake(f, 1e6f, true);
+        ASSERT_LT(set.storedCount(), set.probeCount()) << formatName(f);
+        ASSERT_GT(set.storedCount(), 0u) << formatName(f);
+        EXPECT_NE(set.irradiance[0][0].storageScale, 1.0f) << formatName(f);
+        const ProbeSet back = parseProbeSet(serializeProbeSet(set), "sparse.pbp");
+        for (std::size_t sc = 0; sc < set.scenarios.size(); ++sc) {
+            EXPECT_EQ(back.irradiance[sc][0].storageScale, set.irradiance[sc][0].storageScale);
+            EXPECT_EQ(back.irradiance[sc][0].texels, set.irradiance[sc][0].texels);
+        }
+        const ProbeSet ref = roomBake(f, 1.0f, true);
+        const double tolerance = f == StorageFormat::Bc6h ? 0.08 : 0.01;
+        EXPECT_LT(worstRatioError(back.irradiance[0][0], ref.irradiance[0][0], 1e6), tolerance)
+            << formatName(f);
     }
 }
 

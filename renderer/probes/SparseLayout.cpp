@@ -1,0 +1,111 @@
+#include "probes/SparseLayout.h"
+
+#include "core/Error.h"
+
+#include <algorithm>
+#include <cstring>
+
+namespace pb::probes {
+namespace {
+
+// The stored bytes of a texture as a grid of units: texels, or BC6H 4x4 blocks.
+struct Units {
+    int texels = 1;        // texels per unit along x and y
+    std::size_t bytes = 0; // bytes per unit
+};
+
+Units unitsOf(const TextureShape& s, StorageFormat f) {
+    if (f == StorageFormat::Bc6h) return {4, 16};
+    return {1, std::size_t(s.channels) * (f == StorageFormat::Rgba32f ? 4u : 2u)};
+}
+
+glm::ivec3 tileOf(int slot, const glm::ivec3& grid) {
+    return {slot % grid.x, slot / (grid.x * grid.z), (slot / grid.x) % grid.z};
+}
+
+// Copies one tile of stored bytes from grid position `from` of `src` to `to` of `dst`.
+void copyTile(const ProbeTexture& src, const glm::ivec3& from, ProbeTexture& dst,
+              const glm::ivec3& to, int tile, const Units& u) {
+    const int tileUnits = tile / u.texels;
+    const std::size_t srcRow = std::size_t(src.shape.width / u.texels) * u.bytes;
+    const std::size_t dstRow = std::size_t(dst.shape.width / u.texels) * u.bytes;
+    const std::size_t srcLayer = srcRow * std::size_t(src.shape.height / u.texels);
+    const std::size_t dstLayer = dstRow * std::size_t(dst.shape.height / u.texels);
+    for (int r = 0; r < tileUnits; ++r) {
+        const std::size_t s = from.y * srcLayer + std::size_t(from.z * tileUnits + r) * srcRow +
+                              std::size_t(from.x * tileUnits) * u.bytes;
+        const std::size_t d = to.y * dstLayer + std::size_t(to.z * tileUnits + r) * dstRow +
+                              std::size_t(to.x * tileUnits) * u.bytes;
+        std::memcpy(dst.stored.data() + d, src.stored.data() + s, std::size_t(tileUnits) * u.bytes);
+    }
+}
+
+TextureShape shapeFor(const glm::ivec3& counts, int tile, int channels) {
+    return {counts.x * tile, counts.z * tile, counts.y, channels};
+}
+
+} // namespace
+
+glm::ivec3 packedCounts(std::size_t stored, const glm::ivec3& dense) {
+    const std::size_t perLayer = std::size_t(dense.x) * std::size_t(dense.z);
+    if (stored == 0) return {1, 1, 1};
+    const std::size_t width = std::min<std::size_t>(std::size_t(dense.x), stored);
+    const std::size_t layers = (stored + perLayer - 1) / perLayer;
+    const std::size_t rows = (stored + width - 1) / width;
+    return {int(width), int(layers), int((rows + layers - 1) / layers)};
+}
+
+std::vector<int> packedSlots(const std::vector<ProbeState>& states) {
+    std::vector<int> slots(states.size(), -1);
+    int next = 0;
+    for (std::size_t i = 0; i < states.size(); ++i)
+        if (states[i].stored) slots[i] = next++;
+    return slots;
+}
+
+std::size_t storedCount(const std::vector<ProbeState>& states) {
+    return std::size_t(
+        std::count_if(states.begin(), states.end(), [](const ProbeState& p) { return p.stored; }));
+}
+
+bool isSparse(const std::vector<ProbeState>& states) {
+    return storedCount(states) != states.size();
+}
+
+ProbeTexture packTiles(const ProbeTexture& dense, const std::vector<int>& slots,
+                       const glm::ivec3& denseCounts, const glm::ivec3& packed, int tile,
+                       StorageFormat f) {
+    ProbeTexture out;
+    out.storageScale = dense.storageScale; // the stored bytes move as they are
+    out.shape = shapeFor(packed, tile, dense.shape.channels);
+    out.stored.assign(storedBytes(out.shape, f), 0);
+    if (dense.stored.size() != storedBytes(dense.shape, f) ||
+        dense.shape != shapeFor(denseCounts, tile, dense.shape.channels))
+        throw Error("packTiles: texture does not match its grid");
+    const Units u = unitsOf(dense.shape, f);
+    ProbeVolume grid;
+    grid.counts = denseCounts;
+    for (std::size_t i = 0; i < slots.size(); ++i)
+        if (slots[i] >= 0)
+            copyTile(dense, grid.probeCoords(int(i)), out, tileOf(slots[i], packed), tile, u);
+    return out;
+}
+
+ProbeTexture unpackTiles(const ProbeTexture& packed, const std::vector<int>& slots,
+                         const glm::ivec3& denseCounts, const glm::ivec3& packedGrid, int tile,
+                         StorageFormat f) {
+    ProbeTexture out;
+    out.storageScale = packed.storageScale; // decodeStored divides it out
+    out.shape = shapeFor(denseCounts, tile, packed.shape.channels);
+    out.stored.assign(storedBytes(out.shape, f), 0);
+    const Units u = unitsOf(packed.shape, f);
+    ProbeVolume grid;
+    grid.counts = denseCounts;
+    for (std::size_t i = 0; i < slots.size(); ++i)
+        if (slots[i] >= 0)
+            copyTile(packed, tileOf(slots[i], packedGrid), out, grid.probeCoords(int(i)), tile, u);
+    decodeStored(out, f);
+    return out;
+}
+
+} // namespace pb::probes

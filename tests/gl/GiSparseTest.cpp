@@ -1,0 +1,184 @@
+// Sparse probe storage on the GPU (issue 9, item 6): the packed tiles, found through the
+// indirection in the probe state texture (GpuProbes.h), sample as the dense layout where
+// probes exist, and an absent probe weighs 0 like an invalid one.
+//
+// Tolerance: the texels are the same bits, but a packed tile sits elsewhere in a texture of
+// another size, so the normalised coordinate (tile + local) / size rounds differently in its
+// last bit and GL's limited sub-texel filter precision may round a weight the other way.
+// The bound is the one of the math-identical switches (GiFrameTest): 1e-3 relative on the
+// RGBA32F GI target; the test prints how many pixels are not bit-identical.
+#include "gl/GiTestProbes.h"
+#include "gl/GlTestFixture.h"
+
+#include "frame/FrameRenderer.h"
+#include "frame/GiPointEvaluator.h"
+#include "frame/Readback.h"
+#include "passes/GiApplyPass.h"
+#include "passes/GiVolumeLod.h"
+#include "probes/SparseStorage.h"
+#include "probes/StaticTriangles.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <random>
+
+namespace pb::test {
+namespace {
+
+constexpr int kW = 160, kH = 90;
+
+// giTestProbes (a root and a rotated child over `rooms`, every 7th probe invalid) stored
+// sparse: invalid probes and probes at no surface cell left out.
+const probes::ProbeSet& sparseProbes() {
+    static const probes::ProbeSet set = [] {
+        probes::ProbeSet s = giTestProbes(probes::StorageFormat::Rgba16f);
+        probes::applySparseStorage(s, probes::staticBakeTriangles(giTestScene()));
+        return s;
+    }();
+    return set;
+}
+
+// Every `every`-th probe stored (every = 4: enough absent probes that some lookups meet
+// nothing else; rooms has few probes far from a surface), or with every = 0 all but probe 1
+// of each volume (its packed grid then has the dense grid's shape).
+probes::ProbeSet storedEvery(int every) {
+    probes::ProbeSet s = giTestProbes(probes::StorageFormat::Rgba16f);
+    if (every == 0) // exactly one probe absent: the marked-invalid probes (texels intact) back
+        for (auto& states : s.states)
+            for (auto& p : states)
+                p.valid = true;
+    std::vector<std::vector<std::uint8_t>> keep;
+    for (const auto& states : s.states) {
+        keep.emplace_back(states.size(), every == 0 ? 1 : 0);
+        if (every == 0) keep.back()[1] = 0;
+        for (std::size_t i = 0; every > 0 && i < states.size(); i += std::size_t(every))
+            keep.back()[i] = 1;
+    }
+    probes::storeOnly(s, keep);
+    return s;
+}
+
+// The dense set with exactly the probes `sparse` left out marked invalid (texels kept).
+probes::ProbeSet denseWithAbsentInvalid(const probes::ProbeSet& sparse) {
+    probes::ProbeSet s = giTestProbes(probes::StorageFormat::Rgba16f);
+    for (std::size_t v = 0; v < s.states.size(); ++v)
+        for (std::size_t i = 0; i < s.states[v].size(); ++i)
+            s.states[v][i].valid = sparse.states[v][i].stored;
+    return s;
+}
+
+image::ImageF renderGi(const probes::ProbeSet& set) {
+    render::GiOptions gi;
+    gi.probes = &set;
+    gi.profile.applyOverride("gi.target_format=rgba32f");
+    const scene::Scene& s = giTestScene();
+    render::FrameRenderer r(s, render::defaultFrameSettings(s), gi);
+    r.render(render::makeRenderView(*s.findView("sunlit_room"), s.worldBounds(), kW, kH));
+    for (const auto& p : r.passes())
+        if (auto* pass = dynamic_cast<const render::GiApplyPass*>(p.get()))
+            return render::readFloat(*pass->target());
+    ADD_FAILURE() << "no GI apply pass";
+    return {};
+}
+
+struct Difference {
+    double maxRel = 0;
+    std::size_t differing = 0, lit = 0, values = 0;
+};
+
+// |a - b| / max(|b|, 1e-3 * max|b|) over RGBA (A is the weight).
+Difference compare(const std::vector<float>& a, const std::vector<float>& b) {
+    Difference d;
+    float largest = 0;
+    for (float v : b)
+        largest = std::max(largest, std::abs(v));
+    for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+        d.maxRel = std::max(d.maxRel, std::abs(double(a[i]) - b[i]) /
+                                          std::max(double(std::abs(b[i])), 1e-3 * largest));
+        d.differing += a[i] != b[i] ? 1 : 0;
+        d.lit += b[i] > 0.0f ? 1 : 0;
+    }
+    d.values = b.size();
+    return d;
+}
+
+class GiSparseTest : public GlTest {};
+
+TEST_F(GiSparseTest, SparseSetRendersTheDenseImage) {
+    const probes::ProbeSet& dense = giTestProbes(probes::StorageFormat::Rgba16f);
+    const probes::ProbeSet& sparse = sparseProbes();
+    const std::size_t invalid = dense.invalidCount();
+    std::printf("[ sparse ] rooms: %zu of %zu probes stored (%zu invalid in the dense set)\n",
+                sparse.storedCount(), dense.probeCount(), invalid);
+    ASSERT_LT(sparse.storedCount(), dense.probeCount() - invalid)
+        << "no valid probe was left out: the test would not exercise the packing";
+    EXPECT_LT(render::GpuProbes(sparse, 0).bytes(), render::GpuProbes(dense, 0).bytes());
+    // The memory estimates (gi.volume_lod budgets, the cost model) count what is uploaded.
+    EXPECT_EQ(render::GpuProbes(sparse, 0).bytes(),
+              render::gpuVolumeBytes(sparse, 0) + render::gpuVolumeBytes(sparse, 1));
+
+    const image::ImageF expected = renderGi(dense), got = renderGi(sparse);
+    ASSERT_EQ(got.pixels.size(), expected.pixels.size());
+    const Difference d = compare(got.pixels, expected.pixels);
+    std::printf("[ sparse ] GI target: %zu of %zu values not bit-identical, max rel %.3g\n",
+                d.differing, d.values, d.maxRel);
+    EXPECT_GT(d.lit, d.values / 4) << "the view must show lit GI";
+    EXPECT_LE(d.maxRel, 1e-3);
+}
+
+// GPU lookups anywhere in the root box (surfaces, empty air where absent probes would have
+// been read, the child) of `sparse` against the dense set with its absent probes invalid.
+Difference againstInvalid(const probes::ProbeSet& sparse, int& unlit) {
+    const probes::ProbeSet invalid = denseWithAbsentInvalid(sparse);
+    const probes::ProbeVolume& root = sparse.volumes[0];
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    std::vector<render::GiPoint> pts(4000);
+    for (auto& p : pts) {
+        p.position = root.toWorld(glm::vec3(u(rng), u(rng), u(rng)) * root.halfExtents);
+        p.normal = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + 1e-3f);
+        p.view = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + 1e-3f);
+    }
+    profile::Profile prof;
+    prof.applyOverride("gi.target_format=rgba32f");
+    gl::ProgramCache programs;
+    auto evaluate = [&](const probes::ProbeSet& set) {
+        render::GpuProbes gpu(set, 0);
+        render::GiPointEvaluator eval(gpu, prof, programs);
+        std::vector<float> out;
+        for (const glm::vec4& v : eval.evaluate(pts))
+            out.insert(out.end(), {v.x, v.y, v.z, v.w});
+        return out;
+    };
+    const std::vector<float> a = evaluate(sparse), b = evaluate(invalid);
+    unlit = 0;
+    for (std::size_t i = 3; i < b.size(); i += 4)
+        unlit += b[i] == 0.0f ? 1 : 0;
+    return compare(a, b);
+}
+
+TEST_F(GiSparseTest, AbsentProbesWeighZeroLikeInvalidOnes) {
+    const probes::ProbeSet quarter = storedEvery(4);
+    int unlit = 0;
+    const Difference d = againstInvalid(quarter, unlit);
+    std::printf("[ sparse ] every 4th stored: %zu of %zu values not bit-identical, max rel %.3g, "
+                "%d of 4000 points weigh 0\n",
+                d.differing, d.values, d.maxRel, unlit);
+    EXPECT_GT(unlit, 0) << "no point met only absent probes";
+    EXPECT_LE(d.maxRel, 1e-3);
+}
+
+// One probe absent per volume: the packed grid has the dense grid's shape, and the shader
+// must still go through the indirection (the tiles after the gap moved by one).
+TEST_F(GiSparseTest, OneAbsentProbePerVolumeStillUsesTheIndirection) {
+    const probes::ProbeSet one = storedEvery(0);
+    for (const auto& v : render::GpuProbes(one, 0).volumes())
+        ASSERT_TRUE(v.sparse && v.packedCounts == v.counts) << v.name;
+    int unlit = 0;
+    const Difference d = againstInvalid(one, unlit);
+    std::printf("[ sparse ] one absent per volume: max rel %.3g\n", d.maxRel);
+    EXPECT_LE(d.maxRel, 1e-3);
+}
+
+} // namespace
+} // namespace pb::test

@@ -1,0 +1,285 @@
+// Sparse probe storage (issue 9): the packed tile layout and its inverse, which probes the
+// surface test keeps, the probe file round trip of a sparse set, and the guarantee that lets
+// sparse storage drop probes at all: no surface point's irradiance changes.
+#include "probes/SparseStorage.h"
+#include "ProbeTestScenes.h"
+#include "core/Error.h"
+#include "core/FileIO.h"
+#include "fuzz/FuzzInputs.h"
+#include "probes/AutoVolume.h"
+#include "probes/Baker.h"
+#include "probes/Hash.h"
+#include "probes/MemoryReport.h"
+#include "probes/ProbeFile.h"
+#include "probes/ProbeSampler.h"
+#include "probes/RayScene.h"
+#include "probes/SparseLayout.h"
+#include "scene/SceneLoader.h"
+#include "support/TestEnv.h"
+
+#include <algorithm>
+#include <cstring>
+#include <gtest/gtest.h>
+#include <random>
+
+using namespace pb::probes;
+
+namespace {
+
+ProbeTexture randomTexture(const TextureShape& shape, StorageFormat f, unsigned seed) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(0.0f, 4.0f);
+    ProbeTexture t = ProbeTexture::make(shape);
+    for (float& v : t.texels)
+        v = u(rng);
+    quantise(t, f);
+    return t;
+}
+
+// A small bake of a built-in scene: one root volume over the static bounds.
+ProbeSet bakeBuiltin(const std::string& name, int maxProbes, bool sparse) {
+    const pb::scene::Scene s = pb::scene::makeBuiltinScene(name);
+    BakeRequest r;
+    r.volumes.push_back(fitAutoVolume(staticBakeBounds(s), 0.0f, maxProbes).volume);
+    r.scenarios = resolveScenarios({"day"}, {}, s);
+    r.settings.raysPerProbe = 32;
+    r.settings.bounces = 1;
+    r.sparse = sparse;
+    return bakeProbes(s, r);
+}
+
+const ProbeSet& courtyardDense() {
+    static const ProbeSet set = bakeBuiltin("courtyard", 1500, false);
+    return set;
+}
+
+} // namespace
+
+TEST(SparseLayout, AllStoredPacksToTheDenseGrid) {
+    for (glm::ivec3 c : {glm::ivec3(1, 1, 1), glm::ivec3(5, 3, 4), glm::ivec3(17, 6, 9)})
+        EXPECT_EQ(packedCounts(std::size_t(c.x * c.y * c.z), c), c);
+}
+
+TEST(SparseLayout, PackedGridHoldsEveryStoredTileInNoLargerLayers) {
+    const glm::ivec3 dense(7, 5, 6);
+    for (std::size_t n : {std::size_t(0), std::size_t(1), std::size_t(6), std::size_t(7),
+                          std::size_t(43), std::size_t(100), std::size_t(209)}) {
+        const glm::ivec3 p = packedCounts(n, dense);
+        EXPECT_GE(std::size_t(p.x * p.y * p.z), std::max<std::size_t>(n, 1)) << n;
+        EXPECT_LE(p.x, dense.x) << n;
+        EXPECT_LE(p.z, dense.z) << n;
+        EXPECT_LE(p.y, dense.y) << n;
+    }
+}
+
+TEST(SparseLayout, PackThenUnpackKeepsStoredTilesAndZeroesTheRest) {
+    const glm::ivec3 counts(3, 2, 4);
+    std::vector<ProbeState> states(24);
+    for (std::size_t i = 0; i < states.size(); ++i)
+        states[i].stored = (i * 7) % 3 != 0;
+    const std::vector<int> slots = packedSlots(states);
+    const glm::ivec3 packed = packedCounts(storedCount(states), counts);
+    ASSERT_LT(storedCount(states), states.size());
+    ProbeVolume grid;
+    grid.counts = counts;
+    for (StorageFormat f : {StorageFormat::Rgba16f, StorageFormat::Rgba32f, StorageFormat::Bc6h}) {
+        for (bool irradiance : {true, false}) {
+            const int tile = irradiance ? kIrradianceTile : kVisibilityTile;
+            const TextureShape shape =
+                irradiance ? irradianceShape(counts) : visibilityShape(counts);
+            const ProbeTexture dense = randomTexture(shape, f, 7u + unsigned(f));
+            const ProbeTexture p = packTiles(dense, slots, counts, packed, tile, f);
+            EXPECT_LT(p.stored.size(), dense.stored.size());
+            const ProbeTexture back = unpackTiles(p, slots, counts, packed, tile, f);
+            ASSERT_EQ(back.shape, dense.shape);
+            ASSERT_EQ(back.texels.size(), dense.texels.size());
+            for (int i = 0; i < grid.probeCount(); ++i) {
+                const glm::ivec3 q = grid.probeCoords(i);
+                for (int row = 0; row < tile; ++row)
+                    for (int col = 0; col < tile; ++col) {
+                        const float* a = back.at(q.x * tile + col, q.z * tile + row, q.y);
+                        const float* b = dense.at(q.x * tile + col, q.z * tile + row, q.y);
+                        // Absent tiles are zero bytes: RGB 0 (BC6H reads alpha back as 1).
+                        for (int ch = 0; ch < std::min(shape.channels, 3); ++ch)
+                            ASSERT_EQ(a[ch], states[size_t(i)].stored ? b[ch] : 0.0f)
+                                << formatName(f) << " probe " << i;
+                    }
+            }
+        }
+    }
+}
+
+// One small triangle inside cell (1, 1, 1) of a 5x5x5 grid with unit cells: exactly that
+// cell's 8 corners are kept. A triangle in a root's fade margin keeps its boundary cell.
+TEST(SparseStorage, KeepsExactlyTheCornersOfSurfaceCells) {
+    ProbeVolume v;
+    v.name = "v";
+    v.halfExtents = glm::vec3(2.0f);
+    v.counts = glm::ivec3(5);
+    const glm::vec3 o(-2.0f); // probe (0,0,0)
+    WorldTriangle t{o + glm::vec3(1.2f, 1.3f, 1.4f), o + glm::vec3(1.6f, 1.3f, 1.5f),
+                    o + glm::vec3(1.4f, 1.7f, 1.6f), glm::vec3(0, 0, 1)};
+    std::vector<std::uint8_t> kept = surfaceCornerProbes(v, true, {t});
+    for (int i = 0; i < v.probeCount(); ++i) {
+        const glm::ivec3 q = v.probeCoords(i);
+        const bool corner = glm::all(glm::greaterThanEqual(q, glm::ivec3(1))) &&
+                            glm::all(glm::lessThanEqual(q, glm::ivec3(2)));
+        EXPECT_EQ(kept[size_t(i)] != 0, corner) << q.x << "," << q.y << "," << q.z;
+    }
+    // 0.3 cells beyond the +x face: within a root's fade (0.5 cells), outside a child's box.
+    WorldTriangle out = t;
+    out.a.x = out.b.x = out.c.x = 2.3f; // the +x face is at 2, cells are 1 long
+    kept = surfaceCornerProbes(v, true, {out});
+    EXPECT_EQ(std::count(kept.begin(), kept.end(), 1), 8);
+    EXPECT_TRUE(kept[size_t(v.probeIndex({4, 1, 1}))] && kept[size_t(v.probeIndex({3, 2, 2}))]);
+    kept = surfaceCornerProbes(v, false, {out});
+    EXPECT_EQ(std::count(kept.begin(), kept.end(), 1), 0);
+}
+
+// What the guarantee rests on: a surface point reads only the corners of its cell, and those
+// are kept, so dropping the rest changes no surface's irradiance - bit for bit.
+TEST(SparseStorage, DroppingFarProbesChangesNoSurfaceIrradiance) {
+    const pb::scene::Scene scene = pb::scene::makeBuiltinScene("courtyard");
+    const ProbeSet& dense = courtyardDense();
+    ProbeSet sparse = dense;
+    const std::vector<WorldTriangle> triangles = staticBakeTriangles(scene);
+    applySparseStorage(sparse, triangles);
+    const std::size_t stored = sparse.storedCount(),
+                      valid = dense.probeCount() - dense.invalidCount();
+    std::printf("[ sparse ] courtyard: %zu of %zu probes stored (%zu valid)\n", stored,
+                dense.probeCount(), valid);
+    EXPECT_LT(stored, valid) << "nothing far from the surfaces was dropped: the test is vacuous";
+    EXPECT_GT(stored, 0u);
+
+    std::vector<float> areas;
+    for (const WorldTriangle& t : triangles)
+        areas.push_back(t.area());
+    std::discrete_distribution<std::size_t> pick(areas.begin(), areas.end());
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    ProbeSampler a(dense, 0), b(sparse, 0);
+    int lit = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const WorldTriangle& t = triangles[pick(rng)];
+        float r1 = u(rng), r2 = u(rng);
+        if (r1 + r2 > 1.0f) r1 = 1.0f - r1, r2 = 1.0f - r2;
+        const glm::vec3 p = t.a + r1 * (t.b - t.a) + r2 * (t.c - t.a);
+        const glm::vec3 view = glm::normalize(t.normal + glm::vec3(u(rng), u(rng), u(rng)) - 0.5f);
+        const IrradianceSample x = a.sample(p, t.normal, view), y = b.sample(p, t.normal, view);
+        ASSERT_EQ(x.weight, y.weight) << i;
+        ASSERT_EQ(x.irradiance, y.irradiance) << i << " at " << p.x << "," << p.y << "," << p.z;
+        lit += x.weight > 0.0f ? 1 : 0;
+    }
+    EXPECT_GT(lit, 3000);
+}
+
+TEST(SparseStorage, AbsentProbesSampleLikeInvalidOnes) {
+    const ProbeSet& dense = courtyardDense();
+    ProbeSet sparse = dense;
+    applySparseStorage(sparse, staticBakeTriangles(pb::scene::makeBuiltinScene("courtyard")));
+    ProbeSet invalid = dense; // the same probes only marked invalid, texels kept
+    for (std::size_t i = 0; i < invalid.states[0].size(); ++i)
+        invalid.states[0][i].valid = sparse.states[0][i].stored;
+    ProbeSampler a(invalid, 0), b(sparse, 0);
+    const ProbeVolume& v = dense.volumes[0];
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    int zero = 0;
+    for (int i = 0; i < 3000; ++i) { // anywhere in the box: surfaces and empty air
+        const glm::vec3 p = v.toWorld(glm::vec3(u(rng), u(rng), u(rng)) * v.halfExtents);
+        const glm::vec3 n = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + 1e-3f);
+        const IrradianceSample x = a.sample(p, n, n), y = b.sample(p, n, n);
+        ASSERT_EQ(x.weight, y.weight);
+        ASSERT_EQ(x.irradiance, y.irradiance);
+        zero += y.weight == 0.0f ? 1 : 0;
+    }
+    EXPECT_GT(zero, 0) << "no lookup met only absent probes";
+}
+
+TEST(SparseStorage, FileRoundTripStoresOnlyTheKeptTiles) {
+    ProbeSet sparse = bakeBuiltin("courtyard", 1500, true);
+    ASSERT_LT(sparse.storedCount(), sparse.probeCount());
+    const std::vector<std::uint8_t> bytes = serializeProbeSet(sparse);
+    const ProbeSet back = parseProbeSet(bytes, "sparse.pbp");
+    ASSERT_EQ(back.states[0].size(), sparse.states[0].size());
+    for (std::size_t i = 0; i < back.states[0].size(); ++i) {
+        EXPECT_EQ(back.states[0][i].stored, sparse.states[0][i].stored);
+        EXPECT_EQ(back.states[0][i].valid, sparse.states[0][i].valid);
+    }
+    EXPECT_EQ(back.visibility[0].texels, sparse.visibility[0].texels);
+    EXPECT_EQ(back.visibility[0].stored, sparse.visibility[0].stored);
+    EXPECT_EQ(back.irradiance[0][0].texels, sparse.irradiance[0][0].texels);
+    // The file shrinks with the stored share; the memory report counts the packed tiles and
+    // the indirection.
+    ProbeSet allStored = sparse;
+    for (ProbeState& p : allStored.states[0])
+        p.stored = true;
+    const std::size_t denseSize = serializeProbeSet(allStored).size();
+    EXPECT_LT(bytes.size(), denseSize * (sparse.storedCount() + 64) / sparse.probeCount());
+    const MemoryReport mem = memoryReport(back);
+    EXPECT_EQ(mem.total.storedProbes, sparse.storedCount());
+    EXPECT_EQ(mem.total.indirection, sparse.probeCount() * kStateBytesPerProbe);
+    EXPECT_LT(mem.total.storedTotal(), memoryReport(allStored).total.storedTotal());
+    // The bake keeps exactly the valid probes among those placement's budget counts.
+    const std::vector<std::uint8_t> corners = surfaceCornerProbes(
+        sparse.volumes[0], true, staticBakeTriangles(pb::scene::makeBuiltinScene("courtyard")));
+    const ProbeSet& dense = courtyardDense(); // the same bake, stored dense
+    for (std::size_t i = 0; i < corners.size(); ++i)
+        ASSERT_EQ(sparse.states[0][i].stored, corners[i] && dense.states[0][i].valid) << i;
+}
+
+// A crafted storage record with a valid checksum is a one-line error, never a crash.
+TEST(SparseStorage, CorruptStorageRecordIsAClearError) {
+    ProbeSet set = bakeBuiltin("cornell", 64, false);
+    for (std::size_t i = 0; i < set.states[0].size(); i += 3)
+        set.states[0][i].stored = set.states[0][i].valid = false;
+    const std::vector<std::uint8_t> good = serializeProbeSet(set);
+    ASSERT_NO_THROW(parseProbeSet(good, "p.pbp"));
+    // The record follows the probe states: find "layout 1, u32 stored count".
+    const std::uint32_t count = std::uint32_t(set.storedCount());
+    std::size_t at = std::string::npos;
+    for (std::size_t i = 0; i + 5 < good.size() && at == std::string::npos; ++i)
+        if (good[i] == 1 && std::memcmp(&good[i + 1], &count, 4) == 0 && i > 100) at = i;
+    ASSERT_NE(at, std::string::npos);
+    auto broken = [&](std::size_t offset, std::uint8_t value) {
+        std::vector<std::uint8_t> b = good;
+        b[offset] = value;
+        const std::uint64_t sum = fnv1a64(b.data(), b.size() - 8);
+        std::memcpy(b.data() + b.size() - 8, &sum, 8);
+        try {
+            parseProbeSet(b, "p.pbp");
+        } catch (const pb::Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("(no error)");
+    };
+    const std::string layout = broken(at, 7);
+    EXPECT_NE(layout.find("p.pbp: corrupt storage"), std::string::npos) << layout;
+    const std::string counted = broken(at + 1, std::uint8_t(count + 1));
+    EXPECT_NE(counted.find("stored probes declared"), std::string::npos) << counted;
+    const std::string bits = broken(at + 5, std::uint8_t(good[at + 5] ^ 0x02));
+    EXPECT_EQ(bits.find('\n'), std::string::npos);
+    EXPECT_NE(bits.find("p.pbp: "), std::string::npos) << bits;
+}
+
+// The bytes of the committed sparse seed (fuzz/seeds/probe_file/courtyard_sparse_bc6h.pbp),
+// flipped, with size and checksum made to match, through the fuzzers' contract: it loads
+// (and samples finite) or is a one-line error naming the file.
+TEST(SparseStorage, EveryFlippedByteOfASparseFileKeepsTheErrorContract) {
+    const std::vector<std::uint8_t> seed = pb::readFileBytes(
+        (pb::test::sourceDir() / "fuzz/seeds/probe_file/courtyard_sparse_bc6h.pbp").string());
+    ASSERT_GT(seed.size(), 100u);
+    ASSERT_LT(parseProbeSet(seed, "seed.pbp").storedCount(),
+              parseProbeSet(seed, "seed.pbp").probeCount());
+    // Every byte of the header, volumes, states and storage record; a sample of the texels.
+    int rejected = 0;
+    for (std::size_t i = 0; i < seed.size(); i += i < 2048 ? 1 : 11)
+        for (std::uint8_t flip : {std::uint8_t(0x01), std::uint8_t(0xFF)}) {
+            std::vector<std::uint8_t> b = seed;
+            b[i] ^= flip;
+            ASSERT_NO_THROW(rejected += pb::fuzz::runProbeFile(b.data(), b.size()) ==
+                                        pb::fuzz::Outcome::Rejected)
+                << "byte " << i;
+        }
+    EXPECT_GT(rejected, 0);
+}
