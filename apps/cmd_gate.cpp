@@ -19,6 +19,7 @@
 #include "core/FileIO.h"
 #include "gl/DebugOutput.h"
 #include "passes/GiDebugInjection.h"
+#include "probes/EmbreeIsa.h"
 #include "probes/ProbeFile.h"
 #include "views/WorstCaseView.h"
 
@@ -170,6 +171,12 @@ int run(GateArgs& a) {
     if (const std::string inj = render::giDebugInjectionSummary(); !inj.empty())
         std::fprintf(stderr, "warning: test-only fault injection active: %s\n", inj.c_str());
 
+    // Every ray of this run (the bake, the cost model) on one Embree ISA on any x86-64 machine,
+    // so that the probe data and the counters do not depend on the CI machine's CPU
+    // (GateRecord.h; PB_EMBREE_ISA still overrides it, for experiments).
+    probes::pinEmbreeIsa(gate::kGateEmbreeIsa);
+    now.environment.embreeIsa = probes::embreeIsa();
+
     SceneArgs sceneArgs;
     sceneArgs.scene = s.scene;
     const scene::Scene scene = loadSceneWithOverrides(sceneArgs);
@@ -193,6 +200,7 @@ int run(GateArgs& a) {
     const bench::TimingChoice timing =
         bench::chooseTiming(s.timing.method, caps, gl::detectDriverQuirks());
     now.recorded = bench::benchContext(*platform, caps);
+    now.environment.glRenderer = caps.renderer;
     const gate::GateInputs in{
         &scene,  &set,     view,           render::defaultFrameSettings(scene),
         s.width, s.height, s.timing.warmup};
@@ -227,7 +235,7 @@ int run(GateArgs& a) {
             ratioTiming(a, now, base ? &*base : nullptr, renderers, ref, timing, caps.es, budget);
     gate::GateOutcome outcome;
     outcome.recording = a.update;
-    const gate::GateRecord empty{s, {}, "", {}, {}};
+    const gate::GateRecord empty{s, {}, {}, "", {}, {}};
     gate::compareRecords(base ? *base : empty, now, outcome);
     outcome.rows.insert(outcome.rows.end(), timingRows.begin(), timingRows.end());
     if (a.noTiming) outcome.notes.push_back("timing: not run (--no-timing)");

@@ -82,7 +82,8 @@ json suiteJson(const GateSuite& s) {
               {"psnr_db", a.psnrDb},
               {"rel_mse_gi_abs", a.relMseAbs},
               {"rel_mse_gi_rel", a.relMseRel}}},
-            {"callgrind_tolerance", s.callgrindTolerance}};
+            {"callgrind_tolerance", s.callgrindTolerance},
+            {"isa_counter_tolerance", s.isaCounterTolerance}};
 }
 
 GateSuite suiteFrom(const json& j, const std::string& where) {
@@ -116,6 +117,9 @@ GateSuite suiteFrom(const json& j, const std::string& where) {
     at.relMseAbs = optionalField(a, "rel_mse_gi_abs", aw, at.relMseAbs);
     at.relMseRel = optionalField(a, "rel_mse_gi_rel", aw, at.relMseRel);
     s.callgrindTolerance = optionalField(j, "callgrind_tolerance", where, s.callgrindTolerance);
+    s.isaCounterTolerance = optionalField(j, "isa_counter_tolerance", where, s.isaCounterTolerance);
+    if (!(s.isaCounterTolerance >= 0 && s.isaCounterTolerance < 1))
+        throw Error(where + ".isa_counter_tolerance: must be in [0, 1)");
     if (s.width < 16 || s.height < 16 || s.width > 16384 || s.height > 16384)
         throw Error(where + ".width/height: must be in 16..16384");
     if (s.profiles.empty()) throw Error(where + ".profiles: empty");
@@ -186,8 +190,11 @@ json recordJson(const GateRecord& r) {
             ps[name] = countersJson(counters);
         callgrind.push_back({{"key", keyJson(c.key)}, {"profiles", ps}});
     }
-    return {{"schema", kGateSchema}, {"suite", suiteJson(r.suite)}, {"recorded", r.recorded},
-            {"probes", r.probes},    {"profiles", profiles},        {"callgrind", callgrind}};
+    const json environment{{"embree_isa", r.environment.embreeIsa},
+                           {"gl_renderer", r.environment.glRenderer}};
+    return {{"schema", kGateSchema},      {"suite", suiteJson(r.suite)}, {"recorded", r.recorded},
+            {"environment", environment}, {"probes", r.probes},          {"profiles", profiles},
+            {"callgrind", callgrind}};
 }
 
 GateRecord recordFromJson(const json& j, const std::string& source) {
@@ -199,6 +206,12 @@ GateRecord recordFromJson(const json& j, const std::string& source) {
         GateRecord r;
         r.suite = suiteFrom(j.contains("suite") ? j.at("suite") : json(), "suite");
         r.recorded = j.value("recorded", json::object());
+        // Optional: baselines written before it was recorded have none (compared as unknown).
+        if (j.contains("environment")) {
+            const json& e = j.at("environment");
+            r.environment.embreeIsa = field<std::string>(e, "embree_isa", "environment");
+            r.environment.glRenderer = field<std::string>(e, "gl_renderer", "environment");
+        }
         r.probes = field<std::string>(j, "probes", "");
         const json& ps = j.contains("profiles") ? j.at("profiles") : json();
         if (!ps.is_array()) throw Error("profiles: must be an array");

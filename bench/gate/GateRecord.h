@@ -34,6 +34,12 @@ struct AccuracyTolerance {
     double relMseAbs = 1e-7, relMseRel = 0.25; // relative MSE of the GI may rise by abs + rel x
 };
 
+// The Embree ISA the gate traces every ray with (its bake and the cost model's primary rays):
+// SSE2, the x86-64 baseline, so that the probe data is the same bytes on any x86-64 CI
+// machine. A bake with Embree's native choice differs per ISA in the last bits, and can
+// classify a probe differently (bench/baselines/README.md "Across machines").
+inline constexpr const char* kGateEmbreeIsa = "sse2";
+
 struct GateSuite {
     std::string scene = "rooms";
     std::string volumes = "bench/baselines/rooms_gate.toml"; // relative: to the repository
@@ -44,6 +50,17 @@ struct GateSuite {
     TimingSettings timing;
     AccuracyTolerance tolerance;
     double callgrindTolerance = 0.005; // relative, of the frame's instructions
+    // Relative, for the counters that follow from the probe data (probe fetches and bytes, the
+    // cache model) when the baseline's bake used another Embree ISA; exact otherwise.
+    double isaCounterTolerance = 0.005;
+};
+
+// What a run's figures depend on besides the code and the suite (compared, unlike
+// `recorded`): where it differs from the baseline's, the gate says so in a note and compares
+// the figures that depend on it within tolerances (bench/baselines/README.md).
+struct GateEnvironment {
+    std::string embreeIsa;  // "" in a baseline written before it was recorded
+    std::string glRenderer; // GL_RENDERER: llvmpipe names its LLVM and SIMD width
 };
 
 struct AccuracyValues {
@@ -81,6 +98,7 @@ struct CallgrindRecord {
 struct GateRecord {
     GateSuite suite;
     nlohmann::json recorded = nlohmann::json::object(); // where and when (never compared)
+    GateEnvironment environment;
     std::string probes; // identity of the probe data: "<count> probes, fnv1a <hex>"
     std::vector<ProfileRecord> profiles;
     std::vector<CallgrindRecord> callgrind; // at most one per key

@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "probes/AutoPlacement.h"
 #include "probes/Baker.h"
+#include "probes/EmbreeIsa.h"
 #include "probes/ProbeFile.h"
 #include "probes/Scenario.h"
 #include "probes/VolumeFile.h"
@@ -41,8 +42,11 @@ probes::ProbeSet benchProbes(const scene::Scene& s, const std::string& volumes,
     req.settings.bounces = 2;
     req.settings.format = probes::StorageFormat::Rgba16f;
     const std::uint64_t hash = probes::bakeInputHash(s, req);
-    char name[64];
-    std::snprintf(name, sizeof name, "-%016llx.pbp", static_cast<unsigned long long>(hash));
+    // The Embree ISA is part of the name: bakes on two ISAs differ in the last bits, and the
+    // gate (which pins SSE2) must not pick up a bench's native bake or the other way round.
+    char name[96];
+    std::snprintf(name, sizeof name, "-%016llx-%s.pbp", static_cast<unsigned long long>(hash),
+                  probes::embreeIsa().c_str());
     std::error_code ec;
     fs::create_directories(cacheDir, ec);
     if (ec) throw fileError(cacheDir, "cannot create the probe cache folder: " + ec.message());

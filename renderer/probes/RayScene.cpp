@@ -1,6 +1,7 @@
 #include "probes/RayScene.h"
 
 #include "core/Error.h"
+#include "probes/EmbreeIsa.h"
 
 #include <array>
 #include <atomic>
@@ -73,7 +74,8 @@ scene::Bounds staticBakeBounds(const scene::Scene& s) {
 }
 
 RayScene::RayScene(const scene::Scene& s) : recorder_(std::make_unique<Recorder>()) {
-    device_ = rtcNewDevice(nullptr);
+    const std::string config = embreeDeviceConfig(); // PB_EMBREE_ISA (EmbreeIsa.h)
+    device_ = rtcNewDevice(config.empty() ? nullptr : config.c_str());
     if (!device_) throw Error("Embree: cannot create a device");
     rtcSetDeviceErrorFunction(device_, embreeError, nullptr);
     scene_ = rtcNewScene(device_);

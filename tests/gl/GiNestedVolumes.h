@@ -24,8 +24,12 @@ inline probes::ProbeSet makeNestedVolumeProbes(bool hugeRoot) {
             hugeRoot
                 ? syntheticVolume("building", {0.0f, 1.3f, 0.0f}, {40.0f, 20.0f, 40.0f}, {9, 5, 9})
                 : syntheticVolume("building", {0.0f, 1.3f, 0.0f}, {4.3f, 1.6f, 2.8f}, {9, 4, 6});
-        probes::ProbeVolume middle = syntheticVolume("sunlit_room", {-2.0f, 1.3f, 0.0f},
-                                                     {2.0f, 1.4f, 2.5f}, {5, 3, 5}, "building");
+        // The room's box ends inside the walls around it (x in [-4.1, 0]: 10 cm into the west
+        // wall, mid-partition; z 5 cm into the north and south walls), as a user draws one: a
+        // box face on a visible wall would make each of its pixels fall to either volume with
+        // the last bit of its depth (it used to end on the walls' faces, x = -4, z = +-2.5).
+        probes::ProbeVolume middle = syntheticVolume("sunlit_room", {-2.05f, 1.3f, 0.0f},
+                                                     {2.05f, 1.4f, 2.55f}, {5, 3, 5}, "building");
         // Holds a patch of floor and the table's corner.
         probes::ProbeVolume inner = syntheticVolume("sun_patch", {-1.7f, 0.5f, 0.2f},
                                                     {0.7f, 0.55f, 0.7f}, {3, 3, 3}, "sunlit_room");

@@ -154,7 +154,8 @@ TEST(GateOutcome, AnyChangedCounterFailsWithExitThree) {
     // Grouped counters name the field that moved.
     GateRecord now = sampleRecord();
     setCounter(now, "reference", "gl.shadow.programs", 2);
-    const GateRow* r = row(compare(sampleRecord(), now), "reference", "gl.shadow");
+    const GateOutcome changed = compare(sampleRecord(), now); // outlives the row pointer
+    const GateRow* r = row(changed, "reference", "gl.shadow");
     ASSERT_NE(r, nullptr);
     EXPECT_EQ(r->status, RowStatus::Changed);
     EXPECT_EQ(r->baseline, "16/1");
