@@ -58,7 +58,9 @@ mediump vec3 ddgiHalf(highp vec3 v) {
 uniform DDGI_IRRADIANCE_PRECISION sampler2DArray u_ddgiIrradiance; // RGB = E, tiles of DDGI_IRR_TILE^2 texels
 uniform DDGI_PROBE_DATA_PRECISION sampler2DArray u_ddgiVisibility; // RG = mean, mean^2 of distance / maxDistance
 uniform highp sampler2DArray u_ddgiState;      // per probe: xyz relocation (local), w = tile
+#ifdef DDGI_SPARSE_TILES
 uniform ivec2 u_ddgiTileGrid;     // sparse: tiles per row, rows per layer; dense: (0, 0)
+#endif
 uniform vec3 u_ddgiCenter;        // volume centre in the caller's space
 uniform mat3 u_ddgiToLocal;       // R^T: caller's axes -> volume axes
 uniform vec3 u_ddgiHalf;          // half extents
@@ -113,13 +115,18 @@ ivec3 ddgiCorner(int i) {
 
 // The tile (column, row, layer) of a sparse volume's probe from its state's w: +-(slot + 1),
 // 0 = absent; the stored tiles are packed (renderer/probes/SparseLayout.h). Riding on the
-// state fetch costs no extra fetch, only these integer operations; dense volumes skip them
-// (a uniform branch): their probe (i, j, k) owns tile (i, k, layer j).
+// state fetch costs no extra fetch, only these integer operations. They are compiled only for
+// probe sets with a sparse volume (DDGI_SPARSE_TILES, GpuProbes::anySparse): llvmpipe runs
+// both sides of even a uniform branch, and the emulated division and remainders cost a dense
+// set's frame 15% more instructions (bench/README.md). Dense volumes of such a set skip them
+// through the uniform (0, 0); a dense probe (i, j, k) owns tile (i, k, layer j).
+#ifdef DDGI_SPARSE_TILES
 ivec3 ddgiTile(float stateW) {
     int slot = int(abs(stateW) + 0.5) - 1;
     return ivec3(slot % u_ddgiTileGrid.x, (slot / u_ddgiTileGrid.x) % u_ddgiTileGrid.y,
                  slot / (u_ddgiTileGrid.x * u_ddgiTileGrid.y));
 }
+#endif
 
 // Visibility-and-position weight of probe q (README steps 4a-4d); < 0 when q is skipped
 // (outside the grid, invalid or absent). `tile`: where q's texels are.
@@ -129,9 +136,11 @@ hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, hvec3 n, vec3 biased, hvec3 a
     if (any(greaterThanEqual(q, u_ddgiCounts))) return -1.0;
     vec4 state = texelFetch(u_ddgiState, ivec3(q.x, q.z, q.y), 0);
     if (state.w < 0.5) return -1.0;
+#ifdef DDGI_SPARSE_TILES
     if (u_ddgiTileGrid.x > 0)
         tile = ddgiTile(state.w);
     else
+#endif
         tile = ivec3(q.x, q.z, q.y);
     vec3 probe = u_ddgiGridOrigin + vec3(q) * u_ddgiGridStep + state.xyz;
 

@@ -54,8 +54,8 @@ std::vector<glm::vec4> GiPointEvaluator::evaluate(const std::vector<GiPoint>& po
     glDisable(GL_BLEND);
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    const gl::Program& prog =
-        programs_.get("fullscreen.vert", "gi_ddgi_points.frag", giShaderDefines(profile_));
+    const gl::Program& prog = programs_.get("fullscreen.vert", "gi_ddgi_points.frag",
+                                            giShaderDefines(profile_, &probes_));
     prog.use();
     posTex.bind(0);
     nrmTex.bind(1);

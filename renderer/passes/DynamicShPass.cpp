@@ -44,7 +44,7 @@ std::vector<glm::vec4> shFitWeights(const std::vector<glm::vec3>& directions) {
 
 DynamicShPass::DynamicShPass(const GpuProbes& probes, const profile::Profile& profile,
                              const scene::Scene& scene)
-    : probes_(probes), defines_(giShaderDefines(profile)), objects_(findDynamicObjects(scene)),
+    : probes_(probes), defines_(giShaderDefines(profile, &probes)), objects_(findDynamicObjects(scene)),
       rows_(checkedRows(objects_)), directions_(floatTexture(kDirections, rows_)),
       positions_(floatTexture(kDirections, rows_)), weights_(floatTexture(kDirections, 1)),
       lookups_(floatTexture(kDirections, rows_)), coefficients_(floatTexture(4, rows_)),

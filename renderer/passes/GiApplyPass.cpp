@@ -9,10 +9,11 @@
 
 namespace pb::render {
 
-gl::Defines giShaderDefines(const profile::Profile& p) {
+gl::Defines giShaderDefines(const profile::Profile& p, const GpuProbes* probes) {
     gl::Defines d = ddgiConstantDefines();
     for (const auto& [name, value] : profile::shaderDefines(p))
         d[name] = value;
+    if (probes && probes->anySparse()) d["DDGI_SPARSE_TILES"] = "";
     return d;
 }
 
@@ -80,7 +81,7 @@ void resetState() {
 } // namespace
 
 GiApplyPass::GiApplyPass(const GpuProbes& probes, const profile::Profile& profile)
-    : probes_(probes), profile_(profile), defines_(giShaderDefines(profile)) {
+    : probes_(probes), profile_(profile), defines_(giShaderDefines(profile, &probes)) {
     checkGiProfileSupported(profile);
 }
 

@@ -17,8 +17,9 @@
 namespace pb::render {
 
 // Every define a GI shader variant gets from the profile (SwitchTable) plus the sampler's
-// constants (DDGI_*).
-gl::Defines giShaderDefines(const profile::Profile& p);
+// constants (DDGI_*), plus DDGI_SPARSE_TILES when `probes` (the set it will sample) has a
+// sparse volume: the indirection's integer arithmetic is compiled only where data needs it.
+gl::Defines giShaderDefines(const profile::Profile& p, const GpuProbes* probes = nullptr);
 gl::TextureFormat giTargetFormat(profile::GiTargetFormat f);
 
 // Throws pb::Error when the profile asks for a switch value this pass does not implement yet.

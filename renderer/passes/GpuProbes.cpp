@@ -106,6 +106,11 @@ std::string glslFloat(float v) {
 
 } // namespace
 
+bool GpuProbes::anySparse() const {
+    return std::any_of(volumes_.begin(), volumes_.end(),
+                       [](const GpuProbeVolume& g) { return g.sparse; });
+}
+
 gl::Defines ddgiConstantDefines() {
     using namespace probes;
     return {

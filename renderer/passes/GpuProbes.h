@@ -45,6 +45,9 @@ public:
 
     const std::vector<GpuProbeVolume>& volumes() const { return volumes_; }
     std::size_t bytes() const; // GPU memory of everything uploaded
+    // Whether a volume stores its tiles packed (sparse): then, and only then, GI shaders are
+    // built with the tile indirection (DDGI_SPARSE_TILES, common_ddgi.glsl).
+    bool anySparse() const;
     const std::string& scenarioName() const { return scenario_; }
     probes::StorageFormat format() const { return format_; }
 

@@ -172,7 +172,9 @@ TEST_F(GiSparseTest, AbsentProbesWeighZeroLikeInvalidOnes) {
 // must still go through the indirection (the tiles after the gap moved by one).
 TEST_F(GiSparseTest, OneAbsentProbePerVolumeStillUsesTheIndirection) {
     const probes::ProbeSet one = storedEvery(0);
-    for (const auto& v : render::GpuProbes(one, 0).volumes())
+    const render::GpuProbes gpu(one, 0); // named: volumes() refers into it
+    ASSERT_TRUE(gpu.anySparse());
+    for (const auto& v : gpu.volumes())
         ASSERT_TRUE(v.sparse && v.packedCounts == v.counts) << v.name;
     int unlit = 0;
     const Difference d = againstInvalid(one, unlit);

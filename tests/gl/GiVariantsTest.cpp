@@ -67,15 +67,20 @@ TEST_P(GiVariantsTest, EveryCombinationCompilesAndLinks) {
         for (const auto& c : p.changedSwitches())
             what += " " + c;
         try {
-            for (const ProgramSpec& s : kGiPrograms)
-                programs.get(s.vertex, s.fragment, render::giShaderDefines(p));
+            // Each variant with and without the sparse tile indirection (DDGI_SPARSE_TILES).
+            for (const ProgramSpec& s : kGiPrograms) {
+                gl::Defines d = render::giShaderDefines(p);
+                programs.get(s.vertex, s.fragment, d);
+                d["DDGI_SPARSE_TILES"] = "";
+                programs.get(s.vertex, s.fragment, d);
+            }
             programs.get("fullscreen.vert", "lighting_direct.frag", lighting);
             ++compiled;
         } catch (const Error& e) {
             ADD_FAILURE() << "variant" << (what.empty() ? " defaults" : what) << ": " << e.what();
         }
     }
-    std::printf("[ variants ] %s: %d combinations compiled and linked (%zu programs each), %d "
+    std::printf("[ variants ] %s: %d combinations compiled and linked (%zu programs each, GI programs also with DDGI_SPARSE_TILES), %d "
                 "use values not implemented yet\n",
                 GetParam().c_str(), compiled, std::size(kGiPrograms) + 1, notImplemented);
     EXPECT_GT(compiled, 0);
