@@ -135,6 +135,21 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
             e = std::max(e, double(v.probeCount()) / double(kMaxProbesPerVolume));
         return e;
     };
+    // Geometric bisection between a spacing that does not fit and one that does (`best`, the
+    // placement at `fitting`): the finest placement that fits, to within 2%.
+    auto bisect = [&](float failing, float fitting, AutoPlacementResult best, int levels) {
+        for (int i = 0; i < 5 && fitting > failing * 1.02f; ++i) {
+            const float mid = std::sqrt(failing * fitting);
+            AutoPlacementResult m = place(mid, levels);
+            if (fits(m)) {
+                fitting = mid;
+                best = std::move(m);
+            } else {
+                failing = mid;
+            }
+        }
+        return best;
+    };
     // Grow the spacing until the placement fits (probes fall with the spacing squared near
     // surfaces, cubed in open space: the square root never undershoots much), then bisect
     // towards the finest spacing that fits.
@@ -155,18 +170,7 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
                             " probes); raise it, lower --auto-levels or use auto-uniform");
             r = std::move(next);
         }
-        AutoPlacementResult best = r;
-        for (int i = 0; i < 5 && hi > lo * 1.02f; ++i) {
-            float mid = std::sqrt(lo * hi);
-            AutoPlacementResult m = place(mid, levels);
-            if (fits(m)) {
-                hi = mid;
-                best = std::move(m);
-            } else {
-                lo = mid;
-            }
-        }
-        return best;
+        return bisect(lo, hi, std::move(r), levels);
     };
     // Sparse storage: memory follows the surface, not the volume, so the starting spacing often
     // fits with room to spare: shrink it while it fits, then bisect (the mirror of coarsen).
@@ -180,17 +184,7 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
             coarse = fine;
             best = std::move(next);
         }
-        for (int i = 0; i < 5 && coarse > fine * 1.02f; ++i) {
-            float mid = std::sqrt(fine * coarse);
-            AutoPlacementResult m = place(mid, levels);
-            if (fits(m)) {
-                coarse = mid;
-                best = std::move(m);
-            } else {
-                fine = mid;
-            }
-        }
-        return best;
+        return bisect(fine, coarse, std::move(best), levels);
     };
     auto finest = [](const AutoPlacementResult& r) {
         float f = std::numeric_limits<float>::infinity();
