@@ -351,7 +351,8 @@ const RegisterCommand reg{
          cmd.add_option("--set", a->sets, "Switch key=value applied to the base (repeatable)");
          cmd.add_option("--search", a->search,
                         "Only these switches are searched, comma-separated (default: every "
-                        "switch of the table)")
+                        "switch of the table except the guards gi.guard_*, which are held at "
+                        "the base unless named here)")
              ->delimiter(',');
          cmd.add_option("--width", a->width, "Output width (default: the base profile's)");
          cmd.add_option("--height", a->height, "Output height (default: the base profile's)");

@@ -28,6 +28,13 @@ TuneSpace makeTuneSpace(const profile::Profile& base, const TuneContext& context
             space.fixed.push_back(s.key + ": not in --search");
             continue;
         }
+        // A guard protects against inputs the tuned scene need not contain (fp16 overflow at
+        // extreme light, README "What breaks where"); on an ordinary scene turning it off only
+        // looks free, so it is searched only when --search names it.
+        if (only.empty() && isGuard(s.key)) {
+            space.fixed.push_back(s.key + ": a guard (searched only when --search names it)");
+            continue;
+        }
         std::vector<std::string> values{current};
         if (s.kind == profile::SwitchKind::Choice)
             values.insert(values.end(), s.choices.begin(), s.choices.end());
@@ -52,6 +59,10 @@ TuneSpace makeTuneSpace(const profile::Profile& base, const TuneContext& context
         space.axes.push_back({s.key, unique});
     }
     return space;
+}
+
+bool isGuard(const std::string& key) {
+    return key.rfind("gi.guard_", 0) == 0;
 }
 
 profile::Profile canonical(const profile::Profile& p, const TuneSpace& space) {

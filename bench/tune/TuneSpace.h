@@ -36,10 +36,13 @@ struct TuneSpace {
     std::size_t combinations() const; // product of the axes' sizes (before canonical de-dup)
 };
 
-// `only` (tune --search): the keys to search; empty = every switch. Throws pb::Error for an
-// unknown key in `only`.
+// `only` (tune --search): the keys to search; empty = every switch but the guards
+// (gi.guard_*: held at the base unless named). Throws pb::Error for an unknown key in `only`.
 TuneSpace makeTuneSpace(const profile::Profile& base, const TuneContext& context,
                         const std::vector<std::string>& only = {});
+
+// gi.guard_*: the switches that keep extreme inputs finite (renderer/stress).
+bool isGuard(const std::string& key);
 
 profile::Profile canonical(const profile::Profile& p, const TuneSpace& space);
 // A stable identity of a canonical profile (its values as JSON text).

@@ -83,12 +83,19 @@ TEST(TuneSpace, ComesFromTheSwitchTableWithEquivalentValuesMergedOnce) {
         keys.insert(a.key);
         EXPECT_EQ(a.values.front(), profile::findSwitch(a.key)->get(base)) << a.key;
     }
-    // Every Choice row with more than one value is searched, except gi.dynamic here.
+    // Every Choice row with more than one value is searched, except gi.dynamic here and the
+    // guards, which are held unless --search names them.
+    int guards = 0;
     for (const profile::SwitchInfo& s : profile::switchTable())
         if (s.kind == profile::SwitchKind::Choice && s.choices.size() > 1 &&
             s.key != "gi.dynamic") {
-            EXPECT_TRUE(keys.count(s.key)) << s.key;
+            EXPECT_EQ(keys.count(s.key), bench::isGuard(s.key) ? 0u : 1u) << s.key;
+            guards += bench::isGuard(s.key) ? 1 : 0;
         }
+    EXPECT_GE(guards, 2) << "gi.guard_exposure and gi.guard_clamp are guards";
+    const bench::TuneSpace guard = bench::makeTuneSpace(base, ctx, {"gi.guard_exposure"});
+    ASSERT_EQ(guard.axes.size(), 1u);
+    EXPECT_EQ(guard.axes[0].key, "gi.guard_exposure");
     EXPECT_FALSE(keys.count("gi.dynamic")) << "no dynamic objects: the SH pass is skipped";
     EXPECT_FALSE(keys.count("gi.volume_lod")) << "one level only";
 
