@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Line coverage of the readers reached by the working corpus of fuzz/run.sh: builds the
 # targets with llvm-cov instrumentation into build-fuzz-cov/, replays build-fuzz/corpus/<t>
-# and fuzz/seeds/<t>
+# and tests/data/fuzz-seeds/<t>
 # (no fuzzing, -runs=0), and prints llvm-cov's per-file table for the project's own files.
 #   fuzz/coverage.sh [TARGET...]      targets: gltf glb volume_toml probe_file
 set -euo pipefail
@@ -16,7 +16,7 @@ mkdir -p "$out/profiles"
 objects=()
 for t in "${targets[@]}"; do
     LLVM_PROFILE_FILE="$out/profiles/$t.profraw" "$out/fuzz/fuzz_$t" -runs=0 \
-        "build-fuzz/corpus/$t" "fuzz/seeds/$t" >"$out/profiles/$t.log" 2>&1
+        "build-fuzz/corpus/$t" "tests/data/fuzz-seeds/$t" >"$out/profiles/$t.log" 2>&1
     objects+=(-object "$out/fuzz/fuzz_$t")
 done
 llvm-profdata merge -sparse "$out"/profiles/*.profraw -o "$out/profiles/merged.profdata"

@@ -7,7 +7,7 @@ infinity, a storage scale that is not a power of two). The fields are found by w
 file's layout (renderer/probes/README.md, "File format"), so a new record moves the offsets
 here, not by hand. The checksum is recomputed, so the bad value reaches its check.
 
-    fuzz/make_probe_regressions.py fuzz/seeds/probe_file/cornell_rgba16f.pbp \\
+    fuzz/make_probe_regressions.py tests/data/fuzz-seeds/probe_file/cornell_rgba16f.pbp \\
         tests/data/fuzz-regressions/probe_file
 """
 import pathlib

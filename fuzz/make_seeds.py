@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the committed seed corpus of the glTF, GLB and volume-TOML fuzzers (fuzz/seeds/).
+"""Writes the committed seed corpus of the glTF, GLB and volume-TOML fuzzers (tests/data/fuzz-seeds/).
 
 Small valid files that between them reach every part of the loaders: indexed and non-indexed
 triangles, u8/u16/u32 indices, interleaved strides, KHR_mesh_quantization attributes, normals,
@@ -13,7 +13,7 @@ import pathlib
 import struct
 import zlib
 
-OUT = pathlib.Path(__file__).resolve().parent / "seeds"
+OUT = pathlib.Path(__file__).resolve().parent.parent / "tests" / "data" / "fuzz-seeds"
 
 
 def tiny_png(width=2, height=2):

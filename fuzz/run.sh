@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (clang, coverage + ASan + UBSan) into build-fuzz/ and runs each
 # for a bounded time on a working corpus (build-fuzz/corpus/<target>/) plus the committed
-# seeds (fuzz/seeds/<target>/) and probe files baked by build/probebench (when it exists).
+# seeds (tests/data/fuzz-seeds/<target>/) and probe files baked by build/probebench (when it exists).
 # fuzz/README.md explains the targets and the results.
 #
 #   fuzz/run.sh [SECONDS_PER_TARGET=300] [TARGET...]
@@ -61,7 +61,7 @@ for t in "${targets[@]}"; do
     # finding (a few bytes must never make the loader allocate gigabytes).
     set +e
     # New inputs go to the first folder; the committed seeds are read, never written.
-    "$out/fuzz/fuzz_$t" "$corpus" "fuzz/seeds/$t" "${dict[@]}" -max_total_time="$seconds" \
+    "$out/fuzz/fuzz_$t" "$corpus" "tests/data/fuzz-seeds/$t" "${dict[@]}" -max_total_time="$seconds" \
         -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$artifacts/" \
         >"$out/logs/$t.log" 2>&1
     rc=$?

@@ -1,4 +1,4 @@
-// Replays, in every build, the fuzzers' seed corpus (fuzz/seeds/) and every input that once
+// Replays, in every build, the fuzzers' seed corpus (tests/data/fuzz-seeds/) and every input that once
 // crashed, hung or broke the error contract of a reader (tests/data/fuzz-regressions/<target>/,
 // found by the fuzzers in fuzz/ or by hand): each must load or give a one-line pb::Error that
 // starts with the file's name (fuzz/FuzzInputs.h). A crash or sanitizer report fails the case.
@@ -21,7 +21,7 @@ namespace {
 using Runner = Outcome (*)(const std::vector<std::uint8_t>&, const fs::path& scratch);
 
 struct Target {
-    const char* name; // folder under fuzz/seeds and tests/data/fuzz-regressions
+    const char* name; // folder under tests/data/fuzz-seeds and tests/data/fuzz-regressions
     Runner run;
 };
 void PrintTo(const Target& t, std::ostream* os) {
@@ -82,7 +82,7 @@ class FuzzCorpus : public ::testing::TestWithParam<Target> {};
 // The seeds are valid files that reach deep into the readers: at least one per target loads
 // (so a format change that silently invalidates them all shows up here).
 TEST_P(FuzzCorpus, SeedsLoadOrFailCleanly) {
-    const fs::path dir = pb::test::sourceDir() / "fuzz" / "seeds" / GetParam().name;
+    const fs::path dir = pb::test::testDataDir() / "fuzz-seeds" / GetParam().name;
     if (filesIn(dir).empty())
         GTEST_SKIP() << "no committed seeds for " << GetParam().name << " (fuzz/run.sh makes them)";
     EXPECT_GT(replay(GetParam(), dir, pb::test::outputDir()), 0)

@@ -240,7 +240,7 @@ TEST(GltfHostileInput, TexturesDecodeToRgba8) {
 
     // The 4x4 JPEG of the fuzz seeds (fuzz/make_seeds.py), through libjpeg-turbo.
     const std::vector<std::uint8_t> seed =
-        pb::readFileBytes((pb::test::sourceDir() / "fuzz/seeds/glb/textured.glb").string());
+        pb::readFileBytes((pb::test::sourceDir() / "tests/data/fuzz-seeds/glb/textured.glb").string());
     const std::string text(seed.begin(), seed.end());
     const std::size_t begin = text.find("\xFF\xD8\xFF"), end = text.rfind("\xFF\xD9");
     ASSERT_TRUE(begin != std::string::npos && end != std::string::npos && end > begin);

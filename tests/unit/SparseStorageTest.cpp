@@ -262,12 +262,12 @@ TEST(SparseStorage, CorruptStorageRecordIsAClearError) {
     EXPECT_NE(bits.find("p.pbp: "), std::string::npos) << bits;
 }
 
-// The bytes of the committed sparse seed (fuzz/seeds/probe_file/courtyard_sparse_bc6h.pbp),
+// The bytes of the committed sparse seed (tests/data/fuzz-seeds/probe_file/courtyard_sparse_bc6h.pbp),
 // flipped, with size and checksum made to match, through the fuzzers' contract: it loads
 // (and samples finite) or is a one-line error naming the file.
 TEST(SparseStorage, EveryFlippedByteOfASparseFileKeepsTheErrorContract) {
     const std::vector<std::uint8_t> seed = pb::readFileBytes(
-        (pb::test::sourceDir() / "fuzz/seeds/probe_file/courtyard_sparse_bc6h.pbp").string());
+        (pb::test::sourceDir() / "tests/data/fuzz-seeds/probe_file/courtyard_sparse_bc6h.pbp").string());
     ASSERT_GT(seed.size(), 100u);
     ASSERT_LT(parseProbeSet(seed, "seed.pbp").storedCount(),
               parseProbeSet(seed, "seed.pbp").probeCount());
