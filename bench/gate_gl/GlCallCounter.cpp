@@ -10,21 +10,28 @@ namespace {
 
 GlCallCounter* active = nullptr;
 
+// Every counted entry point, once: X(loader pointer, shim and saved-pointer name, type). The
+// saved pointers, installing and uninstalling all come from this list, so they cannot drift.
+#define PB_COUNTED_GL_CALLS(X)                                                                     \
+    X(glad_glDrawArrays, drawArrays, PFNGLDRAWARRAYSPROC)                                          \
+    X(glad_glDrawElements, drawElements, PFNGLDRAWELEMENTSPROC)                                    \
+    X(glad_glDrawArraysInstanced, drawArraysInstanced, PFNGLDRAWARRAYSINSTANCEDPROC)               \
+    X(glad_glDrawElementsInstanced, drawElementsInstanced, PFNGLDRAWELEMENTSINSTANCEDPROC)         \
+    X(glad_glDrawRangeElements, drawRangeElements, PFNGLDRAWRANGEELEMENTSPROC)                     \
+    X(glad_glUseProgram, useProgram, PFNGLUSEPROGRAMPROC)                                          \
+    X(glad_glBindTexture, bindTexture, PFNGLBINDTEXTUREPROC)                                       \
+    X(glad_glClear, clear, PFNGLCLEARPROC)                                                         \
+    X(glad_glClearBufferfv, clearBufferfv, PFNGLCLEARBUFFERFVPROC)                                 \
+    X(glad_glClearBufferiv, clearBufferiv, PFNGLCLEARBUFFERIVPROC)                                 \
+    X(glad_glClearBufferuiv, clearBufferuiv, PFNGLCLEARBUFFERUIVPROC)                              \
+    X(glad_glClearBufferfi, clearBufferfi, PFNGLCLEARBUFFERFIPROC)                                 \
+    X(glad_glBindFramebuffer, bindFramebuffer, PFNGLBINDFRAMEBUFFERPROC)
+
 // The driver's entry points while the shims are installed.
 struct Originals {
-    PFNGLDRAWARRAYSPROC drawArrays;
-    PFNGLDRAWELEMENTSPROC drawElements;
-    PFNGLDRAWARRAYSINSTANCEDPROC drawArraysInstanced;
-    PFNGLDRAWELEMENTSINSTANCEDPROC drawElementsInstanced;
-    PFNGLDRAWRANGEELEMENTSPROC drawRangeElements;
-    PFNGLUSEPROGRAMPROC useProgram;
-    PFNGLBINDTEXTUREPROC bindTexture;
-    PFNGLCLEARPROC clear;
-    PFNGLCLEARBUFFERFVPROC clearBufferfv;
-    PFNGLCLEARBUFFERIVPROC clearBufferiv;
-    PFNGLCLEARBUFFERUIVPROC clearBufferuiv;
-    PFNGLCLEARBUFFERFIPROC clearBufferfi;
-    PFNGLBINDFRAMEBUFFERPROC bindFramebuffer;
+#define PB_SAVED_POINTER(loader, name, type) type name;
+    PB_COUNTED_GL_CALLS(PB_SAVED_POINTER)
+#undef PB_SAVED_POINTER
 } orig;
 
 void GLAD_API_PTR drawArrays(GLenum m, GLint f, GLsizei n) {
@@ -97,35 +104,15 @@ GlCallCounter::GlCallCounter() {
     if (active) throw Error("GL call counter: another counter is installed");
     active = this;
     sections_.push_back({"frame", {}});
-    swapIn(glad_glDrawArrays, orig.drawArrays, &drawArrays);
-    swapIn(glad_glDrawElements, orig.drawElements, &drawElements);
-    swapIn(glad_glDrawArraysInstanced, orig.drawArraysInstanced, &drawArraysInstanced);
-    swapIn(glad_glDrawElementsInstanced, orig.drawElementsInstanced, &drawElementsInstanced);
-    swapIn(glad_glDrawRangeElements, orig.drawRangeElements, &drawRangeElements);
-    swapIn(glad_glUseProgram, orig.useProgram, &useProgram);
-    swapIn(glad_glBindTexture, orig.bindTexture, &bindTexture);
-    swapIn(glad_glClear, orig.clear, &clear);
-    swapIn(glad_glClearBufferfv, orig.clearBufferfv, &clearBufferfv);
-    swapIn(glad_glClearBufferiv, orig.clearBufferiv, &clearBufferiv);
-    swapIn(glad_glClearBufferuiv, orig.clearBufferuiv, &clearBufferuiv);
-    swapIn(glad_glClearBufferfi, orig.clearBufferfi, &clearBufferfi);
-    swapIn(glad_glBindFramebuffer, orig.bindFramebuffer, &bindFramebuffer);
+#define PB_SWAP_IN(loader, name, type) swapIn(loader, orig.name, &name);
+    PB_COUNTED_GL_CALLS(PB_SWAP_IN)
+#undef PB_SWAP_IN
 }
 
 GlCallCounter::~GlCallCounter() {
-    swapOut(glad_glDrawArrays, orig.drawArrays);
-    swapOut(glad_glDrawElements, orig.drawElements);
-    swapOut(glad_glDrawArraysInstanced, orig.drawArraysInstanced);
-    swapOut(glad_glDrawElementsInstanced, orig.drawElementsInstanced);
-    swapOut(glad_glDrawRangeElements, orig.drawRangeElements);
-    swapOut(glad_glUseProgram, orig.useProgram);
-    swapOut(glad_glBindTexture, orig.bindTexture);
-    swapOut(glad_glClear, orig.clear);
-    swapOut(glad_glClearBufferfv, orig.clearBufferfv);
-    swapOut(glad_glClearBufferiv, orig.clearBufferiv);
-    swapOut(glad_glClearBufferuiv, orig.clearBufferuiv);
-    swapOut(glad_glClearBufferfi, orig.clearBufferfi);
-    swapOut(glad_glBindFramebuffer, orig.bindFramebuffer);
+#define PB_SWAP_OUT(loader, name, type) swapOut(loader, orig.name);
+    PB_COUNTED_GL_CALLS(PB_SWAP_OUT)
+#undef PB_SWAP_OUT
     active = nullptr;
 }
 

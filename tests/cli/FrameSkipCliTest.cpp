@@ -1,5 +1,6 @@
 // `probebench render --verbose` names every pass and resource the frame skipped, one line each,
 // with why (renderer/README.md "What the frame skips"); --json carries the same list.
+#include "support/CliBakes.h"
 #include "support/RunCommand.h"
 #include "support/TestEnv.h"
 
@@ -12,14 +13,8 @@ using namespace pb::test;
 namespace {
 
 const fs::path& nestedRoomsProbes() {
-    static const fs::path file = [] {
-        fs::path f = fs::path(PB_TEST_OUTPUT_DIR) / "rooms_nested_skip_cli.pbp";
-        auto r = runProbebench({"bake", "--scene", "rooms", "--volumes",
-                                (sourceDir() / "bench/volumes/rooms_nested.toml").string(),
-                                "--rays", "32", "--bounces", "1", "--out", f.string()});
-        EXPECT_EQ(r.exitCode, 0) << r.output;
-        return f;
-    }();
+    static const fs::path file =
+        bakeNestedRooms(fs::path(PB_TEST_OUTPUT_DIR) / "rooms_nested_skip_cli.pbp");
     return file;
 }
 

@@ -4,6 +4,7 @@
 // profile loads and renders, the re-measurement reproduces the deterministic figures, and an
 // impossible budget fails with one line and writes nothing. The search's choice under a time
 // budget that excludes full resolution is tested without timings in tests/unit/TuneTest.cpp.
+#include "support/CliBakes.h"
 #include "support/RunCommand.h"
 #include "support/TestEnv.h"
 
@@ -18,14 +19,8 @@ using namespace pb::test;
 namespace {
 
 const fs::path& nestedProbes() {
-    static const fs::path file = [] {
-        fs::path f = fs::path(PB_TEST_OUTPUT_DIR) / "rooms_nested_tune_cli.pbp";
-        auto r = runProbebench({"bake", "--scene", "rooms", "--volumes",
-                                (sourceDir() / "bench/volumes/rooms_nested.toml").string(),
-                                "--rays", "32", "--bounces", "1", "--out", f.string()});
-        EXPECT_EQ(r.exitCode, 0) << r.output;
-        return f;
-    }();
+    static const fs::path file =
+        bakeNestedRooms(fs::path(PB_TEST_OUTPUT_DIR) / "rooms_nested_tune_cli.pbp");
     return file;
 }
 

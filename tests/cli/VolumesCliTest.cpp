@@ -1,6 +1,7 @@
 // `probebench volumes [--rank [--write-ranks]]` and gi.volume_lod=rank_budget_mib on `render`:
 // on `rooms` with a volume per room nested in one over the house, the sunlit room's own view
 // ranks its room's volume above the dark room's, and a budget for one child keeps that one.
+#include "support/CliBakes.h"
 #include "support/RunCommand.h"
 #include "support/TestEnv.h"
 
@@ -14,12 +15,7 @@ namespace {
 
 // Its own copy per test: --write-ranks puts a sidecar next to it.
 fs::path bakeNested(const fs::path& dir) {
-    const fs::path f = dir / "rooms_nested.pbp";
-    auto r = runProbebench({"bake", "--scene", "rooms", "--volumes",
-                            (sourceDir() / "bench/volumes/rooms_nested.toml").string(), "--rays",
-                            "32", "--bounces", "1", "--out", f.string()});
-    EXPECT_EQ(r.exitCode, 0) << r.output;
-    return f;
+    return bakeNestedRooms(dir / "rooms_nested.pbp");
 }
 
 nlohmann::json parseJson(const std::string& output) {
