@@ -157,11 +157,11 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
         const bool sparse = g.sparse = probes::isSparse(states);
         g.packedCounts =
             sparse ? probes::packedCounts(probes::storedCount(states), v.counts) : v.counts;
+        const std::vector<int> slots = sparse ? probes::packedSlots(states) : std::vector<int>{};
         probes::ProbeTexture scratch;
         auto packed = [&](const probes::ProbeTexture& t, int tile) -> const probes::ProbeTexture& {
             if (!sparse) return t;
-            scratch = probes::packTiles(t, probes::packedSlots(states), v.counts, g.packedCounts,
-                                        tile, format_);
+            scratch = probes::packTiles(t, slots, v.counts, g.packedCounts, tile, format_);
             return scratch;
         };
         g.irradiance = uploadProbeTexture(
