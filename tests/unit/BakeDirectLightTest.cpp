@@ -5,9 +5,11 @@
 #include "probes/ParallelFor.h"
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <stdexcept>
+#include <thread>
 
 using namespace pb::probes;
 using namespace pb::test;
@@ -110,4 +112,27 @@ TEST(BakeParallelFor, RunsEveryItemOnceAndRethrows) {
                              }),
                  std::runtime_error);
     parallelFor(0, 2, [](std::size_t, int) { FAIL(); });
+}
+
+TEST(BakeParallelFor, TheCallingThreadIsWorkerZeroAndTicks) {
+    // Progress callbacks (a terminal bar) run on the caller's thread, never on a helper.
+    const std::thread::id caller = std::this_thread::get_id();
+    std::atomic<int> zeroElsewhere{0}, ticksElsewhere{0};
+    std::vector<std::size_t> ticks;
+    parallelFor(
+        2000, 2,
+        [&](std::size_t, int t) {
+            if (t == 0 && std::this_thread::get_id() != caller) ++zeroElsewhere;
+            std::this_thread::sleep_for(std::chrono::microseconds(150)); // ~150 ms in all
+        },
+        [&](std::size_t done) {
+            if (std::this_thread::get_id() != caller) ++ticksElsewhere;
+            ticks.push_back(done);
+        });
+    EXPECT_EQ(zeroElsewhere.load(), 0);
+    EXPECT_EQ(ticksElsewhere.load(), 0);
+    ASSERT_FALSE(ticks.empty());
+    EXPECT_EQ(ticks.back(), 2000u);
+    for (std::size_t i = 1; i < ticks.size(); ++i)
+        EXPECT_LE(ticks[i - 1], ticks[i]); // progress never goes back
 }
