@@ -10,6 +10,16 @@
 
 namespace pb::probes {
 
+// The lookup's two halves exist twice, for the baseline x86-64 and for AVX2 (chosen once by the
+// loader, ifunc). The same IEEE operations in the same order either way - AVX2 without FMA,
+// and the file is built with -ffp-contract=off - so both give the same bits; the AVX2 one runs
+// the 8 corners in one vector. Other architectures build the one version.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define PB_SAMPLER_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define PB_SAMPLER_CLONES
+#endif
+
 namespace {
 
 // floor() for the texel math: an int conversion (libm's floor is a call without SSE4.1).
@@ -272,9 +282,9 @@ void ProbeSampler::sampleBatch(const SampleQuery* q, std::size_t count, Irradian
     }
 }
 
-void ProbeSampler::prepare(int vi, const glm::vec3& pos, const glm::vec3& normal,
-                           const glm::vec3& view, SampleOptions opt, Lookup& k,
-                           SampleTrace* trace) const {
+PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const glm::vec3& normal,
+                                             const glm::vec3& view, SampleOptions opt, Lookup& k,
+                                             SampleTrace* trace) const {
     k.out = {};
     k.done = true;
     if (trace) *trace = SampleTrace{};
@@ -396,7 +406,7 @@ void ProbeSampler::prepare(int vi, const glm::vec3& pos, const glm::vec3& normal
     k.done = false;
 }
 
-IrradianceSample ProbeSampler::finish(const Lookup& k) const {
+PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
     if (k.done) return k.out;
     IrradianceSample out = k.out;
     const Frame& f = *k.frame;

@@ -135,6 +135,8 @@ private:
     std::vector<Frame> frames_;
     std::size_t keyCount_ = 1;
     struct Lookup; // a lookup between its address phase (prepare) and its weights (finish)
+    // Both are also compiled for AVX2 and picked at load time (PB_SAMPLER_CLONES,
+    // ProbeSampler.cpp): the 8 corners then run as one 8-lane vector instead of two 4-lane ones.
     void prepare(int volume, const glm::vec3& pos, const glm::vec3& normal, const glm::vec3& view,
                  SampleOptions opt, Lookup& k, SampleTrace* trace = nullptr) const;
     IrradianceSample finish(const Lookup& k) const;
