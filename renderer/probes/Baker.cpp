@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 #include "probes/BakeOrigin.h"
+#include "probes/BakePhaseClock.h"
 #include "probes/GeometryPass.h"
 #include "probes/NestingBlend.h"
 #include "probes/ParallelFor.h"
@@ -11,9 +12,9 @@
 #include "probes/SparseStorage.h"
 #include "probes/StorageScale.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <ctime>
 
 namespace pb::probes {
 namespace {
@@ -21,11 +22,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) {
     return std::chrono::duration<double>(Clock::now() - t0).count();
-}
-double processCpuSeconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
 // Flat probe numbering over all volumes.
@@ -93,9 +89,8 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     const int threads = resolveThreadCount(req.threads);
     RayScene rs(scene);
     const double buildSeconds = since(t0);
-    const auto tTrace = Clock::now();
-    const double cpuTrace = processCpuSeconds();
     if (req.recordRays) rs.startRecording();
+    BakePhaseClock phases; // the tracing time is the sum of its phases
 
     ProbeSet set;
     set.inputHash = bakeInputHash(scene, req);
@@ -149,6 +144,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         doneBefore += index.total();
         for (ProbeTexture& t : set.visibility)
             fillAllBorders(t, kVisibilityInterior);
+        phases.mark("geometry");
     }
 
     // 2. Radiance, per scenario and pass.
@@ -184,53 +180,73 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
                 req.slabProbes > 0 ? std::size_t(req.slabProbes)
                                    : std::max<std::size_t>(1, (std::size_t(1) << 18) /
                                                                   std::size_t(cfg.raysPerProbe));
+            phases.mark("setup");
+            // Convolves probe `first + i` of the slab into its irradiance tile.
+            auto writeTile = [&](std::size_t first, std::size_t i, int t) {
+                auto [v, p] = index.locate(first + i);
+                const ProbeVolume& vol = set.volumes[size_t(v)];
+                const ProbeState& st = set.states[size_t(v)][size_t(p)];
+                glm::ivec3 c = vol.probeCoords(p);
+                float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
+                const int pitch = cur[size_t(v)].shape.width;
+                for (int y = 0; y < kIrradianceTile; ++y)
+                    for (int x = 0; x < kIrradianceTile; ++x)
+                        tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
+                if (!st.valid) return;
+                float* out = irr[size_t(t)].data();
+                slab.convolve(i, conv, out);
+                for (int y = 0; y < kIrradianceInterior; ++y)
+                    for (int x = 0; x < kIrradianceInterior; ++x)
+                        for (int ch = 0; ch < 3; ++ch)
+                            tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 + size_t(ch)] =
+                                out[(y * kIrradianceInterior + x) * 3 + ch];
+            };
             for (std::size_t first = 0; first < index.total(); first += slabProbes) {
                 const std::size_t count = std::min(slabProbes, index.total() - first);
                 slab.reset(count, cfg.raysPerProbe);
-                parallelFor(count, threads, [&](std::size_t i, int t) {
-                    auto [v, p] = index.locate(first + i);
-                    const ProbeVolume& vol = set.volumes[size_t(v)];
-                    const ProbeState& st = set.states[size_t(v)][size_t(p)];
-                    if (!st.valid) return;
-                    glm::ivec3 c = vol.probeCoords(p);
-                    slab.trace(i, rs, sc, scene.lights, vol.localToWorldRotation(),
-                               vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
-                               counters[size_t(t)]);
-                });
-                if (previous) slab.lookUp(*previous, threads);
+                // Without a previous pass a probe's radiance is final once traced: it is
+                // convolved right away, while its rays are still in the cache.
                 parallelFor(
                     count, threads,
                     [&](std::size_t i, int t) {
                         auto [v, p] = index.locate(first + i);
                         const ProbeVolume& vol = set.volumes[size_t(v)];
                         const ProbeState& st = set.states[size_t(v)][size_t(p)];
-                        glm::ivec3 c = vol.probeCoords(p);
-                        float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
-                        const int pitch = cur[size_t(v)].shape.width;
-                        for (int y = 0; y < kIrradianceTile; ++y)
-                            for (int x = 0; x < kIrradianceTile; ++x)
-                                tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
-                        if (!st.valid) return;
-                        float* out = irr[size_t(t)].data();
-                        slab.convolve(i, conv, out);
-                        for (int y = 0; y < kIrradianceInterior; ++y)
-                            for (int x = 0; x < kIrradianceInterior; ++x)
-                                for (int ch = 0; ch < 3; ++ch)
-                                    tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 + size_t(ch)] =
-                                        out[(y * kIrradianceInterior + x) * 3 + ch];
+                        if (st.valid) {
+                            glm::ivec3 c = vol.probeCoords(p);
+                            slab.trace(i, rs, sc, scene.lights, vol.localToWorldRotation(),
+                                       vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
+                                       counters[size_t(t)]);
+                        }
+                        if (!previous) writeTile(first, i, t);
                     },
+                    [&, first](std::size_t done) {
+                        if (!previous) report(stage)(first + done);
+                    });
+                phases.mark("trace");
+                if (!previous) continue;
+                slab.lookUp(*previous, threads);
+                phases.mark("lookup");
+                parallelFor(
+                    count, threads, [&](std::size_t i, int t) { writeTile(first, i, t); },
                     [&, first](std::size_t done) { report(stage)(first + done); });
+                phases.mark("convolve");
             }
             doneBefore += index.total();
             for (ProbeTexture& t : cur)
                 fillAllBorders(t, kIrradianceInterior);
             blendNestedRings(set.volumes, parents, curViews, targets);
+            phases.mark("convolve");
             prev = std::move(cur);
         }
         set.irradiance.push_back(std::move(prev));
     }
-    const double traceSeconds = since(tTrace);
-    const double traceCpuSeconds = processCpuSeconds() - cpuTrace;
+    const std::vector<BakePhase> phaseTimes = phases.take();
+    double traceSeconds = 0.0, traceCpuSeconds = 0.0;
+    for (const BakePhase& p : phaseTimes) {
+        traceSeconds += p.wallSeconds;
+        traceCpuSeconds += p.cpuSeconds;
+    }
     if (req.recordRays) *req.recordRays = rs.stopRecording();
 
     // 3. Storage format.
@@ -271,6 +287,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         st.buildSeconds = buildSeconds;
         st.traceSeconds = traceSeconds;
         st.traceCpuSeconds = traceCpuSeconds;
+        st.phases = phaseTimes;
         st.quantiseSeconds = since(tq);
         st.seconds = since(t0);
         st.threads = threads;

@@ -45,6 +45,12 @@ struct QuantisationError {
     double maxRelative = 0.0, meanRelative = 0.0;
 };
 
+// Where the tracing time went, summed over passes (bench_bake reports it).
+struct BakePhase {
+    std::string name; // "geometry", "setup", "trace", "lookup", "convolve"
+    double wallSeconds = 0.0, cpuSeconds = 0.0; // cpu: the whole process, all threads
+};
+
 struct BakeStats {
     std::size_t probes = 0, invalidProbes = 0, relocatedProbes = 0;
     std::size_t storedProbes = 0; // all probes unless sparse
@@ -56,7 +62,8 @@ struct BakeStats {
     // CPU seconds of the whole process (all threads) over traceSeconds: unlike the wall time
     // it hardly changes when other processes share the cores (bench_bake).
     double traceCpuSeconds = 0.0;
-    double quantiseSeconds = 0.0; // encoding to the storage format
+    std::vector<BakePhase> phases; // traceSeconds split up (their sums)
+    double quantiseSeconds = 0.0;  // encoding to the storage format
     int threads = 1;
     std::vector<QuantisationError> quantisation;
 };

@@ -27,6 +27,7 @@ constexpr int kMaxRelocationIterations = 3;
 constexpr float kRelocationClearance = 0.2f;
 
 struct GeometryScratch {
+    std::vector<RayHit> hits;   // per ray, before classification
     std::vector<float> t;       // hit distance per ray (inf = miss)
     std::vector<char> backface; // per ray
     std::vector<float> dist01;  // per ray

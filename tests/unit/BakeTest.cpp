@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <gtest/gtest.h>
+#include <set>
+#include <string>
 
 using namespace pb::probes;
 using namespace pb::test;
@@ -144,6 +146,30 @@ TEST(BakeClassification, RelocationMovesProbesOutOfThinGeometry) {
         EXPECT_LE(std::abs(mid.offset[a]), kMaxRelocation * 1.0f + 1e-6f);
     EXPECT_EQ(stats.relocatedProbes, 1u);
     EXPECT_EQ(stats.invalidProbes, 0u);
+}
+
+TEST(BakeStatsPhases, SplitTheTracingTimeWithoutGapsOrOverlap) {
+    // bench_bake reports where the tracing went: each part named once, none negative, and
+    // together they are the tracing time.
+    pb::scene::Scene s = emptyScene(glm::vec3(0.5f));
+    int m = addMaterial(s, glm::vec3(0.5f));
+    addInstance(s, boxPrimitive({-2, -1, -2}, {2, 2, 2}, true, m));
+    BakeRequest r = request({volume("v", {0, 0.5f, 0}, {1.5f, 1.0f, 1.5f}, {3, 2, 3})}, s, 2, 32);
+    BakeStats stats;
+    bakeProbes(s, r, &stats);
+    std::set<std::string> names;
+    double wall = 0.0, cpu = 0.0;
+    for (const BakePhase& p : stats.phases) {
+        EXPECT_TRUE(names.insert(p.name).second) << p.name << " twice";
+        EXPECT_GE(p.wallSeconds, 0.0);
+        EXPECT_GE(p.cpuSeconds, 0.0);
+        wall += p.wallSeconds;
+        cpu += p.cpuSeconds;
+    }
+    EXPECT_EQ(names, (std::set<std::string>{"geometry", "setup", "trace", "lookup", "convolve"}));
+    EXPECT_DOUBLE_EQ(wall, stats.traceSeconds);
+    EXPECT_DOUBLE_EQ(cpu, stats.traceCpuSeconds);
+    EXPECT_GT(stats.traceSeconds, 0.0);
 }
 
 TEST(BakeDeterminism, SameInputsGiveIdenticalBytesForAnyThreadCount) {
