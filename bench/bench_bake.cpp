@@ -4,8 +4,9 @@
 //   BM_BakeVsEmbree   one iteration = a full bake (sponza_decimated, one 32x8x32 volume, 256
 //                     rays, 2 bounces, all cores) followed by a replay of exactly the rays that
 //                     bake traced through rtcIntersect1 / rtcOccluded1 with nothing else
-//                     around them. Use --benchmark_repetitions=N: bake and replay alternate
-//                     (A B A B ...), and every repetition reports its own ratio.
+//                     around them (twice; the faster counts). Use --benchmark_repetitions=N: bake
+//                     and replay alternate (A B A B ...), and every repetition reports its own
+//                     ratio.
 //   BM_SamplerLookup  the CPU reference sampler on the baked data, random points/normals.
 //
 // Scene: $PB_SPONZA_GLB, else $PB_SCENES_DIR/sponza_decimated/sponza_s_lod4.glb, else
@@ -126,9 +127,16 @@ void BM_BakeVsEmbree(benchmark::State& state) {
         BakeStats st;
         ProbeSet set = bakeProbes(s.scene, s.request, &st);
         benchmark::DoNotOptimize(set.irradiance.data());
-        const ReplayTime primaryTime = replay(raw.handle(), s.rays, 0, s.primary, threads);
-        const ReplayTime shadowTime =
-            replay(raw.handle(), s.rays, s.primary, s.rays.size(), threads);
+        // The replay twice, the faster one kept: bare Embree's throughput is what it can do,
+        // and another process on the cores only ever slows a run down. (This makes the
+        // fraction lower, never higher, than one replay would.)
+        auto fastest = [&](std::size_t begin, std::size_t end) {
+            const ReplayTime a = replay(raw.handle(), s.rays, begin, end, threads);
+            const ReplayTime b = replay(raw.handle(), s.rays, begin, end, threads);
+            return a.wall <= b.wall ? a : b;
+        };
+        const ReplayTime primaryTime = fastest(0, s.primary);
+        const ReplayTime shadowTime = fastest(s.primary, s.rays.size());
         const double rawPrimary = primaryTime.wall, rawShadow = shadowTime.wall;
         state.SetIterationTime(st.seconds);
         const double primary = double(st.primaryRays), all = primary + double(st.shadowRays);
