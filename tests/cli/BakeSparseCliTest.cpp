@@ -53,6 +53,13 @@ TEST(BakeSparseCli, AutoStoresSparseAndDenseOptsOut) {
     stored = storedTotal(f);
     EXPECT_EQ(stored["stored_probes"], stored["probes"]);
     EXPECT_EQ(stored["indirection"].get<long long>(), 0);
+    // Both under the same default budget, which the sparse search counts in stored bytes: it
+    // affords more grid probes than the dense one.
+    const double budget = sparse["placement"]["budget_bytes"].get<double>();
+    EXPECT_EQ(dense["placement"]["budget_bytes"].get<double>(), budget);
+    EXPECT_LE(sparse["memory"]["total"]["stored_total"].get<double>(), budget);
+    EXPECT_LE(stored["stored_total"].get<double>(), budget);
+    EXPECT_GT(sparse["probes"].get<long long>(), dense["probes"].get<long long>());
 
     // Back to the default: re-baked sparse, then up to date.
     EXPECT_FALSE(bake("auto", f)["up_to_date"].get<bool>());
