@@ -37,9 +37,18 @@ struct BakeArgs {
     std::string format = "rgba16f";
     std::uint64_t seed = 1;
     std::string out;
-    bool json = false, force = false, noRelocate = false, sparse = false;
+    bool json = false, force = false, noRelocate = false, sparse = false, dense = false;
     float backfaceThreshold = 0.25f;
 };
+
+// Sparse storage (SparseStorage.h): `--volumes auto` stores sparse unless --dense (the issue's
+// automatic placement stores only the probes a surface reads); auto-uniform and volumes files
+// store dense unless --sparse.
+bool storesSparse(const BakeArgs& a) {
+    AutoMode mode = AutoMode::Uniform;
+    const bool adaptive = parseAutoMode(a.volumes, mode) && mode == AutoMode::Adaptive;
+    return a.sparse || (adaptive && !a.dense);
+}
 
 // A bar on a terminal, one line per finished stage otherwise (logs, CI).
 class Progress {
@@ -82,7 +91,8 @@ std::vector<int> volumeDepths(const std::vector<ProbeVolume>& volumes) {
 
 // What automatic placement chose, for people ("placement: ...") and for --json.
 struct PlacementInfo {
-    std::string mode; // "adaptive", "uniform" or "file"
+    std::string mode;    // "adaptive", "uniform" or "file"
+    bool sparse = false; // stored sparse: result.bytes counts what is stored
     AutoPlacementResult result;
 };
 
@@ -106,6 +116,7 @@ nlohmann::json placementJson(const PlacementInfo& p, StorageFormat format) {
                      {"budget_bytes", p.result.budgetBytes},
                      {"default_budget", p.result.defaultBudget},
                      {"format", formatName(format)},
+                     {"storage", p.sparse ? "sparse" : "dense"},
                      {"notes", p.result.notes}};
     if (p.mode == "adaptive") {
         j["corner_rays"] = p.result.stats.rays;
@@ -126,7 +137,8 @@ std::string placementText(const PlacementInfo& p, StorageFormat format) {
           << tier["volumes"].get<int>() << " x spacing " << tier["spacing"].get<double>() << " ("
           << tier["probes"].get<long long>() << " probes)";
     }
-    s << "; " << formatBytes(p.result.bytes) << " as " << formatName(format);
+    s << "; " << formatBytes(p.result.bytes) << " as " << formatName(format)
+      << (p.sparse ? " stored sparse" : "");
     if (p.result.defaultBudget)
         s << " (default budget: the default uniform grid's "
           << formatBytes(std::size_t(p.result.budgetBytes)) << ")";
@@ -142,6 +154,7 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
     BakeRequest r;
     std::vector<ScenarioSpec> fileScenarios;
     const StorageFormat format = parseStorageFormat(a.format);
+    const bool sparse = placement.sparse = storesSparse(a);
     AutoMode mode;
     if (parseAutoMode(a.volumes, mode)) {
         AutoPlacementRequest req;
@@ -152,7 +165,7 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
         req.adaptive.threads = a.threads;
         req.budgetBytes = a.budgetMib * 1024.0 * 1024.0;
         req.format = format;
-        req.sparse = a.sparse;
+        req.sparse = sparse;
         placement.mode = autoModeName(mode);
         placement.result = placeAutoVolumes(s, req);
         for (const std::string& note : placement.result.notes)
@@ -168,9 +181,9 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
         for (const ProbeVolume& v : vf.volumes)
             placement.result.probes += v.probeCount();
         std::vector<std::size_t> kept;
-        if (a.sparse) kept = sparseProbeCounts(vf.volumes, staticBakeTriangles(s));
+        if (sparse) kept = sparseProbeCounts(vf.volumes, staticBakeTriangles(s));
         placement.result.bytes =
-            memoryReport(vf.volumes, format, a.sparse ? &kept : nullptr).total.storedTotal();
+            memoryReport(vf.volumes, format, sparse ? &kept : nullptr).total.storedTotal();
         if (a.budgetMib > 0.0 && double(placement.result.bytes) > a.budgetMib * 1024.0 * 1024.0)
             throw Error(a.volumes + ": the volumes need " + formatBytes(placement.result.bytes) +
                         " as " + formatName(format) + ", over --probe-budget-mib " +
@@ -184,7 +197,7 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
     r.settings.relocate = !a.noRelocate;
     r.settings.backfaceThreshold = a.backfaceThreshold;
     r.threads = a.threads;
-    r.sparse = a.sparse;
+    r.sparse = sparse;
     return r;
 }
 
@@ -305,7 +318,7 @@ void printSummary(const BakeArgs& a, const PlacementInfo& placement, const Probe
     else
         std::cout << "sparse-storage candidates: " << mem.total.sparse.far
                   << " probe(s) far from every surface, " << mem.total.sparse.invalid
-                  << " inside geometry (stored; --sparse drops what no surface reads)\n";
+                  << " inside geometry (stored; sparse storage drops what no surface reads)\n";
     if (!upToDate) std::cout << "wrote " << a.out << "\n";
 }
 
@@ -315,6 +328,7 @@ int run(const BakeArgs& a) {
                     "only place volumes");
     if (!(a.budgetMib >= 0.0) || !std::isfinite(a.budgetMib))
         throw Error("--probe-budget-mib: must be a positive number");
+    if (a.sparse && a.dense) throw Error("--dense: excludes --sparse (pick one storage)");
     AutoMode mode = AutoMode::Uniform;
     const bool adaptive = parseAutoMode(a.volumes, mode) && mode == AutoMode::Adaptive;
     for (const CLI::Option* o : {a.levelsOption, a.childrenOption})
@@ -333,7 +347,8 @@ int run(const BakeArgs& a) {
         writeVolumeFile(a.writeVolumes, req.volumes,
                         "probe volumes for scene '" + s.name +
                             "', written by probebench bake --write-volumes\n"
-                            "edit freely; bake with --volumes FILE (renderer/probes/README.md)");
+                            "edit freely; bake with --volumes FILE (add --sparse for the storage "
+                            "--volumes auto uses; renderer/probes/README.md)");
         if (a.out.empty()) {
             if (a.json)
                 std::cout << nlohmann::json{{"volumes_file", a.writeVolumes},
@@ -386,8 +401,8 @@ const RegisterCommand reg{{
         cmd.add_option("--volumes", a->volumes,
                        "Probe volumes: a TOML file (see renderer/probes/README.md), 'auto' (a "
                        "coarse outer volume over the static bounds plus nested finer volumes "
-                       "near surfaces) or 'auto-uniform' (one volume fitted to the static "
-                       "bounds)")
+                       "near surfaces, stored sparse unless --dense) or 'auto-uniform' (one "
+                       "volume fitted to the static bounds)")
             ->capture_default_str();
         cmd.add_option("--spacing", a->spacing,
                        "Probe spacing, scene units: for auto the finest (innermost child) "
@@ -435,7 +450,11 @@ const RegisterCommand reg{{
                      "Sparse storage: store only valid probes at the corners of grid cells that "
                      "static surface passes through (no surface's lighting changes; dynamic "
                      "objects in empty air get the fallback); --probe-budget-mib then counts "
-                     "only what is stored, so auto placement fits a finer spacing");
+                     "only what is stored, so auto placement fits a finer spacing. The default "
+                     "for --volumes auto; for auto-uniform and volumes files add it");
+        cmd.add_flag("--dense", a->dense,
+                     "Dense storage: store every grid probe (the default for auto-uniform and "
+                     "volumes files; with --volumes auto it turns sparse storage off)");
         cmd.add_option("--out", a->out,
                        "Probe file to write (reused when its inputs match); required unless "
                        "--write-volumes is given");

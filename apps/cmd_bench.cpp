@@ -281,7 +281,8 @@ const RegisterCommand reg{
          cmd.add_option("--probes", a->probes,
                         "Probe file (probebench bake); default: bake --volumes once and cache it");
          cmd.add_option("--volumes", a->volumes,
-                        "Without --probes: the volumes to bake, auto, auto-uniform or a volumes "
+                        "Without --probes: the volumes to bake, auto (stored sparse, as bake "
+                        "does), auto-uniform or a volumes "
                         "file (bench/volumes/rooms_nested.toml nests a volume per room)")
              ->capture_default_str();
          cmd.add_option("--cache-dir", a->cacheDir,

@@ -360,7 +360,8 @@ const RegisterCommand reg{
                         "Probe file (probebench bake; its FILE.ranks.json adds rank_budget_mib "
                         "levels); default: bake --volumes once and cache it");
          cmd.add_option("--volumes", a->volumes,
-                        "Without --probes: the volumes to bake (auto, auto-uniform or a file)")
+                        "Without --probes: the volumes to bake (auto, stored sparse as bake does; "
+                        "auto-uniform or a file)")
              ->capture_default_str();
          cmd.add_option("--cache-dir", a->cacheDir, "Folder of the baked-probe cache");
          cmd.add_option("--view", a->view, "A named view instead of the worst case");

@@ -1,6 +1,6 @@
-// bench_placement: does adaptive placement (`--volumes auto`) reach the irradiance error of a
-// uniform grid with at most half of its probe memory? A benchmark, not a test (bench/README.md
-// "Probe placement"): it prints a table (and JSON with --json), asserts nothing.
+// bench_placement: does adaptive placement (`--volumes auto`, stored sparse) reach the irradiance
+// error of a uniform grid with at most half of its probe memory? A benchmark, not a test
+// (bench/README.md "Probe placement"): it prints a table (and JSON with --json), asserts nothing.
 //
 // Per scene:
 //   reference  a dense bake: one uniform volume at half the default uniform spacing (8x the
@@ -8,9 +8,11 @@
 //   uniform    the default uniform grid (`--volumes auto-uniform`, about 4096 probes),
 //              --rays rays (default 64), 2 bounces;
 //   uniform/2  a uniform grid within half of `uniform`'s memory (auto-uniform + budget);
-//   adaptive   `--volumes auto` with --probe-budget-mib = half of `uniform`'s memory;
-//   uniform/2 sparse, adaptive sparse: the same two with `bake --sparse` (only probes at
-//              surface cells stored; the budget counts stored tiles + the indirection).
+//   adaptive dense  `--volumes auto --dense` with --probe-budget-mib = half of `uniform`'s
+//              memory;
+//   uniform/2 sparse, adaptive: the same two stored sparse (`--volumes auto`'s default,
+//              `auto-uniform --sparse`: only probes at surface cells stored; the budget counts
+//              stored tiles + the indirection).
 // Error: N (--points, default 20000) area-weighted random points on the static triangles
 // (front side of single-sided triangles, a random side of double-sided ones), normal = view =
 // the face normal, each sampled with the CPU ProbeSampler in the candidate and in the
@@ -204,12 +206,12 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
     auto t0 = Clock::now();
     AutoPlacementResult a = placeAutoVolumes(s, adaptiveReq);
     double placeSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    Candidate adaptive;
-    adaptive.name = "adaptive";
-    adaptive.rays = o.rays;
-    adaptive.volumes = a.volumes;
+    Candidate adaptiveDense;
+    adaptiveDense.name = "adaptive dense";
+    adaptiveDense.rays = o.rays;
+    adaptiveDense.volumes = a.volumes;
 
-    // The same two under the same budget, stored sparse.
+    // The same two under the same budget, stored sparse (`--volumes auto`'s default).
     uniformReq.sparse = true;
     Candidate uniformHalfSparse;
     uniformHalfSparse.name = "uniform/2 sparse";
@@ -217,12 +219,12 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
     uniformHalfSparse.sparse = true;
     uniformHalfSparse.volumes = placeAutoVolumes(s, uniformReq).volumes;
     adaptiveReq.sparse = true;
-    Candidate adaptiveSparse;
-    adaptiveSparse.name = "adaptive sparse";
-    adaptiveSparse.rays = o.rays;
-    adaptiveSparse.sparse = true;
+    Candidate adaptive;
+    adaptive.name = "adaptive";
+    adaptive.rays = o.rays;
+    adaptive.sparse = true;
     AutoPlacementResult as = placeAutoVolumes(s, adaptiveReq);
-    adaptiveSparse.volumes = as.volumes;
+    adaptive.volumes = as.volumes;
 
     RayScene rays(s);
     const glm::vec3 refCell = ref.volumes[0].cellSize();
@@ -230,8 +232,8 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
         surfacePoints(s, rays, o.points, std::min(refCell.x, std::min(refCell.y, refCell.z)));
 
     nlohmann::json rows = nlohmann::json::array();
-    std::vector<Candidate*> all{&ref,      &uniform,           &uniformHalf,
-                                &adaptive, &uniformHalfSparse, &adaptiveSparse};
+    std::vector<Candidate*> all{&ref,           &uniform,           &uniformHalf,
+                                &adaptiveDense, &uniformHalfSparse, &adaptive};
     for (Candidate* c : all) {
         bake(s, *c, o.threads);
         sampleAll(*c, pts);
@@ -256,16 +258,16 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
     return {{"scene", s.name},
             {"points_requested", o.points},
             {"points_on_surfaces", pts.size()},
-            {"adaptive_place_s", placeSeconds},
-            {"adaptive_notes", a.notes},
-            {"adaptive_sparse_notes", as.notes},
+            {"adaptive_dense_place_s", placeSeconds},
+            {"adaptive_dense_notes", a.notes},
+            {"adaptive_notes", as.notes},
             {"rows", rows}};
 }
 
 void printTable(const nlohmann::json& r) {
-    std::printf("\n%s: %zu surface points (adaptive placement %.2f s)\n",
+    std::printf("\n%s: %zu surface points (adaptive dense placement %.2f s)\n",
                 r["scene"].get<std::string>().c_str(), r["points_on_surfaces"].get<std::size_t>(),
-                r["adaptive_place_s"].get<double>());
+                r["adaptive_dense_place_s"].get<double>());
     std::printf("  %-16s %7s %8s %8s %9s %8s %8s %5s %9s %7s %8s\n", "placement", "volumes",
                 "probes", "stored", "MiB", "finest", "far", "rays", "mean err", "nMAE", "bake s");
     for (const auto& row : r["rows"])

@@ -31,6 +31,8 @@ probes::ProbeSet benchProbes(const scene::Scene& s, const std::string& volumes,
     std::vector<probes::ScenarioSpec> fileScenarios;
     probes::AutoPlacementRequest place;
     if (probes::parseAutoMode(volumes, place.mode)) {
+        // As `bake --volumes auto`: adaptive placement stores sparse, auto-uniform dense.
+        place.sparse = req.sparse = place.mode == probes::AutoMode::Adaptive;
         req.volumes = probes::placeAutoVolumes(s, place).volumes;
     } else {
         probes::VolumeFile vf = probes::loadVolumeFile(volumes);

@@ -29,10 +29,12 @@ TextureTable makeTextureTable(int gbufferWidth, int gbufferHeight, const probes:
     t.gbufferNormal = add(gbufferWidth, gbufferHeight, 1, 1, 4);
     const ProbeTextureFormat fmt = probeTextureFormat(set.format());
     for (int v : keptVolumes) {
-        const glm::ivec3 n = set.volumes[size_t(v)].counts;
-        const probes::TextureShape irr = probes::irradianceShape(n);
-        const probes::TextureShape vis = probes::visibilityShape(n);
+        const probes::ProbeVolume& volume = set.volumes[size_t(v)];
+        const glm::ivec3 n = volume.counts;
         TextureTable::Volume vol;
+        vol.tiles = probes::tileLayout(volume, set.states[size_t(v)]);
+        const probes::TextureShape irr = probes::irradianceShape(vol.tiles.packedCounts);
+        const probes::TextureShape vis = probes::visibilityShape(vol.tiles.packedCounts);
         vol.irradiance = add(irr.width, irr.height, irr.layers, fmt.blockDim, fmt.irradianceBytes);
         vol.visibility = add(vis.width, vis.height, vis.layers, fmt.blockDim, fmt.visibilityBytes);
         vol.state = add(n.x, n.z, n.y, 1, 16); // texel (i, k) of layer j, like the tiles
@@ -49,6 +51,13 @@ void appendProbeFetches(const probes::SampleTrace& trace, const VariantStructure
             const probes::CornerFetch& c =
                 trace.corners[samplerCorner(variant.cornerOffsets[size_t(step)])];
             if (!c.inGrid) continue;
+            // The trace's texels sit in the dense tile (probe.x, probe.z) of layer probe.y.
+            const glm::ivec3 tile = tex.tiles.tileOf(c.probe);
+            const glm::ivec2 denseTile(c.probe.x, c.probe.z);
+            const glm::ivec2 vis =
+                c.visTexel + (glm::ivec2(tile) - denseTile) * probes::kVisibilityTile;
+            const glm::ivec2 irr =
+                c.irradianceTexel + (glm::ivec2(tile) - denseTile) * probes::kIrradianceTile;
             const std::vector<FetchKind>& kinds = variant.loops[loop];
             for (size_t k = 0; k < kinds.size(); ++k) {
                 const int slot = fetchSlot(variant, int(loop), step, int(k));
@@ -57,13 +66,12 @@ void appendProbeFetches(const probes::SampleTrace& trace, const VariantStructure
                         {kinds[k], tex.state, c.probe.x, c.probe.z, c.probe.y, false, slot});
                     continue;
                 }
-                if (!c.valid) break; // the shader's weight < 0: no further fetch of this probe
+                // The shader's weight < 0 (invalid or absent): no further fetch of this probe.
+                if (!c.valid || tile.z < 0) break;
                 if (kinds[k] == FetchKind::Visibility)
-                    out.push_back({kinds[k], tex.visibility, c.visTexel.x, c.visTexel.y, c.probe.y,
-                                   true, slot});
+                    out.push_back({kinds[k], tex.visibility, vis.x, vis.y, tile.z, true, slot});
                 else if (kinds[k] == FetchKind::Irradiance)
-                    out.push_back({kinds[k], tex.irradiance, c.irradianceTexel.x,
-                                   c.irradianceTexel.y, c.probe.y, true, slot});
+                    out.push_back({kinds[k], tex.irradiance, irr.x, irr.y, tile.z, true, slot});
             }
         }
 }

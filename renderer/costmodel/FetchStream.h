@@ -7,6 +7,7 @@
 #include "costmodel/TextureCache.h"
 #include "costmodel/TextureMemory.h"
 #include "probes/ProbeSampler.h"
+#include "probes/SparseLayout.h"
 
 #include <cstdint>
 #include <vector>
@@ -36,15 +37,22 @@ struct TextureTable {
     int gbufferDepth = 0, gbufferNormal = 1;
     struct Volume {
         int irradiance, visibility, state;
+        // Where each probe's tiles lie in irradiance and visibility, as GpuProbes uploads
+        // them: a sparse volume's stored tiles packed (probes/SparseLayout.h).
+        probes::TileLayout tiles;
     };
     std::vector<Volume> volumes; // by position in the kept list
 };
 // GBuffer: depth as 4 B/texel (the depth plane of DEPTH32F_STENCIL8; stencil is assumed to
-// live in its own plane), normal RG16F 4 B.
+// live in its own plane), normal RG16F 4 B. Probe textures as uploaded: irradiance and
+// visibility of the volume's tile grid (sparse: the packed one), the state texture one texel
+// per grid probe (a sparse volume's indirection rides in its w).
 TextureTable makeTextureTable(int gbufferWidth, int gbufferHeight, const probes::ProbeSet& set,
                               const std::vector<int>& keptVolumes, MemoryLayout layout);
 
-// Appends one lookup's probe fetches in the order the variant issues them.
+// Appends one lookup's probe fetches in the order the variant issues them. The trace's texels
+// are the dense layout's; they move to the probe's tile in `textures.tiles`. A probe without a
+// tile (absent: state w = 0) reads only its state, as in the shader.
 void appendProbeFetches(const probes::SampleTrace& trace, const VariantStructure& variant,
                         const TextureTable::Volume& textures, std::vector<Fetch>& out);
 

@@ -19,7 +19,7 @@ std::size_t gpuVolumeBytes(const probes::ProbeSet& set, std::size_t v) {
     const probes::ProbeVolume& vol = set.volumes[v];
     if (v >= set.states.size() || !probes::isSparse(set.states[v]))
         return gpuVolumeBytes(vol, set.format());
-    const glm::ivec3 tiles = probes::packedCounts(probes::storedCount(set.states[v]), vol.counts);
+    const glm::ivec3 tiles = probes::tileLayout(vol, set.states[v]).packedCounts;
     return probes::storedBytes(probes::irradianceShape(tiles), set.format()) +
            probes::storedBytes(probes::visibilityShape(tiles), set.format()) +
            std::size_t(vol.probeCount()) * probes::kStateBytesPerProbe;

@@ -57,8 +57,8 @@ gl::Texture uploadProbeTexture(const probes::ProbeTexture& t, gl::TextureFormat 
 
 // w is the indirection into the packed tiles (SparseLayout.h): +(slot + 1) valid, -(slot + 1)
 // invalid with a tile, 0 absent (no tile). Exact in float up to 2^24 slots.
-gl::Texture uploadStates(const probes::ProbeVolume& v, const std::vector<probes::ProbeState>& s) {
-    const std::vector<int> slots = probes::packedSlots(s);
+gl::Texture uploadStates(const probes::ProbeVolume& v, const std::vector<probes::ProbeState>& s,
+                         const std::vector<int>& slots) {
     std::vector<float> texels;
     texels.reserve(s.size() * 4);
     for (std::size_t i = 0; i < s.size(); ++i) { // probe index = texel order of (i, k, layer j)
@@ -152,16 +152,16 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
         g.root = parents[size_t(vi)] < 0;
         if (set.states[size_t(vi)].size() != size_t(v.probeCount()))
             throw Error(what + ": probe state count does not match its grid");
-        // Sparse volumes upload only their stored tiles, packed; dense ones as they are.
-        const std::vector<probes::ProbeState>& states = set.states[size_t(vi)];
-        const bool sparse = g.sparse = probes::isSparse(states);
-        g.packedCounts =
-            sparse ? probes::packedCounts(probes::storedCount(states), v.counts) : v.counts;
-        const std::vector<int> slots = sparse ? probes::packedSlots(states) : std::vector<int>{};
+        // Sparse volumes upload only their stored tiles, packed; dense ones as they are. The
+        // cost model replays the same layout (costmodel/FetchStream.cpp).
+        const probes::TileLayout tiles = probes::tileLayout(v, set.states[size_t(vi)]);
+        g.sparse = tiles.sparse;
+        g.packedCounts = tiles.packedCounts;
         probes::ProbeTexture scratch;
         auto packed = [&](const probes::ProbeTexture& t, int tile) -> const probes::ProbeTexture& {
-            if (!sparse) return t;
-            scratch = probes::packTiles(t, slots, v.counts, g.packedCounts, tile, format_);
+            if (!tiles.sparse) return t;
+            scratch =
+                probes::packTiles(t, tiles.slots, v.counts, tiles.packedCounts, tile, format_);
             return scratch;
         };
         g.irradiance = uploadProbeTexture(
@@ -172,7 +172,7 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
         g.visibility =
             uploadProbeTexture(packed(set.visibility[size_t(vi)], probes::kVisibilityTile),
                                visibilityFormat(format_), format_, what + " visibility");
-        g.state = uploadStates(v, set.states[size_t(vi)]);
+        g.state = uploadStates(v, set.states[size_t(vi)], tiles.slots);
         fillParameters(g, v);
         volumes_.push_back(std::move(g));
     }

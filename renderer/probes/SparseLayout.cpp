@@ -19,8 +19,10 @@ Units unitsOf(const TextureShape& s, StorageFormat f) {
     return {1, std::size_t(s.channels) * (f == StorageFormat::Rgba32f ? 4u : 2u)};
 }
 
-glm::ivec3 tileOf(int slot, const glm::ivec3& grid) {
-    return {slot % grid.x, slot / (grid.x * grid.z), (slot / grid.x) % grid.z};
+// packedTile as a grid position (x, layer, z), the order probeCoords and copyTile use.
+glm::ivec3 gridPositionOf(int slot, const glm::ivec3& grid) {
+    const glm::ivec3 t = packedTile(slot, grid);
+    return {t.x, t.z, t.y};
 }
 
 // Copies one tile of stored bytes from grid position `from` of `src` to `to` of `dst`.
@@ -72,6 +74,27 @@ bool isSparse(const std::vector<ProbeState>& states) {
     return storedCount(states) != states.size();
 }
 
+glm::ivec3 packedTile(int slot, const glm::ivec3& packed) {
+    return {slot % packed.x, (slot / packed.x) % packed.z, slot / (packed.x * packed.z)};
+}
+
+TileLayout tileLayout(const ProbeVolume& v, const std::vector<ProbeState>& states) {
+    if (states.size() != std::size_t(v.probeCount()))
+        throw Error("probe volume '" + v.name + "': probe state count does not match its grid");
+    TileLayout t;
+    t.counts = t.packedCounts = v.counts;
+    t.slots = packedSlots(states);
+    t.sparse = isSparse(states);
+    if (t.sparse) t.packedCounts = packedCounts(storedCount(states), v.counts);
+    return t;
+}
+
+glm::ivec3 TileLayout::tileOf(const glm::ivec3& q) const {
+    if (!sparse) return {q.x, q.z, q.y};
+    const int slot = slots[std::size_t((q.y * counts.z + q.z) * counts.x + q.x)]; // probeIndex
+    return slot < 0 ? glm::ivec3(-1) : packedTile(slot, packedCounts);
+}
+
 ProbeTexture packTiles(const ProbeTexture& dense, const std::vector<int>& slots,
                        const glm::ivec3& denseCounts, const glm::ivec3& packed, int tile,
                        StorageFormat f) {
@@ -87,7 +110,8 @@ ProbeTexture packTiles(const ProbeTexture& dense, const std::vector<int>& slots,
     grid.counts = denseCounts;
     for (std::size_t i = 0; i < slots.size(); ++i)
         if (slots[i] >= 0)
-            copyTile(dense, grid.probeCoords(int(i)), out, tileOf(slots[i], packed), tile, u);
+            copyTile(dense, grid.probeCoords(int(i)), out, gridPositionOf(slots[i], packed), tile,
+                     u);
     return out;
 }
 
@@ -103,7 +127,8 @@ ProbeTexture unpackTiles(const ProbeTexture& packed, const std::vector<int>& slo
     grid.counts = denseCounts;
     for (std::size_t i = 0; i < slots.size(); ++i)
         if (slots[i] >= 0)
-            copyTile(packed, tileOf(slots[i], packedGrid), out, grid.probeCoords(int(i)), tile, u);
+            copyTile(packed, gridPositionOf(slots[i], packedGrid), out, grid.probeCoords(int(i)),
+                     tile, u);
     decodeStored(out, f);
     return out;
 }

@@ -29,6 +29,26 @@ std::size_t storedCount(const std::vector<ProbeState>& states);
 // True when some probe of the volume is absent (the volume uses a packed layout).
 bool isSparse(const std::vector<ProbeState>& states);
 
+// The tile (column, row, layer) of packed slot `slot` in a texture of `packed` tile counts:
+// (s % pc.x, (s / pc.x) % pc.z, s / (pc.x * pc.z)), what the shader's ddgiTile computes from
+// the state's w (shaders/common_ddgi.glsl).
+glm::ivec3 packedTile(int slot, const glm::ivec3& packed);
+
+// Where a volume's probe tiles lie in its GPU textures: the one description GpuProbes uploads
+// by and the texture-cache model (renderer/costmodel) replays addresses from. Dense: probe
+// (i, j, k) owns tile (i, k, layer j) of a grid of `counts`; sparse: only stored probes own a
+// tile, packed in probe index order into `packedCounts`.
+struct TileLayout {
+    bool sparse = false;
+    glm::ivec3 counts{1};       // the probe grid
+    glm::ivec3 packedCounts{1}; // the tile grid of the textures (= counts unless sparse)
+    std::vector<int> slots;     // per probe: its slot (dense: its index), -1 = absent
+    // The tile (column, row, layer) of grid probe `q`; (-1, -1, -1) when it owns none.
+    glm::ivec3 tileOf(const glm::ivec3& q) const;
+};
+// Throws pb::Error when `states` does not hold one state per probe of `v`.
+TileLayout tileLayout(const ProbeVolume& v, const std::vector<ProbeState>& states);
+
 // The stored bytes of `dense` (a volume texture in format `f`, tiles of `tile` texels) with
 // only the slotted tiles, packed into `packed` counts. Works on the stored bytes (BC6H: whole
 // 4x4 blocks; tiles are multiples of 4), so nothing is re-encoded. `texels` stays empty.

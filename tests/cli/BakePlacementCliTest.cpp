@@ -75,7 +75,8 @@ TEST(BakePlacementCli, FileRoundTripBakesTheIdenticalPlacement) {
                                              "--volumes",
                                              toml.string(),
                                              "--out",
-                                             (dir / "b.pbp").string()};
+                                             (dir / "b.pbp").string(),
+                                             "--sparse"}; // as --volumes auto stores
     bakeFile.insert(bakeFile.end(), cheap.begin(), cheap.end());
     auto r2 = runProbebench(bakeFile);
     ASSERT_EQ(r2.exitCode, 0) << r2.output;

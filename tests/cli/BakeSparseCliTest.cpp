@@ -1,0 +1,94 @@
+// Which storage `probebench bake` picks (renderer/probes/README.md "Sparse storage"):
+// `--volumes auto` stores sparse (only probes at surface cells) unless --dense; auto-uniform
+// and volumes files store dense unless --sparse; the two flags exclude each other; the bake
+// cache tells the storages apart (the input hash), so switching re-bakes.
+#include "support/RunCommand.h"
+#include "support/TestEnv.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+using namespace pb::test;
+
+namespace {
+
+nlohmann::json jsonOf(const CommandResult& r) {
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return nlohmann::json::parse(r.output.substr(r.output.find('{')));
+}
+
+// A quick bake of the courtyard (open sky above walls: plenty of empty air) into `out`.
+nlohmann::json bake(const std::string& volumes, const std::string& out,
+                    const std::vector<std::string>& extra = {}) {
+    std::vector<std::string> args{"bake", "--scene",   "courtyard", "--volumes", volumes, "--rays",
+                                  "16",   "--bounces", "1",         "--json",    "--out", out};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return jsonOf(runProbebench(args));
+}
+
+// What the written file stores (probebench memory reads it back).
+nlohmann::json storedTotal(const std::string& file) {
+    return jsonOf(runProbebench({"memory", "--probes", file, "--json"}))["total"];
+}
+
+} // namespace
+
+TEST(BakeSparseCli, AutoStoresSparseAndDenseOptsOut) {
+    const std::string f = (outputDir() / "bake_sparse_auto.pbp").string();
+    fs::remove(f);
+    const nlohmann::json sparse = bake("auto", f);
+    EXPECT_EQ(sparse["placement"]["storage"], "sparse");
+    nlohmann::json stored = storedTotal(f);
+    EXPECT_LT(stored["stored_probes"].get<long long>(), stored["probes"].get<long long>())
+        << "--volumes auto stored every grid probe of a scene with empty air";
+    EXPECT_GT(stored["stored_probes"].get<long long>(), 0);
+    EXPECT_GT(stored["indirection"].get<long long>(), 0);
+
+    // The same command with --dense re-bakes (the cached file is the sparse one) and stores all.
+    const nlohmann::json dense = bake("auto", f, {"--dense"});
+    EXPECT_FALSE(dense["up_to_date"].get<bool>());
+    EXPECT_NE(dense["input_hash"], sparse["input_hash"]);
+    EXPECT_EQ(dense["placement"]["storage"], "dense");
+    stored = storedTotal(f);
+    EXPECT_EQ(stored["stored_probes"], stored["probes"]);
+    EXPECT_EQ(stored["indirection"].get<long long>(), 0);
+    // Both under the same default budget, which the sparse search counts in stored bytes: it
+    // affords more grid probes than the dense one.
+    const double budget = sparse["placement"]["budget_bytes"].get<double>();
+    EXPECT_EQ(dense["placement"]["budget_bytes"].get<double>(), budget);
+    EXPECT_LE(sparse["memory"]["total"]["stored_total"].get<double>(), budget);
+    EXPECT_LE(stored["stored_total"].get<double>(), budget);
+    EXPECT_GT(sparse["probes"].get<long long>(), dense["probes"].get<long long>());
+
+    // Back to the default: re-baked sparse, then up to date.
+    EXPECT_FALSE(bake("auto", f)["up_to_date"].get<bool>());
+    const nlohmann::json again = bake("auto", f);
+    EXPECT_TRUE(again["up_to_date"].get<bool>());
+    EXPECT_EQ(again["input_hash"], sparse["input_hash"]);
+}
+
+TEST(BakeSparseCli, AutoUniformStoresDenseUnlessSparse) {
+    const std::string f = (outputDir() / "bake_sparse_uniform.pbp").string();
+    const std::vector<std::string> spacing{"--spacing", "1.5"};
+    bake("auto-uniform", f, spacing);
+    nlohmann::json stored = storedTotal(f);
+    EXPECT_EQ(stored["stored_probes"], stored["probes"]);
+    std::vector<std::string> sparse = spacing;
+    sparse.push_back("--sparse");
+    EXPECT_EQ(bake("auto-uniform", f, sparse)["placement"]["storage"], "sparse");
+    stored = storedTotal(f);
+    EXPECT_LT(stored["stored_probes"].get<long long>(), stored["probes"].get<long long>());
+}
+
+TEST(BakeSparseCli, SparseAndDenseTogetherIsAOneLineError) {
+    const fs::path f = outputDir() / "bake_sparse_both.pbp";
+    fs::remove(f);
+    const CommandResult r =
+        runProbebench({"bake", "--scene", "courtyard", "--sparse", "--dense", "--out", f.string()});
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_FALSE(r.crashed);
+    EXPECT_EQ(r.output.rfind("probebench: error: --dense", 0), 0u) << r.output;
+    EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
+    EXPECT_FALSE(fs::exists(f));
+}
