@@ -2,6 +2,7 @@
 // all of it and a child over half (x > 0). Every count follows from the pass structure:
 // one draw per volume, every fragment reads depth, pixels inside a volume read the normal and
 // 8 probes x 3 fetches, the child wins its half. Same inputs give byte-identical JSON.
+#include "unit/OpenProbeSets.h"
 #include "unit/ProbeTestScenes.h"
 
 #include "core/Error.h"
@@ -26,20 +27,7 @@ probes::ProbeVolume box(const std::string& name, glm::vec3 lo, glm::vec3 hi,
 }
 
 probes::ProbeSet setOf(std::vector<probes::ProbeVolume> vols) {
-    probes::ProbeSet set;
-    set.scenarios.push_back({"day", {}, {}});
-    set.irradiance.emplace_back();
-    for (const probes::ProbeVolume& v : vols) {
-        set.volumes.push_back(v);
-        set.states.emplace_back(size_t(v.probeCount()));
-        probes::ProbeTexture vis = probes::ProbeTexture::make(probes::visibilityShape(v.counts));
-        std::fill(vis.texels.begin(), vis.texels.end(), 1.0f);
-        set.visibility.push_back(vis);
-        probes::ProbeTexture irr = probes::ProbeTexture::make(probes::irradianceShape(v.counts));
-        std::fill(irr.texels.begin(), irr.texels.end(), 1.0f);
-        set.irradiance[0].push_back(irr);
-    }
-    return set;
+    return test::openProbeSet(vols);
 }
 
 scene::Scene floorScene() {

@@ -18,6 +18,8 @@
 #include "scene/SceneLoader.h"
 #include "views/WorstCaseView.h"
 
+#include "OpenProbeSets.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
@@ -30,26 +32,17 @@ namespace {
 // A 5x3x4 grid over [0,5]x[0,2]x[0,4] with open visibility; the probes `absent` picks are not
 // stored (and so invalid, as SparseStorage leaves them), or with `onlyInvalid` only invalid.
 template <typename Pick> probes::ProbeSet gridSet(Pick absent, bool onlyInvalid = false) {
-    probes::ProbeSet set;
     probes::ProbeVolume v;
     v.name = "grid";
     v.center = {2.5f, 1, 2};
     v.halfExtents = {2.5f, 1, 2};
     v.counts = {5, 3, 4};
-    set.volumes.push_back(v);
-    set.scenarios.push_back({"day", {}, {}});
-    set.states.emplace_back(size_t(v.probeCount()));
+    probes::ProbeSet set = test::openProbeSet({v});
     for (int i = 0; i < v.probeCount(); ++i)
         if (absent(v.probeCoords(i))) {
             set.states[0][size_t(i)].valid = false;
             set.states[0][size_t(i)].stored = onlyInvalid;
         }
-    probes::ProbeTexture vis = probes::ProbeTexture::make(probes::visibilityShape(v.counts));
-    std::fill(vis.texels.begin(), vis.texels.end(), 1.0f);
-    set.visibility.push_back(vis);
-    probes::ProbeTexture irr = probes::ProbeTexture::make(probes::irradianceShape(v.counts));
-    std::fill(irr.texels.begin(), irr.texels.end(), 1.0f);
-    set.irradiance.push_back({irr});
     return set;
 }
 

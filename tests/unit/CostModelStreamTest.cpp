@@ -8,6 +8,8 @@
 #include "probes/Octahedral.h"
 #include "probes/ProbeSampler.h"
 
+#include "OpenProbeSets.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -19,22 +21,13 @@ namespace {
 
 // A 4x3x5 grid over [0,4]x[0,2]x[0,4] with open visibility; probe `invalid` (or none) invalid.
 probes::ProbeSet gridSet(int invalid = -1) {
-    probes::ProbeSet set;
     probes::ProbeVolume v;
     v.name = "grid";
     v.center = {2, 1, 2};
     v.halfExtents = {2, 1, 2};
     v.counts = {4, 3, 5};
-    set.volumes.push_back(v);
-    set.scenarios.push_back({"day", {}, {}});
-    set.states.emplace_back(size_t(v.probeCount()));
+    probes::ProbeSet set = test::openProbeSet({v});
     if (invalid >= 0) set.states[0][size_t(invalid)].valid = false;
-    probes::ProbeTexture vis = probes::ProbeTexture::make(probes::visibilityShape(v.counts));
-    std::fill(vis.texels.begin(), vis.texels.end(), 1.0f);
-    set.visibility.push_back(vis);
-    probes::ProbeTexture irr = probes::ProbeTexture::make(probes::irradianceShape(v.counts));
-    std::fill(irr.texels.begin(), irr.texels.end(), 1.0f);
-    set.irradiance.push_back({irr});
     return set;
 }
 
