@@ -32,11 +32,7 @@ namespace {
 // A 5x3x4 grid over [0,5]x[0,2]x[0,4] with open visibility; the probes `absent` picks are not
 // stored (and so invalid, as SparseStorage leaves them), or with `onlyInvalid` only invalid.
 template <typename Pick> probes::ProbeSet gridSet(Pick absent, bool onlyInvalid = false) {
-    probes::ProbeVolume v;
-    v.name = "grid";
-    v.center = {2.5f, 1, 2};
-    v.halfExtents = {2.5f, 1, 2};
-    v.counts = {5, 3, 4};
+    const probes::ProbeVolume v = test::gridVolume("grid", {2.5f, 1, 2}, {2.5f, 1, 2}, {5, 3, 4});
     probes::ProbeSet set = test::openProbeSet({v});
     for (int i = 0; i < v.probeCount(); ++i)
         if (absent(v.probeCoords(i))) {

@@ -21,12 +21,8 @@ namespace {
 
 // A 4x3x5 grid over [0,4]x[0,2]x[0,4] with open visibility; probe `invalid` (or none) invalid.
 probes::ProbeSet gridSet(int invalid = -1) {
-    probes::ProbeVolume v;
-    v.name = "grid";
-    v.center = {2, 1, 2};
-    v.halfExtents = {2, 1, 2};
-    v.counts = {4, 3, 5};
-    probes::ProbeSet set = test::openProbeSet({v});
+    probes::ProbeSet set =
+        test::openProbeSet({test::gridVolume("grid", {2, 1, 2}, {2, 1, 2}, {4, 3, 5})});
     if (invalid >= 0) set.states[0][size_t(invalid)].valid = false;
     return set;
 }

@@ -9,6 +9,16 @@
 
 namespace pb::test {
 
+inline probes::ProbeVolume gridVolume(const char* name, glm::vec3 center, glm::vec3 halfExtents,
+                                      glm::ivec3 counts) {
+    probes::ProbeVolume v;
+    v.name = name;
+    v.center = center;
+    v.halfExtents = halfExtents;
+    v.counts = counts;
+    return v;
+}
+
 inline probes::ProbeSet openProbeSet(const std::vector<probes::ProbeVolume>& volumes) {
     probes::ProbeSet set;
     set.scenarios.push_back({"day", {}, {}});
