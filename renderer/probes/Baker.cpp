@@ -147,6 +147,25 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         phases.mark("geometry");
     }
 
+    // Sparse storage keeps only the surface corners (SparseStorage.h), and the radiance of a
+    // kept probe reads only kept probes: a later pass looks up the previous one at surface
+    // hits, i.e. at surface cells' corners. So the others' radiance is not traced. Except in
+    // a parent volume: its children's rings are blended towards it at ring positions, which
+    // need not lie on a surface. Their geometry pass still ran: the states stay as dense.
+    std::vector<std::vector<std::uint8_t>> keep;
+    if (req.sparse) {
+        const std::vector<WorldTriangle> triangles = staticBakeTriangles(scene);
+        for (size_t v = 0; v < set.volumes.size(); ++v)
+            keep.push_back(surfaceCornerProbes(set.volumes[v], parents[v] < 0, triangles));
+    }
+    std::vector<bool> isParent(set.volumes.size(), false);
+    for (int p : parents)
+        if (p >= 0) isParent[size_t(p)] = true;
+    auto radianceNeeded = [&](int v, int p) {
+        if (!set.states[size_t(v)][size_t(p)].valid) return false;
+        return keep.empty() || isParent[size_t(v)] || keep[size_t(v)][size_t(p)] != 0;
+    };
+
     // 2. Radiance, per scenario and pass.
     for (size_t s = 0; s < req.scenarios.size(); ++s) {
         const Scenario& sc = req.scenarios[s];
@@ -185,14 +204,13 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
             auto writeTile = [&](std::size_t first, std::size_t i, int t) {
                 auto [v, p] = index.locate(first + i);
                 const ProbeVolume& vol = set.volumes[size_t(v)];
-                const ProbeState& st = set.states[size_t(v)][size_t(p)];
                 glm::ivec3 c = vol.probeCoords(p);
                 float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
                 const int pitch = cur[size_t(v)].shape.width;
                 for (int y = 0; y < kIrradianceTile; ++y)
                     for (int x = 0; x < kIrradianceTile; ++x)
                         tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
-                if (!st.valid) return;
+                if (!radianceNeeded(v, p)) return;
                 float* out = irr[size_t(t)].data();
                 slab.convolve(i, conv, out);
                 for (int y = 0; y < kIrradianceInterior; ++y)
@@ -212,7 +230,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
                         auto [v, p] = index.locate(first + i);
                         const ProbeVolume& vol = set.volumes[size_t(v)];
                         const ProbeState& st = set.states[size_t(v)][size_t(p)];
-                        if (st.valid) {
+                        if (radianceNeeded(v, p)) {
                             glm::ivec3 c = vol.probeCoords(p);
                             slab.trace(i, rs, sc, scene.lights, vol.localToWorldRotation(),
                                        vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
@@ -269,7 +287,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         quantise(*all[i], cfg.format);
         errors[i] = measureQuantisation(before, *all[i], errors[i]);
     });
-    if (req.sparse) applySparseStorage(set, staticBakeTriangles(scene));
+    if (req.sparse) storeOnly(set, keep);
 
     if (statsOut) {
         BakeStats st;

@@ -173,6 +173,75 @@ TEST(SparseStorage, DroppingFarProbesChangesNoSurfaceIrradiance) {
     EXPECT_GT(lit, 3000);
 }
 
+// A sparse bake traces radiance only for the probes it keeps (and every probe of a parent
+// volume): that must give exactly the dense bake with the others dropped afterwards, over
+// two bounces (the second pass looks the first up) and with a nested child (ring blend).
+TEST(SparseStorage, BakingOnlyTheKeptProbesGivesTheDenseBakeDropped) {
+    const pb::scene::Scene s = pb::scene::makeBuiltinScene("courtyard");
+    BakeRequest r;
+    ProbeVolume outer = fitAutoVolume(staticBakeBounds(s), 0.0f, 900).volume;
+    ProbeVolume child = outer;
+    child.name = "child";
+    child.parent = outer.name;
+    child.halfExtents = outer.halfExtents * 0.45f;
+    child.counts = glm::max(outer.counts / 2 + 1, glm::ivec3(2));
+    r.volumes = {outer, child};
+    r.scenarios = resolveScenarios({"day"}, {}, s);
+    r.settings.raysPerProbe = 32;
+    r.settings.bounces = 2;
+    ProbeSet dense = bakeProbes(s, r);
+    applySparseStorage(dense, staticBakeTriangles(s));
+    r.sparse = true;
+    const ProbeSet sparse = bakeProbes(s, r);
+    ASSERT_LT(sparse.storedCount(), sparse.probeCount()) << "nothing dropped: vacuous";
+    for (std::size_t v = 0; v < 2; ++v) {
+        for (std::size_t i = 0; i < dense.states[v].size(); ++i) {
+            EXPECT_EQ(sparse.states[v][i].stored, dense.states[v][i].stored) << v << "/" << i;
+            EXPECT_EQ(sparse.states[v][i].offset, dense.states[v][i].offset) << v << "/" << i;
+        }
+        EXPECT_EQ(sparse.visibility[v].stored, dense.visibility[v].stored) << v;
+        EXPECT_EQ(sparse.irradiance[0][v].stored, dense.irradiance[0][v].stored) << v;
+    }
+}
+
+// The parent exception: a child's ring probe blends towards the parent at its own position,
+// which may fall in a parent cell no surface passes through. Here a floor at y = 0.7 lies in
+// the parent cell [-1.25, 0.75]; the child's top ring (y = 1.0, kept: its cell holds the
+// floor) reads the parent cell [0.75, 2.75], whose upper corners no surface keeps.
+TEST(SparseStorage, ParentVolumesKeepTheRadianceTheirChildRingsRead) {
+    pb::scene::Scene s = pb::test::emptyScene(glm::vec3(0.4f, 0.5f, 0.7f));
+    s.sun.enabled = true;
+    const int m = pb::test::addMaterial(s, glm::vec3(0.6f));
+    pb::scene::Primitive floor;
+    floor.material = m;
+    pb::test::addQuad(floor, {-4, 0.7f, -4}, {8, 0, 0}, {0, 0, 8}, {0, 1, 0});
+    pb::test::addInstance(s, floor);
+    ProbeVolume parent, child;
+    parent.name = "parent";
+    parent.center = {0, 3.75f, 0};
+    parent.halfExtents = {4, 5, 4};
+    parent.counts = {5, 6, 5};
+    child.name = "child";
+    child.parent = "parent";
+    child.center = {0, 0.75f, 0};
+    child.halfExtents = {1, 0.25f, 1};
+    child.counts = {3, 2, 3};
+    BakeRequest r;
+    r.volumes = {parent, child};
+    r.scenarios = resolveScenarios({"day"}, {}, s);
+    r.settings.raysPerProbe = 32;
+    r.settings.bounces = 1;
+    r.settings.relocate = false;
+    ProbeSet dense = bakeProbes(s, r);
+    applySparseStorage(dense, staticBakeTriangles(s));
+    ASSERT_FALSE(dense.states[0][size_t(parent.probeIndex({2, 2, 2}))].stored); // y = 2.75
+    ASSERT_TRUE(dense.states[1][size_t(child.probeIndex({1, 1, 1}))].stored);   // y = 1.0
+    r.sparse = true;
+    const ProbeSet sparse = bakeProbes(s, r);
+    EXPECT_EQ(sparse.irradiance[0][1].stored, dense.irradiance[0][1].stored);
+    EXPECT_EQ(sparse.irradiance[0][0].stored, dense.irradiance[0][0].stored);
+}
+
 TEST(SparseStorage, AbsentProbesSampleLikeInvalidOnes) {
     const ProbeSet& dense = courtyardDense();
     ProbeSet sparse = dense;
@@ -262,12 +331,14 @@ TEST(SparseStorage, CorruptStorageRecordIsAClearError) {
     EXPECT_NE(bits.find("p.pbp: "), std::string::npos) << bits;
 }
 
-// The bytes of the committed sparse seed (tests/data/fuzz-seeds/probe_file/courtyard_sparse_bc6h.pbp),
-// flipped, with size and checksum made to match, through the fuzzers' contract: it loads
-// (and samples finite) or is a one-line error naming the file.
+// The bytes of the committed sparse seed
+// (tests/data/fuzz-seeds/probe_file/courtyard_sparse_bc6h.pbp), flipped, with size and checksum
+// made to match, through the fuzzers' contract: it loads (and samples finite) or is a one-line
+// error naming the file.
 TEST(SparseStorage, EveryFlippedByteOfASparseFileKeepsTheErrorContract) {
     const std::vector<std::uint8_t> seed = pb::readFileBytes(
-        (pb::test::sourceDir() / "tests/data/fuzz-seeds/probe_file/courtyard_sparse_bc6h.pbp").string());
+        (pb::test::sourceDir() / "tests/data/fuzz-seeds/probe_file/courtyard_sparse_bc6h.pbp")
+            .string());
     ASSERT_GT(seed.size(), 100u);
     ASSERT_LT(parseProbeSet(seed, "seed.pbp").storedCount(),
               parseProbeSet(seed, "seed.pbp").probeCount());
