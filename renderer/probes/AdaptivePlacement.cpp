@@ -140,7 +140,8 @@ AdaptivePlacement placeAdaptiveVolumes(const RayScene& rays,
 
     // Outer volume: the uniform fit at the coarse spacing (no probe cap here: the caller's
     // budget loop coarsens).
-    AutoVolume outer = fitAutoVolume(bounds, o.spacing * float(1 << o.levels), kMaxProbesPerVolume);
+    AutoVolume outer = fitAutoVolume(bounds, o.spacing * float(1 << o.levels), kMaxProbesPerVolume,
+                                     o.lattice, o.levels);
     Lattice L;
     L.origin = glm::dvec3(outer.volume.center) - glm::dvec3(outer.volume.halfExtents);
     L.size = glm::dvec3(outer.volume.halfExtents) * 2.0;

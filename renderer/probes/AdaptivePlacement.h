@@ -22,6 +22,7 @@
 //      enclosed scene, where every cell is near a wall, ends as one uniform fine grid.
 // Everything is deterministic (fixed ray directions, per-item results, sorted cell lists):
 // the same scene and options give the same volumes for any thread count.
+#include "probes/AutoVolume.h"
 #include "probes/ProbeVolume.h"
 #include "probes/RayScene.h"
 #include "probes/StaticTriangles.h"
@@ -38,6 +39,9 @@ struct AdaptiveOptions {
     int maxChildren = 4; // child boxes per parent volume
     int pad = 1;         // cells of padding around each child box
     int threads = 0;     // 0 = all cores; never changes the result
+    // The outer volume's lattice (AutoVolume.h): `--volumes auto` keeps probe planes off the
+    // scene's boundary surfaces.
+    AutoLattice lattice = AutoLattice::HalfCellMargin;
 };
 
 struct AdaptiveStats {

@@ -172,6 +172,39 @@ TEST(VolumeAuto, FitsTheBoundsAtTheSpacing) {
     EXPECT_EQ(volumeProblem(a.volume), "");
 }
 
+TEST(VolumeAuto, HalfCellMarginKeepsProbePlanesOffTheBounds) {
+    // A flat axis too (the thin floor of a level), and the finer tiers of adaptive placement
+    // (the lattice split 2 and 4 times per axis): no plane of the finest split on a face.
+    for (int subdivisions : {0, 1, 2})
+        for (glm::vec3 hi : {glm::vec3(30, 6, 5), glm::vec3(30, -5, 5)}) {
+            pb::scene::Bounds b;
+            b.extend(glm::vec3(10, -5, -5));
+            b.extend(hi);
+            const float spacing = 1.0f * float(1 << subdivisions);
+            const AutoVolume a = fitAutoVolume(b, spacing, kAutoMaxProbes,
+                                               AutoLattice::HalfCellMargin, subdivisions);
+            EXPECT_EQ(volumeProblem(a.volume), "");
+            for (glm::vec3 c : {b.min, b.max})
+                EXPECT_TRUE(a.volume.contains(c));
+            const glm::vec3 cell = a.volume.cellSize();
+            for (int k = 0; k < 3; ++k) {
+                EXPECT_LE(cell[k], spacing + 1e-5f);
+                const int planes = (a.volume.counts[k] - 1) * (1 << subdivisions) + 1;
+                const float fine = cell[k] / float(1 << subdivisions);
+                for (int i = 0; i < planes; ++i) {
+                    const float x = a.volume.center[k] - a.volume.halfExtents[k] + float(i) * fine;
+                    EXPECT_GE(std::abs(x - b.min[k]), 0.45f * fine) << k << " plane " << i;
+                    EXPECT_GE(std::abs(x - b.max[k]), 0.45f * fine) << k << " plane " << i;
+                }
+            }
+            if (subdivisions == 0) { // one plane per axis more than the naive fit
+                const AutoVolume f = fitAutoVolume(b, spacing);
+                for (int k = 0; k < 3; ++k)
+                    EXPECT_EQ(a.volume.counts[k], b.size()[k] > 0.0f ? f.volume.counts[k] + 1 : 2);
+            }
+        }
+}
+
 TEST(VolumeAuto, CapsTheProbeCountWithAMessage) {
     pb::scene::Bounds b;
     b.extend(glm::vec3(0));
