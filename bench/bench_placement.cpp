@@ -13,6 +13,10 @@
 //   uniform/2 sparse, adaptive: the same two stored sparse (`--volumes auto`'s default,
 //              `auto-uniform --sparse`: only probes at surface cells stored; the budget counts
 //              stored tiles + the indirection).
+//   --lattice-sweep adds dense uniform grids at 0.9 - 1.25x the default spacing on both
+//              lattices (AutoVolume.h): "fit" puts the outer probe planes on the scene bounds
+//              (auto-uniform), "pad" half a cell beyond them (auto).
+// on-plane: the share of the surface lying on a probe plane (LatticeAlignment.h).
 // Error: N (--points, default 20000) area-weighted random points on the static triangles
 // (front side of single-sided triangles, a random side of double-sided ones), normal = view =
 // the face normal, each sampled with the CPU ProbeSampler in the candidate and in the
@@ -27,6 +31,7 @@
 #include "core/Error.h"
 #include "probes/AutoPlacement.h"
 #include "probes/Baker.h"
+#include "probes/LatticeAlignment.h"
 #include "probes/MemoryReport.h"
 #include "probes/ProbeSampler.h"
 #include "probes/RayDirections.h"
@@ -53,7 +58,7 @@ using Clock = std::chrono::steady_clock;
 struct Options {
     std::vector<std::string> scenes;
     int points = 20000, rays = 64, refRays = 128, threads = 0;
-    bool json = false;
+    bool json = false, latticeSweep = false;
 };
 
 struct SurfacePoint {
@@ -226,6 +231,21 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
     AutoPlacementResult as = placeAutoVolumes(s, adaptiveReq);
     adaptive.volumes = as.volumes;
 
+    // --lattice-sweep: uniform dense grids at 0.9 - 1.25x the default spacing, on the naive
+    // lattice (planes on the bounds) and on auto's (half a cell beyond them).
+    std::vector<Candidate> sweep;
+    if (o.latticeSweep)
+        for (int pad = 0; pad < 2; ++pad)
+            for (float m : {0.9f, 0.95f, 1.0f, 1.05f, 1.1f, 1.15f, 1.2f, 1.25f}) {
+                Candidate c;
+                c.name = std::string(pad ? "pad " : "fit ") + std::to_string(m).substr(0, 4);
+                c.rays = o.rays;
+                c.volumes.push_back(
+                    fitAutoVolume(bounds, m * uniformSpacing, 1 << 18,
+                                  pad ? AutoLattice::HalfCellMargin : AutoLattice::FitBounds)
+                        .volume);
+                sweep.push_back(c);
+            }
     RayScene rays(s);
     const glm::vec3 refCell = ref.volumes[0].cellSize();
     std::vector<SurfacePoint> pts =
@@ -234,6 +254,9 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
     nlohmann::json rows = nlohmann::json::array();
     std::vector<Candidate*> all{&ref,           &uniform,           &uniformHalf,
                                 &adaptiveDense, &uniformHalfSparse, &adaptive};
+    for (Candidate& c : sweep)
+        all.push_back(&c);
+    const std::vector<WorldTriangle> tris = staticBakeTriangles(s);
     for (Candidate* c : all) {
         bake(s, *c, o.threads);
         sampleAll(*c, pts);
@@ -242,7 +265,11 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
         MemoryReport m = memoryReport(c->set);
         Errors err = c == &ref ? Errors{0.0, 0.0, 0} : errors(*c, ref);
         glm::vec3 cell = c->volumes.back().cellSize();
+        float onPlane = 0.0f;
+        for (const ProbeVolume& v : c->volumes)
+            onPlane = std::max(onPlane, surfaceOnProbePlanes(v, tris));
         rows.push_back({{"placement", c->name},
+                        {"on_plane", onPlane},
                         {"volumes", c->volumes.size()},
                         {"probes", m.total.probes},
                         {"stored_probes", m.total.storedProbes},
@@ -268,16 +295,17 @@ void printTable(const nlohmann::json& r) {
     std::printf("\n%s: %zu surface points (adaptive dense placement %.2f s)\n",
                 r["scene"].get<std::string>().c_str(), r["points_on_surfaces"].get<std::size_t>(),
                 r["adaptive_dense_place_s"].get<double>());
-    std::printf("  %-16s %7s %8s %8s %9s %8s %8s %5s %9s %7s %8s\n", "placement", "volumes",
-                "probes", "stored", "MiB", "finest", "far", "rays", "mean err", "nMAE", "bake s");
+    std::printf("  %-16s %7s %8s %8s %9s %8s %8s %5s %9s %7s %8s %8s\n", "placement", "volumes",
+                "probes", "stored", "MiB", "finest", "far", "rays", "mean err", "nMAE", "bake s",
+                "on-plane");
     for (const auto& row : r["rows"])
-        std::printf("  %-16s %7zu %8zu %8zu %9.2f %8.3f %8zu %5d %9.4f %7.4f %8.2f\n",
+        std::printf("  %-16s %7zu %8zu %8zu %9.2f %8.3f %8zu %5d %9.4f %7.4f %8.2f %8.4f\n",
                     row["placement"].get<std::string>().c_str(), row["volumes"].get<std::size_t>(),
                     row["probes"].get<std::size_t>(), row["stored_probes"].get<std::size_t>(),
                     row["mib"].get<double>(), row["finest_spacing"].get<double>(),
                     row["far_probes"].get<std::size_t>(), row["rays"].get<int>(),
                     row["mean_relative_error"].get<double>(), row["nmae"].get<double>(),
-                    row["bake_s"].get<double>());
+                    row["bake_s"].get<double>(), row["on_plane"].get<double>());
 }
 
 } // namespace
@@ -301,10 +329,12 @@ int main(int argc, char** argv) {
                 o.threads = std::stoi(next());
             else if (a == "--json")
                 o.json = true;
+            else if (a == "--lattice-sweep")
+                o.latticeSweep = true;
             else if (a.rfind("--", 0) == 0)
                 throw pb::Error(a + ": unknown option (--points N, "
                                     "--rays N, --ref-rays N, "
-                                    "--threads N, --json)");
+                                    "--threads N, --json, --lattice-sweep)");
             else
                 o.scenes.push_back(a);
         } catch (const std::logic_error&) {

@@ -1,6 +1,7 @@
 #include "probes/AutoPlacement.h"
 
 #include "core/Error.h"
+#include "probes/LatticeAlignment.h"
 #include "probes/MemoryReport.h"
 #include "probes/RayScene.h"
 #include "probes/SparseStorage.h"
@@ -95,6 +96,8 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
         }
     }
 
+    // `auto` keeps probe planes off the boundary surfaces; `auto-uniform` is the naive fit.
+    const AutoLattice lattice = adaptive ? AutoLattice::HalfCellMargin : AutoLattice::FitBounds;
     int placements = 0;
     std::string capNote;
     // levels 0 = one uniform volume.
@@ -110,11 +113,12 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
             r.stats = p.stats;
             r.spacing = s;
         } else {
-            AutoVolume fit = fitAutoVolume(bounds, s, req.maxProbes);
+            AutoVolume fit = fitAutoVolume(bounds, s, req.maxProbes, lattice);
             if (placements == 1) capNote = fit.note;
             r.volumes.push_back(fit.volume);
             r.spacing = fit.spacing;
         }
+        r.levels = levels;
         for (const ProbeVolume& v : r.volumes)
             r.probes += v.probeCount();
         r.bytes = storedBytes(r.volumes);
@@ -247,6 +251,35 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
         best.notes.push_back(note.str());
     } else if (!capNote.empty()) {
         best.notes.push_back(capNote);
+    }
+    // Lattice choice (auto only, when the budget set the spacing): the finest spacing that
+    // fits may put a wall on a probe plane, which costs more accuracy than the resolution
+    // gains (LatticeAlignment.h). A spacing up to 10% coarser that also fits and keeps clearly
+    // less surface on probe planes wins.
+    auto onPlanes = [&](const AutoPlacementResult& r) {
+        float worst = 0.0f;
+        for (const ProbeVolume& v : r.volumes)
+            worst = std::max(worst, surfaceOnProbePlanes(v, triangles));
+        return worst;
+    };
+    if (adaptive && budget > 0.0 && !(req.adaptive.spacing > 0.0f)) {
+        best.onProbePlanes = onPlanes(best);
+        const float base = best.spacing;
+        // The same tiers at coarser spacings, and, when the result is one volume (an enclosed
+        // scene refines its outer volume to one fine grid), one uniform volume: its lattice
+        // moves with every step, a tiered one only when the outer count changes.
+        std::vector<int> tiers{best.levels};
+        if (best.volumes.size() == 1 && best.levels > 0) tiers.push_back(0);
+        for (int levels : tiers)
+            for (int step = levels == best.levels ? 1 : 0; step <= 5; ++step) {
+                AutoPlacementResult a = place(base * (1.0f + 0.02f * float(step)), levels);
+                if (!fits(a)) continue;
+                a.onProbePlanes = onPlanes(a);
+                if (a.onProbePlanes < best.onProbePlanes - kLatticeScoreMargin) {
+                    a.notes = std::move(best.notes);
+                    best = std::move(a);
+                }
+            }
     }
     // The default budget coarsens every time: that is how the default is defined, not news.
     if (defaultBudget) best.notes.clear();

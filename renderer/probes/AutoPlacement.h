@@ -41,8 +41,10 @@ struct AutoPlacementRequest {
 
 struct AutoPlacementResult {
     std::vector<ProbeVolume> volumes;
-    float spacing = 0.0f;  // the finest spacing used (uniform: the grid spacing)
-    std::size_t bytes = 0; // stored probe memory in the request's format (sparse: as stored)
+    float spacing = 0.0f;       // the finest spacing used (uniform: the grid spacing)
+    int levels = 0;             // adaptive tiers placed below the outer volume (0: one volume)
+    float onProbePlanes = 0.0f; // surface share on probe planes (LatticeAlignment.h), adaptive
+    std::size_t bytes = 0;      // stored probe memory in the request's format (sparse: as stored)
     long long probes = 0;
     int placements = 0;             // how many placements the budget loop tried
     double budgetBytes = 0.0;       // the budget applied (0: none)
