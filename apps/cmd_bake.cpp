@@ -5,6 +5,7 @@
 #include "probes/AutoPlacement.h"
 #include "probes/Baker.h"
 #include "probes/MemoryReport.h"
+#include "probes/ProbeCounts.h"
 #include "probes/ProbeFile.h"
 #include "probes/RayScene.h"
 #include "probes/SparseStorage.h"
@@ -15,6 +16,7 @@
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <unistd.h>
 
@@ -201,25 +203,45 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
     return r;
 }
 
-nlohmann::json volumesJson(const ProbeSet& set) {
+// A count, or null when the file cannot tell (ProbeCounts.h).
+nlohmann::json countJson(const std::optional<std::size_t>& n) {
+    return n ? nlohmann::json(*n) : nlohmann::json(nullptr);
+}
+
+nlohmann::json volumesJson(const ProbeSet& set, const std::vector<ProbeCounts>& counts) {
     nlohmann::json out = nlohmann::json::array();
     for (size_t v = 0; v < set.volumes.size(); ++v) {
         const ProbeVolume& vol = set.volumes[v];
-        std::size_t invalid = 0, moved = 0;
-        for (const ProbeState& p : set.states[v]) {
-            invalid += p.valid ? 0 : 1;
+        std::size_t moved = 0;
+        for (const ProbeState& p : set.states[v])
             moved += p.offset != glm::vec3(0.0f) ? 1 : 0;
-        }
         out.push_back({{"name", vol.name},
                        {"parent", vol.parent},
                        {"counts", {vol.counts.x, vol.counts.y, vol.counts.z}},
                        {"center", {vol.center.x, vol.center.y, vol.center.z}},
                        {"half_extents", {vol.halfExtents.x, vol.halfExtents.y, vol.halfExtents.z}},
                        {"probes", vol.probeCount()},
-                       {"invalid", invalid},
+                       {"stored", counts[v].stored},
+                       {"absent", countJson(counts[v].absent)},
+                       {"invalid", countJson(counts[v].invalid)},
                        {"relocated", moved}});
     }
     return out;
+}
+
+// "probes: N in V volume(s), ..." : stored / absent / invalid (ProbeCounts.h).
+std::string probeCountsText(const ProbeCounts& c, std::size_t volumes) {
+    std::ostringstream s;
+    s << "probes: " << c.probes << " in " << volumes << " volume(s), ";
+    if (c.notStored() == 0)
+        s << "all stored, " << *c.invalid << " invalid (inside geometry)";
+    else if (c.absent && c.invalid)
+        s << c.stored << " stored, " << *c.absent << " absent (not stored: no surface nearby), "
+          << *c.invalid << " invalid (inside geometry, not stored)";
+    else
+        s << c.stored << " stored, " << c.notStored() << " not stored (absent or invalid: a "
+          << "file read back does not tell which; --force re-bakes)";
+    return s.str();
 }
 
 // Per scenario, the irradiance's storage scale (probes/StorageScale.h; 1 when in range).
@@ -232,6 +254,9 @@ float scenarioScale(const ProbeSet& set, std::size_t s) {
 void printSummary(const BakeArgs& a, const PlacementInfo& placement, const ProbeSet& set,
                   const BakeStats* st, bool upToDate) {
     MemoryReport mem = memoryReport(set);
+    const std::vector<ProbeCounts> counts =
+        volumeProbeCounts(set, st ? &st->invalidPerVolume : nullptr);
+    const ProbeCounts total = totalProbeCounts(counts);
     if (a.json) {
         nlohmann::json j{{"file", a.out},
                          {"placement", placementJson(placement, set.format())},
@@ -241,10 +266,11 @@ void printSummary(const BakeArgs& a, const PlacementInfo& placement, const Probe
                          {"rays_per_probe", set.settings.raysPerProbe},
                          {"bounces", set.settings.bounces},
                          {"seed", set.settings.seed},
-                         {"probes", set.probeCount()},
-                         {"invalid_probes", set.invalidCount()},
-                         {"stored_probes", set.storedCount()},
-                         {"volumes", volumesJson(set)},
+                         {"probes", total.probes},
+                         {"stored_probes", total.stored},
+                         {"absent_probes", countJson(total.absent)},
+                         {"invalid_probes", countJson(total.invalid)},
+                         {"volumes", volumesJson(set, counts)},
                          {"memory", memoryReportJson(mem)}};
         nlohmann::json sc = nlohmann::json::array();
         nlohmann::json scales = nlohmann::json::object();
@@ -278,8 +304,7 @@ void printSummary(const BakeArgs& a, const PlacementInfo& placement, const Probe
         return;
     }
     if (upToDate) std::cout << a.out << ": up to date (input hash matches; --force re-bakes)\n";
-    std::cout << "probes: " << set.probeCount() << " in " << set.volumes.size() << " volume(s), "
-              << set.invalidCount() << " invalid";
+    std::cout << probeCountsText(total, set.volumes.size());
     if (st) std::cout << ", " << st->relocatedProbes << " relocated";
     std::cout << "\n";
     if (st) {

@@ -58,9 +58,6 @@ mediump vec3 ddgiHalf(highp vec3 v) {
 uniform DDGI_IRRADIANCE_PRECISION sampler2DArray u_ddgiIrradiance; // RGB = E, tiles of DDGI_IRR_TILE^2 texels
 uniform DDGI_PROBE_DATA_PRECISION sampler2DArray u_ddgiVisibility; // RG = mean, mean^2 of distance / maxDistance
 uniform highp sampler2DArray u_ddgiState;      // per probe: xyz relocation (local), w = tile
-#ifdef DDGI_SPARSE_TILES
-uniform ivec2 u_ddgiTileGrid;     // sparse: tiles per row, rows per layer; dense: (0, 0)
-#endif
 uniform vec3 u_ddgiCenter;        // volume centre in the caller's space
 uniform mat3 u_ddgiToLocal;       // R^T: caller's axes -> volume axes
 uniform vec3 u_ddgiHalf;          // half extents
@@ -113,19 +110,15 @@ ivec3 ddgiCorner(int i) {
 #endif
 }
 
-// The tile (column, row, layer) of a sparse volume's probe from its state's w: +-(slot + 1),
-// 0 = absent; the stored tiles are packed (renderer/probes/SparseLayout.h). Riding on the
-// state fetch costs no extra fetch, only these integer operations. They are compiled only for
-// probe sets with a sparse volume (DDGI_SPARSE_TILES, GpuProbes::anySparse): llvmpipe runs
-// both sides of even a uniform branch, and the emulated division and remainders cost a dense
-// set's frame 15% more instructions (bench/README.md). Dense volumes of such a set skip them
-// through the uniform (0, 0); a dense probe (i, j, k) owns tile (i, k, layer j).
+// Sparse volumes pack their stored tiles (renderer/probes/SparseLayout.h); the state's w holds
+// the tile's code (common_ddgi_tile.glsl), so the lookup costs no extra fetch, only a few
+// shifts and masks. Compiled only for probe sets with a sparse volume (DDGI_SPARSE_TILES,
+// GpuProbes::anySparse): dense sets find the tile from the probe's coordinates and keep their
+// instructions. In a set with a sparse volume every volume's w holds its code (a dense
+// volume's tile, (i, k, layer j), too): one path, no uniform branch (llvmpipe runs both
+// sides of one).
 #ifdef DDGI_SPARSE_TILES
-ivec3 ddgiTile(float stateW) {
-    int slot = int(abs(stateW) + 0.5) - 1;
-    return ivec3(slot % u_ddgiTileGrid.x, (slot / u_ddgiTileGrid.x) % u_ddgiTileGrid.y,
-                 slot / (u_ddgiTileGrid.x * u_ddgiTileGrid.y));
-}
+#include "common_ddgi_tile.glsl"
 #endif
 
 // A dense volume's probe (i, j, k) owns tile (i, k, layer j).
@@ -134,19 +127,27 @@ ivec3 ddgiDenseTile(ivec3 q) {
 }
 
 // Visibility-and-position weight of probe q (README steps 4a-4d); < 0 when q is skipped
-// (outside the grid, invalid or absent). `tile`: where q's texels are.
+// (outside the grid, invalid or absent). `tile`: where q's texels are; sparse sets also
+// return the state's w (`stateW`, 1 when skipped), from which ddgiTile finds the tile again.
 hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, hvec3 n, vec3 biased, hvec3 alpha,
-                       out ivec3 tile) {
+                       out ivec3 tile
+#ifdef DDGI_SPARSE_TILES
+                       , out float stateW
+#endif
+) {
     tile = ivec3(0);
+#ifdef DDGI_SPARSE_TILES
+    stateW = 1.0;
+#endif
     if (any(greaterThanEqual(q, u_ddgiCounts))) return -1.0;
     vec4 state = texelFetch(u_ddgiState, ivec3(q.x, q.z, q.y), 0);
     if (state.w < 0.5) return -1.0;
 #ifdef DDGI_SPARSE_TILES
-    if (u_ddgiTileGrid.x > 0)
-        tile = ddgiTile(state.w);
-    else
+    stateW = state.w;
+    tile = ddgiTile(state.w); // w >= 1 here
+#else
+    tile = ddgiDenseTile(q);
 #endif
-        tile = ddgiDenseTile(q);
     vec3 probe = u_ddgiGridOrigin + vec3(q) * u_ddgiGridStep + state.xyz;
 
     // 4a. Wrap shading: probes behind the surface count less (never zero).
@@ -191,6 +192,9 @@ hvec3 ddgiProbeIrradiance(ivec3 tile, vec2 irrLocal) {
 // Irradiance at `pos` (caller's space) for surface normal `normal` seen from direction `view`
 // (surface -> viewer; need not be unit). rgb = E * fade, a = weight (fade; 0 = no data).
 hvec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
+#ifdef DDGI_SPARSE_TILES
+    ddgiInitTileFields();
+#endif
     // 1. Local frame.
     vec3 p = ddgiLocal(pos);
     vec3 n = ddgiSafeNormalize(u_ddgiToLocal * normal, vec3(0.0, 1.0, 0.0));
@@ -221,23 +225,27 @@ hvec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
 #ifdef GI_LOOPS_SPLIT
     // All visibility weights first (the visibility fetches back to back), then irradiance.
     // Dense sets recompute each tile in the second loop: an ivec3[8] kept across the loops
-    // cost llvmpipe 8% more frame instructions (pc-high); sparse sets keep the looked-up tiles.
+    // cost llvmpipe 8% more frame instructions (pc-high). Sparse sets keep each probe's state
+    // w (a float[8]) and decode it again: 7% fewer GI instructions than an ivec3[8] of tiles
+    // (pc-high, bench/README.md "Probe placement").
     hfloat weights[8];
 #ifdef DDGI_SPARSE_TILES
-    ivec3 tiles[8];
+    float stateWs[8];
 #endif
     for (int i = 0; i < 8; ++i) {
         ivec3 tile;
+#ifdef DDGI_SPARSE_TILES
+        weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), p, nh, biased, alpha,
+                                     tile, stateWs[i]);
+#else
         weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), p, nh, biased, alpha,
                                      tile);
-#ifdef DDGI_SPARSE_TILES
-        tiles[i] = tile;
 #endif
     }
     for (int i = 0; i < 8; ++i) {
         if (weights[i] < 0.0) continue;
 #ifdef DDGI_SPARSE_TILES
-        ivec3 tile = tiles[i];
+        ivec3 tile = ddgiTile(stateWs[i]);
 #else
         ivec3 tile = ddgiDenseTile(base + ddgiCorner(i));
 #endif
@@ -248,7 +256,12 @@ hvec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
     for (int i = 0; i < 8; ++i) {
         ivec3 off = ddgiCorner(i);
         ivec3 tile;
+#ifdef DDGI_SPARSE_TILES
+        float stateW;
+        hfloat w = ddgiProbeWeight(base + off, off, p, nh, biased, alpha, tile, stateW);
+#else
         hfloat w = ddgiProbeWeight(base + off, off, p, nh, biased, alpha, tile);
+#endif
         if (w < 0.0) continue;
         sumE += w * ddgiProbeIrradiance(tile, irrLocal);
         sumW += w;

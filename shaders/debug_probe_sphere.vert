@@ -7,12 +7,12 @@ uniform mat3 u_ddgiToLocal;
 uniform vec3 u_ddgiGridOrigin;
 uniform vec3 u_ddgiGridStep;
 uniform ivec3 u_ddgiCounts;
-uniform ivec2 u_ddgiTileGrid;
 uniform mat4 u_clipFromRel;
 uniform float u_sphereRadius;
 out vec3 v_localDir;
-flat out ivec3 v_tile; // the probe's tile (column, row, layer), as common_ddgi.glsl's ddgiTile
+flat out ivec3 v_tile; // the probe's tile (column, row, layer) from its w (ddgiTile)
 flat out float v_valid;
+#include "common_ddgi_tile.glsl"
 
 const int kSegments = 12, kRings = 6;
 const float PI = 3.14159265358979;
@@ -31,10 +31,10 @@ void main() {
     vec3 local = u_ddgiGridOrigin + vec3(q) * u_ddgiGridStep + state.xyz + dir * u_sphereRadius;
     vec3 rel = u_ddgiCenter + transpose(u_ddgiToLocal) * local;
     v_localDir = dir;
-    int slot = int(abs(state.w) + 0.5) - 1; // common_ddgi.glsl's ddgiTile
-    ivec2 grid = u_ddgiTileGrid.x > 0 ? u_ddgiTileGrid : u_ddgiCounts.xz; // (0, 0): dense
-    v_tile = ivec3(slot % grid.x, (slot / grid.x) % grid.y, slot / (grid.x * grid.y));
+    // Every volume's w holds its tile's code (GpuProbes), dense or sparse; invalid probes too.
+    ddgiInitTileFields();
+    v_tile = ddgiTile(abs(state.w));
     v_valid = state.w;
     // Absent probes (sparse storage, w = 0) have no data: no sphere (outside the clip volume).
-    gl_Position = slot < 0 ? vec4(2.0, 2.0, 2.0, 1.0) : u_clipFromRel * vec4(rel, 1.0);
+    gl_Position = state.w == 0.0 ? vec4(2.0, 2.0, 2.0, 1.0) : u_clipFromRel * vec4(rel, 1.0);
 }

@@ -55,16 +55,15 @@ gl::Texture uploadProbeTexture(const probes::ProbeTexture& t, gl::TextureFormat 
     return tex;
 }
 
-// w is the indirection into the packed tiles (SparseLayout.h): +(slot + 1) valid, -(slot + 1)
-// invalid with a tile, 0 absent (no tile). Exact in float up to 2^24 slots.
+// w is the probe's tile code (SparseLayout.h TileCode): +(code + 1) valid, -(code + 1)
+// invalid with a tile, 0 absent (no tile).
 gl::Texture uploadStates(const probes::ProbeVolume& v, const std::vector<probes::ProbeState>& s,
-                         const std::vector<int>& slots) {
+                         const probes::TileLayout& tiles) {
     std::vector<float> texels;
     texels.reserve(s.size() * 4);
     for (std::size_t i = 0; i < s.size(); ++i) { // probe index = texel order of (i, k, layer j)
         const probes::ProbeState& p = s[i];
-        const float slot = slots[i] < 0 ? 0.0f : float(slots[i] + 1);
-        texels.insert(texels.end(), {p.offset.x, p.offset.y, p.offset.z, p.valid ? slot : -slot});
+        texels.insert(texels.end(), {p.offset.x, p.offset.y, p.offset.z, tiles.stateW(i, p.valid)});
     }
     gl::TextureDesc d;
     d.format = gl::TextureFormat::RGBA32F;
@@ -157,6 +156,7 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
         const probes::TileLayout tiles = probes::tileLayout(v, set.states[size_t(vi)]);
         g.sparse = tiles.sparse;
         g.packedCounts = tiles.packedCounts;
+        g.tileBits = glm::ivec2(tiles.code.columnBits, tiles.code.rowBits);
         probes::ProbeTexture scratch;
         auto packed = [&](const probes::ProbeTexture& t, int tile) -> const probes::ProbeTexture& {
             if (!tiles.sparse) return t;
@@ -172,7 +172,7 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
         g.visibility =
             uploadProbeTexture(packed(set.visibility[size_t(vi)], probes::kVisibilityTile),
                                visibilityFormat(format_), format_, what + " visibility");
-        g.state = uploadStates(v, set.states[size_t(vi)], tiles.slots);
+        g.state = uploadStates(v, set.states[size_t(vi)], tiles);
         fillParameters(g, v);
         volumes_.push_back(std::move(g));
     }
@@ -212,10 +212,8 @@ void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,
     program.set("u_ddgiGridOrigin", g.gridOrigin);
     program.set("u_ddgiGridStep", g.gridStep);
     program.set("u_ddgiCounts", g.counts);
-    // (0, 0) tells the shader the volume is dense: tile = probe, no indirection arithmetic.
-    // A packed grid can have the dense grid's shape (one probe absent): the flag decides.
-    program.set("u_ddgiTileGrid",
-                g.sparse ? glm::ivec2(g.packedCounts.x, g.packedCounts.z) : glm::ivec2(0));
+    // Dense and sparse volumes alike: the state's w holds the tile's code (SparseLayout.h).
+    program.set("u_ddgiTileBits", g.tileBits);
     program.set("u_ddgiBiasDistance", g.biasDistance);
     program.set("u_ddgiInvMaxDistance", g.invMaxDistance);
     program.set("u_ddgiIrradianceScale", irradianceScale * g.irradianceDecode);

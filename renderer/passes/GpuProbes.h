@@ -2,9 +2,9 @@
 // One scenario of a probe set on the GPU, exactly in its stored format: per volume two 2D
 // texture arrays (irradiance RGBA16F / RGBA32F / BC6H, visibility RG16F / RG32F / BC6H, one
 // layer per probe plane along local Y) and a per-probe state array (RGBA32F: relocation offset
-// in local axes, w = the tile indirection: +(slot+1) valid, -(slot+1) invalid, 0 absent;
-// texel (i, k, layer j) like the probe tiles; sparse volumes pack their stored tiles,
-// renderer/probes/SparseLayout.h), plus
+// in local axes, w = the tile indirection: +(code+1) valid, -(code+1) invalid, 0 absent,
+// code = the tile's column, row and layer as bit fields (SparseLayout.h TileCode); texel
+// (i, k, layer j) like the probe tiles; sparse volumes pack their stored tiles), plus
 // the per-volume parameters common_ddgi.glsl reads as uniforms. Volumes left out by
 // gi.volume_lod are never created (no GPU memory). Requires a current GL context.
 #include "gl/Program.h"
@@ -31,6 +31,7 @@ struct GpuProbeVolume {
     glm::ivec3 counts{1};
     glm::ivec3 packedCounts{1}; // the tile grid of the textures (= counts unless sparse)
     bool sparse = false;        // tiles packed, found through the state's w
+    glm::ivec2 tileBits{0};     // u_ddgiTileBits: how w's code splits (probes::TileCode)
     float biasDistance = 0, invMaxDistance = 0, boxVolume = 0;
     // 1 / the irradiance's storage scale (probes/StorageScale.h): fetched * this = true E.
     float irradianceDecode = 1.0f;

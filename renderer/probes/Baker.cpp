@@ -287,12 +287,19 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         quantise(*all[i], cfg.format);
         errors[i] = measureQuantisation(before, *all[i], errors[i]);
     });
+    // Invalid as baked, before sparse storage marks its absent probes invalid too.
+    const std::size_t bakedInvalid = set.invalidCount();
+    std::vector<std::size_t> bakedInvalidPerVolume;
+    for (const auto& vs : set.states)
+        bakedInvalidPerVolume.push_back(std::size_t(
+            std::count_if(vs.begin(), vs.end(), [](const ProbeState& p) { return !p.valid; })));
     if (req.sparse) storeOnly(set, keep);
 
     if (statsOut) {
         BakeStats st;
         st.probes = set.probeCount();
-        st.invalidProbes = set.invalidCount();
+        st.invalidProbes = bakedInvalid;
+        st.invalidPerVolume = std::move(bakedInvalidPerVolume);
         st.storedProbes = set.storedCount();
         for (const auto& vs : set.states)
             for (const ProbeState& p : vs)

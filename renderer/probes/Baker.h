@@ -52,8 +52,11 @@ struct BakePhase {
 };
 
 struct BakeStats {
+    // invalidProbes: inside geometry, as the geometry pass classified them (sparse storage
+    // then stores none of them, and marks its absent probes invalid too: ProbeCounts.h).
     std::size_t probes = 0, invalidProbes = 0, relocatedProbes = 0;
-    std::size_t storedProbes = 0; // all probes unless sparse
+    std::size_t storedProbes = 0;              // all probes unless sparse
+    std::vector<std::size_t> invalidPerVolume; // invalidProbes per volume
     std::uint64_t primaryRays = 0, shadowRays = 0;
     std::size_t triangles = 0;
     double seconds = 0.0;      // whole bake, wall clock

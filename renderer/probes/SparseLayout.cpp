@@ -3,6 +3,7 @@
 #include "core/Error.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 namespace pb::probes {
@@ -78,14 +79,55 @@ glm::ivec3 packedTile(int slot, const glm::ivec3& packed) {
     return {slot % packed.x, (slot / packed.x) % packed.z, slot / (packed.x * packed.z)};
 }
 
+namespace {
+// Bits that hold 0..n-1.
+int fieldBits(int n) {
+    int bits = 0;
+    while (bits < 31 && (1 << bits) < n)
+        ++bits;
+    return bits;
+}
+} // namespace
+
+TileCode tileCode(const glm::ivec3& tileGrid, const std::string& what) {
+    if (glm::any(glm::lessThan(tileGrid, glm::ivec3(1)))) throw Error(what + ": empty tile grid");
+    TileCode c;
+    c.columnBits = fieldBits(tileGrid.x);
+    c.rowBits = fieldBits(tileGrid.z);
+    c.layerBits = fieldBits(tileGrid.y);
+    const int bits = c.columnBits + c.rowBits + c.layerBits;
+    if (bits > kTileCodeBits)
+        throw Error(what + ": a tile grid of " + std::to_string(tileGrid.x) + " columns, " +
+                    std::to_string(tileGrid.z) + " rows and " + std::to_string(tileGrid.y) +
+                    " layers needs a " + std::to_string(bits) + "-bit tile code; the state " +
+                    "texture (RGBA32F) holds " + std::to_string(kTileCodeBits) + " bits exactly");
+    return c;
+}
+
+float TileCode::encode(const glm::ivec3& tile, bool valid) const {
+    const std::uint32_t code = std::uint32_t(tile.x) | std::uint32_t(tile.y) << columnBits |
+                               std::uint32_t(tile.z) << (columnBits + rowBits);
+    const float w = float(code + 1); // exact: code < 2^kTileCodeBits
+    return valid ? w : -w;
+}
+
+glm::ivec3 TileCode::decode(float w) const {
+    // ddgiInitTileFields and ddgiTile, step by step.
+    const glm::ivec4 f((1 << columnBits) - 1, columnBits, (1 << rowBits) - 1, columnBits + rowBits);
+    const int code = int(std::abs(w)) - 1;
+    return {code & f.x, (code >> f.y) & f.z, code >> f.w};
+}
+
 TileLayout tileLayout(const ProbeVolume& v, const std::vector<ProbeState>& states) {
+    const std::string what = "probe volume '" + v.name + "'";
     if (states.size() != std::size_t(v.probeCount()))
-        throw Error("probe volume '" + v.name + "': probe state count does not match its grid");
+        throw Error(what + ": probe state count does not match its grid");
     TileLayout t;
     t.counts = t.packedCounts = v.counts;
     t.slots = packedSlots(states);
     t.sparse = isSparse(states);
     if (t.sparse) t.packedCounts = packedCounts(storedCount(states), v.counts);
+    t.code = tileCode(t.packedCounts, what);
     return t;
 }
 
@@ -93,6 +135,11 @@ glm::ivec3 TileLayout::tileOf(const glm::ivec3& q) const {
     if (!sparse) return {q.x, q.z, q.y};
     const int slot = slots[std::size_t((q.y * counts.z + q.z) * counts.x + q.x)]; // probeIndex
     return slot < 0 ? glm::ivec3(-1) : packedTile(slot, packedCounts);
+}
+
+float TileLayout::stateW(std::size_t index, bool valid) const {
+    // Dense: slot = index and packedCounts = counts, so this is tile (i, k, layer j) too.
+    return slots[index] < 0 ? 0.0f : code.encode(packedTile(slots[index], packedCounts), valid);
 }
 
 ProbeTexture packTiles(const ProbeTexture& dense, const std::vector<int>& slots,

@@ -7,12 +7,14 @@
 // A volume whose probes are all stored packs to its own grid (slot = probe index): the dense
 // layout is the special case, bit for bit.
 //
-// The indirection probe -> slot is the per-probe state the GPU already fetches (GpuProbes.h:
-// the state texel's w = +(slot+1) valid, -(slot+1) invalid, 0 absent), so a sparse lookup
-// costs no extra fetch. The file stores a presence bitmap per volume (ProbeFile.h).
+// The indirection probe -> tile rides on the per-probe state the GPU already fetches
+// (GpuProbes.h: the state texel's w holds the tile's coordinates as bit fields, TileCode
+// below), so a sparse lookup costs no extra fetch. The file stores a presence bitmap per
+// volume (ProbeFile.h); the packing and the codes follow from it.
 #include "probes/ProbeSet.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace pb::probes {
@@ -30,23 +32,51 @@ std::size_t storedCount(const std::vector<ProbeState>& states);
 bool isSparse(const std::vector<ProbeState>& states);
 
 // The tile (column, row, layer) of packed slot `slot` in a texture of `packed` tile counts:
-// (s % pc.x, (s / pc.x) % pc.z, s / (pc.x * pc.z)), what the shader's ddgiTile computes from
-// the state's w (shaders/common_ddgi.glsl).
+// (s % pc.x, (s / pc.x) % pc.z, s / (pc.x * pc.z)): where packTiles puts it. The shader never
+// divides: it reads the tile's code (TileCode) from the state's w.
 glm::ivec3 packedTile(int slot, const glm::ivec3& packed);
+
+// The tile indirection in the state texel's w (GpuProbes uploads it, ddgiTile in
+// shaders/common_ddgi_tile.glsl decodes it): a tile's column, row and layer as bit fields of
+// one integer, code = column | row << columnBits | layer << (columnBits + rowBits), each field
+// as wide as the volume's tile grid needs, and w = +(code + 1) valid, -(code + 1) invalid with
+// a tile, 0 absent. The decode is a float-to-int conversion, a subtraction, two shifts and two
+// masks: no integer division, which llvmpipe (and GPUs) emulate at great cost. The state
+// texture is RGBA32F, whose floats hold every integer up to 2^24 exactly, so the fields may
+// use 24 bits (code + 1 <= 2^24). A volume within volumeProblem's limits (1024 probes per axis,
+// 2^18 per volume) needs at most 20: sum ceil(log2 n) < log2(product) + 3 <= 21.
+constexpr int kTileCodeBits = 24;
+struct TileCode {
+    int columnBits = 0, rowBits = 0, layerBits = 0; // the shader gets (columnBits, rowBits)
+    // The state's w for a probe owning `tile` (column, row, layer); valid = false: negative.
+    float encode(const glm::ivec3& tile, bool valid) const;
+    // The tile from w (its sign ignored), with the shader's operations: for tests and tools.
+    glm::ivec3 decode(float w) const;
+};
+// The code for a texture of `tileGrid` tiles (as packedCounts: x columns, y layers, z rows).
+// Throws pb::Error naming `what` when its fields need more than kTileCodeBits bits.
+TileCode tileCode(const glm::ivec3& tileGrid, const std::string& what);
 
 // Where a volume's probe tiles lie in its GPU textures: the one description GpuProbes uploads
 // by and the texture-cache model (renderer/costmodel) replays addresses from. Dense: probe
 // (i, j, k) owns tile (i, k, layer j) of a grid of `counts`; sparse: only stored probes own a
-// tile, packed in probe index order into `packedCounts`.
+// tile, packed in probe index order into `packedCounts`. Every volume, dense or sparse,
+// carries its tiles' codes in the state's w (stateW), so the shader of a set with a sparse
+// volume finds every volume's tiles the same way.
 struct TileLayout {
     bool sparse = false;
     glm::ivec3 counts{1};       // the probe grid
     glm::ivec3 packedCounts{1}; // the tile grid of the textures (= counts unless sparse)
     std::vector<int> slots;     // per probe: its slot (dense: its index), -1 = absent
+    TileCode code;              // of packedCounts
     // The tile (column, row, layer) of grid probe `q`; (-1, -1, -1) when it owns none.
     glm::ivec3 tileOf(const glm::ivec3& q) const;
+    // The state texel's w of probe `index` (probe index order): its tile's code, signed by
+    // `valid`; 0 when it owns no tile (absent).
+    float stateW(std::size_t index, bool valid) const;
 };
-// Throws pb::Error when `states` does not hold one state per probe of `v`.
+// Throws pb::Error when `states` does not hold one state per probe of `v`, or when the tile
+// grid exceeds the code's range (TileCode).
 TileLayout tileLayout(const ProbeVolume& v, const std::vector<ProbeState>& states);
 
 // The stored bytes of `dense` (a volume texture in format `f`, tiles of `tile` texels) with

@@ -92,3 +92,64 @@ TEST(BakeSparseCli, SparseAndDenseTogetherIsAOneLineError) {
     EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
     EXPECT_FALSE(fs::exists(f));
 }
+
+// The summary tells stored, absent (not stored: no surface nearby) and invalid (inside
+// geometry) probes apart: a sparse bake's invalid probes are those of the same bake stored
+// dense, and the three add up, per volume and in all. A file read back cannot split the
+// probes it does not store (it keeps no validity for them) and says so.
+TEST(BakeSparseCli, SummarySplitsStoredAbsentAndInvalid) {
+    const std::string f = (outputDir() / "bake_sparse_counts.pbp").string();
+    fs::remove(f);
+    const std::vector<std::string> dense{"--spacing", "1.5"};
+    const std::vector<std::string> sparse{"--spacing", "1.5", "--sparse"};
+    const nlohmann::json d = bake("auto-uniform", f, dense);
+    EXPECT_EQ(d["stored_probes"], d["probes"]);
+    EXPECT_EQ(d["absent_probes"], 0);
+    const long long invalid = d["invalid_probes"].get<long long>();
+    ASSERT_GT(invalid, 0) << "no probe inside the courtyard's walls: nothing to tell apart";
+
+    const nlohmann::json s = bake("auto-uniform", f, sparse);
+    const long long stored = s["stored_probes"].get<long long>();
+    const long long absent = s["absent_probes"].get<long long>();
+    EXPECT_EQ(s["invalid_probes"].get<long long>(), invalid);
+    EXPECT_GT(absent, 0);
+    EXPECT_EQ(stored + absent + invalid, s["probes"].get<long long>());
+    long long sums[3] = {0, 0, 0};
+    for (const nlohmann::json& v : s["volumes"]) {
+        EXPECT_EQ(v["stored"].get<long long>() + v["absent"].get<long long>() +
+                      v["invalid"].get<long long>(),
+                  v["probes"].get<long long>());
+        sums[0] += v["stored"].get<long long>();
+        sums[1] += v["absent"].get<long long>();
+        sums[2] += v["invalid"].get<long long>();
+    }
+    EXPECT_EQ(sums[0], stored);
+    EXPECT_EQ(sums[1], absent);
+    EXPECT_EQ(sums[2], invalid);
+
+    const nlohmann::json again = bake("auto-uniform", f, sparse);
+    EXPECT_TRUE(again["up_to_date"].get<bool>());
+    EXPECT_EQ(again["stored_probes"].get<long long>(), stored);
+    EXPECT_TRUE(again["absent_probes"].is_null());
+    EXPECT_TRUE(again["invalid_probes"].is_null());
+
+    auto bakeText = [&](bool force) { // the human summary
+        std::vector<std::string> args{"bake",   "--scene", "courtyard", "--volumes", "auto-uniform",
+                                      "--rays", "16",      "--bounces", "1",         "--out",
+                                      f};
+        args.insert(args.end(), sparse.begin(), sparse.end());
+        if (force) args.push_back("--force");
+        const CommandResult r = runProbebench(args);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return r.output;
+    };
+    const std::string baked = bakeText(true);
+    EXPECT_NE(baked.find(std::to_string(stored) + " stored, " + std::to_string(absent) +
+                         " absent (not stored: no surface nearby), " + std::to_string(invalid) +
+                         " invalid (inside geometry"),
+              std::string::npos)
+        << baked;
+    const std::string readBack = bakeText(false);
+    EXPECT_NE(readBack.find(std::to_string(absent + invalid) + " not stored"), std::string::npos)
+        << readBack;
+}

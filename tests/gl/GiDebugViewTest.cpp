@@ -1,12 +1,15 @@
 // Debug views probes_irradiance / probes_visibility: a sphere at every probe, shaded by the
 // probe's irradiance (white Lambertian: E / pi) or by its visibility (black when invalid).
 // A 2x2x2 synthetic volume floats in the air of `rooms` in front of the camera; the pixel at
-// each probe's projected centre is checked in the radiance target.
+// each probe's projected centre is checked in the radiance target. Stored sparse (the invalid
+// probe left out, every other tile one slot earlier), the spheres find their tiles through
+// the state's tile code (shaders/common_ddgi_tile.glsl), as dense ones do.
 #include "gl/GiSyntheticProbes.h"
 #include "gl/GiTestProbes.h"
 #include "gl/GlTestFixture.h"
 
 #include "frame/FrameRenderer.h"
+#include "probes/SparseStorage.h"
 
 #include <cmath>
 #include <cstdio>
@@ -21,17 +24,22 @@ struct SphereCheck {
     float exposure = 1.0f;
 };
 
-SphereCheck renderSpheres(render::GiDebugView view) {
+// Irradiance of probe (i, j, k): different along every axis, so a wrong column, row or
+// layer shows.
+glm::vec3 probeIrradiance(const glm::ivec3& p) {
+    return glm::vec3(1.0f + float(p.x), 2.0f + float(p.y), 0.5f + float(p.z));
+}
+
+SphereCheck renderSpheres(render::GiDebugView view, bool sparse = false) {
     const scene::Scene& s = giTestScene();
     const scene::View& cam = *s.findView("sunlit_room");
     const glm::vec3 dir = glm::normalize(cam.target - cam.position);
     probes::ProbeSet set = syntheticProbes(
         {syntheticVolume("air", cam.position + 1.5f * dir, glm::vec3(0.3f), glm::ivec3(2))},
-        [](int, const glm::vec3&, const glm::ivec3& p) {
-            return glm::vec3(1.0f + float(p.x), 2.0f, 0.5f + float(p.z));
-        },
+        [](int, const glm::vec3&, const glm::ivec3& p) { return probeIrradiance(p); },
         probes::StorageFormat::Rgba32f);
-    set.states[0][0].valid = false; // probe (0, 0, 0)
+    set.states[0][0].valid = false;                                        // probe (0, 0, 0)
+    if (sparse) probes::storeOnly(set, {std::vector<std::uint8_t>(8, 1)}); // all but invalid
     render::GiOptions gi;
     gi.probes = &set;
     gi.debugView = view;
@@ -55,23 +63,29 @@ SphereCheck renderSpheres(render::GiDebugView view) {
 
 class GiDebugViewTest : public GlTest {};
 
-TEST_F(GiDebugViewTest, IrradianceSpheresShowTheProbesIrradiance) {
-    const SphereCheck c = renderSpheres(render::GiDebugView::ProbesIrradiance);
-    // Probe p = i + 2 (k + 2 j): coordinates as in probeCoords.
+// Probe p = i + 2 (k + 2 j): coordinates as in probeCoords. Sparse: probe 0 has no sphere.
+void expectIrradianceSpheres(bool sparse) {
+    const SphereCheck c = renderSpheres(render::GiDebugView::ProbesIrradiance, sparse);
     const probes::ProbeVolume v = syntheticVolume("air", {}, glm::vec3(0.3f), glm::ivec3(2));
     float maxRel = 0;
-    for (size_t p = 0; p < c.atProbe.size(); ++p) {
-        const glm::ivec3 q = v.probeCoords(int(p));
-        const glm::vec3 expected =
-            glm::vec3(1.0f + float(q.x), 2.0f, 0.5f + float(q.z)) / float(M_PI);
+    for (size_t p = sparse ? 1 : 0; p < c.atProbe.size(); ++p) {
+        const glm::vec3 expected = probeIrradiance(v.probeCoords(int(p))) / float(M_PI);
         for (int k = 0; k < 3; ++k) {
             maxRel = std::max(maxRel, std::abs(c.atProbe[p][k] - expected[k]) / expected[k]);
             EXPECT_NEAR(c.atProbe[p][k], expected[k], 2e-3f * expected[k] + 1e-3f) << p;
         }
     }
-    std::printf("[ probe spheres ] %zu spheres at their probes: radiance vs E / pi max rel %.3g "
-                "(RGBA16F radiance)\n",
-                c.atProbe.size(), double(maxRel));
+    std::printf("[ probe spheres ] %s: %zu spheres at their probes: radiance vs E / pi max rel "
+                "%.3g (RGBA16F radiance)\n",
+                sparse ? "sparse" : "dense", c.atProbe.size() - (sparse ? 1 : 0), double(maxRel));
+}
+
+TEST_F(GiDebugViewTest, IrradianceSpheresShowTheProbesIrradiance) {
+    expectIrradianceSpheres(false);
+}
+
+TEST_F(GiDebugViewTest, SparseSpheresFindTheirPackedTiles) {
+    expectIrradianceSpheres(true);
 }
 
 TEST_F(GiDebugViewTest, VisibilitySpheresAreBlackWhenInvalid) {

@@ -182,5 +182,26 @@ TEST_F(GiSparseTest, OneAbsentProbePerVolumeStillUsesTheIndirection) {
     EXPECT_LE(d.maxRel, 1e-3);
 }
 
+// A set with a sparse volume builds every volume's lookup with the tile code in w: the fully
+// stored root (its own grid, no packing) must find its tiles through w as well.
+TEST_F(GiSparseTest, AFullyStoredVolumeOfASparseSetReadsItsTilesThroughTheCode) {
+    probes::ProbeSet s = giTestProbes(probes::StorageFormat::Rgba16f);
+    for (auto& p : s.states[0])
+        p.valid = true; // the root keeps every probe: stored dense
+    std::vector<std::vector<std::uint8_t>> keep{std::vector<std::uint8_t>(s.states[0].size(), 1),
+                                                std::vector<std::uint8_t>(s.states[1].size(), 0)};
+    for (std::size_t i = 0; i < keep[1].size(); i += 3)
+        keep[1][i] = 1;
+    probes::storeOnly(s, keep);
+    const render::GpuProbes gpu(s, 0);
+    ASSERT_TRUE(gpu.anySparse());
+    ASSERT_FALSE(gpu.volumes()[0].sparse);
+    ASSERT_TRUE(gpu.volumes()[1].sparse);
+    int unlit = 0;
+    const Difference d = againstInvalid(s, unlit);
+    std::printf("[ sparse ] dense root + sparse child: max rel %.3g\n", d.maxRel);
+    EXPECT_LE(d.maxRel, 1e-3);
+}
+
 } // namespace
 } // namespace pb::test
