@@ -26,8 +26,10 @@ namespace {
 constexpr std::size_t kIrrTileFloats = kIrradianceTile * kIrradianceTile * 3;
 constexpr std::size_t kVisTileFloats = kVisibilityTile * kVisibilityTile * 2;
 
-// GCC/Clang vector type for the fetches: lane-wise IEEE operations, as scalar code.
+// GCC/Clang vector types: lane-wise IEEE operations, as scalar code.
 typedef float Float4 __attribute__((vector_size(16)));
+typedef float Float8 __attribute__((vector_size(32)));
+typedef int Int8 __attribute__((vector_size(32)));
 inline Float4 load4(const float* p) {
     Float4 v;
     std::memcpy(&v, p, sizeof(v));
@@ -333,24 +335,41 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
     //    (the loads are the cost of a lookup); finish() weights them in corner order.
     const ProbeVolume& vol = *f.src.volume;
     k.irrCoord = octInteriorCoord(n, kIrradianceInterior) + 1.0f;
-    int index[8];
+    // The corners as 8-lane vectors built straight from registers and the state loads: 8
+    // scalar stores read back as one vector would stall on store forwarding. Per lane the
+    // same operations as the scalar expression gridOrigin + vec3(c) * gridStep + offset.
+    const Int8 cx0 = base.x + Int8{0, 1, 0, 1, 0, 1, 0, 1};
+    const Int8 cy0 = base.y + Int8{0, 0, 1, 1, 0, 0, 1, 1};
+    const Int8 cz0 = base.z + Int8{0, 0, 0, 0, 1, 1, 1, 1};
+    const Int8 inside = (cx0 < f.counts.x) & (cy0 < f.counts.y) & (cz0 < f.counts.z);
+    const Int8 cx = inside ? cx0 : Int8{} + base.x; // outside: a real probe to compute on
+    const Int8 cy = inside ? cy0 : Int8{} + base.y;
+    const Int8 cz = inside ? cz0 : Int8{} + base.z;
+    const Int8 index = (cy * vol.counts.z + cz) * vol.counts.x + cx; // ProbeVolume::probeIndex
+    const ProbeState* st = f.src.states;
+    const Float8 ox = {st[index[0]].offset.x, st[index[1]].offset.x, st[index[2]].offset.x,
+                       st[index[3]].offset.x, st[index[4]].offset.x, st[index[5]].offset.x,
+                       st[index[6]].offset.x, st[index[7]].offset.x};
+    const Float8 oy = {st[index[0]].offset.y, st[index[1]].offset.y, st[index[2]].offset.y,
+                       st[index[3]].offset.y, st[index[4]].offset.y, st[index[5]].offset.y,
+                       st[index[6]].offset.y, st[index[7]].offset.y};
+    const Float8 oz = {st[index[0]].offset.z, st[index[1]].offset.z, st[index[2]].offset.z,
+                       st[index[3]].offset.z, st[index[4]].offset.z, st[index[5]].offset.z,
+                       st[index[6]].offset.z, st[index[7]].offset.z};
+    const Float8 px = (f.gridOrigin.x + __builtin_convertvector(cx, Float8) * f.gridStep.x) + ox;
+    const Float8 py = (f.gridOrigin.y + __builtin_convertvector(cy, Float8) * f.gridStep.y) + oy;
+    const Float8 pz = (f.gridOrigin.z + __builtin_convertvector(cz, Float8) * f.gridStep.z) + oz;
+    std::memcpy(k.px, &px, sizeof(k.px));
+    std::memcpy(k.py, &py, sizeof(k.py));
+    std::memcpy(k.pz, &pz, sizeof(k.pz));
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::ivec3 off(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
-        glm::ivec3 c = base + off;
-        const bool inside = c.x < f.counts.x && c.y < f.counts.y && c.z < f.counts.z;
-        if (!inside) c = base; // a real probe to compute on; ignored
-        index[corner] = vol.probeIndex(c);
-        const ProbeState& st = f.src.states[index[corner]];
-        k.live[corner] = inside && st.valid;
-        if (trace && inside) {
-            trace->corners[corner].probe = c;
+        const ProbeState& state = st[index[corner]];
+        k.live[corner] = inside[corner] != 0 && state.valid;
+        if (trace && inside[corner]) {
+            trace->corners[corner].probe = {cx[corner], cy[corner], cz[corner]};
             trace->corners[corner].inGrid = true;
-            trace->corners[corner].valid = st.valid;
+            trace->corners[corner].valid = state.valid;
         }
-        const glm::vec3 probe = f.gridOrigin + glm::vec3(c) * f.gridStep + st.offset;
-        k.px[corner] = probe.x;
-        k.py[corner] = probe.y;
-        k.pz[corner] = probe.z;
     }
     // Per corner: toPoint = biased - probe, dist = |toPoint|, dir = toPoint / dist (n if 0),
     // visibility coordinate = octInteriorCoord(dir, 14) + 1 (Octahedral.h, spelled out).
