@@ -11,6 +11,7 @@
 //
 // Scene: $PB_SPONZA_GLB, else $PB_SCENES_DIR/sponza_decimated/sponza_s_lod4.glb, else
 // ../shared/scenes beside the source tree.
+#include "probes/BakePhaseClock.h"
 #include "probes/Baker.h"
 #include "probes/ParallelFor.h"
 #include "probes/ProbeSampler.h"
@@ -22,7 +23,6 @@
 #include <benchmark/benchmark.h>
 #include <chrono>
 #include <cstdlib>
-#include <ctime>
 #include <filesystem>
 #include <iostream>
 
@@ -77,12 +77,6 @@ Setup& setup() {
     return s;
 }
 
-double processCpuSeconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
-
 struct ReplayTime {
     double wall, cpu; // cpu: all threads of the process
 };
@@ -92,7 +86,7 @@ ReplayTime replay(RTCScene scene, const std::vector<RecordedRay>& rays, std::siz
                   std::size_t end, int threads) {
     const std::size_t chunk = 1024, items = (end - begin + chunk - 1) / chunk;
     auto t0 = Clock::now();
-    const double cpu0 = processCpuSeconds();
+    const double cpu0 = BakePhaseClock::processCpuSeconds();
     std::vector<unsigned> sink(static_cast<size_t>(threads), 0);
     parallelFor(items, threads, [&](std::size_t item, int t) {
         RTCIntersectContext ctx;
@@ -116,7 +110,8 @@ ReplayTime replay(RTCScene scene, const std::vector<RecordedRay>& rays, std::siz
         }
     });
     benchmark::DoNotOptimize(sink.data());
-    return {std::chrono::duration<double>(Clock::now() - t0).count(), processCpuSeconds() - cpu0};
+    return {std::chrono::duration<double>(Clock::now() - t0).count(),
+            BakePhaseClock::processCpuSeconds() - cpu0};
 }
 
 void BM_BakeVsEmbree(benchmark::State& state) {

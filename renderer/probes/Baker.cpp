@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numeric>
 
 namespace pb::probes {
 namespace {
@@ -288,7 +289,6 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         errors[i] = measureQuantisation(before, *all[i], errors[i]);
     });
     // Invalid as baked, before sparse storage marks its absent probes invalid too.
-    const std::size_t bakedInvalid = set.invalidCount();
     std::vector<std::size_t> bakedInvalidPerVolume;
     for (const auto& vs : set.states)
         bakedInvalidPerVolume.push_back(std::size_t(
@@ -298,7 +298,8 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     if (statsOut) {
         BakeStats st;
         st.probes = set.probeCount();
-        st.invalidProbes = bakedInvalid;
+        st.invalidProbes = std::accumulate(bakedInvalidPerVolume.begin(),
+                                           bakedInvalidPerVolume.end(), std::size_t(0));
         st.invalidPerVolume = std::move(bakedInvalidPerVolume);
         st.storedProbes = set.storedCount();
         for (const auto& vs : set.states)

@@ -20,7 +20,8 @@ TraceSummary trace(const RayScene& rs, const glm::vec3& origin, const glm::mat3&
     // All rays first, then the classification: the face normal of each hit is prefetched
     // while the following rays are traced (as RadianceSlab::trace; same results, same order).
     for (int r = 0; r < n; ++r) {
-        s.hits[size_t(r)] = rs.intersect(origin, rot * dirs[size_t(r)]);
+        s.worldDirs[size_t(r)] = rot * dirs[size_t(r)];
+        s.hits[size_t(r)] = rs.intersect(origin, s.worldDirs[size_t(r)]);
         rs.prefetchSurface(s.hits[size_t(r)]);
     }
     rays += std::uint64_t(n);
@@ -31,7 +32,7 @@ TraceSummary trace(const RayScene& rs, const glm::vec3& origin, const glm::mat3&
         if (!h.hit()) continue;
         // Double-sided first: it spares the face normal's cache miss (same result).
         bool back = !rs.surface(h.geomID).doubleSided &&
-                    glm::dot(rs.faceNormal(h.geomID, h.primID), rot * dirs[size_t(r)]) > 0.0f;
+                    glm::dot(rs.faceNormal(h.geomID, h.primID), s.worldDirs[size_t(r)]) > 0.0f;
         if (back) {
             s.backface[size_t(r)] = 1;
             ++sum.backfaces;
@@ -51,6 +52,7 @@ void bakeProbeGeometry(const RayScene& rs, const ProbeVolume& vol, const glm::iv
                        float* visOut, std::uint64_t& rays) {
     const int n = int(dirs.size());
     s.hits.resize(size_t(n));
+    s.worldDirs.resize(size_t(n));
     s.t.resize(size_t(n));
     s.backface.resize(size_t(n));
     s.dist01.resize(size_t(n));

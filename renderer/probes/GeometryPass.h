@@ -27,10 +27,11 @@ constexpr int kMaxRelocationIterations = 3;
 constexpr float kRelocationClearance = 0.2f;
 
 struct GeometryScratch {
-    std::vector<RayHit> hits;   // per ray, before classification
-    std::vector<float> t;       // hit distance per ray (inf = miss)
-    std::vector<char> backface; // per ray
-    std::vector<float> dist01;  // per ray
+    std::vector<RayHit> hits;         // per ray, before classification
+    std::vector<glm::vec3> worldDirs; // per ray, the direction traced
+    std::vector<float> t;             // hit distance per ray (inf = miss)
+    std::vector<char> backface;       // per ray
+    std::vector<float> dist01;        // per ray
 };
 
 // Computes `state` (offset, validity, ratio) and, for a valid probe, the 14x14 visibility

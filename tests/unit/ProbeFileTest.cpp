@@ -16,10 +16,7 @@ using namespace pb::probes;
 namespace {
 
 ProbeSet smallBake(StorageFormat format) {
-    pb::scene::Scene s = pb::test::emptyScene(glm::vec3(0.5f, 0.7f, 1.0f));
-    s.sun.enabled = true;
-    int m = pb::test::addMaterial(s, glm::vec3(0.6f));
-    pb::test::addInstance(s, pb::test::boxPrimitive({-3, -0.5f, -3}, {3, 0, 3}, false, m));
+    const pb::scene::Scene s = pb::test::sunlitFloor();
     BakeRequest r;
     ProbeVolume v;
     v.name = "v";

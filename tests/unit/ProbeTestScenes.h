@@ -75,4 +75,14 @@ inline scene::Scene emissiveRoom(float le, float albedo) {
     return s;
 }
 
+// A sunlit grey slab, top at y = 0, under a blue sky; sky and sun scaled by `lightScale`.
+inline scene::Scene sunlitFloor(float lightScale = 1.0f) {
+    scene::Scene s = emptyScene(glm::vec3(0.5f, 0.7f, 1.0f) * lightScale);
+    s.sun.enabled = true;
+    s.sun.intensity *= lightScale;
+    int m = addMaterial(s, glm::vec3(0.6f));
+    addInstance(s, boxPrimitive({-3, -0.5f, -3}, {3, 0, 3}, false, m));
+    return s;
+}
+
 } // namespace pb::test

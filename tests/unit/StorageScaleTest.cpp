@@ -16,11 +16,7 @@ namespace {
 
 // `sparse`: a taller volume whose upper probe layers see no surface cell, stored sparse.
 ProbeSet roomBake(StorageFormat format, float lightScale, bool sparse = false) {
-    pb::scene::Scene s = pb::test::emptyScene(glm::vec3(0.5f, 0.7f, 1.0f) * lightScale);
-    s.sun.enabled = true;
-    s.sun.intensity *= lightScale;
-    int m = pb::test::addMaterial(s, glm::vec3(0.6f));
-    pb::test::addInstance(s, pb::test::boxPrimitive({-3, -0.5f, -3}, {3, 0, 3}, false, m));
+    const pb::scene::Scene s = pb::test::sunlitFloor(lightScale);
     BakeRequest r;
     ProbeVolume v;
     v.name = "v";
