@@ -109,7 +109,7 @@ void RadianceSlab::lookUp(const ProbeSampler& previous, int threads) {
     });
 }
 
-void RadianceSlab::convolve(std::size_t slot, const ProbeConvolution& conv, float* outRgb) {
+const glm::vec4* RadianceSlab::finish(std::size_t slot) {
     const std::size_t first = slot * std::size_t(rays_);
     for (const Pending& h : pending_[slot]) {
         // The per-ray expression: emissive + albedo/pi * (direct + indirect).
@@ -118,7 +118,11 @@ void RadianceSlab::convolve(std::size_t slot, const ProbeConvolution& conv, floa
         glm::vec3 L = glm::vec3(radiance_[h.ray]) + h.albedoOverPi * e;
         radiance_[h.ray] = glm::vec4(L, 0.0f);
     }
-    conv.irradiance(&radiance_[first].x, outRgb);
+    return &radiance_[first];
+}
+
+void RadianceSlab::convolve(std::size_t slot, const ProbeConvolution& conv, float* outRgb) {
+    conv.irradiance(&finish(slot)->x, outRgb);
 }
 
 } // namespace pb::probes

@@ -47,7 +47,11 @@ public:
     // Phase 2, once per slab after every trace: E_indirect of every queued hit, sorted by
     // the previous pass's grid cell, on `threads` threads.
     void lookUp(const ProbeSampler& previous, int threads);
-    // Phase 3, one slot per probe: outRgb = the 6x6 interior, RGB per texel, row-major.
+    // Phase 3, one slot per probe, once: completes the slot's per-ray radiance (RGB + unused,
+    // in the order of the directions) and returns it. Also for gathers that weight the rays
+    // themselves (SurfaceGather.h).
+    const glm::vec4* finish(std::size_t slot);
+    // Phase 3 for a probe: finish, then outRgb = the 6x6 interior, RGB per texel, row-major.
     void convolve(std::size_t slot, const ProbeConvolution& conv, float* outRgb);
 
 private:
