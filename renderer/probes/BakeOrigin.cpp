@@ -30,6 +30,7 @@ ProbeSet bakeProbesAround(const glm::dvec3& origin, const scene::Scene& scene,
     for (scene::Light& l : local.lights)
         l.position = glm::vec3(glm::dvec3(l.position) - origin);
     BakeRequest r = request;
+    r.rayScene = nullptr; // built for the scene where it is, not for the moved copy
     for (ProbeVolume& v : r.volumes)
         v.center = glm::vec3(glm::dvec3(v.center) - origin);
     ProbeSet set = bakeProbes(local, r, stats, progress);

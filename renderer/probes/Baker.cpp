@@ -16,6 +16,7 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <optional>
 
 namespace pb::probes {
 namespace {
@@ -88,9 +89,11 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     const std::vector<int> parents = validateVolumes(req.volumes, "volumes");
     const BakeSettings& cfg = req.settings;
     const int threads = resolveThreadCount(req.threads);
-    RayScene rs(scene);
+    std::optional<RayScene> own;
+    if (!req.rayScene || req.recordRays) own.emplace(scene);
+    const RayScene& rs = own ? *own : *req.rayScene;
     const double buildSeconds = since(t0);
-    if (req.recordRays) rs.startRecording();
+    if (req.recordRays) own->startRecording();
     BakePhaseClock phases; // the tracing time is the sum of its phases
 
     ProbeSet set;
@@ -266,7 +269,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         traceSeconds += p.wallSeconds;
         traceCpuSeconds += p.cpuSeconds;
     }
-    if (req.recordRays) *req.recordRays = rs.stopRecording();
+    if (req.recordRays) *req.recordRays = own->stopRecording();
 
     // 3. Storage format.
     const auto tq = Clock::now();
@@ -284,6 +287,10 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         }
     }
     parallelFor(all.size(), threads, [&](std::size_t i, int) {
+        if (cfg.format == StorageFormat::Rgba32f) { // stores the floats as they are: no error
+            quantise(*all[i], cfg.format);
+            return;
+        }
         std::vector<float> before = all[i]->texels;
         quantise(*all[i], cfg.format);
         errors[i] = measureQuantisation(before, *all[i], errors[i]);

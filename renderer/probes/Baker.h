@@ -29,6 +29,9 @@ struct BakeRequest {
     // Benchmark instrumentation (not an input): when set, receives every ray the passes
     // traced, so bench_bake can replay exactly the same rays against bare Embree.
     std::vector<RecordedRay>* recordRays = nullptr;
+    // Not an input either: trace against this BVH of `scene` instead of building one (the
+    // placement's trial bakes bake one scene many times). It must be built from the same scene.
+    const RayScene* rayScene = nullptr;
 };
 
 struct BakeProgress {

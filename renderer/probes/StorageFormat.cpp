@@ -79,6 +79,7 @@ void quantise(ProbeTexture& t, StorageFormat f) {
         for (float& v : t.texels)
             v = std::isfinite(v) ? v : 0.0f;
         std::memcpy(t.stored.data(), t.texels.data(), t.stored.size());
+        return; // decoding would copy the same floats back
     } else if (f == StorageFormat::Rgba16f) {
         for (std::size_t i = 0; i < t.texels.size(); ++i) {
             std::uint16_t h = glm::packHalf1x16(clampForHalf(t.texels[i]));
