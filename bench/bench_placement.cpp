@@ -13,30 +13,41 @@
 //   uniform/2 sparse, adaptive: the same two stored sparse (`--volumes auto`'s default,
 //              `auto-uniform --sparse`: only probes at surface cells stored; the budget counts
 //              stored tiles + the indirection).
+//   adaptive unshifted  `adaptive` without its measured lattice search
+//              (`--no-lattice-search`, LatticeShiftSearch.h): what the search bought. The
+//              search scores shifts on its own surface samples (another seed), never on these.
 //   --lattice-sweep adds dense uniform grids at 0.9 - 1.25x the default spacing on both
 //              lattices (AutoVolume.h): "fit" puts the outer probe planes on the scene bounds
 //              (auto-uniform), "pad" half a cell beyond them (auto).
 // on-plane: the share of the surface lying on a probe plane (LatticeAlignment.h).
 // Error: N (--points, default 20000) area-weighted random points on the static triangles
 // (front side of single-sided triangles, a random side of double-sided ones), normal = view =
-// the face normal, each sampled with the CPU ProbeSampler in the candidate and in the
-// reference; relative error per point = sum_rgb |E - E_ref| / max(sum_rgb E_ref, 10% of the
-// mean) (the floor keeps a light leak onto a nearly black point from dominating the mean);
-// also nMAE = mean |E - E_ref| / mean E_ref (sums over rgb). Points sealed inside geometry (all of
-// 16 hemisphere rays hit within one reference cell) and points outside the reference's volumes are
-// skipped.
+// the face normal, each sampled with the CPU ProbeSampler in every candidate. The truth E_ref
+// at a point is gathered there directly (SurfaceGather.h, --gather-rays rays, default 512): the
+// last of the 2 bounces exact, the first read from a 1-bounce bake of the reference grid at
+// the hits. A probe grid as the reference would share the candidates' own probe artefacts
+// (leaks, self-shadowing, the lattice's planes), so it is only reported beside it:
+// "grid err" is the same error against the reference grid above.
+// Relative error per point = sum_rgb |E - E_ref| / max(sum_rgb E_ref, 10% of the mean) (the
+// floor keeps a light leak onto a nearly black point from dominating the mean); also
+// nMAE = mean |E - E_ref| / mean E_ref (sums over rgb). Points sealed inside geometry (all of
+// 16 hemisphere rays hit within one reference cell) and points outside the reference grid's
+// volumes are skipped.
 //
 // Scenes: arguments (paths or built-in names), else the five shared scenes under
 // $PB_SCENES_DIR (default ../shared/scenes: run it from the repository root).
 #include "core/Error.h"
 #include "probes/AutoPlacement.h"
 #include "probes/Baker.h"
+#include "probes/IrradianceError.h"
 #include "probes/LatticeAlignment.h"
 #include "probes/MemoryReport.h"
 #include "probes/ProbeSampler.h"
 #include "probes/RayDirections.h"
 #include "probes/RayScene.h"
 #include "probes/StaticTriangles.h"
+#include "probes/SurfaceGather.h"
+#include "probes/SurfaceSamples.h"
 #include "scene/SceneLoader.h"
 
 #include <algorithm>
@@ -57,57 +68,14 @@ using Clock = std::chrono::steady_clock;
 
 struct Options {
     std::vector<std::string> scenes;
-    int points = 20000, rays = 64, refRays = 128, threads = 0;
+    int points = 20000, rays = 64, refRays = 128, gatherRays = 512, threads = 0;
     bool json = false, latticeSweep = false;
 };
-
-struct SurfacePoint {
-    glm::vec3 p, n;
-};
-
-// Area-weighted random points on the baked triangles, deterministic.
-std::vector<SurfacePoint> surfacePoints(const pb::scene::Scene& s, const RayScene& rays, int count,
-                                        float sealedBelow) {
-    std::vector<WorldTriangle> tris = staticBakeTriangles(s);
-    std::vector<double> cdf(tris.size());
-    double sum = 0.0;
-    for (std::size_t i = 0; i < tris.size(); ++i)
-        cdf[i] = sum += double(tris[i].area());
-    const float extent = glm::length(rays.bounds().size());
-    const std::vector<glm::vec3> hemi = sphericalFibonacci(32); // 16 in each hemisphere
-    std::uint64_t state = 0xB0A710C5u;
-    std::vector<SurfacePoint> out;
-    for (int attempt = 0; attempt < count * 4 && int(out.size()) < count; ++attempt) {
-        double r = double(uniformFloat(state)) * sum;
-        std::size_t t = std::size_t(std::lower_bound(cdf.begin(), cdf.end(), r) - cdf.begin());
-        if (t >= tris.size()) t = tris.size() - 1;
-        const WorldTriangle& w = tris[t];
-        float u = uniformFloat(state), v = uniformFloat(state);
-        if (u + v > 1.0f) {
-            u = 1.0f - u;
-            v = 1.0f - v;
-        }
-        glm::vec3 n = w.normal;
-        if (w.doubleSided && uniformFloat(state) < 0.5f) n = -n;
-        glm::vec3 p = w.a + u * (w.b - w.a) + v * (w.c - w.a) + n * (1e-4f * extent);
-        bool open = false;
-        for (const glm::vec3& d : hemi) {
-            if (glm::dot(d, n) <= 0.0f) continue;
-            RayHit h = rays.intersect(p, d);
-            if (!h.hit() || h.t > sealedBelow) {
-                open = true;
-                break;
-            }
-        }
-        if (open) out.push_back({p, n});
-    }
-    return out;
-}
 
 struct Candidate {
     std::string name;
     std::vector<ProbeVolume> volumes;
-    int rays = 64;
+    int rays = 64, bounces = 2;
     bool sparse = false;
     ProbeSet set;
     double bakeSeconds = 0.0;
@@ -120,7 +88,7 @@ void bake(const pb::scene::Scene& s, Candidate& c, int threads) {
     req.volumes = c.volumes;
     req.scenarios = resolveScenarios({}, {}, s);
     req.settings.raysPerProbe = c.rays;
-    req.settings.bounces = 2;
+    req.settings.bounces = c.bounces;
     req.threads = threads;
     req.sparse = c.sparse;
     auto t0 = Clock::now();
@@ -128,46 +96,15 @@ void bake(const pb::scene::Scene& s, Candidate& c, int threads) {
     c.bakeSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-void sampleAll(Candidate& c, const std::vector<SurfacePoint>& pts) {
+void sampleAll(Candidate& c, const std::vector<GatherPoint>& pts) {
     ProbeSampler sampler(c.set, 0);
     c.values.resize(pts.size());
     c.weights.resize(pts.size());
     for (std::size_t i = 0; i < pts.size(); ++i) {
-        IrradianceSample e = sampler.sample(pts[i].p, pts[i].n, pts[i].n);
+        IrradianceSample e = sampler.sample(pts[i].pos, pts[i].normal, pts[i].normal);
         c.values[i] = e.irradiance;
         c.weights[i] = e.weight;
     }
-}
-
-struct Errors {
-    double relative = NAN, nmae = NAN;
-    std::size_t points = 0;
-};
-
-Errors errors(const Candidate& c, const Candidate& ref) {
-    double mean = 0.0;
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < ref.values.size(); ++i)
-        if (ref.weights[i] > 0.99f) {
-            mean += double(ref.values[i].r + ref.values[i].g + ref.values[i].b);
-            ++n;
-        }
-    Errors out;
-    if (n == 0) return out;
-    mean /= double(n);
-    const double floor = 0.1 * mean;
-    double err = 0.0, abs = 0.0;
-    for (std::size_t i = 0; i < ref.values.size(); ++i) {
-        if (!(ref.weights[i] > 0.99f)) continue;
-        glm::vec3 d = glm::abs(c.values[i] - ref.values[i]);
-        double r = double(ref.values[i].r + ref.values[i].g + ref.values[i].b);
-        err += double(d.r + d.g + d.b) / std::max(r, floor);
-        abs += double(d.r + d.g + d.b);
-    }
-    out.points = n;
-    out.relative = err / double(n);
-    out.nmae = abs / double(n) / mean;
-    return out;
 }
 
 std::vector<std::string> defaultScenes() {
@@ -230,6 +167,11 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
     adaptive.sparse = true;
     AutoPlacementResult as = placeAutoVolumes(s, adaptiveReq);
     adaptive.volumes = as.volumes;
+    // The same without the measured lattice search (LatticeShiftSearch.h): what it bought.
+    adaptiveReq.latticeSearch = false;
+    Candidate asPlaced = adaptive;
+    asPlaced.name = "adaptive unshifted";
+    asPlaced.volumes = placeAutoVolumes(s, adaptiveReq).volumes;
 
     // --lattice-sweep: uniform dense grids at 0.9 - 1.25x the default spacing, on the naive
     // lattice (planes on the bounds) and on auto's (half a cell beyond them).
@@ -248,22 +190,39 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
             }
     RayScene rays(s);
     const glm::vec3 refCell = ref.volumes[0].cellSize();
-    std::vector<SurfacePoint> pts =
-        surfacePoints(s, rays, o.points, std::min(refCell.x, std::min(refCell.y, refCell.z)));
+    const std::vector<WorldTriangle> tris = staticBakeTriangles(s);
+    const std::vector<GatherPoint> pts =
+        surfaceSamples(tris, rays, o.points, std::min(refCell.x, std::min(refCell.y, refCell.z)));
+
+    // The truth: the last bounce gathered at each point, the first from a 1-bounce bake of
+    // the reference grid.
+    Candidate firstBounce = ref;
+    firstBounce.bounces = 1;
+    bake(s, firstBounce, o.threads);
+    GatherSettings gs;
+    gs.rays = o.gatherRays;
+    gs.threads = o.threads;
+    const std::vector<Scenario> scenarios = resolveScenarios({}, {}, s);
+    t0 = Clock::now();
+    const ProbeSampler firstBounceProbes(firstBounce.set, 0);
+    const std::vector<glm::vec3> truth =
+        gatherIrradiance(rays, scenarios[0], s.lights, pts, &firstBounceProbes, gs);
+    const double gatherSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
 
     nlohmann::json rows = nlohmann::json::array();
-    std::vector<Candidate*> all{&ref,           &uniform,           &uniformHalf,
-                                &adaptiveDense, &uniformHalfSparse, &adaptive};
+    std::vector<Candidate*> all{
+        &ref, &uniform, &uniformHalf, &adaptiveDense, &uniformHalfSparse, &asPlaced, &adaptive};
     for (Candidate& c : sweep)
         all.push_back(&c);
-    const std::vector<WorldTriangle> tris = staticBakeTriangles(s);
     for (Candidate* c : all) {
         bake(s, *c, o.threads);
         sampleAll(*c, pts);
     }
     for (Candidate* c : all) {
         MemoryReport m = memoryReport(c->set);
-        Errors err = c == &ref ? Errors{0.0, 0.0, 0} : errors(*c, ref);
+        const IrradianceErrors err = irradianceErrors(c->values, truth, ref.weights);
+        const IrradianceErrors grid =
+            c == &ref ? IrradianceErrors{} : irradianceErrors(c->values, ref.values, ref.weights);
         glm::vec3 cell = c->volumes.back().cellSize();
         float onPlane = 0.0f;
         for (const ProbeVolume& v : c->volumes)
@@ -279,6 +238,7 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
                         {"rays", c->rays},
                         {"mean_relative_error", err.relative},
                         {"nmae", err.nmae},
+                        {"grid_relative_error", grid.relative},
                         {"points", err.points},
                         {"bake_s", c->bakeSeconds}});
     }
@@ -286,26 +246,46 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
             {"points_requested", o.points},
             {"points_on_surfaces", pts.size()},
             {"adaptive_dense_place_s", placeSeconds},
+            {"gather_rays", o.gatherRays},
+            {"gather_s", gatherSeconds},
+            {"reference_first_bounce_bake_s", firstBounce.bakeSeconds},
             {"adaptive_dense_notes", a.notes},
             {"adaptive_notes", as.notes},
+            {"adaptive_lattice_search",
+             {{"shift_cells",
+               {as.latticeShift.cells.x, as.latticeShift.cells.y, as.latticeShift.cells.z}},
+              {"estimated_error_before", as.latticeShift.errorBefore},
+              {"estimated_error_after", as.latticeShift.errorAfter},
+              {"trials", as.latticeShift.trials},
+              {"seconds", as.latticeSearchSeconds}}},
             {"rows", rows}};
 }
 
 void printTable(const nlohmann::json& r) {
-    std::printf("\n%s: %zu surface points (adaptive dense placement %.2f s)\n",
+    std::printf("\n%s: %zu surface points (adaptive dense placement %.2f s, truth gathered "
+                "with %d rays in %.2f s)\n",
                 r["scene"].get<std::string>().c_str(), r["points_on_surfaces"].get<std::size_t>(),
-                r["adaptive_dense_place_s"].get<double>());
-    std::printf("  %-16s %7s %8s %8s %9s %8s %8s %5s %9s %7s %8s %8s\n", "placement", "volumes",
-                "probes", "stored", "MiB", "finest", "far", "rays", "mean err", "nMAE", "bake s",
-                "on-plane");
+                r["adaptive_dense_place_s"].get<double>(), r["gather_rays"].get<int>(),
+                r["gather_s"].get<double>());
+    const auto& ls = r["adaptive_lattice_search"];
+    std::printf("  adaptive lattice search: shift (%.1f, %.1f, %.1f) cells, estimated error %.4f "
+                "-> %.4f, %d trial bakes in %.2f s\n",
+                ls["shift_cells"][0].get<double>(), ls["shift_cells"][1].get<double>(),
+                ls["shift_cells"][2].get<double>(), ls["estimated_error_before"].get<double>(),
+                ls["estimated_error_after"].get<double>(), ls["trials"].get<int>(),
+                ls["seconds"].get<double>());
+    std::printf("  %-18s %7s %8s %8s %9s %8s %8s %5s %9s %7s %9s %8s %8s\n", "placement", "volumes",
+                "probes", "stored", "MiB", "finest", "far", "rays", "mean err", "nMAE", "grid err",
+                "bake s", "on-plane");
     for (const auto& row : r["rows"])
-        std::printf("  %-16s %7zu %8zu %8zu %9.2f %8.3f %8zu %5d %9.4f %7.4f %8.2f %8.4f\n",
+        std::printf("  %-18s %7zu %8zu %8zu %9.2f %8.3f %8zu %5d %9.4f %7.4f %9.4f %8.2f %8.4f\n",
                     row["placement"].get<std::string>().c_str(), row["volumes"].get<std::size_t>(),
                     row["probes"].get<std::size_t>(), row["stored_probes"].get<std::size_t>(),
                     row["mib"].get<double>(), row["finest_spacing"].get<double>(),
                     row["far_probes"].get<std::size_t>(), row["rays"].get<int>(),
                     row["mean_relative_error"].get<double>(), row["nmae"].get<double>(),
-                    row["bake_s"].get<double>(), row["on_plane"].get<double>());
+                    row["grid_relative_error"].get<double>(), row["bake_s"].get<double>(),
+                    row["on_plane"].get<double>());
 }
 
 } // namespace
@@ -325,6 +305,8 @@ int main(int argc, char** argv) {
                 o.rays = std::stoi(next());
             else if (a == "--ref-rays")
                 o.refRays = std::stoi(next());
+            else if (a == "--gather-rays")
+                o.gatherRays = std::stoi(next());
             else if (a == "--threads")
                 o.threads = std::stoi(next());
             else if (a == "--json")
@@ -333,7 +315,7 @@ int main(int argc, char** argv) {
                 o.latticeSweep = true;
             else if (a.rfind("--", 0) == 0)
                 throw pb::Error(a + ": unknown option (--points N, "
-                                    "--rays N, --ref-rays N, "
+                                    "--rays N, --ref-rays N, --gather-rays N, "
                                     "--threads N, --json, --lattice-sweep)");
             else
                 o.scenes.push_back(a);

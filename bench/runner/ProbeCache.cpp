@@ -33,6 +33,9 @@ probes::ProbeSet benchProbes(const scene::Scene& s, const std::string& volumes,
     if (probes::parseAutoMode(volumes, place.mode)) {
         // As `bake --volumes auto`: adaptive placement stores sparse, auto-uniform dense.
         place.sparse = req.sparse = place.mode == probes::AutoMode::Adaptive;
+        // Its lattice search (LatticeShiftSearch.h) measures the bake below: day, 2 bounces.
+        place.lighting = probes::resolveScenarios({"day"}, {}, s).front();
+        place.bounces = 2;
         req.volumes = probes::placeAutoVolumes(s, place).volumes;
     } else {
         probes::VolumeFile vf = probes::loadVolumeFile(volumes);

@@ -3,9 +3,11 @@
 #include "core/Error.h"
 #include "probes/LatticeAlignment.h"
 #include "probes/MemoryReport.h"
+#include "probes/PlacementError.h"
 #include "probes/RayScene.h"
 #include "probes/SparseStorage.h"
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -280,6 +282,39 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
                     best = std::move(a);
                 }
             }
+    }
+    // Where the lattice sits, by measured error (LatticeShiftSearch.h). Same condition as the
+    // lattice choice above: with an explicit spacing the user placed the grid.
+    if (adaptive && budget > 0.0 && !(req.adaptive.spacing > 0.0f) && req.latticeSearch) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const Scenario light = req.lighting ? *req.lighting : resolveScenarios({}, {}, scene)[0];
+        PlacementErrorSettings es;
+        es.threads = req.adaptive.threads;
+        const float cell = finest(best);
+        es.bounces = req.bounces;
+        const PlacementErrorEstimate estimate(scene, light, 0.5f * cell, 0.5f * cell, es);
+        const glm::vec3 finestCell = [&] {
+            glm::vec3 c(std::numeric_limits<float>::infinity());
+            for (const ProbeVolume& v : best.volumes)
+                c = glm::min(c, v.cellSize());
+            return c;
+        }();
+        best.latticeShift = searchLatticeShift(
+            best.volumes, finestCell,
+            [&](const std::vector<ProbeVolume>& v) {
+                return estimate.relativeError(v, req.sparse);
+            },
+            [&](const std::vector<ProbeVolume>& v) {
+                AutoPlacementResult r = best;
+                r.volumes = v;
+                r.bytes = storedBytes(v);
+                return fits(r);
+            });
+        best.bytes = storedBytes(best.volumes);
+        best.onProbePlanes = onPlanes(best);
+        best.latticeSearched = true;
+        best.latticeSearchSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     }
     // The default budget coarsens every time: that is how the default is defined, not news.
     if (defaultBudget) best.notes.clear();

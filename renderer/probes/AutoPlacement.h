@@ -17,9 +17,12 @@
 // an error.
 #include "probes/AdaptivePlacement.h"
 #include "probes/AutoVolume.h"
+#include "probes/LatticeShiftSearch.h"
+#include "probes/Scenario.h"
 #include "probes/StorageFormat.h"
 #include "scene/Scene.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +40,14 @@ struct AutoPlacementRequest {
     // The bake stores sparse (`bake --sparse`, SparseStorage.h): the budget counts only the
     // probes at surface cells (+ the indirection), so a finer spacing fits the same memory.
     bool sparse = false;
+    // `auto` under a budget (the default one included) ends with a measured search of where
+    // its lattice sits (LatticeShiftSearch.h): up to 25 one-bounce trial bakes of the chosen
+    // placement. false: keep the lattice as placed (`bake --no-lattice-search`).
+    bool latticeSearch = true;
+    // The light the search measures under: the bake's first scenario. Unset: the scene's own
+    // sun and sky.
+    std::optional<Scenario> lighting;
+    int bounces = 2; // the bake's, which the search's trial bakes repeat
 };
 
 struct AutoPlacementResult {
@@ -46,11 +57,14 @@ struct AutoPlacementResult {
     float onProbePlanes = 0.0f; // surface share on probe planes (LatticeAlignment.h), adaptive
     std::size_t bytes = 0;      // stored probe memory in the request's format (sparse: as stored)
     long long probes = 0;
-    int placements = 0;             // how many placements the budget loop tried
-    double budgetBytes = 0.0;       // the budget applied (0: none)
-    bool defaultBudget = false;     // adaptive, no spacing or budget given: the default uniform
-                                    // grid's memory (coarsening to it is not reported in notes)
-    AdaptiveStats stats;            // adaptive only: of the placement returned
+    int placements = 0;           // how many placements the budget loop tried
+    double budgetBytes = 0.0;     // the budget applied (0: none)
+    bool defaultBudget = false;   // adaptive, no spacing or budget given: the default uniform
+                                  // grid's memory (coarsening to it is not reported in notes)
+    AdaptiveStats stats;          // adaptive only: of the placement returned
+    bool latticeSearched = false; // the lattice search ran; latticeShift is its result
+    LatticeShift latticeShift;
+    double latticeSearchSeconds = 0.0;
     std::vector<std::string> notes; // e.g. the spacing grew to fit the budget
 };
 

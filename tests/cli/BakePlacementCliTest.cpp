@@ -198,3 +198,34 @@ TEST(BakePlacementCli, BadOptionsGiveOneLineErrors) {
     EXPECT_FALSE(fs::exists(out));
     EXPECT_FALSE(fs::exists(toml));
 }
+
+TEST(BakePlacementCli, LatticeSearchIsReportedAndCanBeTurnedOff) {
+    // `--volumes auto` under a budget ends with the measured lattice search; --write-volumes
+    // alone places without baking, so this stays quick.
+    const fs::path dir = outputDir();
+    auto on = runProbebench({"bake", "--scene", "courtyard", "--probe-budget-mib", "2",
+                             "--write-volumes", (dir / "on.toml").string(), "--json"});
+    ASSERT_EQ(on.exitCode, 0) << on.output;
+    auto search = jsonOf(on.output)["placement"]["lattice_search"];
+    ASSERT_TRUE(search.is_object()) << on.output;
+    EXPECT_GT(search["trials"].get<int>(), 0);
+    EXPECT_LE(search["estimated_error_after"].get<double>(),
+              search["estimated_error_before"].get<double>());
+    for (const auto& c : search["shift_cells"])
+        EXPECT_LE(std::abs(c.get<double>()), 0.4 + 1e-6);
+    auto text = runProbebench({"bake", "--scene", "courtyard", "--probe-budget-mib", "2",
+                               "--write-volumes", (dir / "text.toml").string()});
+    ASSERT_EQ(text.exitCode, 0) << text.output;
+    EXPECT_NE(text.output.find("lattice search: shift"), std::string::npos) << text.output;
+    EXPECT_EQ(readText(dir / "on.toml"), readText(dir / "text.toml")) << "not deterministic";
+
+    auto off = runProbebench({"bake", "--scene", "courtyard", "--probe-budget-mib", "2",
+                              "--no-lattice-search", "--write-volumes", (dir / "off.toml").string(),
+                              "--json"});
+    ASSERT_EQ(off.exitCode, 0) << off.output;
+    EXPECT_FALSE(jsonOf(off.output)["placement"].contains("lattice_search")) << off.output;
+    // Without the search only the centres can differ.
+    if (search["shift_cells"] == nlohmann::json::array({0.0, 0.0, 0.0})) {
+        EXPECT_EQ(readText(dir / "on.toml"), readText(dir / "off.toml"));
+    }
+}

@@ -10,7 +10,9 @@
 #include "probes/VolumeFile.h"
 #include "scene/SceneLoader.h"
 
+#include <cmath>
 #include <gtest/gtest.h>
+#include <limits>
 
 using namespace pb::probes;
 using pb::test::addInstance;
@@ -269,4 +271,50 @@ TEST(VolumeFileWrite, RoundTripIsExact) {
         EXPECT_EQ(a.edgeBlend, b.edgeBlend);
     }
     EXPECT_EQ(volumeFileText(back.volumes, "header line one\nline two"), text);
+}
+
+TEST(AutoPlacement, LatticeSearchOnlyShiftsWithinTheBudgetAndIsDeterministic) {
+    // Under a budget, auto ends with the measured lattice search (LatticeShiftSearch.h).
+    const pb::scene::Scene s = pb::scene::loadScene("courtyard");
+    AutoPlacementRequest uniform;
+    uniform.mode = AutoMode::Uniform;
+    AutoPlacementRequest r;
+    r.sparse = true;
+    r.budgetBytes = 0.5 * double(placeAutoVolumes(s, uniform).bytes);
+    r.adaptive.threads = 1;
+    const AutoPlacementResult a = placeAutoVolumes(s, r);
+    ASSERT_TRUE(a.latticeSearched);
+    EXPECT_LE(double(a.bytes), r.budgetBytes);
+    EXPECT_GT(a.latticeShift.trials, 0);
+    for (int axis = 0; axis < 3; ++axis)
+        EXPECT_LE(std::abs(a.latticeShift.cells[axis]), 0.4f + 1e-6f);
+    // A shift is kept only for a clear gain; none keeps the estimate as it was.
+    if (a.latticeShift.cells != glm::vec3(0.0f)) {
+        EXPECT_LT(a.latticeShift.errorAfter,
+                  a.latticeShift.errorBefore * (1.0 - kLatticeShiftMargin));
+    } else {
+        EXPECT_EQ(a.latticeShift.errorAfter, a.latticeShift.errorBefore);
+    }
+
+    // Without the search: the same volumes, unshifted.
+    AutoPlacementRequest off = r;
+    off.latticeSearch = false;
+    const AutoPlacementResult b = placeAutoVolumes(s, off);
+    EXPECT_FALSE(b.latticeSearched);
+    ASSERT_EQ(a.volumes.size(), b.volumes.size());
+    glm::vec3 cell(std::numeric_limits<float>::infinity());
+    for (const ProbeVolume& v : b.volumes)
+        cell = glm::min(cell, v.cellSize());
+    for (std::size_t i = 0; i < a.volumes.size(); ++i) {
+        EXPECT_EQ(a.volumes[i].counts, b.volumes[i].counts);
+        EXPECT_EQ(a.volumes[i].halfExtents, b.volumes[i].halfExtents);
+        EXPECT_NEAR(
+            glm::length(a.volumes[i].center - (b.volumes[i].center + a.latticeShift.cells * cell)),
+            0.0f, 1e-4f);
+    }
+
+    // The same placement on any thread count.
+    AutoPlacementRequest two = r;
+    two.adaptive.threads = 2;
+    EXPECT_EQ(volumeFileText(a.volumes), volumeFileText(placeAutoVolumes(s, two).volumes));
 }

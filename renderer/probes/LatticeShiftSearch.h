@@ -1,0 +1,46 @@
+#pragma once
+// Where `--volumes auto` lets its lattice sit: the placement shifted as a whole by a fraction
+// of its finest cell, chosen by measured error (PlacementError.h) rather than by a geometric
+// score.
+//
+// Coordinate descent, one sweep: along world x, then y, then z, try the shifts
+// kLatticeShiftSteps (fractions of the finest cell, added to the shift found so far); keep the
+// one with the lowest estimated error when it beats the current one by more than
+// kLatticeShiftMargin (relative), and only shifts whose placement still `fits` (a sparse
+// placement stores a different number of probes once shifted). 3 * 8 trial bakes at most.
+//
+// Why it is safe to shift: auto's outer volume reaches half of its own cell beyond the scene
+// bounds (AutoLattice::HalfCellMargin), and no shift reaches half of the finest cell, so the
+// bounds stay covered; the volumes move together, so the nesting stays as placed.
+#include "probes/ProbeVolume.h"
+
+#include <array>
+#include <functional>
+#include <vector>
+
+namespace pb::probes {
+
+constexpr std::array<float, 8> kLatticeShiftSteps{-0.4f, -0.3f, -0.2f, -0.1f,
+                                                  0.1f,  0.2f,  0.3f,  0.4f};
+constexpr double kLatticeShiftMargin = 0.05;
+
+struct LatticeShift {
+    glm::vec3 cells{0.0f};                      // the shift kept, in finest cells per world axis
+    double errorBefore = 0.0, errorAfter = 0.0; // estimated relative errors (PlacementError.h)
+    int trials = 0;                             // trial bakes (not counting the unshifted one)
+};
+
+// The volumes shifted by `world` (every volume's centre).
+std::vector<ProbeVolume> shiftVolumes(const std::vector<ProbeVolume>& volumes,
+                                      const glm::vec3& world);
+
+using PlacementScore = std::function<double(const std::vector<ProbeVolume>&)>;
+using PlacementFits = std::function<bool(const std::vector<ProbeVolume>&)>;
+
+// Searches the shift of `volumes` (finest cell `cell`, world units per axis) and applies the
+// one kept to `volumes`. `error`: the estimated error of a placement
+// (PlacementErrorEstimate::relativeError); `fits`: whether it is still within the budget.
+LatticeShift searchLatticeShift(std::vector<ProbeVolume>& volumes, const glm::vec3& cell,
+                                const PlacementScore& error, const PlacementFits& fits);
+
+} // namespace pb::probes

@@ -1,0 +1,92 @@
+// The measured lattice search (renderer/probes/LatticeShiftSearch.h) against synthetic error
+// functions: it finds a bowl's minimum axis by axis, ignores gains under the margin, skips
+// shifts that do not fit, and moves nested volumes together.
+#include "probes/LatticeShiftSearch.h"
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+using namespace pb::probes;
+
+namespace {
+
+const glm::vec3 kCell{2.0f, 1.0f, 0.5f};
+
+std::vector<ProbeVolume> nested() {
+    ProbeVolume outer;
+    outer.name = "outer";
+    outer.center = glm::vec3(1.0f, 2.0f, 3.0f);
+    outer.halfExtents = glm::vec3(8.0f, 4.0f, 2.0f);
+    outer.counts = glm::ivec3(9, 9, 9);
+    ProbeVolume child = outer;
+    child.name = "child";
+    child.parent = "outer";
+    child.center += glm::vec3(1.0f, 0.5f, 0.25f);
+    child.halfExtents *= 0.25f;
+    return {outer, child};
+}
+
+// The shift of `v` from nested(), in cells.
+glm::vec3 shiftOf(const std::vector<ProbeVolume>& v) {
+    return (v[0].center - nested()[0].center) / kCell;
+}
+
+bool fitsAll(const std::vector<ProbeVolume>&) {
+    return true;
+}
+
+} // namespace
+
+TEST(LatticeShiftSearch, FindsABowlsMinimumAndMovesEveryVolume) {
+    const glm::vec3 best{-0.3f, 0.2f, 0.0f};
+    auto bowl = [&](const std::vector<ProbeVolume>& v) {
+        const glm::vec3 d = shiftOf(v) - best;
+        return 1.0 + 4.0 * double(glm::dot(d, d));
+    };
+    std::vector<ProbeVolume> v = nested();
+    const LatticeShift s = searchLatticeShift(v, kCell, bowl, fitsAll);
+    EXPECT_NEAR(s.cells.x, best.x, 1e-5f);
+    EXPECT_NEAR(s.cells.y, best.y, 1e-5f);
+    EXPECT_NEAR(s.cells.z, 0.0f, 1e-5f);
+    EXPECT_EQ(s.trials, 3 * int(kLatticeShiftSteps.size()));
+    EXPECT_NEAR(s.errorBefore, 1.0 + 4.0 * (0.09 + 0.04), 1e-6);
+    EXPECT_NEAR(s.errorAfter, 1.0, 1e-6);
+    // Both volumes moved by the same world offset: the nesting is unchanged.
+    const glm::vec3 moved = s.cells * kCell;
+    EXPECT_NEAR(glm::length(v[0].center - (nested()[0].center + moved)), 0.0f, 1e-5f);
+    EXPECT_NEAR(glm::length(v[1].center - (nested()[1].center + moved)), 0.0f, 1e-5f);
+    EXPECT_EQ(v[1].halfExtents, nested()[1].halfExtents);
+}
+
+TEST(LatticeShiftSearch, GainsUnderTheMarginAreNotTaken) {
+    // 4% better half a cell along x: within the estimate's noise, so the lattice stays.
+    auto almostFlat = [&](const std::vector<ProbeVolume>& v) {
+        return std::abs(shiftOf(v).x - 0.4f) < 1e-3f ? 0.96 : 1.0;
+    };
+    std::vector<ProbeVolume> v = nested();
+    const LatticeShift s = searchLatticeShift(v, kCell, almostFlat, fitsAll);
+    EXPECT_EQ(s.cells, glm::vec3(0.0f));
+    EXPECT_EQ(v[0].center, nested()[0].center);
+    EXPECT_EQ(s.errorAfter, s.errorBefore);
+    // 6% better is taken.
+    auto clearer = [&](const std::vector<ProbeVolume>& w) {
+        return std::abs(shiftOf(w).x - 0.4f) < 1e-3f ? 0.94 : 1.0;
+    };
+    EXPECT_NEAR(searchLatticeShift(v, kCell, clearer, fitsAll).cells.x, 0.4f, 1e-5f);
+}
+
+TEST(LatticeShiftSearch, ShiftsThatDoNotFitAreNeverTried) {
+    // The best error lies at negative x, but only shifts with x >= 0 fit the budget.
+    auto slope = [&](const std::vector<ProbeVolume>& v) { return 2.0 + double(shiftOf(v).x); };
+    int tried = 0;
+    auto fitsRight = [&](const std::vector<ProbeVolume>& v) {
+        ++tried;
+        return shiftOf(v).x >= -1e-4f;
+    };
+    std::vector<ProbeVolume> v = nested();
+    const LatticeShift s = searchLatticeShift(v, kCell, slope, fitsRight);
+    EXPECT_GE(s.cells.x, -1e-4f);
+    EXPECT_EQ(s.cells, glm::vec3(0.0f)); // every fitting x shift is worse
+    EXPECT_EQ(tried, 3 * int(kLatticeShiftSteps.size()));
+    EXPECT_EQ(s.trials, tried - 4); // the 4 negative x shifts were not baked
+}
