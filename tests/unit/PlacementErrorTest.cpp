@@ -12,12 +12,9 @@ using namespace pb::test;
 
 namespace {
 
+// The scene's own sun and sky ("day").
 Scenario lightOf(const pb::scene::Scene& s) {
-    Scenario sc;
-    sc.name = "test";
-    sc.sun = s.sun;
-    sc.sky = s.sky;
-    return sc;
+    return resolveScenarios({}, {}, s).front();
 }
 
 ProbeVolume grid(glm::vec3 center, glm::vec3 half, glm::ivec3 counts) {

@@ -14,12 +14,9 @@ using namespace pb::test;
 
 namespace {
 
+// The scene's own sun and sky ("day").
 Scenario scenarioOf(const pb::scene::Scene& s) {
-    Scenario sc;
-    sc.name = "test";
-    sc.sun = s.sun;
-    sc.sky = s.sky;
-    return sc;
+    return resolveScenarios({}, {}, s).front();
 }
 
 // View factor from a point to a parallel rectangle [0,a]x[0,b] whose corner lies straight
