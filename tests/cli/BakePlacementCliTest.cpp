@@ -224,6 +224,10 @@ TEST(BakePlacementCli, LatticeSearchIsReportedAndCanBeTurnedOff) {
                               "--json"});
     ASSERT_EQ(off.exitCode, 0) << off.output;
     EXPECT_FALSE(jsonOf(off.output)["placement"].contains("lattice_search")) << off.output;
+    expectOneLineError(
+        runProbebench({"bake", "--scene", "courtyard", "--volumes", "auto-uniform",
+                       "--no-lattice-search", "--write-volumes", (dir / "u.toml").string()}),
+        "--no-lattice-search applies to --volumes auto only");
     // Without the search only the centres can differ.
     if (search["shift_cells"] == nlohmann::json::array({0.0, 0.0, 0.0})) {
         EXPECT_EQ(readText(dir / "on.toml"), readText(dir / "off.toml"));
