@@ -292,7 +292,7 @@ AutoPlacementResult placeAutoVolumes(const scene::Scene& scene, const AutoPlacem
         es.threads = req.adaptive.threads;
         const float cell = finest(best);
         es.bounces = req.bounces;
-        const PlacementErrorEstimate estimate(scene, light, 0.5f * cell, 0.5f * cell, es);
+        const PlacementErrorEstimate estimate(scene, *rays, light, 0.5f * cell, 0.5f * cell, es);
         const glm::vec3 finestCell = [&] {
             glm::vec3 c(std::numeric_limits<float>::infinity());
             for (const ProbeVolume& v : best.volumes)

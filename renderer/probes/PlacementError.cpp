@@ -10,12 +10,11 @@
 
 namespace pb::probes {
 
-PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const Scenario& scenario,
-                                               float sealedBelow, float truthSpacing,
+PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const RayScene& rs,
+                                               const Scenario& scenario, float sealedBelow,
+                                               float truthSpacing,
                                                const PlacementErrorSettings& settings)
-    : scene_(scene), rays_(std::make_unique<RayScene>(scene)), scenario_(scenario),
-      settings_(settings) {
-    const RayScene& rs = *rays_;
+    : scene_(scene), rays_(rs), scenario_(scenario), settings_(settings) {
     points_ =
         surfaceSamples(staticBakeTriangles(scene), rs, settings.points, sealedBelow, settings.seed);
     if (points_.empty())
@@ -37,7 +36,7 @@ PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const 
     req.settings.bounces = settings.bounces - 1;
     req.settings.format = StorageFormat::Rgba32f;
     req.threads = settings.threads;
-    req.rayScene = rays_.get();
+    req.rayScene = &rs;
     const ProbeSet earlier = bakeProbes(scene, req);
     const ProbeSampler sampler(earlier, 0);
     truth_ = gatherIrradiance(rs, scenario, scene.lights, points_, &sampler, g);
@@ -55,7 +54,7 @@ double PlacementErrorEstimate::relativeError(const std::vector<ProbeVolume>& vol
     req.settings.format = StorageFormat::Rgba32f;
     req.threads = settings_.threads;
     req.sparse = sparse;
-    req.rayScene = rays_.get();
+    req.rayScene = &rays_;
     const ProbeSet set = bakeProbes(scene_, req);
     const ProbeSampler sampler(set, 0);
     std::vector<SampleQuery> queries;

@@ -23,7 +23,6 @@
 #include "probes/SurfaceGather.h"
 #include "scene/Scene.h"
 
-#include <memory>
 #include <vector>
 
 namespace pb::probes {
@@ -41,18 +40,20 @@ struct PlacementErrorSettings {
 
 class PlacementErrorEstimate {
 public:
-    // sealedBelow: surface samples whose hemisphere is closed within this distance are
-    // skipped (SurfaceSamples.h). truthSpacing: the grid spacing of the truth's earlier
-    // bounces. Throws pb::Error for a scene without static surface.
-    PlacementErrorEstimate(const scene::Scene& scene, const Scenario& scenario, float sealedBelow,
-                           float truthSpacing, const PlacementErrorSettings& settings = {});
+    // rays: the scene's BVH (the placement's own; every trial bake traces it too, so it must
+    // outlive the estimate). sealedBelow: surface samples whose hemisphere is closed within
+    // this distance are skipped (SurfaceSamples.h). truthSpacing: the grid spacing of the
+    // truth's earlier bounces. Throws pb::Error for a scene without static surface.
+    PlacementErrorEstimate(const scene::Scene& scene, const RayScene& rays,
+                           const Scenario& scenario, float sealedBelow, float truthSpacing,
+                           const PlacementErrorSettings& settings = {});
     // The candidate's mean relative error (sparse: stored as `bake --sparse` stores it).
     double relativeError(const std::vector<ProbeVolume>& volumes, bool sparse) const;
     std::size_t pointCount() const { return points_.size(); }
 
 private:
     const scene::Scene& scene_;
-    std::unique_ptr<RayScene> rays_; // one BVH for every trial bake
+    const RayScene& rays_; // one BVH for every trial bake
     Scenario scenario_;
     PlacementErrorSettings settings_;
     std::vector<GatherPoint> points_;

@@ -41,9 +41,10 @@ TEST(PlacementError, ExactWhereTheLightIsUniform) {
     // Every wall of the closed room emits and reflects alike: irradiance is pi Le (1 + rho)
     // after two bounces everywhere, which a lattice clear of the walls reproduces.
     pb::scene::Scene s = emissiveRoom(1.0f, 0.5f);
+    const RayScene rs(s);
     PlacementErrorSettings es;
     es.points = 500;
-    const PlacementErrorEstimate e(s, lightOf(s), 0.01f, 0.25f, es);
+    const PlacementErrorEstimate e(s, rs, lightOf(s), 0.01f, 0.25f, es);
     EXPECT_GT(e.pointCount(), 400u);
     // A lattice half a cell beyond the walls, as auto places it (the box reaches beyond the
     // walls: points outside a root volume are faded, ProbeSampler.h); the probes behind the
@@ -51,15 +52,16 @@ TEST(PlacementError, ExactWhereTheLightIsUniform) {
     const ProbeVolume v = grid({0, 0, 0}, glm::vec3(1.125f), {10, 10, 10});
     EXPECT_LT(e.relativeError({v}, false), 0.02);
     es.bounces = 1;
-    const PlacementErrorEstimate one(s, lightOf(s), 0.01f, 0.25f, es);
+    const PlacementErrorEstimate one(s, rs, lightOf(s), 0.01f, 0.25f, es);
     EXPECT_LT(one.relativeError({v}, false), 0.02);
 }
 
 TEST(PlacementError, AGridThatResolvesTheShadowScoresLower) {
     pb::scene::Scene s = shadedFloor();
+    const RayScene rs(s);
     PlacementErrorSettings es;
     es.points = 1000;
-    const PlacementErrorEstimate e(s, lightOf(s), 0.01f, 0.25f, es);
+    const PlacementErrorEstimate e(s, rs, lightOf(s), 0.01f, 0.25f, es);
     // Over the same box around the whole scene (the slab's underside sees the sky too): probe
     // planes every 0.5 across and 0.25 up (mid-way between the roof's edges and faces),
     // against its 8 corners.
@@ -71,13 +73,14 @@ TEST(PlacementError, AGridThatResolvesTheShadowScoresLower) {
 
 TEST(PlacementError, SameOnAnyThreadCountAndStableAcrossCalls) {
     pb::scene::Scene s = shadedFloor();
+    const RayScene rs(s);
     const std::vector<ProbeVolume> v{grid({0, 0.5f, 0}, {3.25f, 1.125f, 3.25f}, {7, 5, 7})};
     PlacementErrorSettings es;
     es.points = 600;
     es.threads = 1;
-    const PlacementErrorEstimate one(s, lightOf(s), 0.01f, 0.25f, es);
+    const PlacementErrorEstimate one(s, rs, lightOf(s), 0.01f, 0.25f, es);
     es.threads = 2;
-    const PlacementErrorEstimate two(s, lightOf(s), 0.01f, 0.25f, es);
+    const PlacementErrorEstimate two(s, rs, lightOf(s), 0.01f, 0.25f, es);
     const double e1 = one.relativeError(v, false);
     EXPECT_EQ(e1, two.relativeError(v, false));
     EXPECT_EQ(e1, one.relativeError(v, false));
@@ -87,17 +90,20 @@ TEST(PlacementError, AVolumeThatMissesTheSceneScoresOne) {
     // No probe reaches a point: E = 0 where every truth is lit (above the 10% floor), so each
     // point's relative error is exactly 1.
     pb::scene::Scene s = sunlitFloor();
+    const RayScene rs(s);
     PlacementErrorSettings es;
     es.points = 300;
-    const PlacementErrorEstimate e(s, lightOf(s), 0.01f, 0.5f, es);
+    const PlacementErrorEstimate e(s, rs, lightOf(s), 0.01f, 0.5f, es);
     EXPECT_DOUBLE_EQ(e.relativeError({grid({100, 0, 0}, glm::vec3(1.0f), {2, 2, 2})}, false), 1.0);
 }
 
 TEST(PlacementError, NoSurfaceOrNoBounceIsAnError) {
     pb::scene::Scene empty = emptyScene();
-    EXPECT_THROW(PlacementErrorEstimate(empty, lightOf(empty), 0.01f, 0.25f), pb::Error);
+    const RayScene nothing(empty);
+    EXPECT_THROW(PlacementErrorEstimate(empty, nothing, lightOf(empty), 0.01f, 0.25f), pb::Error);
     pb::scene::Scene s = shadedFloor();
+    const RayScene rs(s);
     PlacementErrorSettings es;
     es.bounces = 0;
-    EXPECT_THROW(PlacementErrorEstimate(s, lightOf(s), 0.01f, 0.25f, es), pb::Error);
+    EXPECT_THROW(PlacementErrorEstimate(s, rs, lightOf(s), 0.01f, 0.25f, es), pb::Error);
 }
