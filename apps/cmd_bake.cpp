@@ -2,14 +2,14 @@
 #include "CommandRegistry.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
-#include "probes/AutoPlacement.h"
-#include "probes/Baker.h"
-#include "probes/MemoryReport.h"
+#include "probes/placement/AutoPlacement.h"
+#include "probes/bake/Baker.h"
+#include "probes/store/MemoryReport.h"
 #include "probes/ProbeCounts.h"
-#include "probes/ProbeFile.h"
-#include "probes/RayScene.h"
-#include "probes/SparseStorage.h"
-#include "probes/VolumeFile.h"
+#include "probes/store/ProbeFile.h"
+#include "probes/bake/RayScene.h"
+#include "probes/store/SparseStorage.h"
+#include "probes/store/VolumeFile.h"
 
 #include <cmath>
 #include <cstdio>
@@ -497,7 +497,7 @@ const RegisterCommand reg{{
                      "--volumes auto under a budget (the default one too) ends by shifting its "
                      "lattice by up to 0.4 of a cell per axis where trial bakes measure less "
                      "irradiance error (over 5% less; up to 25 one-scenario bakes with 32 rays; "
-                     "renderer/probes/LatticeShiftSearch.h); this keeps the lattice as placed "
+                     "renderer/probes/placement/LatticeShiftSearch.h); this keeps the lattice as placed "
                      "(auto only)");
         cmd.add_flag("--sparse", a->sparse,
                      "Sparse storage: store only valid probes at the corners of grid cells that "

@@ -19,8 +19,8 @@
 #include "gl/DebugOutput.h"
 #include "metrics/ImageMetrics.h"
 #include "passes/GiDebugInjection.h"
-#include "probes/ProbeFile.h"
-#include "probes/VolumeRanksFile.h"
+#include "probes/store/ProbeFile.h"
+#include "probes/store/VolumeRanksFile.h"
 #include "views/WorstCaseView.h"
 
 #include <algorithm>

@@ -8,9 +8,9 @@
 #include "core/Error.h"
 #include "costmodel/CachePresets.h"
 #include "costmodel/CostModel.h"
-#include "costmodel/GiVolumeLod.h"
-#include "probes/ProbeFile.h"
-#include "probes/VolumeRanksFile.h"
+#include "profile/GiVolumeLod.h"
+#include "probes/store/ProbeFile.h"
+#include "probes/store/VolumeRanksFile.h"
 
 #include <cstdio>
 #include <iostream>
@@ -85,7 +85,7 @@ int run(CostArgs& a) {
         if (o.scenario < 0) throw Error("--scenario '" + a.scenario + "': not in " + a.probes);
     }
     std::vector<bool> kept(set.volumes.size(), false);
-    for (int v : render::selectVolumes(set, profile::parseVolumeLod(o.profile.gi.volumeLod)))
+    for (int v : profile::selectVolumes(set, profile::parseVolumeLod(o.profile.gi.volumeLod)))
         kept[size_t(v)] = true;
     const views::CoverageTester tester(s, set, kept);
     scene::View view;

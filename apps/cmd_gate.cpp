@@ -19,8 +19,8 @@
 #include "core/FileIO.h"
 #include "gl/DebugOutput.h"
 #include "passes/GiDebugInjection.h"
-#include "probes/EmbreeIsa.h"
-#include "probes/ProbeFile.h"
+#include "probes/bake/EmbreeIsa.h"
+#include "probes/store/ProbeFile.h"
 #include "views/WorstCaseView.h"
 
 #include <unistd.h>

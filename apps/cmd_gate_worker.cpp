@@ -10,7 +10,7 @@
 #include "core/Error.h"
 #include "gl/Capabilities.h"
 #include "gl/DriverQuirks.h"
-#include "probes/ProbeFile.h"
+#include "probes/store/ProbeFile.h"
 
 #include <iostream>
 

@@ -1,8 +1,8 @@
 // probebench memory: GPU memory of probe data, from a probe file or for a grid size.
 #include "CommandRegistry.h"
 #include "core/Error.h"
-#include "probes/MemoryReport.h"
-#include "probes/ProbeFile.h"
+#include "probes/store/MemoryReport.h"
+#include "probes/store/ProbeFile.h"
 
 #include <iostream>
 #include <nlohmann/json.hpp>

@@ -1,7 +1,7 @@
 // probebench probe: the CPU reference sampler at one point of a baked probe file.
 #include "CommandRegistry.h"
 #include "core/Error.h"
-#include "probes/ProbeFile.h"
+#include "probes/store/ProbeFile.h"
 #include "probes/ProbeSampler.h"
 
 #include <cmath>

@@ -14,8 +14,8 @@
 #include "gl/DebugOutput.h"
 #include "image/Image.h"
 #include "passes/GiApplyPass.h"
-#include "probes/ProbeFile.h"
-#include "probes/VolumeRanksFile.h"
+#include "probes/store/ProbeFile.h"
+#include "probes/store/VolumeRanksFile.h"
 #include "profile/SwitchTable.h"
 
 #include <chrono>

@@ -20,7 +20,7 @@
 #include "frame/GiMemory.h"
 #include "gl/DebugOutput.h"
 #include "passes/DynamicObjects.h"
-#include "probes/VolumeRanksFile.h"
+#include "probes/store/VolumeRanksFile.h"
 #include "views/WorstCaseView.h"
 
 #include <cmath>

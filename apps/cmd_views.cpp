@@ -5,9 +5,9 @@
 #include "ProfileOptions.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
-#include "passes/GiVolumeLod.h"
-#include "probes/ProbeFile.h"
-#include "probes/VolumeRanksFile.h"
+#include "profile/GiVolumeLod.h"
+#include "probes/store/ProbeFile.h"
+#include "probes/store/VolumeRanksFile.h"
 #include "profile/Profile.h"
 #include "views/WorstCaseView.h"
 
@@ -71,7 +71,7 @@ int run(ViewsArgs& a) {
     probes::ProbeSet set = probes::readProbeFileWithRanks(a.probes);
     // gi.volume_lod: coverage counts only the volumes the renderer would load.
     std::vector<bool> kept(set.volumes.size(), false);
-    for (int v : render::selectVolumes(set, profile::parseVolumeLod(prof.gi.volumeLod)))
+    for (int v : profile::selectVolumes(set, profile::parseVolumeLod(prof.gi.volumeLod)))
         kept[size_t(v)] = true;
     const views::CoverageTester tester(s, set, kept);
 

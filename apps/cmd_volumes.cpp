@@ -5,10 +5,10 @@
 #include "CommandRegistry.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
-#include "costmodel/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 #include "costmodel/VolumeRanking.h"
 #include "frame/FrameRenderer.h"
-#include "probes/VolumeRanksFile.h"
+#include "probes/store/VolumeRanksFile.h"
 #include "views/WorstCaseView.h"
 
 #include <cstdio>
@@ -69,7 +69,7 @@ void printList(const probes::ProbeSet& set, const std::string& file) {
         const std::string counts = std::to_string(v.counts.x) + "x" + std::to_string(v.counts.y) +
                                    "x" + std::to_string(v.counts.z);
         std::printf("  %-20s %-16s %-12s %8.3g %9.3f\n", v.name.c_str(), parentOf(v).c_str(),
-                    counts.c_str(), v.minCellSize(), mib(render::gpuVolumeBytes(set, i)));
+                    counts.c_str(), v.minCellSize(), mib(profile::gpuVolumeBytes(set, i)));
     }
     std::printf("ranks: %s\n",
                 set.ranks ? (probes::volumeRanksPath(file) + " (" + set.ranks->views + ")").c_str()
@@ -77,7 +77,7 @@ void printList(const probes::ProbeSet& set, const std::string& file) {
 }
 
 void printRanking(const probes::ProbeSet& set, const probes::VolumeRanks& r,
-                  const std::vector<render::RankDropStep>& drops) {
+                  const std::vector<profile::RankDropStep>& drops) {
     std::printf("volume ranking: scenario '%s', views %s (%dx%d each)\n", r.scenario.c_str(),
                 r.views.c_str(), r.width, r.height);
     std::printf("loss = relative MSE of the indirect irradiance over the views' surface pixels "
@@ -96,7 +96,7 @@ void printRanking(const probes::ProbeSet& set, const probes::VolumeRanks& r,
     std::printf(
         "gi.volume_lod=rank_budget_mib:MIB drops, in this order (leaves first), until the rest "
         "fits:\n");
-    for (const render::RankDropStep& s : drops)
+    for (const profile::RankDropStep& s : drops)
         std::printf("  %-20s -> %.3f MiB kept\n", set.volumes[size_t(s.volume)].name.c_str(),
                     mib(s.keptBytes));
 }
@@ -116,7 +116,7 @@ int run(const VolumesArgs& a) {
                                         {"parent", v.parent},
                                         {"counts", {v.counts.x, v.counts.y, v.counts.z}},
                                         {"min_spacing", v.minCellSize()},
-                                        {"bytes", render::gpuVolumeBytes(set, i)}});
+                                        {"bytes", profile::gpuVolumeBytes(set, i)}});
             }
             j["ranks"] = set.ranks ? probes::volumeRanksJson(*set.ranks) : nlohmann::json(nullptr);
             std::cout << j.dump(2) << "\n";
@@ -140,12 +140,12 @@ int run(const VolumesArgs& a) {
     std::fprintf(stderr, "volumes: ranking %zu volume(s) over %zu view(s)\n", set.volumes.size(),
                  in.views.size());
     set.ranks = costmodel::rankVolumes(in);
-    const std::vector<render::RankDropStep> drops = render::rankDropOrder(set);
+    const std::vector<profile::RankDropStep> drops = profile::rankDropOrder(set);
     if (a.json) {
         nlohmann::json j = probes::volumeRanksJson(*set.ranks);
         j["probes_file"] = a.probes;
         j["drop_order"] = nlohmann::json::array();
-        for (const render::RankDropStep& d : drops)
+        for (const profile::RankDropStep& d : drops)
             j["drop_order"].push_back(
                 {{"volume", set.volumes[size_t(d.volume)].name}, {"kept_bytes", d.keptBytes}});
         std::cout << j.dump(2) << "\n";

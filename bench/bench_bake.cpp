@@ -11,12 +11,12 @@
 //
 // Scene: $PB_SPONZA_GLB, else $PB_SCENES_DIR/sponza_decimated/sponza_s_lod4.glb, else
 // ../shared/scenes beside the source tree.
-#include "probes/BakePhaseClock.h"
-#include "probes/Baker.h"
-#include "probes/ParallelFor.h"
+#include "probes/bake/BakePhaseClock.h"
+#include "probes/bake/Baker.h"
+#include "core/ParallelFor.h"
 #include "probes/ProbeSampler.h"
-#include "probes/RayDirections.h"
-#include "probes/RayScene.h"
+#include "probes/bake/RayDirections.h"
+#include "probes/bake/RayScene.h"
 #include "scene/SceneLoader.h"
 
 #include <algorithm>

@@ -19,7 +19,7 @@
 #include "frame/FrameRenderer.h"
 #include "metrics/Statistics.h"
 #include "platforms/Platform.h"
-#include "probes/Baker.h"
+#include "probes/bake/Baker.h"
 #include "stress/StressScene.h"
 
 #if __has_include(<valgrind/callgrind.h>)

@@ -37,17 +37,17 @@
 // Scenes: arguments (paths or built-in names), else the five shared scenes under
 // $PB_SCENES_DIR (default ../shared/scenes: run it from the repository root).
 #include "core/Error.h"
-#include "probes/AutoPlacement.h"
-#include "probes/Baker.h"
-#include "probes/IrradianceError.h"
-#include "probes/LatticeAlignment.h"
-#include "probes/MemoryReport.h"
+#include "probes/placement/AutoPlacement.h"
+#include "probes/bake/Baker.h"
+#include "probes/placement/IrradianceError.h"
+#include "probes/placement/LatticeAlignment.h"
+#include "probes/store/MemoryReport.h"
 #include "probes/ProbeSampler.h"
-#include "probes/RayDirections.h"
-#include "probes/RayScene.h"
+#include "probes/bake/RayDirections.h"
+#include "probes/bake/RayScene.h"
 #include "probes/StaticTriangles.h"
-#include "probes/SurfaceGather.h"
-#include "probes/SurfaceSamples.h"
+#include "probes/bake/SurfaceGather.h"
+#include "probes/bake/SurfaceSamples.h"
 #include "scene/SceneLoader.h"
 
 #include <algorithm>

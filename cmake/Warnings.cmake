@@ -19,4 +19,8 @@ function(pb_library name dir)
                                                      ${PROJECT_SOURCE_DIR})
         target_link_libraries(${name} INTERFACE ${ARGN})
     endif()
+    # Remembered for pb_check_layering (cmake/Layering.cmake): one library per folder.
+    set_property(GLOBAL APPEND PROPERTY PB_LIBRARIES ${name})
+    set_property(GLOBAL PROPERTY PB_LIBRARY_DIR_${name} ${dir})
+    set_property(GLOBAL PROPERTY PB_LIBRARY_DEPS_${name} ${ARGN})
 endfunction()

@@ -1,8 +1,8 @@
 #include "fuzz/FuzzInputs.h"
 
 #include "core/FileIO.h"
-#include "probes/Hash.h"
-#include "probes/ProbeFile.h"
+#include "probes/store/Hash.h"
+#include "probes/store/ProbeFile.h"
 #include "probes/ProbeSampler.h"
 #include "profile/ProfileLoader.h"
 #include "scene/SceneLoader.h"

@@ -14,7 +14,7 @@ import pathlib
 import struct
 import sys
 
-EXPECTED_VERSION = 3  # renderer/probes/ProbeFile.h kProbeFileVersion
+EXPECTED_VERSION = 3  # renderer/probes/store/ProbeFile.h kProbeFileVersion
 
 
 def field_offsets(b):

@@ -110,7 +110,7 @@ ivec3 ddgiCorner(int i) {
 #endif
 }
 
-// Sparse volumes pack their stored tiles (renderer/probes/SparseLayout.h); the state's w holds
+// Sparse volumes pack their stored tiles (renderer/probes/store/SparseLayout.h); the state's w holds
 // the tile's code (common_ddgi_tile.glsl), so the lookup costs no extra fetch, only a few
 // shifts and masks. Compiled only for probe sets with a sparse volume (DDGI_SPARSE_TILES,
 // GpuProbes::anySparse): dense sets find the tile from the probe's coordinates and keep their

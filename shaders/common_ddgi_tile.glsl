@@ -1,6 +1,6 @@
 // A probe's tile (column, row, layer) from its state texel's w: |w| = code + 1 with
 // code = column | row << columnBits | layer << (columnBits + rowBits); w > 0 valid, < 0
-// invalid, 0 absent (no tile). renderer/probes/SparseLayout.h (TileCode) encodes it, exactly
+// invalid, 0 absent (no tile). renderer/probes/store/SparseLayout.h (TileCode) encodes it, exactly
 // (the state texture is RGBA32F: integers to 2^24); GpuProbes::bindVolume sets the widths.
 // Shifts and masks only: the integer division a slot index needs is emulated per lane on
 // llvmpipe and by a sequence of ALU instructions on GPUs. One decode for common_ddgi.glsl's

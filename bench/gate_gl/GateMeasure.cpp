@@ -5,7 +5,7 @@
 #include "core/Error.h"
 #include "costmodel/CachePresets.h"
 #include "costmodel/CostModel.h"
-#include "costmodel/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 #include "passes/GiApplyPass.h"
 #include <glad/gl.h>
 
@@ -28,7 +28,7 @@ const views::CoverageTester& ModelScenes::forVolumeLod(const std::string& volume
     auto& t = testers_[volumeLod];
     if (!t) {
         std::vector<bool> kept(in_.probes->volumes.size(), false);
-        for (int v : render::selectVolumes(*in_.probes, profile::parseVolumeLod(volumeLod)))
+        for (int v : profile::selectVolumes(*in_.probes, profile::parseVolumeLod(volumeLod)))
             kept[size_t(v)] = true;
         t = std::make_unique<views::CoverageTester>(*in_.scene, *in_.probes, kept);
     }

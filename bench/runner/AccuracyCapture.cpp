@@ -1,7 +1,7 @@
 #include "AccuracyCapture.h"
 
 #include "IrradianceScene.h"
-#include "costmodel/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 #include "metrics/ImageMetrics.h"
 #include "views/WorstCaseView.h"
 
@@ -32,7 +32,7 @@ CoverageResult coverageOf(const AccuracyInputs& in, const std::string& volumeLod
                           std::map<std::string, CoverageResult>& cache) {
     if (auto it = cache.find(volumeLod); it != cache.end()) return it->second;
     std::vector<bool> kept(in.probes->volumes.size(), false);
-    for (int v : render::selectVolumes(*in.probes, profile::parseVolumeLod(volumeLod)))
+    for (int v : profile::selectVolumes(*in.probes, profile::parseVolumeLod(volumeLod)))
         kept[size_t(v)] = true;
     const views::CoverageTester tester(*in.scene, *in.probes, kept);
     const views::Coverage c = tester.measure(in.view, in.width, in.height);

@@ -2,7 +2,7 @@
 
 #include "costmodel/CachePresets.h"
 #include "costmodel/CostModel.h"
-#include "costmodel/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 
 #include <map>
 #include <memory>
@@ -22,7 +22,7 @@ cacheModelEntries(const BenchPlan& plan, const scene::Scene& scene, const probes
         if (!tester) {
             std::vector<bool> kept(set.volumes.size(), false);
             for (int v :
-                 render::selectVolumes(set, profile::parseVolumeLod(p.switches.gi.volumeLod)))
+                 profile::selectVolumes(set, profile::parseVolumeLod(p.switches.gi.volumeLod)))
                 kept[size_t(v)] = true;
             tester = std::make_unique<views::CoverageTester>(scene, set, kept);
         }

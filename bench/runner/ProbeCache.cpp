@@ -1,12 +1,12 @@
 #include "ProbeCache.h"
 
 #include "core/Error.h"
-#include "probes/AutoPlacement.h"
-#include "probes/Baker.h"
-#include "probes/EmbreeIsa.h"
-#include "probes/ProbeFile.h"
+#include "probes/placement/AutoPlacement.h"
+#include "probes/bake/Baker.h"
+#include "probes/bake/EmbreeIsa.h"
+#include "probes/store/ProbeFile.h"
 #include "probes/Scenario.h"
-#include "probes/VolumeFile.h"
+#include "probes/store/VolumeFile.h"
 
 #include <cstdio>
 #include <cstdlib>

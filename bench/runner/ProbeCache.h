@@ -2,7 +2,7 @@
 // The probes a benchmark renders with when no probe file is given: the volumes of `volumes`
 // ("auto", "auto-uniform" or a volumes TOML file, as `probebench bake --volumes`: auto stored
 // sparse, the others dense), 128 rays, 2 bounces, RGBA16F, the scene's daylight (plus a
-// volumes file's scenarios), baked once per input hash and Embree ISA (probes/EmbreeIsa.h)
+// volumes file's scenarios), baked once per input hash and Embree ISA (probes/bake/EmbreeIsa.h)
 // into a cache folder (the bake cache of ProbeFile.h: a stale or damaged file is re-baked,
 // never trusted).
 #include "probes/ProbeSet.h"

@@ -1,7 +1,7 @@
 #include "VolumeLodLevels.h"
 
 #include "core/Error.h"
-#include "costmodel/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 #include "profile/VolumeLod.h"
 
 #include <algorithm>
@@ -17,7 +17,7 @@ std::vector<std::string> volumeLodLevels(const probes::ProbeSet& set) {
     auto consider = [&](const std::string& lod) {
         std::vector<int> kept;
         try {
-            kept = render::selectVolumes(set, profile::parseVolumeLod(lod));
+            kept = profile::selectVolumes(set, profile::parseVolumeLod(lod));
         } catch (const Error&) {
             return; // e.g. a level that keeps no volume
         }
@@ -34,7 +34,7 @@ std::vector<std::string> volumeLodLevels(const probes::ProbeSet& set) {
         consider(buf);
     }
     if (set.ranks)
-        for (const render::RankDropStep& step : render::rankDropOrder(set)) {
+        for (const profile::RankDropStep& step : profile::rankDropOrder(set)) {
             if (step.keptBytes == 0) continue;
             // Rounded up to the micro-MiB: the level keeps exactly what the step keeps.
             const double mib = std::ceil(double(step.keptBytes) / 1048576.0 * 1e6) / 1e6;

@@ -3,9 +3,9 @@
 #include "core/Error.h"
 #include "costmodel/CachePresets.h"
 #include "costmodel/FetchStream.h"
-#include "costmodel/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 #include "costmodel/PixelOrder.h"
-#include "probes/ParallelFor.h"
+#include "core/ParallelFor.h"
 #include "probes/ProbeSampler.h"
 
 #include <algorithm>
@@ -133,11 +133,11 @@ CostReport runCostModel(const views::CoverageTester& tester, const scene::View& 
 
     // The pass: kept volumes in draw order, the GI target and its pixels in shading order.
     const std::vector<int> kept =
-        render::selectVolumes(set, profile::parseVolumeLod(o.profile.gi.volumeLod));
+        profile::selectVolumes(set, profile::parseVolumeLod(o.profile.gi.volumeLod));
     std::vector<float> boxes;
     for (int v : kept)
         boxes.push_back(set.volumes[size_t(v)].boxVolume());
-    std::vector<int> drawOrder = render::volumeDrawOrder(boxes, kept); // largest first
+    std::vector<int> drawOrder = profile::volumeDrawOrder(boxes, kept); // largest first
     const bool stencil = o.profile.gi.multiVolume == profile::GiMultiVolume::Stencil;
     const bool shFlags = o.profile.gi.dynamic == profile::GiDynamic::Sh;
     if (stencil) std::reverse(drawOrder.begin(), drawOrder.end()); // smallest first
@@ -195,7 +195,7 @@ CostReport runCostModel(const views::CoverageTester& tester, const scene::View& 
         for (size_t start = 0; start < order.size(); start += kChunk) {
             const size_t n = std::min(kChunk, order.size() - start);
             // 1. The lookups of this chunk (parallel: one slot each).
-            probes::parallelFor(n, 0, [&](size_t i, int) {
+            pb::parallelFor(n, 0, [&](size_t i, int) {
                 const views::SurfacePoint& s = surface[start + i];
                 Lookup& l = lookups[i];
                 const Lookup::Stage miss = stencil ? Lookup::Skipped : Lookup::Outside;
@@ -221,7 +221,7 @@ CostReport runCostModel(const views::CoverageTester& tester, const scene::View& 
             }
             // 3. Every (variant, cache) replays the chunk in shading order (parallel: each
             //    replay owns its cache).
-            probes::parallelFor(replays.size(), 0, [&](size_t k, int) {
+            pb::parallelFor(replays.size(), 0, [&](size_t k, int) {
                 replayChunk(replays[k], structures[k / caches.size()], table, tex, lookups.data(),
                             gbufferPx.data() + start, n, o.warpPixels, o.warpsInFlight);
             });
@@ -257,7 +257,7 @@ CostReport runCostModel(const views::CoverageTester& tester, const scene::View& 
         maxFetchesPerLookup(GiVariant{o.profile.gi.probeOrder, o.profile.gi.loops});
     c.clearBytes = c.targetPixels * std::uint64_t(c.targetBytesPerPixel);
     for (int v : kept)
-        c.gpuProbeBytes += render::gpuVolumeBytes(set, size_t(v));
+        c.gpuProbeBytes += profile::gpuVolumeBytes(set, size_t(v));
 
     for (size_t k = 0; k < replays.size(); ++k) {
         CacheResult res;

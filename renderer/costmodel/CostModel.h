@@ -80,7 +80,7 @@ struct GiPassCounters {
     std::uint64_t probeFootprintBytes = 0;
     std::uint64_t renderTargetBytesWritten = 0; // evaluated fragments x target bytes
     std::uint64_t clearBytes = 0;               // target pixels x target bytes
-    std::uint64_t gpuProbeBytes = 0;            // render::gpuVolumeBytes of the kept volumes
+    std::uint64_t gpuProbeBytes = 0;            // profile::gpuVolumeBytes of the kept volumes
     std::vector<VolumeCounters> volumes;        // in draw order
 };
 

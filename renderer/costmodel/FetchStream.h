@@ -7,7 +7,7 @@
 #include "costmodel/TextureCache.h"
 #include "costmodel/TextureMemory.h"
 #include "probes/ProbeSampler.h"
-#include "probes/SparseLayout.h"
+#include "probes/store/SparseLayout.h"
 
 #include <cstdint>
 #include <vector>
@@ -38,7 +38,7 @@ struct TextureTable {
     struct Volume {
         int irradiance, visibility, state;
         // Where each probe's tiles lie in irradiance and visibility, as GpuProbes uploads
-        // them: a sparse volume's stored tiles packed (probes/SparseLayout.h).
+        // them: a sparse volume's stored tiles packed (probes/store/SparseLayout.h).
         probes::TileLayout tiles;
     };
     std::vector<Volume> volumes; // by position in the kept list

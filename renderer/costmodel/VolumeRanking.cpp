@@ -1,8 +1,8 @@
 #include "costmodel/VolumeRanking.h"
 
 #include "core/Error.h"
-#include "costmodel/GiVolumeLod.h"
-#include "probes/ParallelFor.h"
+#include "profile/GiVolumeLod.h"
+#include "core/ParallelFor.h"
 #include "probes/ProbeSampler.h"
 #include "views/WorstCaseView.h"
 
@@ -66,7 +66,7 @@ probes::VolumeRanks rankVolumes(const RankingInputs& in) {
         const std::vector<views::SurfacePoint> points =
             tester.surfacePoints(view, in.width, in.height, pixels);
         std::vector<RowSums> rows(size_t(in.height));
-        probes::parallelFor(size_t(in.height), 0, [&](size_t row, int) {
+        pb::parallelFor(size_t(in.height), 0, [&](size_t row, int) {
             RowSums& r = rows[row];
             r.error.assign(n, 0.0);
             r.shaded.assign(n, 0);
@@ -137,7 +137,7 @@ probes::VolumeRanks rankVolumes(const RankingInputs& in) {
         r.loss = error[v] / std::max(reference, 1e-30);
         for (size_t u = 0; u < n; ++u)
             if (inSubtree[v][u]) {
-                r.bytes += render::gpuVolumeBytes(set, size_t(u));
+                r.bytes += profile::gpuVolumeBytes(set, size_t(u));
                 r.lookups += naive[u];
             }
         r.pixels = shaded[v];

@@ -2,7 +2,7 @@
 // The value of each probe volume: what the frame loses when the volume (and, by the
 // gi.volume_lod rule, every volume nested in it) is omitted, against what it costs in GPU
 // memory and GI lookups. `probebench volumes --rank` prints it; `--write-ranks` stores it next
-// to the probe file for gi.volume_lod=rank_budget_mib (probes/VolumeRanksFile.h).
+// to the probe file for gi.volume_lod=rank_budget_mib (probes/store/VolumeRanksFile.h).
 //
 // GL-free and deterministic: the views' surfaces come from the CPU primary rays of
 // views::CoverageTester (the GBuffer's hit point and face normal), the irradiance from the CPU

@@ -1,6 +1,6 @@
 #include "frame/FrameSkips.h"
 
-#include "costmodel/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 #include "passes/DynamicObjects.h"
 
 #include <algorithm>
@@ -32,7 +32,7 @@ std::vector<SkippedWork> omittedVolumes(const probes::ProbeSet& set, const std::
         const probes::ProbeVolume& vol = set.volumes[v];
         char what[200];
         std::snprintf(what, sizeof what, "volume '%s' (%.3f MiB of probe textures)",
-                      vol.name.c_str(), double(gpuVolumeBytes(set, v)) / (1024.0 * 1024.0));
+                      vol.name.c_str(), double(profile::gpuVolumeBytes(set, v)) / (1024.0 * 1024.0));
         std::string why = "gi.volume_lod=" + volumeLod;
         auto parent =
             std::find_if(set.volumes.begin(), set.volumes.end(),

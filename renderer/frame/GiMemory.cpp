@@ -1,6 +1,6 @@
 #include "frame/GiMemory.h"
 
-#include "costmodel/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 #include "gl/TextureFormat.h"
 #include "passes/DynamicShPass.h"
 #include "passes/GiApplyPass.h"
@@ -13,8 +13,8 @@ namespace pb::render {
 GiMemory estimateGiMemory(const profile::Profile& p, const probes::ProbeSet& set, int width,
                           int height, int dynamicObjects) {
     GiMemory m;
-    for (int v : selectVolumes(set, profile::parseVolumeLod(p.gi.volumeLod)))
-        m.probes += gpuVolumeBytes(set, size_t(v));
+    for (int v : profile::selectVolumes(set, profile::parseVolumeLod(p.gi.volumeLod)))
+        m.probes += profile::gpuVolumeBytes(set, size_t(v));
     // GiApplyPass::execute: the target at size / divisor (at least 1 texel per axis).
     const int div = profile::resolutionDivisor(p.gi.resolution);
     const int w = std::max(1, width / div), h = std::max(1, height / div);

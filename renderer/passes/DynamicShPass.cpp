@@ -2,7 +2,7 @@
 
 #include "core/Error.h"
 #include "passes/GiApplyPass.h"
-#include "probes/RayDirections.h"
+#include "probes/bake/RayDirections.h"
 
 namespace pb::render {
 

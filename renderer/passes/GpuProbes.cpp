@@ -2,9 +2,9 @@
 
 #include "core/Error.h"
 #include "gl/Capabilities.h"
-#include "passes/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 #include "probes/ProbeSampler.h"
-#include "probes/SparseLayout.h"
+#include "probes/store/SparseLayout.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -142,7 +142,7 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
             throw Error("bc6h probes need BPTC textures, which this GL lacks");
     }
     const std::vector<int> parents = probes::validateVolumes(set.volumes, "probe set");
-    for (int vi : selectVolumes(set, lod)) {
+    for (int vi : profile::selectVolumes(set, lod)) {
         const probes::ProbeVolume& v = set.volumes[size_t(vi)];
         const std::string what = "probe volume '" + v.name + "'";
         GpuProbeVolume g;
@@ -192,7 +192,7 @@ std::vector<int> GpuProbes::drawOrder() const {
         boxes.push_back(v.boxVolume);
         files.push_back(v.fileIndex);
     }
-    return volumeDrawOrder(boxes, files);
+    return profile::volumeDrawOrder(boxes, files);
 }
 
 void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,

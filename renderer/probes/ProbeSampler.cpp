@@ -2,7 +2,7 @@
 
 #include "core/Error.h"
 #include "probes/Octahedral.h"
-#include "probes/ParallelFor.h"
+#include "core/ParallelFor.h"
 
 #include <cmath>
 #include <cstring>

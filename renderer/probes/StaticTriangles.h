@@ -16,6 +16,11 @@ struct WorldTriangle {
     float area() const { return 0.5f * glm::length(glm::cross(b - a, c - a)); }
 };
 
+// Whether the bake traces this instance: static, with a valid primitive and a visible material.
+// The one rule for "what the bake sees": RayScene (bake/) builds its BVH from it, placement
+// voxelises it.
+bool bakesInstance(const scene::Scene& scene, const scene::Instance& inst);
+
 // Degenerate triangles (zero area, bad indices) are left out.
 std::vector<WorldTriangle> staticBakeTriangles(const scene::Scene& scene);
 

@@ -1,7 +1,7 @@
 #include "probes/StorageFormat.h"
 
 #include "core/Error.h"
-#include "probes/Bc6h.h"
+#include "probes/bc6h/Bc6h.h"
 
 #include <cmath>
 #include <cstring>

@@ -9,7 +9,7 @@
 
 namespace pb::probes {
 
-// Omitting a volume omits the volumes nested in it (costmodel/GiVolumeLod.h), so every figure
+// Omitting a volume omits the volumes nested in it (profile/GiVolumeLod.h), so every figure
 // is of the volume together with its descendants ("subtree").
 struct VolumeRank {
     std::string name;

@@ -1,7 +1,7 @@
 #include "stress/StressCases.h"
 
 #include "core/Error.h"
-#include "probes/Baker.h"
+#include "probes/bake/Baker.h"
 #include "probes/Octahedral.h"
 #include "probes/StorageScale.h"
 #include "stress/StressScene.h"

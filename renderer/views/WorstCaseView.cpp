@@ -1,8 +1,8 @@
 #include "views/WorstCaseView.h"
 
 #include "core/Error.h"
-#include "probes/ParallelFor.h"
-#include "probes/RayScene.h"
+#include "core/ParallelFor.h"
+#include "probes/bake/RayScene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -141,7 +141,7 @@ Coverage CoverageTester::measure(const scene::View& view, int width, int height)
     if (width < 1 || height < 1) throw Error("coverage: resolution must be at least 1x1");
     const Camera cam(view, width, height);
     std::vector<Tally> rows(static_cast<size_t>(height));
-    probes::parallelFor(size_t(height), 0, [&](size_t y, int) {
+    pb::parallelFor(size_t(height), 0, [&](size_t y, int) {
         rows[y] = tallyRow(*rays_, probes_, kept_, cam, int(y));
     });
     Tally total;
@@ -155,7 +155,7 @@ std::vector<int> CoverageTester::overlapImage(const scene::View& view, int width
     if (width < 1 || height < 1) throw Error("coverage: resolution must be at least 1x1");
     const Camera cam(view, width, height);
     std::vector<int> image(size_t(width) * size_t(height), 0);
-    probes::parallelFor(size_t(height), 0, [&](size_t y, int) {
+    pb::parallelFor(size_t(height), 0, [&](size_t y, int) {
         tallyRow(*rays_, probes_, kept_, cam, int(y), &image[y * size_t(width)]);
     });
     return image;
@@ -168,7 +168,7 @@ CoverageTester::surfacePoints(const scene::View& view, int width, int height,
     const Camera cam(view, width, height);
     std::vector<SurfacePoint> out(pixels.size());
     constexpr size_t kChunk = 1024;
-    probes::parallelFor((pixels.size() + kChunk - 1) / kChunk, 0, [&](size_t chunk, int) {
+    pb::parallelFor((pixels.size() + kChunk - 1) / kChunk, 0, [&](size_t chunk, int) {
         const size_t end = std::min(pixels.size(), (chunk + 1) * kChunk);
         for (size_t i = chunk * kChunk; i < end; ++i) {
             const glm::vec3 d = cam.ray(pixels[i].x, pixels[i].y);
@@ -297,7 +297,7 @@ WorstCase findWorstCaseView(const CoverageTester& tester, int width, int height,
     // Scoring resolutions keep the output's aspect ratio (the frustum is what matters).
     auto scoreAll = [&](std::vector<Pose>& list, int h) {
         const int w = std::max(1, int(std::lround(float(h) * aspect)));
-        probes::parallelFor(list.size(), 0, [&](size_t i, int) {
+        pb::parallelFor(list.size(), 0, [&](size_t i, int) {
             const scene::View view = poseView(list[i].eye, list[i].yaw, list[i].pitch, fovYDegrees);
             list[i].coverage = tester.measureSerial(view, w, h);
             list[i].score = tester.score(list[i].coverage) + (list[i].nearNamedView ? 0.5 : 0.0);

@@ -1,4 +1,4 @@
-// The CPU BC6H decoder (renderer/probes/Bc6hDecoder.cpp) against the GL implementation's:
+// The CPU BC6H decoder (renderer/probes/bc6h/Bc6hDecoder.cpp) against the GL implementation's:
 // blocks are uploaded with glCompressedTexImage2D(GL_COMPRESSED_RGB_BPTC_UNSIGNED_FLOAT),
 // every texel is copied by texelFetch into an RGBA32F target and read back as float. BC6H
 // decoding is bit-exact by specification and a half float converts to float exactly, so the
@@ -6,7 +6,7 @@
 // (including the decoder-only two-region modes and the reserved codes).
 #include "gl/GlTestFixture.h"
 
-#include "probes/Bc6h.h"
+#include "probes/bc6h/Bc6h.h"
 
 #include <glad/gl.h>
 

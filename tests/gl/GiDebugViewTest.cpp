@@ -9,7 +9,7 @@
 #include "gl/GlTestFixture.h"
 
 #include "frame/FrameRenderer.h"
-#include "probes/SparseStorage.h"
+#include "probes/store/SparseStorage.h"
 
 #include <cmath>
 #include <cstdio>

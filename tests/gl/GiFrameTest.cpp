@@ -9,7 +9,7 @@
 #include "frame/FrameRenderer.h"
 #include "frame/Readback.h"
 #include "passes/GiApplyPass.h"
-#include "passes/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 #include "probes/ProbeSampler.h"
 
 #include <algorithm>
@@ -159,8 +159,8 @@ TEST_F(GiFrameTest, LossySwitchesReportTheirError) {
 
 TEST_F(GiFrameTest, OmittedVolumesAllocateNothing) {
     const probes::ProbeSet& set = giTestProbes(probes::StorageFormat::Rgba16f);
-    const std::size_t root = render::gpuVolumeBytes(set.volumes[0], set.format());
-    const std::size_t child = render::gpuVolumeBytes(set.volumes[1], set.format());
+    const std::size_t root = profile::gpuVolumeBytes(set.volumes[0], set.format());
+    const std::size_t child = profile::gpuVolumeBytes(set.volumes[1], set.format());
     render::GpuProbes all(set, 0);
     EXPECT_EQ(all.volumes().size(), 2u);
     EXPECT_EQ(all.bytes(), root + child);
@@ -174,17 +174,17 @@ TEST_F(GiFrameTest, OmittedVolumesAllocateNothing) {
         0u);
     float fine = set.volumes[1].minCellSize(), coarse = set.volumes[0].minCellSize();
     ASSERT_LT(fine, coarse);
-    EXPECT_EQ(render::selectVolumes(
+    EXPECT_EQ(profile::selectVolumes(
                   set, {profile::VolumeLod::Mode::MinSpacing, {}, double(fine + coarse) / 2}),
               std::vector<int>{0});
     double rootMiB = double(root) / (1024.0 * 1024.0);
-    EXPECT_EQ(render::selectVolumes(set, {profile::VolumeLod::Mode::BudgetMiB, {}, rootMiB}),
+    EXPECT_EQ(profile::selectVolumes(set, {profile::VolumeLod::Mode::BudgetMiB, {}, rootMiB}),
               std::vector<int>{0});
-    EXPECT_EQ(render::selectVolumes(set, {profile::VolumeLod::Mode::BudgetMiB, {}, rootMiB * 2}),
+    EXPECT_EQ(profile::selectVolumes(set, {profile::VolumeLod::Mode::BudgetMiB, {}, rootMiB * 2}),
               (std::vector<int>{0, 1}));
-    EXPECT_THROW(render::selectVolumes(set, {profile::VolumeLod::Mode::BudgetMiB, {}, 1e-6}),
+    EXPECT_THROW(profile::selectVolumes(set, {profile::VolumeLod::Mode::BudgetMiB, {}, 1e-6}),
                  Error);
-    EXPECT_THROW(render::selectVolumes(set, {profile::VolumeLod::Mode::Omit, {"nope"}, 0}), Error);
+    EXPECT_THROW(profile::selectVolumes(set, {profile::VolumeLod::Mode::Omit, {"nope"}, 0}), Error);
 }
 
 TEST_F(GiFrameTest, WithoutProbesThereIsNoGiPass) {

@@ -14,8 +14,8 @@
 #include "frame/GiPointEvaluator.h"
 #include "frame/Readback.h"
 #include "passes/GiApplyPass.h"
-#include "passes/GiVolumeLod.h"
-#include "probes/SparseStorage.h"
+#include "profile/GiVolumeLod.h"
+#include "probes/store/SparseStorage.h"
 #include "probes/StaticTriangles.h"
 
 #include <algorithm>
@@ -115,7 +115,7 @@ TEST_F(GiSparseTest, SparseSetRendersTheDenseImage) {
     EXPECT_LT(render::GpuProbes(sparse, 0).bytes(), render::GpuProbes(dense, 0).bytes());
     // The memory estimates (gi.volume_lod budgets, the cost model) count what is uploaded.
     EXPECT_EQ(render::GpuProbes(sparse, 0).bytes(),
-              render::gpuVolumeBytes(sparse, 0) + render::gpuVolumeBytes(sparse, 1));
+              profile::gpuVolumeBytes(sparse, 0) + profile::gpuVolumeBytes(sparse, 1));
 
     const image::ImageF expected = renderGi(dense), got = renderGi(sparse);
     ASSERT_EQ(got.pixels.size(), expected.pixels.size());

@@ -8,7 +8,7 @@
 #include "gl/GlTestFixture.h"
 
 #include "frame/Readback.h"
-#include "passes/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 #include "probes/ProbeSampler.h"
 
 #include <algorithm>
@@ -174,7 +174,7 @@ TEST_F(GiStencilTest, AnOmittedVolumeIsNotDrawn) {
     for (const auto& v : stats.volumes)
         EXPECT_NE(v.name, "sun_patch");
     EXPECT_EQ(r.gpuProbes()->bytes(), render::GpuProbes(set, 0).bytes() -
-                                          render::gpuVolumeBytes(set.volumes[2], set.format()));
+                                          profile::gpuVolumeBytes(set.volumes[2], set.format()));
     EXPECT_EQ(stats.totalEvaluations(), stats.coveredPixels());
 }
 

@@ -2,9 +2,9 @@
 // Small in-memory bakes of a built-in scene for the GI GL tests (seconds on 2 cores): the
 // auto root volume over `rooms` plus a rotated child volume nested in it, so volume choice,
 // edge fade, relocation and invalid probes are all exercised. Cached per format per process.
-#include "probes/AutoVolume.h"
-#include "probes/Baker.h"
-#include "probes/RayScene.h"
+#include "probes/placement/AutoVolume.h"
+#include "probes/bake/Baker.h"
+#include "probes/bake/RayScene.h"
 #include "probes/Scenario.h"
 #include "scene/SceneLoader.h"
 

@@ -1,13 +1,13 @@
 // Automatic probe placement (`--volumes auto`): box merging, the adaptive octree, nesting,
 // the memory budget, determinism and the volumes-file round trip.
-#include "probes/AutoPlacement.h"
+#include "probes/placement/AutoPlacement.h"
 #include "ProbeTestScenes.h"
 #include "core/Error.h"
-#include "probes/BoxMerge.h"
-#include "probes/MemoryReport.h"
-#include "probes/RayScene.h"
+#include "probes/placement/BoxMerge.h"
+#include "probes/store/MemoryReport.h"
+#include "probes/bake/RayScene.h"
 #include "probes/StaticTriangles.h"
-#include "probes/VolumeFile.h"
+#include "probes/store/VolumeFile.h"
 #include "scene/SceneLoader.h"
 
 #include <cmath>

@@ -1,8 +1,8 @@
-// Direct light at bake hits (renderer/probes/DirectLight.h) against the analytic formulas,
+// Direct light at bake hits (renderer/probes/bake/DirectLight.h) against the analytic formulas,
 // and the work-sharing loop the bake runs on.
 #include "ProbeTestScenes.h"
-#include "probes/DirectLight.h"
-#include "probes/ParallelFor.h"
+#include "probes/bake/DirectLight.h"
+#include "core/ParallelFor.h"
 
 #include <atomic>
 #include <chrono>

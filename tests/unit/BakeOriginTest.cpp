@@ -1,7 +1,7 @@
-// Bakes far from the origin (probes/BakeOrigin.h): the same room baked at the origin and at
+// Bakes far from the origin (probes/bake/BakeOrigin.h): the same room baked at the origin and at
 // (1e6, 1e6, 1e6) gives the same probes. In float world coordinates it did not: the stress
 // sweep's offset=1e6 case was ~10% darker (bench/README.md, "Stress sweep").
-#include "probes/BakeOrigin.h"
+#include "probes/bake/BakeOrigin.h"
 #include "stress/StressScene.h"
 
 #include <gtest/gtest.h>

@@ -2,9 +2,9 @@
 // with bounces, classification, relocation, nesting, determinism, degenerate set-ups.
 #include "ProbeTestScenes.h"
 #include "core/Error.h"
-#include "probes/Baker.h"
+#include "probes/bake/Baker.h"
 #include "probes/Octahedral.h"
-#include "probes/ProbeFile.h"
+#include "probes/store/ProbeFile.h"
 #include "probes/ProbeSampler.h"
 
 #include <cmath>

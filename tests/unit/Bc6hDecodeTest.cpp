@@ -3,7 +3,7 @@
 // values worked out from the specification's formulas: unquantise, ((64-w)*e0 + w*e1 + 32)>>6,
 // then (i*31)>>6 read as a half float. Mode names follow Microsoft's numbering (1..14); the
 // block code the Khronos table uses is given beside each.
-#include "probes/Bc6h.h"
+#include "probes/bc6h/Bc6h.h"
 
 #include "core/Error.h"
 

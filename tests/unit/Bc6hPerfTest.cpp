@@ -4,7 +4,7 @@
 // not a test: it asserts nothing about time and is disabled by default. Run it with
 //   build/tests/unit_tests --gtest_filter='Bc6hPerf.*' --gtest_also_run_disabled_tests
 // (PB_BC6H_QUALITY=fast|normal|high picks the quality, default normal).
-#include "probes/Bc6h.h"
+#include "probes/bc6h/Bc6h.h"
 
 #include <gtest/gtest.h>
 

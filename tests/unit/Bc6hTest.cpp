@@ -5,8 +5,8 @@
 // whose values lie on a line there is limited by the 16 (one region) or 8 (two regions)
 // palette entries: with entries evenly spread over a range of R units the worst texel is
 // R/30 units off (half a step), plus endpoint quantisation and the final rounding.
-#include "probes/Bc6h.h"
-#include "probes/Bc6hFit.h"
+#include "probes/bc6h/Bc6h.h"
+#include "probes/bc6h/Bc6hFit.h"
 
 #include "core/Error.h"
 

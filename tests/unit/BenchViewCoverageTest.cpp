@@ -4,8 +4,8 @@
 // where every pixel lies in at least two volumes so gi.multi_volume has work to show.
 #include "support/TestEnv.h"
 
-#include "probes/AutoPlacement.h"
-#include "probes/VolumeFile.h"
+#include "probes/placement/AutoPlacement.h"
+#include "probes/store/VolumeFile.h"
 #include "scene/SceneLoader.h"
 #include "views/WorstCaseView.h"
 

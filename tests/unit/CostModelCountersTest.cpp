@@ -8,7 +8,7 @@
 #include "core/Error.h"
 #include "costmodel/CachePresets.h"
 #include "costmodel/CostModel.h"
-#include "costmodel/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 
 #include <gtest/gtest.h>
 
@@ -100,8 +100,8 @@ TEST(CostModelCounters, NestedVolumesOnAFloorGiveExactCounts) {
     EXPECT_EQ(c.textureBinds, 5 + 2 * 3);
     EXPECT_EQ(c.renderTargetBytesWritten, lookups * 8); // rgba16f
     EXPECT_EQ(c.clearBytes, pixels * 8);
-    EXPECT_EQ(c.gpuProbeBytes, render::gpuVolumeBytes(set.volumes[0], set.format()) +
-                                   render::gpuVolumeBytes(set.volumes[1], set.format()));
+    EXPECT_EQ(c.gpuProbeBytes, profile::gpuVolumeBytes(set.volumes[0], set.format()) +
+                                   profile::gpuVolumeBytes(set.volumes[1], set.format()));
     // Raw footprint: 16 B state + 4 visibility texels x 4 B + 4 irradiance texels x 8 B.
     EXPECT_EQ(c.probeFootprintBytes, lookups * 8 * (16 + 16 + 32));
     ASSERT_EQ(r.results.size(), 4u * 2u);
@@ -126,7 +126,7 @@ TEST(CostModelCounters, ResolutionTargetFormatAndVolumeLodChangeTheCounts) {
     EXPECT_EQ(c.drawCalls, 1);
     EXPECT_EQ(c.probeFetches, 24u * 32u * 18u);
     EXPECT_EQ(c.renderTargetBytesWritten, 32u * 18u * 4u);
-    EXPECT_EQ(c.gpuProbeBytes, render::gpuVolumeBytes(set.volumes[0], set.format()));
+    EXPECT_EQ(c.gpuProbeBytes, profile::gpuVolumeBytes(set.volumes[0], set.format()));
 }
 
 TEST(CostModelCounters, SameInputsGiveIdenticalJson) {

@@ -7,13 +7,13 @@
 #include "costmodel/CachePresets.h"
 #include "costmodel/CostModel.h"
 #include "costmodel/FetchStream.h"
-#include "costmodel/GiVolumeLod.h"
-#include "probes/AutoVolume.h"
-#include "probes/Baker.h"
+#include "profile/GiVolumeLod.h"
+#include "probes/placement/AutoVolume.h"
+#include "probes/bake/Baker.h"
 #include "probes/ProbeSampler.h"
-#include "probes/RayScene.h"
-#include "probes/SparseLayout.h"
-#include "probes/SparseStorage.h"
+#include "probes/bake/RayScene.h"
+#include "probes/store/SparseLayout.h"
+#include "probes/store/SparseStorage.h"
 #include "probes/StaticTriangles.h"
 #include "scene/SceneLoader.h"
 #include "views/WorstCaseView.h"
@@ -90,7 +90,7 @@ TEST(CostModelSparse, ProbeTexturesHaveThePackedExtent) {
     EXPECT_EQ(t.textures[size_t(tex.state)].bytes(),
               std::uint64_t(v.probeCount()) * probes::kStateBytesPerProbe); // the indirection
     // The memory counter agrees: packed tiles + the state texture.
-    EXPECT_EQ(render::gpuVolumeBytes(set, 0), t.textures[size_t(tex.irradiance)].bytes() +
+    EXPECT_EQ(profile::gpuVolumeBytes(set, 0), t.textures[size_t(tex.irradiance)].bytes() +
                                                   t.textures[size_t(tex.visibility)].bytes() +
                                                   t.textures[size_t(tex.state)].bytes());
 }
@@ -205,7 +205,7 @@ TEST(CostModelSparse, ABakedSparseSetReadsTheDenseSetsTexelsFromPackedTextures) 
     EXPECT_EQ(pv.irradianceFetches, dv.irradianceFetches);
     EXPECT_EQ(pv.probeFootprintBytes, dv.probeFootprintBytes);
     // ... from textures of the packed size,
-    EXPECT_EQ(p.counters.gpuProbeBytes, render::gpuVolumeBytes(sparse, 0));
+    EXPECT_EQ(p.counters.gpuProbeBytes, profile::gpuVolumeBytes(sparse, 0));
     EXPECT_LT(p.counters.gpuProbeBytes, d.counters.gpuProbeBytes);
     // ... and only from stored tiles: every pixel's tile fetches, addressed as replayed, lie
     // inside the packed textures' first storedCount tiles.

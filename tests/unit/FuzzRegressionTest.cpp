@@ -3,7 +3,7 @@
 // found by the fuzzers in fuzz/ or by hand): each must load or give a one-line pb::Error that
 // starts with the file's name (fuzz/FuzzInputs.h). A crash or sanitizer report fails the case.
 #include "fuzz/FuzzInputs.h"
-#include "probes/VolumeFile.h"
+#include "probes/store/VolumeFile.h"
 #include "support/TestEnv.h"
 
 #include <algorithm>

@@ -7,8 +7,8 @@
 #include "bench/gate/GateOutcome.h"
 #include "bench/gate/GateRecord.h"
 #include "core/Error.h"
-#include "probes/EmbreeIsa.h"
-#include "probes/RayScene.h"
+#include "probes/bake/EmbreeIsa.h"
+#include "probes/bake/RayScene.h"
 #include "scene/BuiltinScenes.h"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 // How much surface lies on a probe plane (LatticeAlignment.h), and that auto placement keeps
 // boundary walls off its probe planes where the naive uniform fit puts them on.
-#include "probes/LatticeAlignment.h"
-#include "probes/AutoPlacement.h"
-#include "probes/MemoryReport.h"
+#include "probes/placement/LatticeAlignment.h"
+#include "probes/placement/AutoPlacement.h"
+#include "probes/store/MemoryReport.h"
 #include "scene/SceneLoader.h"
 
 #include <gtest/gtest.h>

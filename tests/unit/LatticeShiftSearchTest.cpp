@@ -1,7 +1,7 @@
-// The measured lattice search (renderer/probes/LatticeShiftSearch.h) against synthetic error
+// The measured lattice search (renderer/probes/placement/LatticeShiftSearch.h) against synthetic error
 // functions: it finds a bowl's minimum axis by axis, ignores gains under the margin, skips
 // shifts that do not fit, and moves nested volumes together.
-#include "probes/LatticeShiftSearch.h"
+#include "probes/placement/LatticeShiftSearch.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

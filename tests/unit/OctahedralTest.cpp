@@ -3,7 +3,7 @@
 #include "probes/Octahedral.h"
 #include "probes/ProbeLayout.h"
 #include "probes/ProbeSampler.h"
-#include "probes/RayDirections.h"
+#include "probes/bake/RayDirections.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
-// The placement error estimate (renderer/probes/PlacementError.h) that the lattice search
+// The placement error estimate (renderer/probes/placement/PlacementError.h) that the lattice search
 // ranks shifts by: zero where probes are exact, lower for a grid that resolves a shadow than
 // for one that does not, the same on any thread count, and clear errors.
-#include "probes/PlacementError.h"
+#include "probes/placement/PlacementError.h"
 #include "ProbeTestScenes.h"
 #include "core/Error.h"
 

@@ -1,7 +1,7 @@
 // Probe files with a valid checksum but impossible contents (written by something else, or
 // crafted): each is one line "probes.pbp: problem", never NaN or wild offsets in the sampler.
 #include "core/Error.h"
-#include "probes/ProbeFile.h"
+#include "probes/store/ProbeFile.h"
 
 #include <cmath>
 #include <cstring>

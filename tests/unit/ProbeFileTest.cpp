@@ -1,11 +1,11 @@
 // The probe data file: round trip, and clear errors for truncated, wrong-version and corrupted
 // files; storage formats and the memory report's reference figures.
-#include "probes/ProbeFile.h"
+#include "probes/store/ProbeFile.h"
 #include "ProbeTestScenes.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
-#include "probes/Baker.h"
-#include "probes/MemoryReport.h"
+#include "probes/bake/Baker.h"
+#include "probes/store/MemoryReport.h"
 #include "support/TestEnv.h"
 
 #include <gtest/gtest.h>

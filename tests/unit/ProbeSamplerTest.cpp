@@ -2,7 +2,7 @@
 // volume choice, edge fade, invalid probes, and degenerate input.
 #include "probes/ProbeSampler.h"
 #include "probes/Octahedral.h"
-#include "probes/RayDirections.h"
+#include "probes/bake/RayDirections.h"
 
 #include <cmath>
 #include <cstring>

@@ -1,19 +1,19 @@
 // Sparse probe storage (issue 9): the packed tile layout and its inverse, which probes the
 // surface test keeps, the probe file round trip of a sparse set, and the guarantee that lets
 // sparse storage drop probes at all: no surface point's irradiance changes.
-#include "probes/SparseStorage.h"
+#include "probes/store/SparseStorage.h"
 #include "ProbeTestScenes.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "fuzz/FuzzInputs.h"
-#include "probes/AutoVolume.h"
-#include "probes/Baker.h"
-#include "probes/Hash.h"
-#include "probes/MemoryReport.h"
-#include "probes/ProbeFile.h"
+#include "probes/placement/AutoVolume.h"
+#include "probes/bake/Baker.h"
+#include "probes/store/Hash.h"
+#include "probes/store/MemoryReport.h"
+#include "probes/store/ProbeFile.h"
 #include "probes/ProbeSampler.h"
-#include "probes/RayScene.h"
-#include "probes/SparseLayout.h"
+#include "probes/bake/RayScene.h"
+#include "probes/store/SparseLayout.h"
 #include "scene/SceneLoader.h"
 #include "support/TestEnv.h"
 

@@ -1,10 +1,10 @@
-// The tile code in the probe state's w (probes/SparseLayout.h TileCode, decoded by ddgiTile in
+// The tile code in the probe state's w (probes/store/SparseLayout.h TileCode, decoded by ddgiTile in
 // shaders/common_ddgi_tile.glsl): column, row and layer as bit fields, exact in the RGBA32F
 // state texture up to 24 bits, a clear error beyond, and the one encoding GpuProbes uploads
 // and the cost model's tile layout agree on.
 #include "core/Error.h"
 #include "probes/ProbeVolume.h"
-#include "probes/SparseLayout.h"
+#include "probes/store/SparseLayout.h"
 
 #include <gtest/gtest.h>
 

@@ -3,8 +3,8 @@
 // file, and 1 - the stored bytes unchanged - for a bake of ordinary brightness.
 #include "probes/StorageScale.h"
 #include "ProbeTestScenes.h"
-#include "probes/Baker.h"
-#include "probes/ProbeFile.h"
+#include "probes/bake/Baker.h"
+#include "probes/store/ProbeFile.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -1,10 +1,10 @@
-// The direct gather at surface points (renderer/probes/SurfaceGather.h), bench_placement's
+// The direct gather at surface points (renderer/probes/bake/SurfaceGather.h), bench_placement's
 // ground truth, against closed forms: a uniform sky, an emissive room with and without the
 // probes of an earlier bounce, and a sunlit floor seen from above (a rectangle's view factor).
-#include "probes/SurfaceGather.h"
+#include "probes/bake/SurfaceGather.h"
 #include "ProbeTestScenes.h"
 #include "core/Error.h"
-#include "probes/Baker.h"
+#include "probes/bake/Baker.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

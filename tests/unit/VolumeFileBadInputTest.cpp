@@ -1,7 +1,7 @@
 // Volumes TOML files with out-of-range values: each is one line "vols.toml:LINE: problem"
 // naming the key, never an infinite or NaN volume or sun that reaches the bake.
 #include "core/Error.h"
-#include "probes/VolumeFile.h"
+#include "probes/store/VolumeFile.h"
 
 #include <cmath>
 #include <gtest/gtest.h>

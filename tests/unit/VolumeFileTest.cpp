@@ -1,8 +1,8 @@
 // Probe volumes: TOML parsing and its errors (file:line: key), nesting rules, auto fitting,
 // scenario resolution.
-#include "probes/VolumeFile.h"
+#include "probes/store/VolumeFile.h"
 #include "core/Error.h"
-#include "probes/AutoVolume.h"
+#include "probes/placement/AutoVolume.h"
 #include "probes/ProbeVolume.h"
 #include "probes/Scenario.h"
 

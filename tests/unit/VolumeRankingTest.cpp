@@ -1,14 +1,14 @@
-// Volume ranking (costmodel/VolumeRanking.h), its sidecar file (probes/VolumeRanksFile.h) and
-// gi.volume_lod=rank_budget_mib (costmodel/GiVolumeLod.h), GL-free. The probe set is synthetic
+// Volume ranking (costmodel/VolumeRanking.h), its sidecar file (probes/store/VolumeRanksFile.h) and
+// gi.volume_lod=rank_budget_mib (profile/GiVolumeLod.h), GL-free. The probe set is synthetic
 // over the built-in `rooms`: a root over the house lit uniformly, a child over the sunlit room
 // lit five times brighter (it obviously matters in the sunlit room's view), and a child over
 // the dark room that view never sees, listed first so that file order would pick it.
 #include "gl/GiSyntheticProbes.h"
 
 #include "core/Error.h"
-#include "costmodel/GiVolumeLod.h"
+#include "profile/GiVolumeLod.h"
 #include "costmodel/VolumeRanking.h"
-#include "probes/VolumeRanksFile.h"
+#include "probes/store/VolumeRanksFile.h"
 #include "profile/VolumeLod.h"
 #include "scene/SceneLoader.h"
 #include "support/TestEnv.h"
@@ -76,7 +76,7 @@ TEST(VolumeRanking, TheVolumeThatCoversTheViewOutranksTheOneOffScreen) {
     EXPECT_GT(house.loss, seen.loss);
     EXPECT_EQ(house.bytes,
               house.bytes > 0
-                  ? unseen.bytes + seen.bytes + render::gpuVolumeBytes(set.volumes[0], set.format())
+                  ? unseen.bytes + seen.bytes + profile::gpuVolumeBytes(set.volumes[0], set.format())
                   : 0);
     EXPECT_EQ(house.lookupsSaved, house.pixels) << "nothing else covers the house";
     EXPECT_EQ(seen.lookupsSaved, 0) << "the parent takes the child's pixels over";
@@ -97,11 +97,11 @@ TEST(VolumeRanking, UniformLightingMakesAVisibleChildWorthNothing) {
 TEST(VolumeRanking, RankBudgetDropsTheLowValueVolumeFirst) {
     probes::ProbeSet set = roomsProbes();
     const auto bytes = [&](int v) {
-        return render::gpuVolumeBytes(set.volumes[size_t(v)], set.format());
+        return profile::gpuVolumeBytes(set.volumes[size_t(v)], set.format());
     };
     const double withoutOneChild = mibOf(bytes(0) + bytes(1));
     auto kept = [&](double mib) {
-        return render::selectVolumes(set, {profile::VolumeLod::Mode::RankBudgetMiB, {}, mib});
+        return profile::selectVolumes(set, {profile::VolumeLod::Mode::RankBudgetMiB, {}, mib});
     };
     EXPECT_THROW(kept(100.0), Error) << "no ranks: an error even when everything fits";
     try {
@@ -113,7 +113,7 @@ TEST(VolumeRanking, RankBudgetDropsTheLowValueVolumeFirst) {
     }
     // budget_mib (coarsest first, then file order) keeps the child the view never sees...
     EXPECT_EQ(
-        render::selectVolumes(set, {profile::VolumeLod::Mode::BudgetMiB, {}, withoutOneChild}),
+        profile::selectVolumes(set, {profile::VolumeLod::Mode::BudgetMiB, {}, withoutOneChild}),
         (std::vector<int>{0, 1}));
     // ...rank_budget_mib keeps the one that matters.
     set.ranks = rank(set, {westWall()});
@@ -121,7 +121,7 @@ TEST(VolumeRanking, RankBudgetDropsTheLowValueVolumeFirst) {
     EXPECT_EQ(kept(withoutOneChild), (std::vector<int>{0, 2}));
     EXPECT_EQ(kept(mibOf(bytes(0)) * 1.01), (std::vector<int>{0}));
     EXPECT_THROW(kept(mibOf(bytes(0)) * 0.5), Error) << "keeps no volume";
-    const std::vector<render::RankDropStep> order = render::rankDropOrder(set);
+    const std::vector<profile::RankDropStep> order = profile::rankDropOrder(set);
     ASSERT_EQ(order.size(), 3u);
     EXPECT_EQ(order[0].volume, 1);
     EXPECT_EQ(order[1].volume, 2);
@@ -158,7 +158,7 @@ TEST(VolumeRanking, SidecarRoundTripsAndIsIgnoredWhenStale) {
     probes::attachVolumeRanks(set, probeFile);
     EXPECT_FALSE(set.ranks.has_value());
     EXPECT_NE(set.ranksNote.find("not a volume ranks file"), std::string::npos) << set.ranksNote;
-    EXPECT_THROW(render::selectVolumes(set, profile::parseVolumeLod("rank_budget_mib:1")), Error);
+    EXPECT_THROW(profile::selectVolumes(set, profile::parseVolumeLod("rank_budget_mib:1")), Error);
 }
 
 } // namespace

@@ -4,7 +4,7 @@
 #include "unit/ProbeTestScenes.h"
 
 #include "core/Error.h"
-#include "probes/AutoVolume.h"
+#include "probes/placement/AutoVolume.h"
 #include "scene/SceneLoader.h"
 #include "views/WorstCaseView.h"
 

@@ -1,0 +1,76 @@
+# pb_check_layering(): the include direction, enforced at configure time.
+#
+# Every pb_library owns one folder. A source file in library A may include a project header only
+# from A's own folder or from the folder of a library A links (directly or through others).
+# Anything else - an include upwards, sideways, or into a cycle - stops the configure with the
+# file, the header and the missing link, so the layering in renderer/README.md cannot rot
+# silently: static libraries alone would still link such a program, because every executable
+# links the whole stack.
+#
+# Includes are resolved as the compiler does (renderer/ first, then the project root); headers
+# outside every library folder (system, generated, tests) are not checked.
+function(_pb_layering_closure lib out)
+    set(_seen)
+    set(_todo ${lib})
+    while(_todo)
+        list(POP_FRONT _todo _cur)
+        if(_cur IN_LIST _seen)
+            continue()
+        endif()
+        list(APPEND _seen ${_cur})
+        get_property(_deps GLOBAL PROPERTY PB_LIBRARY_DEPS_${_cur})
+        foreach(_d IN LISTS _deps)
+            get_property(_is_dir GLOBAL PROPERTY PB_LIBRARY_DIR_${_d} SET)
+            if(_is_dir)
+                list(APPEND _todo ${_d})
+            endif()
+        endforeach()
+    endwhile()
+    set(${out} ${_seen} PARENT_SCOPE)
+endfunction()
+
+function(pb_check_layering)
+    get_property(_libs GLOBAL PROPERTY PB_LIBRARIES)
+    foreach(_lib IN LISTS _libs)
+        get_property(_dir GLOBAL PROPERTY PB_LIBRARY_DIR_${_lib})
+        get_filename_component(_dir "${_dir}" REALPATH)
+        set(_owner_${_dir} ${_lib})
+    endforeach()
+    set(_errors)
+    foreach(_lib IN LISTS _libs)
+        get_property(_dir GLOBAL PROPERTY PB_LIBRARY_DIR_${_lib})
+        _pb_layering_closure(${_lib} _allowed)
+        file(GLOB _files ${_dir}/*.h ${_dir}/*.cpp)
+        foreach(_f IN LISTS _files)
+            file(STRINGS ${_f} _incs REGEX "^#include \"[^\"]+\"")
+            foreach(_line IN LISTS _incs)
+                string(REGEX REPLACE "^#include \"([^\"]+)\".*" "\\1" _inc "${_line}")
+                set(_hit)
+                foreach(_base ${PROJECT_SOURCE_DIR}/renderer ${PROJECT_SOURCE_DIR})
+                    if(NOT _hit AND EXISTS ${_base}/${_inc})
+                        set(_hit ${_base}/${_inc})
+                    endif()
+                endforeach()
+                if(NOT _hit)
+                    continue()
+                endif()
+                get_filename_component(_hdir "${_hit}" DIRECTORY)
+                get_filename_component(_hdir "${_hdir}" REALPATH)
+                if(NOT DEFINED _owner_${_hdir})
+                    continue()
+                endif()
+                set(_owner ${_owner_${_hdir}})
+                if(NOT _owner IN_LIST _allowed)
+                    file(RELATIVE_PATH _rel ${PROJECT_SOURCE_DIR} ${_f})
+                    list(APPEND _errors
+                         "  ${_rel} (${_lib}) includes \"${_inc}\" (${_owner}), which ${_lib} does not link")
+                endif()
+            endforeach()
+        endforeach()
+    endforeach()
+    if(_errors)
+        list(JOIN _errors "\n" _msg)
+        message(FATAL_ERROR "probebench layering: an include against the library direction "
+                            "(cmake/Layering.cmake):\n${_msg}")
+    endif()
+endfunction()

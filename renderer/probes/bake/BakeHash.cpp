@@ -1,0 +1,92 @@
+// The bake cache key: a hash of everything the probe data depends on. Thread count is not in
+// it (it never changes the result). Bump kBakeAlgorithmVersion whenever the bake's output
+// changes for the same inputs, so stale files are re-baked rather than reused.
+#include "probes/bake/Baker.h"
+#include "probes/store/Hash.h"
+#include "probes/store/ProbeFile.h"
+#include "probes/bake/RayScene.h"
+
+namespace pb::probes {
+namespace {
+
+constexpr std::uint32_t kBakeAlgorithmVersion = 2; // 2: far scenes bake in a moved frame
+
+void hashSun(Hasher& h, const scene::Sun& s) {
+    h.pod(std::uint8_t(s.enabled));
+    h.pod(s.toSun);
+    h.pod(s.color);
+    h.pod(s.intensity);
+}
+
+void hashScene(Hasher& h, const scene::Scene& s) {
+    const auto mats = summariseMaterials(s);
+    h.pod(std::uint64_t(mats.size()));
+    for (const MaterialSummary& m : mats) {
+        h.pod(m.albedo);
+        h.pod(m.emissive);
+        h.pod(std::uint8_t(m.doubleSided));
+        h.pod(std::uint8_t(m.invisible));
+    }
+    // Geometry through the instances that are baked: primitive data + transform.
+    std::uint64_t baked = 0;
+    for (const scene::Instance& inst : s.instances) {
+        if (inst.dynamic || inst.primitive < 0 || inst.primitive >= int(s.primitives.size()))
+            continue;
+        const scene::Primitive& p = s.primitives[size_t(inst.primitive)];
+        ++baked;
+        h.pod(inst.transform);
+        h.pod(std::int32_t(p.material));
+        h.pod(std::uint64_t(p.positions.size()));
+        h.bytes(p.positions.data(), p.positions.size() * sizeof(glm::vec3));
+        h.pod(std::uint64_t(p.indices.size()));
+        h.bytes(p.indices.data(), p.indices.size() * sizeof(std::uint32_t));
+    }
+    h.pod(baked);
+    h.pod(std::uint64_t(s.lights.size()));
+    for (const scene::Light& l : s.lights) {
+        h.pod(std::uint32_t(l.type));
+        h.pod(l.color);
+        h.pod(l.intensity);
+        h.pod(l.position);
+        h.pod(l.direction);
+        h.pod(l.range);
+        h.pod(l.innerConeAngle);
+        h.pod(l.outerConeAngle);
+    }
+}
+
+} // namespace
+
+std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& r) {
+    Hasher h;
+    h.pod(kBakeAlgorithmVersion);
+    h.pod(kProbeFileVersion);
+    hashScene(h, scene);
+    h.pod(std::uint64_t(r.volumes.size()));
+    for (const ProbeVolume& v : r.volumes) {
+        h.str(v.name);
+        h.pod(v.center);
+        h.pod(v.rotation);
+        h.pod(v.halfExtents);
+        h.pod(v.counts);
+        h.str(v.parent);
+        h.pod(v.edgeBlend);
+    }
+    h.pod(std::uint64_t(r.scenarios.size()));
+    for (const Scenario& s : r.scenarios) {
+        h.str(s.name);
+        hashSun(h, s.sun);
+        h.pod(s.sky.radiance);
+    }
+    const BakeSettings& b = r.settings;
+    h.pod(std::int32_t(b.raysPerProbe));
+    h.pod(std::int32_t(b.bounces));
+    h.pod(b.seed);
+    h.pod(std::uint32_t(b.format));
+    h.pod(std::uint8_t(b.relocate));
+    h.pod(b.backfaceThreshold);
+    h.pod(std::uint8_t(r.sparse));
+    return h.value();
+}
+
+} // namespace pb::probes

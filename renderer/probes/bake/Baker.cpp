@@ -1,0 +1,333 @@
+#include "probes/bake/Baker.h"
+
+#include "core/Error.h"
+#include "probes/bake/BakeOrigin.h"
+#include "probes/bake/BakePhaseClock.h"
+#include "probes/bake/GeometryPass.h"
+#include "probes/bake/NestingBlend.h"
+#include "core/ParallelFor.h"
+#include "probes/bake/RadiancePass.h"
+#include "probes/bake/RayDirections.h"
+#include "probes/bake/RayScene.h"
+#include "probes/store/SparseStorage.h"
+#include "probes/StorageScale.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <optional>
+
+namespace pb::probes {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t0) {
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+// Flat probe numbering over all volumes.
+struct ProbeIndex {
+    std::vector<std::size_t> first; // first flat index of each volume, plus the total
+    explicit ProbeIndex(const std::vector<ProbeVolume>& vols) {
+        first.push_back(0);
+        for (const auto& v : vols)
+            first.push_back(first.back() + std::size_t(v.probeCount()));
+    }
+    std::size_t total() const { return first.back(); }
+    std::pair<int, int> locate(std::size_t flat) const {
+        std::size_t v = 0;
+        while (flat >= first[v + 1])
+            ++v;
+        return {int(v), int(flat - first[v])};
+    }
+};
+
+QuantisationError measureQuantisation(const std::vector<float>& before, const ProbeTexture& after,
+                                      QuantisationError e) {
+    const int ch = after.shape.channels, used = ch == 4 ? 3 : ch; // irradiance alpha is 1
+    float peak = 0.0f;
+    for (float v : before)
+        peak = std::max(peak, std::abs(v));
+    const double floor = std::max(1e-3 * peak, 1e-12);
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < before.size(); i += std::size_t(ch))
+        for (int c = 0; c < used; ++c) {
+            double a = before[i + std::size_t(c)], b = after.texels[i + std::size_t(c)];
+            double rel = std::abs(b - a) / std::max(std::abs(a), floor);
+            e.maxRelative = std::max(e.maxRelative, rel);
+            sum += rel;
+            ++n;
+        }
+    e.meanRelative = n ? sum / double(n) : 0.0;
+    return e;
+}
+
+void checkRequest(const BakeRequest& r) {
+    if (r.volumes.empty()) throw Error("bake: no probe volumes");
+    if (r.scenarios.empty()) throw Error("bake: no lighting scenario");
+    if (r.settings.raysPerProbe < 1 || r.settings.raysPerProbe > 65536)
+        throw Error("--rays: must be in [1, 65536] (got " +
+                    std::to_string(r.settings.raysPerProbe) + ")");
+    if (r.settings.bounces < 1 || r.settings.bounces > 64)
+        throw Error("--bounces: must be in [1, 64] (got " + std::to_string(r.settings.bounces) +
+                    ")");
+    if (!(r.settings.backfaceThreshold >= 0.0f && r.settings.backfaceThreshold <= 1.0f))
+        throw Error("backface threshold must be in [0, 1]");
+}
+
+} // namespace
+
+ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats* statsOut,
+                    const BakeProgressFn& progress) {
+    checkRequest(req);
+    // Far from the origin: bake in a moved frame (BakeOrigin.h), then this returns origin 0.
+    if (const glm::dvec3 origin = bakeOrigin(scene, req.volumes); origin != glm::dvec3(0.0))
+        return bakeProbesAround(origin, scene, req, statsOut, progress);
+    const auto t0 = Clock::now();
+    const std::vector<int> parents = validateVolumes(req.volumes, "volumes");
+    const BakeSettings& cfg = req.settings;
+    const int threads = resolveThreadCount(req.threads);
+    std::optional<RayScene> own;
+    if (!req.rayScene || req.recordRays) own.emplace(scene);
+    const RayScene& rs = own ? *own : *req.rayScene;
+    const double buildSeconds = since(t0);
+    if (req.recordRays) own->startRecording();
+    BakePhaseClock phases; // the tracing time is the sum of its phases
+
+    ProbeSet set;
+    set.inputHash = bakeInputHash(scene, req);
+    set.settings = cfg;
+    set.volumes = req.volumes;
+    set.scenarios = req.scenarios;
+    for (const ProbeVolume& v : set.volumes) {
+        set.states.emplace_back(size_t(v.probeCount()));
+        set.visibility.push_back(ProbeTexture::make(visibilityShape(v.counts)));
+    }
+
+    const ProbeIndex index(set.volumes);
+    const std::size_t stages = 1 + req.scenarios.size() * size_t(cfg.bounces);
+    std::size_t doneBefore = 0;
+    auto report = [&](const std::string& stage) {
+        return [&, stage](std::size_t done) {
+            if (progress) progress({stage, doneBefore + done, stages * index.total()});
+        };
+    };
+    std::vector<RayCounters> counters(static_cast<size_t>(threads));
+    RadianceSlab slab; // reused by every pass (keeps its buffers)
+
+    // 1. Geometry.
+    {
+        const auto dirs = passDirections(cfg.raysPerProbe, geometryStream(cfg.seed));
+        const ProbeConvolution conv(dirs);
+        std::vector<GeometryScratch> scratch(static_cast<size_t>(threads));
+        std::vector<std::vector<float>> vis(
+            static_cast<size_t>(threads),
+            std::vector<float>(kVisibilityInterior * kVisibilityInterior * 2));
+        parallelFor(
+            index.total(), threads,
+            [&](std::size_t flat, int t) {
+                auto [v, p] = index.locate(flat);
+                const ProbeVolume& vol = set.volumes[size_t(v)];
+                glm::ivec3 c = vol.probeCoords(p);
+                float* out = vis[size_t(t)].data();
+                ProbeState& st = set.states[size_t(v)][size_t(p)];
+                bakeProbeGeometry(rs, vol, c, dirs, conv, cfg, scratch[size_t(t)], st, out,
+                                  counters[size_t(t)].primary);
+                if (!st.valid) return;
+                float* tile = tileOrigin(set.visibility[size_t(v)], c, kVisibilityTile);
+                const int pitch = set.visibility[size_t(v)].shape.width;
+                for (int y = 0; y < kVisibilityInterior; ++y)
+                    for (int x = 0; x < kVisibilityInterior; ++x)
+                        for (int ch = 0; ch < 2; ++ch)
+                            tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 2 + size_t(ch)] =
+                                out[(y * kVisibilityInterior + x) * 2 + ch];
+            },
+            report("geometry"));
+        doneBefore += index.total();
+        for (ProbeTexture& t : set.visibility)
+            fillAllBorders(t, kVisibilityInterior);
+        phases.mark("geometry");
+    }
+
+    // Sparse storage keeps only the surface corners (SparseStorage.h), and the radiance of a
+    // kept probe reads only kept probes: a later pass looks up the previous one at surface
+    // hits, i.e. at surface cells' corners. So the others' radiance is not traced. Except in
+    // a parent volume: its children's rings are blended towards it at ring positions, which
+    // need not lie on a surface. Their geometry pass still ran: the states stay as dense.
+    std::vector<std::vector<std::uint8_t>> keep;
+    if (req.sparse) {
+        const std::vector<WorldTriangle> triangles = staticBakeTriangles(scene);
+        for (size_t v = 0; v < set.volumes.size(); ++v)
+            keep.push_back(surfaceCornerProbes(set.volumes[v], parents[v] < 0, triangles));
+    }
+    std::vector<bool> isParent(set.volumes.size(), false);
+    for (int p : parents)
+        if (p >= 0) isParent[size_t(p)] = true;
+    auto radianceNeeded = [&](int v, int p) {
+        if (!set.states[size_t(v)][size_t(p)].valid) return false;
+        return keep.empty() || isParent[size_t(v)] || keep[size_t(v)][size_t(p)] != 0;
+    };
+
+    // 2. Radiance, per scenario and pass.
+    for (size_t s = 0; s < req.scenarios.size(); ++s) {
+        const Scenario& sc = req.scenarios[s];
+        std::vector<ProbeTexture> prev;
+        for (int pass = 1; pass <= cfg.bounces; ++pass) {
+            std::vector<ProbeTexture> cur;
+            for (const ProbeVolume& v : set.volumes)
+                cur.push_back(ProbeTexture::make(irradianceShape(v.counts)));
+            std::vector<SamplerVolume> prevViews, curViews;
+            std::vector<ProbeTexture*> targets;
+            for (size_t v = 0; v < set.volumes.size(); ++v) {
+                if (!prev.empty())
+                    prevViews.push_back({&set.volumes[v], set.states[v].data(), &prev[v],
+                                         &set.visibility[v], parents[v] < 0});
+                curViews.push_back({&set.volumes[v], set.states[v].data(), &cur[v],
+                                    &set.visibility[v], parents[v] < 0});
+                targets.push_back(&cur[v]);
+            }
+            const ProbeSampler prevSampler(prevViews);
+            const ProbeSampler* previous = prev.empty() ? nullptr : &prevSampler;
+            const auto dirs =
+                passDirections(cfg.raysPerProbe, radianceStream(cfg.seed, int(s), pass));
+            const ProbeConvolution conv(dirs);
+            std::vector<std::vector<float>> irr(
+                size_t(threads), std::vector<float>(kIrradianceInterior * kIrradianceInterior * 3));
+            std::string stage =
+                sc.name + " pass " + std::to_string(pass) + "/" + std::to_string(cfg.bounces);
+            // Slabs of probes (RadiancePass.h): about 2^18 rays each, so the indirect lookups
+            // of a slab share cells without holding a whole pass's hits in memory.
+            const std::size_t slabProbes =
+                req.slabProbes > 0 ? std::size_t(req.slabProbes)
+                                   : std::max<std::size_t>(1, (std::size_t(1) << 18) /
+                                                                  std::size_t(cfg.raysPerProbe));
+            phases.mark("setup");
+            // Convolves probe `first + i` of the slab into its irradiance tile.
+            auto writeTile = [&](std::size_t first, std::size_t i, int t) {
+                auto [v, p] = index.locate(first + i);
+                const ProbeVolume& vol = set.volumes[size_t(v)];
+                glm::ivec3 c = vol.probeCoords(p);
+                float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
+                const int pitch = cur[size_t(v)].shape.width;
+                for (int y = 0; y < kIrradianceTile; ++y)
+                    for (int x = 0; x < kIrradianceTile; ++x)
+                        tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
+                if (!radianceNeeded(v, p)) return;
+                float* out = irr[size_t(t)].data();
+                slab.convolve(i, conv, out);
+                for (int y = 0; y < kIrradianceInterior; ++y)
+                    for (int x = 0; x < kIrradianceInterior; ++x)
+                        for (int ch = 0; ch < 3; ++ch)
+                            tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 + size_t(ch)] =
+                                out[(y * kIrradianceInterior + x) * 3 + ch];
+            };
+            for (std::size_t first = 0; first < index.total(); first += slabProbes) {
+                const std::size_t count = std::min(slabProbes, index.total() - first);
+                slab.reset(count, cfg.raysPerProbe);
+                // Without a previous pass a probe's radiance is final once traced: it is
+                // convolved right away, while its rays are still in the cache.
+                parallelFor(
+                    count, threads,
+                    [&](std::size_t i, int t) {
+                        auto [v, p] = index.locate(first + i);
+                        const ProbeVolume& vol = set.volumes[size_t(v)];
+                        const ProbeState& st = set.states[size_t(v)][size_t(p)];
+                        if (radianceNeeded(v, p)) {
+                            glm::ivec3 c = vol.probeCoords(p);
+                            slab.trace(i, rs, sc, scene.lights, vol.localToWorldRotation(),
+                                       vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
+                                       counters[size_t(t)]);
+                        }
+                        if (!previous) writeTile(first, i, t);
+                    },
+                    [&, first](std::size_t done) {
+                        if (!previous) report(stage)(first + done);
+                    });
+                phases.mark("trace");
+                if (!previous) continue;
+                slab.lookUp(*previous, threads);
+                phases.mark("lookup");
+                parallelFor(
+                    count, threads, [&](std::size_t i, int t) { writeTile(first, i, t); },
+                    [&, first](std::size_t done) { report(stage)(first + done); });
+                phases.mark("convolve");
+            }
+            doneBefore += index.total();
+            for (ProbeTexture& t : cur)
+                fillAllBorders(t, kIrradianceInterior);
+            blendNestedRings(set.volumes, parents, curViews, targets);
+            phases.mark("convolve");
+            prev = std::move(cur);
+        }
+        set.irradiance.push_back(std::move(prev));
+    }
+    const std::vector<BakePhase> phaseTimes = phases.take();
+    double traceSeconds = 0.0, traceCpuSeconds = 0.0;
+    for (const BakePhase& p : phaseTimes) {
+        traceSeconds += p.wallSeconds;
+        traceCpuSeconds += p.cpuSeconds;
+    }
+    if (req.recordRays) *req.recordRays = own->stopRecording();
+
+    // 3. Storage format.
+    const auto tq = Clock::now();
+    std::vector<ProbeTexture*> all;
+    std::vector<QuantisationError> errors;
+    for (size_t v = 0; v < set.visibility.size(); ++v) {
+        all.push_back(&set.visibility[v]);
+        errors.push_back({set.volumes[v].name, "visibility"});
+    }
+    for (size_t s = 0; s < set.irradiance.size(); ++s) {
+        assignStorageScale(set.irradiance[s], cfg.format); // 1 unless out of range
+        for (size_t v = 0; v < set.irradiance[s].size(); ++v) {
+            all.push_back(&set.irradiance[s][v]);
+            errors.push_back({set.volumes[v].name, "irradiance " + set.scenarios[s].name});
+        }
+    }
+    parallelFor(all.size(), threads, [&](std::size_t i, int) {
+        if (cfg.format == StorageFormat::Rgba32f) { // stores the floats as they are: no error
+            quantise(*all[i], cfg.format);
+            return;
+        }
+        std::vector<float> before = all[i]->texels;
+        quantise(*all[i], cfg.format);
+        errors[i] = measureQuantisation(before, *all[i], errors[i]);
+    });
+    // Invalid as baked, before sparse storage marks its absent probes invalid too.
+    std::vector<std::size_t> bakedInvalidPerVolume;
+    for (const auto& vs : set.states)
+        bakedInvalidPerVolume.push_back(std::size_t(
+            std::count_if(vs.begin(), vs.end(), [](const ProbeState& p) { return !p.valid; })));
+    if (req.sparse) storeOnly(set, keep);
+
+    if (statsOut) {
+        BakeStats st;
+        st.probes = set.probeCount();
+        st.invalidProbes = std::accumulate(bakedInvalidPerVolume.begin(),
+                                           bakedInvalidPerVolume.end(), std::size_t(0));
+        st.invalidPerVolume = std::move(bakedInvalidPerVolume);
+        st.storedProbes = set.storedCount();
+        for (const auto& vs : set.states)
+            for (const ProbeState& p : vs)
+                st.relocatedProbes += p.offset != glm::vec3(0.0f);
+        for (const RayCounters& c : counters) {
+            st.primaryRays += c.primary;
+            st.shadowRays += c.shadow;
+        }
+        st.triangles = rs.triangleCount();
+        st.buildSeconds = buildSeconds;
+        st.traceSeconds = traceSeconds;
+        st.traceCpuSeconds = traceCpuSeconds;
+        st.phases = phaseTimes;
+        st.quantiseSeconds = since(tq);
+        st.seconds = since(t0);
+        st.threads = threads;
+        st.quantisation = std::move(errors);
+        *statsOut = st;
+    }
+    return set;
+}
+
+} // namespace pb::probes

@@ -1,0 +1,85 @@
+#pragma once
+// The probe bake: Embree on all cores, every probe independent (same inputs + seed give
+// identical bytes for any thread count).
+//
+//   1. geometry pass (once): relocation, classification, visibility  (GeometryPass.h)
+//   2. per scenario, passes 1..bounces: irradiance of every valid probe (RadiancePass.h),
+//      octahedral borders, nested-ring blend (NestingBlend.h); pass b reads pass b-1
+//   3. quantise to the storage format (the sampler then sees what the GPU will sample)
+#include "probes/ProbeSet.h"
+#include "probes/bake/RayScene.h"
+#include "scene/Scene.h"
+
+#include <functional>
+#include <string>
+
+namespace pb::probes {
+
+struct BakeRequest {
+    std::vector<ProbeVolume> volumes;
+    std::vector<Scenario> scenarios;
+    BakeSettings settings;
+    int threads = 0; // 0 = all cores; never changes the result
+    // Sparse storage (SparseStorage.h): after the bake, only valid probes at the corners of
+    // cells with static surface stay stored. Part of the input hash.
+    bool sparse = false;
+    // Probes traced before their indirect lookups are sorted and done (RadiancePass.h);
+    // 0 = about 2^18 rays per slab. Memory and speed only: never changes the result.
+    int slabProbes = 0;
+    // Benchmark instrumentation (not an input): when set, receives every ray the passes
+    // traced, so bench_bake can replay exactly the same rays against bare Embree.
+    std::vector<RecordedRay>* recordRays = nullptr;
+    // Not an input either: trace against this BVH of `scene` instead of building one (the
+    // placement's trial bakes bake one scene many times). It must be built from the same scene.
+    const RayScene* rayScene = nullptr;
+};
+
+struct BakeProgress {
+    std::string stage;    // e.g. "geometry", "day pass 2/2"
+    std::size_t done = 0; // probes finished over all stages
+    std::size_t total = 0;
+};
+using BakeProgressFn = std::function<void(const BakeProgress&)>;
+
+// What storing in the chosen format cost, per texture: relative error of each channel,
+// |stored - baked| / max(|baked|, 1e-3 * the texture's largest value).
+struct QuantisationError {
+    std::string volume, texture; // texture: "visibility" or "irradiance <scenario>"
+    double maxRelative = 0.0, meanRelative = 0.0;
+};
+
+// Where the tracing time went, summed over passes (bench_bake reports it).
+struct BakePhase {
+    std::string name; // "geometry", "setup", "trace", "lookup", "convolve"
+    double wallSeconds = 0.0, cpuSeconds = 0.0; // cpu: the whole process, all threads
+};
+
+struct BakeStats {
+    // invalidProbes: inside geometry, as the geometry pass classified them (sparse storage
+    // then stores none of them, and marks its absent probes invalid too: ProbeCounts.h).
+    std::size_t probes = 0, invalidProbes = 0, relocatedProbes = 0;
+    std::size_t storedProbes = 0;              // all probes unless sparse
+    std::vector<std::size_t> invalidPerVolume; // invalidProbes per volume
+    std::uint64_t primaryRays = 0, shadowRays = 0;
+    std::size_t triangles = 0;
+    double seconds = 0.0;      // whole bake, wall clock
+    double buildSeconds = 0.0; // Embree BVH build
+    double traceSeconds = 0.0; // geometry + radiance passes (all the ray tracing)
+    // CPU seconds of the whole process (all threads) over traceSeconds: unlike the wall time
+    // it hardly changes when other processes share the cores (bench_bake).
+    double traceCpuSeconds = 0.0;
+    std::vector<BakePhase> phases; // traceSeconds split up (their sums)
+    double quantiseSeconds = 0.0;  // encoding to the storage format
+    int threads = 1;
+    std::vector<QuantisationError> quantisation;
+};
+
+// Throws pb::Error for invalid volumes, no scenario, rays < 1 or bounces < 1.
+ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& request,
+                    BakeStats* stats = nullptr, const BakeProgressFn& progress = {});
+
+// Everything the result depends on: scene geometry, materials, lights, volumes, scenarios,
+// settings, the file format version and the bake's algorithm version.
+std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& request);
+
+} // namespace pb::probes

@@ -1,0 +1,88 @@
+#include "probes/bake/ProbeConvolution.h"
+
+#include "probes/Octahedral.h"
+#include "probes/ProbeLayout.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace pb::probes {
+namespace {
+float powVisibility(float c) {
+    static_assert(kVisibilityPower == 50, "update the squaring chain");
+    float c2 = c * c, c4 = c2 * c2, c8 = c4 * c4, c16 = c8 * c8, c32 = c16 * c16;
+    return c32 * c16 * c2;
+}
+} // namespace
+
+void ProbeConvolution::build(const std::vector<glm::vec3>& dirs, int interior, float scale,
+                             bool power, Sparse& out) {
+    const int n = int(dirs.size());
+    std::vector<float> row(static_cast<size_t>(n));
+    out.start.assign(1, 0);
+    for (int j = 0; j < interior; ++j)
+        for (int i = 0; i < interior; ++i) {
+            glm::vec3 nt = octTexelDirection(i, j, interior);
+            double sum = 0.0;
+            int nearest = 0;
+            float best = -2.0f;
+            for (int r = 0; r < n; ++r) {
+                float c = glm::dot(nt, dirs[size_t(r)]);
+                if (c > best) best = c, nearest = r;
+                row[size_t(r)] = c > 0.0f ? (power ? powVisibility(c) : c) : 0.0f;
+                sum += row[size_t(r)];
+            }
+            if (sum > 0.0) {
+                // Drop negligible weights, then renormalise what is kept to sum exactly.
+                double kept = 0.0;
+                for (int r = 0; r < n; ++r)
+                    if (row[size_t(r)] > kWeightPrune * sum) kept += row[size_t(r)];
+                for (int r = 0; r < n; ++r)
+                    if (row[size_t(r)] > kWeightPrune * sum) {
+                        out.ray.push_back(r);
+                        out.weight.push_back(float(double(row[size_t(r)]) * scale / kept));
+                    }
+            } else if (n > 0) {
+                out.ray.push_back(nearest);
+                out.weight.push_back(scale);
+            }
+            out.start.push_back(int(out.ray.size()));
+        }
+}
+
+ProbeConvolution::ProbeConvolution(const std::vector<glm::vec3>& dirs) : rays_(int(dirs.size())) {
+    build(dirs, kIrradianceInterior, float(M_PI), false, irr_);
+    build(dirs, kVisibilityInterior, 1.0f, true, vis_);
+}
+
+void ProbeConvolution::irradiance(const float* rgbx, float* out) const {
+    // GCC/Clang vector type: lane c computes sum_c += w * L_c exactly like a scalar loop.
+    typedef float Float4 __attribute__((vector_size(16)));
+    for (size_t t = 0; t + 1 < irr_.start.size(); ++t) {
+        Float4 sum = {0.0f, 0.0f, 0.0f, 0.0f};
+        for (int e = irr_.start[t]; e < irr_.start[t + 1]; ++e) {
+            Float4 radiance;
+            std::memcpy(&radiance, rgbx + 4 * size_t(irr_.ray[size_t(e)]), sizeof(radiance));
+            sum += irr_.weight[size_t(e)] * radiance;
+        }
+        out[3 * t] = sum[0];
+        out[3 * t + 1] = sum[1];
+        out[3 * t + 2] = sum[2];
+    }
+}
+
+void ProbeConvolution::visibility(const float* d, float* out) const {
+    for (size_t t = 0; t + 1 < vis_.start.size(); ++t) {
+        float m = 0, m2 = 0;
+        for (int e = vis_.start[t]; e < vis_.start[t + 1]; ++e) {
+            int k = vis_.ray[size_t(e)];
+            float w = vis_.weight[size_t(e)];
+            m += w * d[k];
+            m2 += w * d[k] * d[k];
+        }
+        out[2 * t] = m;
+        out[2 * t + 1] = m2;
+    }
+}
+
+} // namespace pb::probes

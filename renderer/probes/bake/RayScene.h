@@ -1,0 +1,98 @@
+#pragma once
+// The bake's view of a scene in Embree 3: the static, visible triangles flattened to world
+// space (one triangle mesh per instance), with what shading a hit needs per geometry.
+//
+// Excluded: dynamic instances (not baked) and invisible materials (BLEND with alpha 0: rays
+// pass through). MASK and other BLEND materials are traced as opaque (no alpha test: see
+// README.md, open problems).
+// Albedo  = baseColor factor x the MEAN linear colour of the base colour texture (sRGB
+// decoded); emissive = emissive factor x the mean linear emissive texture colour. Probes
+// capture low-frequency light, and the mean keeps hits free of UV interpolation.
+#include "scene/Scene.h"
+
+#include <embree3/rtcore.h>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace pb::probes {
+
+struct SurfaceInfo {
+    glm::vec3 albedo{0.8f};
+    glm::vec3 emissive{0.0f};
+    bool doubleSided = false;
+};
+
+struct MaterialSummary {
+    glm::vec3 albedo;
+    glm::vec3 emissive;
+    bool doubleSided;
+    bool invisible;
+};
+
+// Per-material values the bake uses (also hashed as bake inputs).
+std::vector<MaterialSummary> summariseMaterials(const scene::Scene& scene);
+
+struct RayHit {
+    float t = -1.0f; // < 0: miss
+    unsigned geomID = RTC_INVALID_GEOMETRY_ID, primID = 0;
+    bool hit() const { return t >= 0.0f; }
+};
+
+// One traced ray, for replaying a bake's exact rays against bare Embree (bench_bake).
+struct RecordedRay {
+    glm::vec3 origin, dir;
+    float tnear, tfar;
+    bool shadow; // rtcOccluded1 (else rtcIntersect1)
+};
+
+class RayScene {
+public:
+    explicit RayScene(const scene::Scene& scene);
+    ~RayScene();
+    RayScene(const RayScene&) = delete;
+    RayScene& operator=(const RayScene&) = delete;
+
+    RTCScene handle() const { return scene_; }
+    // Closest hit along o + t*d, t in [tnear, tfar]; d need not be unit (t scales with it).
+    RayHit intersect(const glm::vec3& o, const glm::vec3& d, float tnear = 0.0f,
+                     float tfar = std::numeric_limits<float>::infinity()) const;
+    bool occluded(const glm::vec3& o, const glm::vec3& d, float tnear, float tfar) const;
+    const SurfaceInfo& surface(unsigned geomID) const { return surfaces_[geomID]; }
+    // Unit face normal of a triangle, on its front side (glTF: counter-clockwise, flipped for
+    // instances whose transform mirrors).
+    const glm::vec3& faceNormal(unsigned geomID, unsigned primID) const {
+        return normals_[geomID][primID];
+    }
+    const scene::Bounds& bounds() const { return bounds_; }
+    // Starts loading what shading a hit reads (its face normal: a cache miss per hit).
+    void prefetchSurface(const RayHit& h) const {
+        if (h.hit()) __builtin_prefetch(&normals_[h.geomID][h.primID]);
+    }
+
+    // Benchmark instrumentation: while recording, every intersect/occluded call (from any
+    // thread) is logged. Off by default; costs one relaxed atomic load per ray when off.
+    void startRecording();
+    std::vector<RecordedRay> stopRecording();
+    std::size_t triangleCount() const { return triangles_; }
+    // Offset for secondary rays leaving a surface: relative to the scene size, since scenes
+    // range from centimetres to hundreds of metres.
+    float epsilon() const { return epsilon_; }
+
+private:
+    struct Recorder;
+    void record(const RecordedRay& r) const;
+    std::unique_ptr<Recorder> recorder_;
+    RTCDevice device_ = nullptr;
+    RTCScene scene_ = nullptr;
+    std::vector<SurfaceInfo> surfaces_;
+    std::vector<std::vector<glm::vec3>> normals_;
+    scene::Bounds bounds_;
+    std::size_t triangles_ = 0;
+    float epsilon_ = 1e-4f;
+};
+
+// World bounds of what the bake traces (static, visible); empty for an empty scene.
+scene::Bounds staticBakeBounds(const scene::Scene& scene);
+
+} // namespace pb::probes

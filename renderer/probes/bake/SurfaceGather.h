@@ -1,0 +1,44 @@
+#pragma once
+// Irradiance gathered at surface points directly, without probes: the ground truth that a
+// probe lookup at the point approximates (bench_placement's error reference).
+//
+// Each point traces `rays` cosine-distributed directions over the hemisphere of its normal
+// (a Fibonacci spiral on the unit disk lifted to the hemisphere, twisted about the normal by
+// a per-point random angle), shades every hit exactly as a bake pass does (RadiancePass.h:
+// sky on a miss, 0 on the back of single-sided geometry, else emissive + albedo/pi *
+// (direct + indirect)), and returns E = pi * mean(L): for cosine-distributed rays that is the
+// irradiance estimator, exact for uniform radiance.
+//
+// indirect: the probes that carry the light of earlier bounces at the hits (E_indirect), or
+// null for one bounce. A bake with B bounces reads B-1 bounce probes at its hits, so the
+// gather that matches it reads a (B-1)-bounce bake: only the last bounce is gathered exactly,
+// the earlier ones still come through probes (dimmed by one albedo).
+#include "probes/ProbeSampler.h"
+#include "probes/bake/RayScene.h"
+#include "probes/Scenario.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace pb::probes {
+
+struct GatherPoint {
+    glm::vec3 pos, normal; // normal: unit, on the side to gather
+};
+
+struct GatherSettings {
+    int rays = 512;
+    int threads = 0; // 0 = all hardware threads
+    std::uint64_t seed = 0x6A7E5EEDu;
+};
+
+// One irradiance per point (RGB, the scene's linear units); deterministic for any thread count.
+std::vector<glm::vec3> gatherIrradiance(const RayScene& rs, const Scenario& sc,
+                                        const std::vector<scene::Light>& lights,
+                                        const std::vector<GatherPoint>& points,
+                                        const ProbeSampler* indirect, const GatherSettings& g);
+
+// The local directions (z = the normal) of a gather with `rays` rays, cosine-distributed.
+std::vector<glm::vec3> cosineHemisphereSpiral(int rays);
+
+} // namespace pb::probes

@@ -1,0 +1,72 @@
+#include "probes/placement/PlacementError.h"
+
+#include "core/Error.h"
+#include "probes/placement/AutoVolume.h"
+#include "probes/bake/Baker.h"
+#include "probes/placement/IrradianceError.h"
+#include "probes/ProbeSampler.h"
+#include "probes/StaticTriangles.h"
+#include "probes/bake/SurfaceSamples.h"
+
+namespace pb::probes {
+
+PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const RayScene& rs,
+                                               const Scenario& scenario, float sealedBelow,
+                                               float truthSpacing,
+                                               const PlacementErrorSettings& settings)
+    : scene_(scene), rays_(rs), scenario_(scenario), settings_(settings) {
+    points_ =
+        surfaceSamples(staticBakeTriangles(scene), rs, settings.points, sealedBelow, settings.seed);
+    if (points_.empty())
+        throw Error("placement error estimate: the scene has no open static surface");
+    if (settings.bounces < 1) throw Error("placement error estimate: bounces must be at least 1");
+    GatherSettings g;
+    g.rays = settings.gatherRays;
+    g.threads = settings.threads;
+    if (settings.bounces == 1) {
+        truth_ = gatherIrradiance(rs, scenario, scene.lights, points_, nullptr, g);
+        return;
+    }
+    BakeRequest req;
+    req.volumes = {fitAutoVolume(staticBakeBounds(scene), truthSpacing, kAutoMaxProbes,
+                                 AutoLattice::HalfCellMargin)
+                       .volume};
+    req.scenarios = {scenario};
+    req.settings.raysPerProbe = settings.probeRays;
+    req.settings.bounces = settings.bounces - 1;
+    req.settings.format = StorageFormat::Rgba32f;
+    req.threads = settings.threads;
+    req.rayScene = &rs;
+    const ProbeSet earlier = bakeProbes(scene, req);
+    const ProbeSampler sampler(earlier, 0);
+    truth_ = gatherIrradiance(rs, scenario, scene.lights, points_, &sampler, g);
+}
+
+double PlacementErrorEstimate::relativeError(const std::vector<ProbeVolume>& volumes,
+                                             bool sparse) const {
+    BakeRequest req;
+    req.volumes = volumes;
+    req.scenarios = {scenario_};
+    req.settings.raysPerProbe = settings_.probeRays;
+    req.settings.bounces = settings_.bounces;
+    // rgba32f: no encoding pass (rgba16f's cost more than the trial's tracing), and the lattice,
+    // not the storage format, is what the estimate compares.
+    req.settings.format = StorageFormat::Rgba32f;
+    req.threads = settings_.threads;
+    req.sparse = sparse;
+    req.rayScene = &rays_;
+    const ProbeSet set = bakeProbes(scene_, req);
+    const ProbeSampler sampler(set, 0);
+    std::vector<SampleQuery> queries;
+    queries.reserve(points_.size());
+    for (const GatherPoint& p : points_)
+        queries.push_back({p.pos, p.normal, p.normal});
+    std::vector<IrradianceSample> samples(queries.size());
+    sampler.sampleBatch(queries.data(), queries.size(), samples.data());
+    std::vector<glm::vec3> values(samples.size());
+    for (std::size_t i = 0; i < samples.size(); ++i)
+        values[i] = samples[i].irradiance;
+    return irradianceErrors(values, truth_).relative;
+}
+
+} // namespace pb::probes

@@ -1,0 +1,183 @@
+#include "probes/store/SparseLayout.h"
+
+#include "core/Error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+namespace pb::probes {
+namespace {
+
+// The stored bytes of a texture as a grid of units: texels, or BC6H 4x4 blocks.
+struct Units {
+    int texels = 1;        // texels per unit along x and y
+    std::size_t bytes = 0; // bytes per unit
+};
+
+Units unitsOf(const TextureShape& s, StorageFormat f) {
+    if (f == StorageFormat::Bc6h) return {4, 16};
+    return {1, std::size_t(s.channels) * (f == StorageFormat::Rgba32f ? 4u : 2u)};
+}
+
+// packedTile as a grid position (x, layer, z), the order probeCoords and copyTile use.
+glm::ivec3 gridPositionOf(int slot, const glm::ivec3& grid) {
+    const glm::ivec3 t = packedTile(slot, grid);
+    return {t.x, t.z, t.y};
+}
+
+// Copies one tile of stored bytes from grid position `from` of `src` to `to` of `dst`.
+void copyTile(const ProbeTexture& src, const glm::ivec3& from, ProbeTexture& dst,
+              const glm::ivec3& to, int tile, const Units& u) {
+    const int tileUnits = tile / u.texels;
+    const std::size_t srcRow = std::size_t(src.shape.width / u.texels) * u.bytes;
+    const std::size_t dstRow = std::size_t(dst.shape.width / u.texels) * u.bytes;
+    const std::size_t srcLayer = srcRow * std::size_t(src.shape.height / u.texels);
+    const std::size_t dstLayer = dstRow * std::size_t(dst.shape.height / u.texels);
+    for (int r = 0; r < tileUnits; ++r) {
+        const std::size_t s = from.y * srcLayer + std::size_t(from.z * tileUnits + r) * srcRow +
+                              std::size_t(from.x * tileUnits) * u.bytes;
+        const std::size_t d = to.y * dstLayer + std::size_t(to.z * tileUnits + r) * dstRow +
+                              std::size_t(to.x * tileUnits) * u.bytes;
+        std::memcpy(dst.stored.data() + d, src.stored.data() + s, std::size_t(tileUnits) * u.bytes);
+    }
+}
+
+TextureShape shapeFor(const glm::ivec3& counts, int tile, int channels) {
+    return {counts.x * tile, counts.z * tile, counts.y, channels};
+}
+
+} // namespace
+
+glm::ivec3 packedCounts(std::size_t stored, const glm::ivec3& dense) {
+    const std::size_t perLayer = std::size_t(dense.x) * std::size_t(dense.z);
+    if (stored == 0) return {1, 1, 1};
+    const std::size_t width = std::min<std::size_t>(std::size_t(dense.x), stored);
+    const std::size_t layers = (stored + perLayer - 1) / perLayer;
+    const std::size_t rows = (stored + width - 1) / width;
+    return {int(width), int(layers), int((rows + layers - 1) / layers)};
+}
+
+std::vector<int> packedSlots(const std::vector<ProbeState>& states) {
+    std::vector<int> slots(states.size(), -1);
+    int next = 0;
+    for (std::size_t i = 0; i < states.size(); ++i)
+        if (states[i].stored) slots[i] = next++;
+    return slots;
+}
+
+std::size_t storedCount(const std::vector<ProbeState>& states) {
+    return std::size_t(
+        std::count_if(states.begin(), states.end(), [](const ProbeState& p) { return p.stored; }));
+}
+
+bool isSparse(const std::vector<ProbeState>& states) {
+    return storedCount(states) != states.size();
+}
+
+glm::ivec3 packedTile(int slot, const glm::ivec3& packed) {
+    return {slot % packed.x, (slot / packed.x) % packed.z, slot / (packed.x * packed.z)};
+}
+
+namespace {
+// Bits that hold 0..n-1.
+int fieldBits(int n) {
+    int bits = 0;
+    while (bits < 31 && (1 << bits) < n)
+        ++bits;
+    return bits;
+}
+} // namespace
+
+TileCode tileCode(const glm::ivec3& tileGrid, const std::string& what) {
+    if (glm::any(glm::lessThan(tileGrid, glm::ivec3(1)))) throw Error(what + ": empty tile grid");
+    TileCode c;
+    c.columnBits = fieldBits(tileGrid.x);
+    c.rowBits = fieldBits(tileGrid.z);
+    c.layerBits = fieldBits(tileGrid.y);
+    const int bits = c.columnBits + c.rowBits + c.layerBits;
+    if (bits > kTileCodeBits)
+        throw Error(what + ": a tile grid of " + std::to_string(tileGrid.x) + " columns, " +
+                    std::to_string(tileGrid.z) + " rows and " + std::to_string(tileGrid.y) +
+                    " layers needs a " + std::to_string(bits) + "-bit tile code; the state " +
+                    "texture (RGBA32F) holds " + std::to_string(kTileCodeBits) + " bits exactly");
+    return c;
+}
+
+float TileCode::encode(const glm::ivec3& tile, bool valid) const {
+    const std::uint32_t code = std::uint32_t(tile.x) | std::uint32_t(tile.y) << columnBits |
+                               std::uint32_t(tile.z) << (columnBits + rowBits);
+    const float w = float(code + 1); // exact: code < 2^kTileCodeBits
+    return valid ? w : -w;
+}
+
+glm::ivec3 TileCode::decode(float w) const {
+    // ddgiInitTileFields and ddgiTile, step by step.
+    const glm::ivec4 f((1 << columnBits) - 1, columnBits, (1 << rowBits) - 1, columnBits + rowBits);
+    const int code = int(std::abs(w)) - 1;
+    return {code & f.x, (code >> f.y) & f.z, code >> f.w};
+}
+
+TileLayout tileLayout(const ProbeVolume& v, const std::vector<ProbeState>& states) {
+    const std::string what = "probe volume '" + v.name + "'";
+    if (states.size() != std::size_t(v.probeCount()))
+        throw Error(what + ": probe state count does not match its grid");
+    TileLayout t;
+    t.counts = t.packedCounts = v.counts;
+    t.slots = packedSlots(states);
+    t.sparse = isSparse(states);
+    if (t.sparse) t.packedCounts = packedCounts(storedCount(states), v.counts);
+    t.code = tileCode(t.packedCounts, what);
+    return t;
+}
+
+glm::ivec3 TileLayout::tileOf(const glm::ivec3& q) const {
+    if (!sparse) return {q.x, q.z, q.y};
+    const int slot = slots[std::size_t((q.y * counts.z + q.z) * counts.x + q.x)]; // probeIndex
+    return slot < 0 ? glm::ivec3(-1) : packedTile(slot, packedCounts);
+}
+
+float TileLayout::stateW(std::size_t index, bool valid) const {
+    // Dense: slot = index and packedCounts = counts, so this is tile (i, k, layer j) too.
+    return slots[index] < 0 ? 0.0f : code.encode(packedTile(slots[index], packedCounts), valid);
+}
+
+ProbeTexture packTiles(const ProbeTexture& dense, const std::vector<int>& slots,
+                       const glm::ivec3& denseCounts, const glm::ivec3& packed, int tile,
+                       StorageFormat f) {
+    ProbeTexture out;
+    out.storageScale = dense.storageScale; // the stored bytes move as they are
+    out.shape = shapeFor(packed, tile, dense.shape.channels);
+    out.stored.assign(storedBytes(out.shape, f), 0);
+    if (dense.stored.size() != storedBytes(dense.shape, f) ||
+        dense.shape != shapeFor(denseCounts, tile, dense.shape.channels))
+        throw Error("packTiles: texture does not match its grid");
+    const Units u = unitsOf(dense.shape, f);
+    ProbeVolume grid;
+    grid.counts = denseCounts;
+    for (std::size_t i = 0; i < slots.size(); ++i)
+        if (slots[i] >= 0)
+            copyTile(dense, grid.probeCoords(int(i)), out, gridPositionOf(slots[i], packed), tile,
+                     u);
+    return out;
+}
+
+ProbeTexture unpackTiles(const ProbeTexture& packed, const std::vector<int>& slots,
+                         const glm::ivec3& denseCounts, const glm::ivec3& packedGrid, int tile,
+                         StorageFormat f) {
+    ProbeTexture out;
+    out.storageScale = packed.storageScale; // decodeStored divides it out
+    out.shape = shapeFor(denseCounts, tile, packed.shape.channels);
+    out.stored.assign(storedBytes(out.shape, f), 0);
+    const Units u = unitsOf(packed.shape, f);
+    ProbeVolume grid;
+    grid.counts = denseCounts;
+    for (std::size_t i = 0; i < slots.size(); ++i)
+        if (slots[i] >= 0)
+            copyTile(packed, gridPositionOf(slots[i], packedGrid), out, grid.probeCoords(int(i)),
+                     tile, u);
+    decodeStored(out, f);
+    return out;
+}
+
+} // namespace pb::probes
