@@ -29,6 +29,8 @@
 namespace {
 
 using namespace pb::probes;
+using pb::parallelFor;
+using pb::resolveThreadCount;
 using Clock = std::chrono::steady_clock;
 
 std::string sponzaPath() {

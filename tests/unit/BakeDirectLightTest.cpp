@@ -12,6 +12,7 @@
 #include <thread>
 
 using namespace pb::probes;
+using pb::parallelFor;
 using namespace pb::test;
 
 namespace {
