@@ -17,6 +17,7 @@
 #include "bench/runner/ProbeCache.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
+#include "core/Gzip.h"
 #include "gl/DebugOutput.h"
 #include "passes/GiDebugInjection.h"
 #include "probes/bake/EmbreeIsa.h"
@@ -57,6 +58,45 @@ std::string probeIdentity(const probes::ProbeSet& set, const std::string& file) 
                   static_cast<long long>(set.probeCount()), set.volumes.size(),
                   probes::formatName(set.format()), static_cast<unsigned long long>(h));
     return buf;
+}
+
+struct GateProbes {
+    probes::ProbeSet set;
+    std::string file; // what the workers load
+};
+
+// This machine's bake of the suite (now.bake), and the probe data every figure is measured
+// with (now.probes): the file committed beside the baseline, decompressed into the probe
+// cache, so that no counter depends on the CPU that baked (GateEnvironment.h). With --update,
+// or for a baseline that has no committed file yet, this machine's bake itself (--update then
+// commits it).
+GateProbes gateProbes(const GateArgs& a, const gate::GateSuite& s, const scene::Scene& scene,
+                      gate::GateRecord& now) {
+    const std::string cacheDir = a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir;
+    GateProbes out;
+    out.set = bench::benchProbes(scene, resolveSuiteVolumes(s.volumes), cacheDir, &out.file,
+                                 progress);
+    now.bake = probeIdentity(out.set, out.file);
+    now.probes = now.bake;
+    const std::string committed = gate::committedProbesPath(a.baseline);
+    if (a.update || !fs::exists(committed)) return out;
+    const std::vector<unsigned char> gz = readFileBytes(committed);
+    std::uint64_t h = 1469598103934665603ull; // FNV-1a 64 of the compressed file: its cache name
+    for (unsigned char b : gz)
+        h = (h ^ b) * 1099511628211ull;
+    char name[64];
+    std::snprintf(name, sizeof name, "gate-committed-%016llx.pbp",
+                  static_cast<unsigned long long>(h));
+    out.file = (fs::path(cacheDir) / name).string();
+    if (!fs::exists(out.file)) {
+        const std::vector<unsigned char> bytes = gzipDecompress(gz, committed);
+        fs::create_directories(cacheDir);
+        writeFileAtomic(out.file, bytes.data(), bytes.size());
+    }
+    progress("probe data: " + committed + " (committed with the baseline)");
+    out.set = probes::readProbeFile(out.file);
+    now.probes = probeIdentity(out.set, out.file);
+    return out;
 }
 
 // The worker command line shared by --against and --callgrind.
@@ -177,14 +217,13 @@ int run(GateArgs& a) {
     probes::pinEmbreeIsa(gate::kGateEmbreeIsa);
     now.environment.embreeIsa = probes::embreeIsa();
 
+    now.environment.cpu = bench::cpuModel();
     SceneArgs sceneArgs;
     sceneArgs.scene = s.scene;
     const scene::Scene scene = loadSceneWithOverrides(sceneArgs);
-    std::string probesFile;
-    const probes::ProbeSet set = bench::benchProbes(
-        scene, resolveSuiteVolumes(s.volumes),
-        a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir, &probesFile, progress);
-    now.probes = probeIdentity(set, probesFile);
+    const GateProbes gp = gateProbes(a, s, scene, now);
+    const probes::ProbeSet& set = gp.set;
+    const std::string& probesFile = gp.file;
     scene::View view;
     if (s.camera.empty()) {
         progress("searching the worst-case view (stored in the baseline)");
@@ -235,7 +274,8 @@ int run(GateArgs& a) {
             ratioTiming(a, now, base ? &*base : nullptr, renderers, ref, timing, caps.es, budget);
     gate::GateOutcome outcome;
     outcome.recording = a.update;
-    const gate::GateRecord empty{s, {}, {}, "", {}, {}};
+    gate::GateRecord empty;
+    empty.suite = s;
     gate::compareRecords(base ? *base : empty, now, outcome);
     outcome.rows.insert(outcome.rows.end(), timingRows.begin(), timingRows.end());
     if (a.noTiming) outcome.notes.push_back("timing: not run (--no-timing)");
@@ -280,8 +320,12 @@ int run(GateArgs& a) {
         if (a.callgrind && base)
             for (const gate::CallgrindRecord& c : base->callgrind)
                 if (!(c.key == now.callgrind.front().key)) out.callgrind.push_back(c);
+        const std::string committed = gate::committedProbesPath(a.baseline);
+        const std::vector<unsigned char> bytes = readFileBytes(probesFile);
+        const std::vector<unsigned char> gz = gzipCompress(bytes.data(), bytes.size());
+        writeFileAtomic(committed, gz.data(), gz.size());
         gate::writeGateRecord(a.baseline, out);
-        std::cout << "updated " << a.baseline
+        std::cout << "updated " << a.baseline << " and " << committed
                   << " (review `git diff` of it and commit it with the change that explains "
                      "it)\n";
         return 0;

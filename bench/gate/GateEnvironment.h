@@ -1,6 +1,6 @@
 #pragma once
 // What the gate does where the machine differs from the baseline's (bench/baselines/README.md
-// "Across machines"): the probe data row, the notes, and which counters may move. GL-free.
+// "Across machines"): the probe data and bake rows and the notes. GL-free.
 #include "GateOutcome.h"
 #include "GateRecord.h"
 
@@ -8,15 +8,14 @@
 
 namespace pb::gate {
 
-// Whether a counter (display group + field, "model.fetches" + "irradiance") follows from the
-// probe data's values - which probes are valid, so which texels a lookup reads - and so may
-// move when the bake does.
-bool dependsOnBake(const std::string& group, const std::string& field);
-
-// Adds the probe data row and, where this run's environment differs from the baseline's, a
-// note saying what is compared how. Returns the relative tolerance for the bake-dependent
-// counters: the suite's isa_counter_tolerance when the baseline was baked on another Embree
-// ISA, else 0 (exact).
-double compareEnvironment(const GateRecord& baseline, const GateRecord& now, GateOutcome& out);
+// Adds two rows and, where this run's environment differs from the baseline's, notes:
+// - "probe data": the identity of the probe file every figure was measured with (the one
+//   committed beside the baseline). It is the suite's input, so it must match exactly; a
+//   mismatch means the baseline and its probe file were not written together (CHANGED).
+// - "bake on this machine": this machine's own bake of the suite against the recording
+//   machine's. Equal: ok. Different on another CPU or Embree ISA: a note (skipped), since the
+//   last bits of a bake differ between CPU vendors and nothing else depends on them. Different
+//   on the same CPU and ISA: the code changed the bake (CHANGED; re-record on purpose).
+void compareEnvironment(const GateRecord& baseline, const GateRecord& now, GateOutcome& out);
 
 } // namespace pb::gate

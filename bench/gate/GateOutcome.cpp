@@ -99,10 +99,9 @@ std::string groupName(const Group& g) {
     return s + ")";
 }
 
-// bakeTolerance > 0 (the baseline baked with another Embree ISA): bake-dependent counters
-// pass within that relative difference, with a note; everything else stays exact.
-void compareCounters(const ProfileRecord* base, const ProfileRecord& now, double bakeTolerance,
-                     GateOutcome& out) {
+// Every counter is exact: they are measured with the committed probe file, whatever CPU runs
+// the gate (GateEnvironment.h).
+void compareCounters(const ProfileRecord* base, const ProfileRecord& now, GateOutcome& out) {
     static const Counters none;
     const Counters& b = base ? base->counters : none;
     for (const Group& g : groups(b, now.counters)) {
@@ -118,22 +117,15 @@ void compareCounters(const ProfileRecord* base, const ProfileRecord& now, double
         else if (!g.inNow)
             row.status = RowStatus::Missing;
         else if (g.base != g.now) {
-            bool withinTolerance = bakeTolerance > 0;
             for (const std::string& f : g.fields) {
                 const bool both = g.base.count(f) && g.now.count(f);
                 if (both && g.base.at(f) == g.now.at(f)) continue;
-                withinTolerance = withinTolerance && both && dependsOnBake(g.name, f) &&
-                                  std::fabs(double(g.now.at(f) - g.base.at(f))) <=
-                                      bakeTolerance * std::fabs(double(g.base.at(f)));
                 if (both)
                     row.note += (row.note.empty() ? "" : ", ") + (f.empty() ? g.name : f) + " " +
                                 (g.now.at(f) > g.base.at(f) ? "+" : "") +
                                 std::to_string(g.now.at(f) - g.base.at(f));
             }
-            row.status = withinTolerance ? RowStatus::Ok : RowStatus::Changed;
-            if (withinTolerance)
-                row.note += " (within " + num(100 * bakeTolerance, "%.2g%%") +
-                            ": bake on another Embree ISA)";
+            row.status = RowStatus::Changed;
         }
         if (row.note.empty() && g.name == "model.fetches" && g.inNow) {
             // The "texture fetches per pixel": all fetches over the GI pixels.
@@ -269,10 +261,10 @@ int GateOutcome::exitCode() const {
 }
 
 void compareRecords(const GateRecord& baseline, const GateRecord& now, GateOutcome& out) {
-    const double bakeTolerance = compareEnvironment(baseline, now, out);
+    compareEnvironment(baseline, now, out);
     for (const ProfileRecord& p : now.profiles) {
         const ProfileRecord* b = baseline.profile(p.name);
-        compareCounters(b, p, bakeTolerance, out);
+        compareCounters(b, p, out);
         compareModelWithGl(p, out);
         compareAccuracy(b, p, now.suite.tolerance, out);
     }

@@ -82,8 +82,7 @@ json suiteJson(const GateSuite& s) {
               {"psnr_db", a.psnrDb},
               {"rel_mse_gi_abs", a.relMseAbs},
               {"rel_mse_gi_rel", a.relMseRel}}},
-            {"callgrind_tolerance", s.callgrindTolerance},
-            {"isa_counter_tolerance", s.isaCounterTolerance}};
+            {"callgrind_tolerance", s.callgrindTolerance}};
 }
 
 GateSuite suiteFrom(const json& j, const std::string& where) {
@@ -117,9 +116,6 @@ GateSuite suiteFrom(const json& j, const std::string& where) {
     at.relMseAbs = optionalField(a, "rel_mse_gi_abs", aw, at.relMseAbs);
     at.relMseRel = optionalField(a, "rel_mse_gi_rel", aw, at.relMseRel);
     s.callgrindTolerance = optionalField(j, "callgrind_tolerance", where, s.callgrindTolerance);
-    s.isaCounterTolerance = optionalField(j, "isa_counter_tolerance", where, s.isaCounterTolerance);
-    if (!(s.isaCounterTolerance >= 0 && s.isaCounterTolerance < 1))
-        throw Error(where + ".isa_counter_tolerance: must be in [0, 1)");
     if (s.width < 16 || s.height < 16 || s.width > 16384 || s.height > 16384)
         throw Error(where + ".width/height: must be in 16..16384");
     if (s.profiles.empty()) throw Error(where + ".profiles: empty");
@@ -191,9 +187,11 @@ json recordJson(const GateRecord& r) {
         callgrind.push_back({{"key", keyJson(c.key)}, {"profiles", ps}});
     }
     const json environment{{"embree_isa", r.environment.embreeIsa},
-                           {"gl_renderer", r.environment.glRenderer}};
+                           {"gl_renderer", r.environment.glRenderer},
+                           {"cpu", r.environment.cpu}};
     return {{"schema", kGateSchema},      {"suite", suiteJson(r.suite)}, {"recorded", r.recorded},
-            {"environment", environment}, {"probes", r.probes},          {"profiles", profiles},
+            {"environment", environment}, {"probes", r.probes},          {"bake", r.bake},
+            {"profiles", profiles},
             {"callgrind", callgrind}};
 }
 
@@ -211,8 +209,10 @@ GateRecord recordFromJson(const json& j, const std::string& source) {
             const json& e = j.at("environment");
             r.environment.embreeIsa = field<std::string>(e, "embree_isa", "environment");
             r.environment.glRenderer = field<std::string>(e, "gl_renderer", "environment");
+            r.environment.cpu = optionalField(e, "cpu", "environment", std::string());
         }
         r.probes = field<std::string>(j, "probes", "");
+        r.bake = optionalField(j, "bake", "", std::string()); // older baselines: none
         const json& ps = j.contains("profiles") ? j.at("profiles") : json();
         if (!ps.is_array()) throw Error("profiles: must be an array");
         for (size_t i = 0; i < ps.size(); ++i) {
@@ -253,6 +253,14 @@ GateRecord recordFromJson(const json& j, const std::string& source) {
     } catch (const Error& e) {
         throw fileError(source, e.what());
     }
+}
+
+std::string committedProbesPath(const std::string& baselinePath) {
+    const std::string ext = ".json";
+    std::string stem = baselinePath;
+    if (stem.size() > ext.size() && stem.compare(stem.size() - ext.size(), ext.size(), ext) == 0)
+        stem.resize(stem.size() - ext.size());
+    return stem + ".probes.gz";
 }
 
 GateRecord readGateRecord(const std::string& path) {

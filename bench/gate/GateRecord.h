@@ -35,9 +35,10 @@ struct AccuracyTolerance {
 };
 
 // The Embree ISA the gate traces every ray with (its bake and the cost model's primary rays):
-// SSE2, the x86-64 baseline, so that the probe data is the same bytes on any x86-64 CI
-// machine. A bake with Embree's native choice differs per ISA in the last bits, and can
-// classify a probe differently (bench/baselines/README.md "Across machines").
+// SSE2, the x86-64 baseline. A bake still differs between CPU vendors in the last bits (the
+// approximate reciprocals Embree's kernels refine differ between Intel and AMD), and can
+// classify a probe differently; so the counters never come from this machine's bake but from
+// the probe file committed beside the baseline (bench/baselines/README.md "Across machines").
 inline constexpr const char* kGateEmbreeIsa = "sse2";
 
 struct GateSuite {
@@ -50,9 +51,6 @@ struct GateSuite {
     TimingSettings timing;
     AccuracyTolerance tolerance;
     double callgrindTolerance = 0.005; // relative, of the frame's instructions
-    // Relative, for the counters that follow from the probe data (probe fetches and bytes, the
-    // cache model) when the baseline's bake used another Embree ISA; exact otherwise.
-    double isaCounterTolerance = 0.005;
 };
 
 // What a run's figures depend on besides the code and the suite (compared, unlike
@@ -61,6 +59,7 @@ struct GateSuite {
 struct GateEnvironment {
     std::string embreeIsa;  // "" in a baseline written before it was recorded
     std::string glRenderer; // GL_RENDERER: llvmpipe names its LLVM and SIMD width
+    std::string cpu;        // /proc/cpuinfo's model name: whose bake `bake` is
 };
 
 struct AccuracyValues {
@@ -99,12 +98,21 @@ struct GateRecord {
     GateSuite suite;
     nlohmann::json recorded = nlohmann::json::object(); // where and when (never compared)
     GateEnvironment environment;
-    std::string probes; // identity of the probe data: "<count> probes, fnv1a <hex>"
+    // Identity ("<count> probes, <volumes>, <format>, fnv1a <hex>") of the probe data every
+    // counter, accuracy and timing figure is measured with: the probe file committed beside the
+    // baseline (committedProbesPath), which --update writes from the recording machine's bake.
+    std::string probes;
+    // Identity of this machine's own bake of the suite: compared apart, so a change to the
+    // bake is still seen, and a bake that differs only because the CPU does is a note.
+    std::string bake;
     std::vector<ProfileRecord> profiles;
     std::vector<CallgrindRecord> callgrind; // at most one per key
     const ProfileRecord* profile(const std::string& name) const;
     const CallgrindRecord* callgrindFor(const CallgrindKey& key) const;
 };
+
+// The probe file committed beside a baseline: "<baseline without .json>.probes.gz".
+std::string committedProbesPath(const std::string& baselinePath);
 
 nlohmann::json recordJson(const GateRecord& r);
 // Throws pb::Error "<source>: <key>: <problem>" for a wrong schema, a missing or mistyped key.

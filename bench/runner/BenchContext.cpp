@@ -15,18 +15,6 @@ namespace pb::bench {
 
 namespace {
 
-std::string cpuModel() {
-    std::ifstream in("/proc/cpuinfo");
-    std::string line;
-    while (std::getline(in, line))
-        if (line.rfind("model name", 0) == 0) {
-            auto colon = line.find(':');
-            if (colon != std::string::npos)
-                return line.substr(line.find_first_not_of(" \t", colon + 1));
-        }
-    return "unknown";
-}
-
 // "Mesa 22.3.6" out of "OpenGL ES 3.2 Mesa 22.3.6"; other vendors put their driver version
 // in GL_VERSION in their own way ("4.6.0 NVIDIA 535.54"), so the whole string then.
 std::string driverVersion(const std::string& glVersion) {
@@ -44,6 +32,18 @@ std::string utcNow() {
 }
 
 } // namespace
+
+std::string cpuModel() {
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("model name", 0) == 0) {
+            auto colon = line.find(':');
+            if (colon != std::string::npos)
+                return line.substr(line.find_first_not_of(" \t", colon + 1));
+        }
+    return "unknown";
+}
 
 std::string loadAverage() {
     std::ifstream in("/proc/loadavg");

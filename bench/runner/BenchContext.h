@@ -9,6 +9,8 @@
 namespace pb::bench {
 
 nlohmann::json benchContext(const platform::Platform& platform, const gl::GlCaps& caps);
+// /proc/cpuinfo's first "model name" ("AMD EPYC"), "unknown" elsewhere.
+std::string cpuModel();
 // "0.52 0.61 0.70" from /proc/loadavg ("unknown" elsewhere).
 std::string loadAverage();
 
