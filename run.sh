@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, renders the default scene, then runs the default benchmark:
+# Installs what is missing, builds, bakes and renders the Cornell box with probe GI and without
+# (out/cornell_gi.png, out/cornell_direct.png), then runs the default benchmark:
 # the built-in `rooms` scene (a volume per room nested in one over the house), every profile,
 # with ablation, in the worst-case view; writes out/report.html (self-contained) and
 # out/bench.json, prints the Markdown summary. A few minutes on 2 cores (bench/README.md).
@@ -8,9 +9,10 @@ cd "$(dirname "$0")"
 source scripts/deps.sh
 pb_install_deps
 pb_build
-mkdir -p out
-./build/probebench render --scene cornell --out out/cornell.png --out-hdr out/cornell.pfm
-echo "==> results: $(pwd)/out/cornell.png (8-bit sRGB) and out/cornell.pfm (linear HDR)"
+# The first picture: the Cornell box with probe GI and its direct-only twin (probes cached in
+# out/; scripts/first-run.sh says how).
+scripts/first-run.sh build/probebench out
+echo "==> first run: $(pwd)/out/cornell_gi.png (probe GI) beside out/cornell_direct.png (direct light only)"
 # 512x288 for every profile keeps llvmpipe well under 5 minutes; 6 interleaved rounds is the
 # fewest that give a 95% interval for the deltas. --cache-dir keeps the baked probes in out/.
 ./build/probebench bench --scene rooms --volumes bench/volumes/rooms_nested.toml --ablate \
