@@ -4,6 +4,7 @@
 
 #include "core/Error.h"
 #include "core/FileIO.h"
+#include "core/TomlRead.h"
 
 #include <cmath>
 #include <filesystem>
@@ -19,19 +20,12 @@ public:
     explicit Reader(std::string path) : path_(std::move(path)) {}
 
     [[noreturn]] void fail(const toml::source_region& where, const std::string& msg) const {
-        throw fileError(path_ + ":" + std::to_string(where.begin.line), msg);
+        failAt(path_, where, msg);
     }
 
     void checkKeys(const toml::table& t, const std::set<std::string>& known,
                    const std::string& what) const {
-        for (auto&& [k, v] : t) {
-            if (known.count(std::string(k.str()))) continue;
-            std::string list;
-            for (const auto& n : known)
-                list += (list.empty() ? "" : ", ") + n;
-            fail(k.source(), "unknown key '" + std::string(k.str()) + "' in " + what +
-                                 " (known: " + list + ")");
-        }
+        checkTomlKeys(path_, t, known, what);
     }
 
     double number(const toml::node& n, const std::string& what) const {
@@ -57,13 +51,7 @@ private:
 
 CameraPath parseCameraPathToml(const std::string& text, const std::string& path) {
     Reader R(path);
-    toml::table root;
-    try {
-        root = toml::parse(text, path);
-    } catch (const toml::parse_error& e) {
-        throw fileError(path + ":" + std::to_string(e.source().begin.line),
-                        "TOML syntax error: " + std::string(e.description()));
-    }
+    const toml::table root = parseTomlText(text, path);
     R.checkKeys(root, {"name", "fps", "key"}, "the file");
     CameraPath out;
     out.name = std::filesystem::path(path).stem().string();
