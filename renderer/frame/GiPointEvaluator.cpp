@@ -11,9 +11,7 @@ namespace pb::render {
 
 GiPointEvaluator::GiPointEvaluator(const GpuProbes& probes, const profile::Profile& profile,
                                    gl::ProgramCache& programs)
-    : probes_(probes), profile_(profile), programs_(programs), vao_(gl::genVertexArray()) {
-    checkGiProfileSupported(profile);
-}
+    : probes_(probes), profile_(profile), programs_(programs), vao_(gl::genVertexArray()) {}
 
 std::vector<glm::vec4> GiPointEvaluator::evaluate(const std::vector<GiPoint>& points, int width) {
     if (points.empty()) return {};
