@@ -15,18 +15,9 @@ namespace pb::camera {
 
 namespace {
 
-class Reader {
+class Reader : public TomlReader {
 public:
-    explicit Reader(std::string path) : path_(std::move(path)) {}
-
-    [[noreturn]] void fail(const toml::source_region& where, const std::string& msg) const {
-        failAt(path_, where, msg);
-    }
-
-    void checkKeys(const toml::table& t, const std::set<std::string>& known,
-                   const std::string& what) const {
-        checkTomlKeys(path_, t, known, what);
-    }
+    using TomlReader::TomlReader;
 
     double number(const toml::node& n, const std::string& what) const {
         std::optional<double> d = n.value<double>();
@@ -42,9 +33,6 @@ public:
             v[i] = number(*a->get(size_t(i)), what);
         return v;
     }
-
-private:
-    std::string path_;
 };
 
 } // namespace

@@ -15,19 +15,19 @@ toml::table parseTomlText(std::string_view text, const std::string& path) {
     }
 }
 
-void failAt(const std::string& path, const toml::source_region& where, const std::string& problem) {
-    throw fileError(path + ":" + std::to_string(where.begin.line), problem);
+void TomlReader::fail(const toml::source_region& where, const std::string& problem) const {
+    throw fileError(path_ + ":" + std::to_string(where.begin.line), problem);
 }
 
-void checkTomlKeys(const std::string& path, const toml::table& t,
-                   const std::set<std::string>& known, const std::string& what) {
+void TomlReader::checkKeys(const toml::table& t, const std::set<std::string>& known,
+                           const std::string& what) const {
     for (auto&& [k, v] : t) {
         if (known.count(std::string(k.str()))) continue;
         std::string list;
         for (const auto& n : known)
             list += (list.empty() ? "" : ", ") + n;
-        failAt(path, k.source(),
-               "unknown key '" + std::string(k.str()) + "' in " + what + " (known: " + list + ")");
+        fail(k.source(),
+             "unknown key '" + std::string(k.str()) + "' in " + what + " (known: " + list + ")");
     }
 }
 

@@ -16,18 +16,9 @@
 namespace pb::probes {
 namespace {
 
-class Parser {
+class Parser : public TomlReader {
 public:
-    explicit Parser(std::string path) : path_(std::move(path)) {}
-
-    [[noreturn]] void fail(const toml::source_region& where, const std::string& msg) const {
-        failAt(path_, where, msg);
-    }
-
-    void checkKeys(const toml::table& t, const std::set<std::string>& known,
-                   const std::string& what) const {
-        checkTomlKeys(path_, t, known, what);
-    }
+    using TomlReader::TomlReader;
 
     const toml::node& require(const toml::table& t, const char* key,
                               const std::string& what) const {
@@ -64,11 +55,6 @@ public:
         if (!s) fail(n.source(), what + ": key '" + key + "' must be a string");
         return s->get();
     }
-
-    const std::string& path() const { return path_; }
-
-private:
-    std::string path_;
 };
 
 struct VolumeLines {
