@@ -130,18 +130,13 @@ nlohmann::json renderJson(const RenderArgs& a, const scene::Scene& s, const scen
     return j;
 }
 
-int run(RenderArgs& a) {
-    const profile::PlatformProfile platformProfile = resolveProfile(a.profileArgs);
-    const profile::Profile& prof = platformProfile.switches;
-    if (a.listSwitches) {
-        std::cout << profile::describeSwitchesText(prof);
-        return 0;
-    }
+// Every refusal of an option combination, before anything is loaded; returns the --debug
+// view. The profile's output resolution applies here, unless --width/--height say otherwise.
+render::GiDebugView checkArgs(RenderArgs& a, const profile::PlatformProfile& platformProfile) {
     if (!a.profileArgs.sets.empty() && a.probes.empty())
         throw Error("--set: the GI switches need --probes FILE");
     if (!a.profileArgs.profile.empty() && a.probes.empty())
         throw Error("--profile: the GI switches need --probes FILE");
-    // The profile's output resolution unless --width/--height say otherwise.
     if (!a.profileArgs.profile.empty()) {
         if (a.widthOption->count() == 0) a.width = platformProfile.width;
         if (a.heightOption->count() == 0) a.height = platformProfile.height;
@@ -166,6 +161,98 @@ int run(RenderArgs& a) {
         throw Error("--path: frames go to --out-dir DIR (required; not --out)");
     if (a.out.empty() && a.path.empty() && a.platform.name != "glfw")
         throw Error("--out is required (the PNG to write)");
+    return debugView;
+}
+
+void printGiLine(std::ostream& info, const render::GpuProbes& gp, const probes::ProbeSet& set,
+                 const profile::PlatformProfile& platformProfile, render::GiDebugView debugView) {
+    std::string changed;
+    for (const auto& c : platformProfile.switches.changedSwitches())
+        changed += " " + c;
+    info << "gi: ddgi, " << gp.volumes().size() << " of " << set.volumes.size()
+         << " volume(s), scenario '" << gp.scenarioName() << "', "
+         << probes::formatName(gp.format()) << ", " << double(gp.bytes()) / (1024.0 * 1024.0)
+         << " MiB on the GPU; profile " << platformProfile.name
+         << ", switches:" << (changed.empty() ? " defaults" : changed)
+         << (debugView == render::GiDebugView::None
+                 ? ""
+                 : std::string("; debug view ") + render::giDebugViewName(debugView))
+         << "\n";
+}
+
+// One rendered frame, read back in full before anything is written.
+struct RenderedFrame {
+    image::Image8 ldr;
+    image::ImageF hdr; // only with --out-hdr
+    double ms = 0.0;   // the first frame, shader compilation included
+};
+
+RenderedFrame renderFrame(const RenderArgs& a, render::FrameRenderer& renderer,
+                          const scene::Scene& s, const scene::View& view, gl::DebugOutput& debug,
+                          std::uint64_t glMark, bool coverage) {
+    RenderedFrame f;
+    auto t0 = std::chrono::steady_clock::now();
+    renderer.render(render::makeRenderView(view, s.worldBounds(), a.width, a.height));
+    glFinish();
+    f.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    // Read everything back before writing anything: a failure leaves no partial output.
+    f.ldr = renderer.readOutput();
+    if (coverage) f.ldr = render::giCoverageImage(renderer.giApplyPass()->stats(), f.ldr);
+    if (!a.outHdr.empty()) f.hdr = renderer.readRadiance();
+    if (auto errors = debug.errorsSince(glMark); !errors.empty())
+        throw Error("the GL reported " + std::to_string(errors.size()) +
+                    " error(s) while rendering; nothing written:\n" +
+                    gl::DebugOutput::format(errors));
+    return f;
+}
+
+void writeFrame(const RenderArgs& a, render::FrameRenderer& renderer, const RenderedFrame& f) {
+    ensureParentFolder(a.out);
+    image::writePng(a.out, f.ldr);
+    if (!a.outHdr.empty()) {
+        ensureParentFolder(a.outHdr);
+        image::writePfm(a.outHdr, f.hdr);
+    }
+    if (!a.dumpDir.empty()) renderer.dumpGBuffer(a.dumpDir);
+}
+
+// What was rendered and written; with --debug volume_coverage the legend, with --verbose the
+// GI pass per volume.
+void printFrameReport(std::ostream& info, const RenderArgs& a,
+                      const render::FrameRenderer& renderer, double ms, bool coverage) {
+    const render::GiApplyPass* giPass = renderer.giApplyPass();
+    info << "rendered " << a.width << "x" << a.height << " in " << ms
+         << " ms (one frame, includes shader compilation"
+         << (giPass && giPass->stats().counted && !renderer.giSkippedLastFrame()
+                 ? " and per-volume pixel counting"
+                 : "")
+         << ")\n"
+         << "wrote " << a.out << (a.outHdr.empty() ? "" : " and " + a.outHdr)
+         << (a.dumpDir.empty() ? "" : ", GBuffer channels in " + a.dumpDir) << "\n";
+    if (coverage)
+        info << "volume_coverage: left = the volume that shaded each pixel:\n"
+             << render::giCoverageLegend(giPass->stats())
+             << "right = full evaluations per pixel: 1 blue, 2 green, 3 yellow, 4+ red\n";
+    if (giPass && a.verbose) {
+        if (renderer.giSkippedLastFrame())
+            info << "skipped passes gi-apply" << (renderer.giUpsample() ? ", upsample" : "")
+                 << " this frame: none of the " << renderer.gpuProbes()->volumes().size()
+                 << " loaded volume(s) is in the view frustum (the lighting took its no-GI "
+                    "path; probe textures and GI targets stay allocated)\n";
+        else
+            info << render::giPassStatsText(giPass->stats());
+    }
+}
+
+int run(RenderArgs& a) {
+    const profile::PlatformProfile platformProfile = resolveProfile(a.profileArgs);
+    const profile::Profile& prof = platformProfile.switches;
+    if (a.listSwitches) {
+        std::cout << profile::describeSwitchesText(prof);
+        return 0;
+    }
+    const render::GiDebugView debugView = checkArgs(a, platformProfile);
+    const bool coverage = debugView == render::GiDebugView::VolumeCoverage;
     scene::Scene s = loadSceneWithOverrides(a.scene);
     scene::View view = chooseView(s, a);
     probes::ProbeSet probeSet;
@@ -197,21 +284,8 @@ int run(RenderArgs& a) {
         renderer.giApplyPass()->setCountPixels(true);
     info << "scene " << sceneSummary(s) << "; view '" << view.name << "'\n"
          << "platform: " << platform->description() << "\n";
-    if (const render::GpuProbes* gp = renderer.gpuProbes()) {
-        std::string changed;
-        for (const auto& c : prof.changedSwitches())
-            changed += " " + c;
-        info << "gi: ddgi, " << gp->volumes().size() << " of " << probeSet.volumes.size()
-             << " volume(s), scenario '" << gp->scenarioName() << "', "
-             << probes::formatName(gp->format()) << ", " << double(gp->bytes()) / (1024.0 * 1024.0)
-             << " MiB on the GPU; profile " << platformProfile.name
-             << ", switches:" << (changed.empty() ? " defaults" : changed)
-             << (debugView == render::GiDebugView::None
-                     ? ""
-                     : std::string("; debug view ") + render::giDebugViewName(debugView))
-             << "\n";
-    }
-
+    if (const render::GpuProbes* gp = renderer.gpuProbes())
+        printGiLine(info, *gp, probeSet, platformProfile, debugView);
     if (a.verbose)
         for (const render::SkippedWork& w : renderer.skipped())
             info << render::skippedLine(w) << "\n";
@@ -219,50 +293,10 @@ int run(RenderArgs& a) {
     if (platform->isWindowed() && a.out.empty())
         return runInteractive(*platform, renderer, s, view, a.frames);
 
-    auto t0 = std::chrono::steady_clock::now();
-    renderer.render(render::makeRenderView(view, s.worldBounds(), a.width, a.height));
-    glFinish();
-    double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    // Read everything back before writing anything: a failure leaves no partial output.
-    image::Image8 ldr = renderer.readOutput();
-    if (coverage) ldr = render::giCoverageImage(renderer.giApplyPass()->stats(), ldr);
-    image::ImageF hdr;
-    if (!a.outHdr.empty()) hdr = renderer.readRadiance();
-    if (auto errors = debug.errorsSince(glMark); !errors.empty())
-        throw Error("the GL reported " + std::to_string(errors.size()) +
-                    " error(s) while rendering; nothing written:\n" +
-                    gl::DebugOutput::format(errors));
-    ensureParentFolder(a.out);
-    image::writePng(a.out, ldr);
-    if (!a.outHdr.empty()) {
-        ensureParentFolder(a.outHdr);
-        image::writePfm(a.outHdr, hdr);
-    }
-    if (!a.dumpDir.empty()) renderer.dumpGBuffer(a.dumpDir);
-    const render::GiApplyPass* giPass = renderer.giApplyPass();
-    info << "rendered " << a.width << "x" << a.height << " in " << ms
-         << " ms (one frame, includes shader compilation"
-         << (giPass && giPass->stats().counted && !renderer.giSkippedLastFrame()
-                 ? " and per-volume pixel counting"
-                 : "")
-         << ")\n"
-         << "wrote " << a.out << (a.outHdr.empty() ? "" : " and " + a.outHdr)
-         << (a.dumpDir.empty() ? "" : ", GBuffer channels in " + a.dumpDir) << "\n";
-    if (coverage)
-        info << "volume_coverage: left = the volume that shaded each pixel:\n"
-             << render::giCoverageLegend(giPass->stats())
-             << "right = full evaluations per pixel: 1 blue, 2 green, 3 yellow, 4+ red\n";
-    if (giPass && a.verbose) {
-        if (renderer.giSkippedLastFrame())
-            info << "skipped passes gi-apply" << (renderer.giUpsample() ? ", upsample" : "")
-                 << " this frame: none of the " << renderer.gpuProbes()->volumes().size()
-                 << " loaded volume(s) is in the view frustum (the lighting took its no-GI "
-                    "path; probe textures and GI targets stay allocated)\n";
-        else
-            info << render::giPassStatsText(giPass->stats());
-    }
-    if (a.json) std::cout << renderJson(a, s, view, *platform, renderer, ms).dump(2) << "\n";
+    const RenderedFrame frame = renderFrame(a, renderer, s, view, debug, glMark, coverage);
+    writeFrame(a, renderer, frame);
+    printFrameReport(info, a, renderer, frame.ms, coverage);
+    if (a.json) std::cout << renderJson(a, s, view, *platform, renderer, frame.ms).dump(2) << "\n";
     if (platform->isWindowed()) return runInteractive(*platform, renderer, s, view, a.frames);
     return 0;
 }

@@ -17,13 +17,9 @@ void FetchFloorPass::execute(render::FrameRenderer& renderer, const render::Rend
     const render::GBuffer& gb = targets->gbuffer;
     const int w = std::max(1, gb.width() / div), h = std::max(1, gb.height() / div);
     if (!target_ || target_->desc().width != w || target_->desc().height != h) {
-        gl::TextureDesc d;
-        d.format = render::giTargetFormat(profile_.gi.targetFormat);
-        d.width = w;
-        d.height = h;
-        d.filter = gl::Filter::Nearest;
         fbo_.reset();
-        target_ = std::make_unique<gl::Texture>(d);
+        target_ = std::make_unique<gl::Texture>(
+            gl::nearestTexture(render::giTargetFormat(profile_.gi.targetFormat), w, h));
         fbo_ = std::make_unique<gl::Framebuffer>(
             "gi fetch floor", std::vector<const gl::Texture*>{target_.get()}, nullptr);
     }

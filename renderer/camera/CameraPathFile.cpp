@@ -4,6 +4,7 @@
 
 #include "core/Error.h"
 #include "core/FileIO.h"
+#include "core/TomlRead.h"
 
 #include <cmath>
 #include <filesystem>
@@ -14,25 +15,9 @@ namespace pb::camera {
 
 namespace {
 
-class Reader {
+class Reader : public TomlReader {
 public:
-    explicit Reader(std::string path) : path_(std::move(path)) {}
-
-    [[noreturn]] void fail(const toml::source_region& where, const std::string& msg) const {
-        throw fileError(path_ + ":" + std::to_string(where.begin.line), msg);
-    }
-
-    void checkKeys(const toml::table& t, const std::set<std::string>& known,
-                   const std::string& what) const {
-        for (auto&& [k, v] : t) {
-            if (known.count(std::string(k.str()))) continue;
-            std::string list;
-            for (const auto& n : known)
-                list += (list.empty() ? "" : ", ") + n;
-            fail(k.source(), "unknown key '" + std::string(k.str()) + "' in " + what +
-                                 " (known: " + list + ")");
-        }
-    }
+    using TomlReader::TomlReader;
 
     double number(const toml::node& n, const std::string& what) const {
         std::optional<double> d = n.value<double>();
@@ -48,22 +33,13 @@ public:
             v[i] = number(*a->get(size_t(i)), what);
         return v;
     }
-
-private:
-    std::string path_;
 };
 
 } // namespace
 
 CameraPath parseCameraPathToml(const std::string& text, const std::string& path) {
     Reader R(path);
-    toml::table root;
-    try {
-        root = toml::parse(text, path);
-    } catch (const toml::parse_error& e) {
-        throw fileError(path + ":" + std::to_string(e.source().begin.line),
-                        "TOML syntax error: " + std::string(e.description()));
-    }
+    const toml::table root = parseTomlText(text, path);
     R.checkKeys(root, {"name", "fps", "key"}, "the file");
     CameraPath out;
     out.name = std::filesystem::path(path).stem().string();

@@ -108,20 +108,10 @@ void replayChunk(CacheReplay& replay, const VariantStructure& vs, const TextureT
     }
 }
 
-CostReport runCostModel(const views::CoverageTester& tester, const scene::View& view,
-                        const CostModelOptions& o) {
-    if (o.width < 1 || o.height < 1) throw Error("cost model: resolution must be at least 1x1");
-    if (o.warpPixels < 1 || o.warpPixels > 1024 || o.warpsInFlight < 1 || o.warpsInFlight > 256)
-        throw Error("cost model: warp size must be in 1..1024 and warps in flight in 1..256");
-    const size_t group = size_t(o.warpPixels) * size_t(o.warpsInFlight);
-    const size_t kChunk = (kChunkMin + group - 1) / group * group;
-    const probes::ProbeSet& set = tester.probes();
-    if (o.scenario < 0 || o.scenario >= int(set.irradiance.size()))
-        throw Error("cost model: the probe set has no scenario #" + std::to_string(o.scenario));
-    const std::vector<CacheConfig> caches = o.caches.empty() ? cachePresets() : o.caches;
-    for (const CacheConfig& c : caches)
-        c.validate();
+namespace {
 
+// The report's header: what was modelled.
+CostReport describeRun(const CostModelOptions& o, const probes::ProbeSet& set) {
     CostReport r;
     r.profile = o.profile;
     r.probeFormat = probes::formatName(set.format());
@@ -130,18 +120,11 @@ CostReport runCostModel(const views::CoverageTester& tester, const scene::View& 
     r.warpPixels = o.warpPixels;
     r.warpsInFlight = o.warpsInFlight;
     r.profileVariant = GiVariant{o.profile.gi.probeOrder, o.profile.gi.loops}.name();
+    return r;
+}
 
-    // The pass: kept volumes in draw order, the GI target and its pixels in shading order.
-    const std::vector<int> kept =
-        profile::selectVolumes(set, profile::parseVolumeLod(o.profile.gi.volumeLod));
-    std::vector<float> boxes;
-    for (int v : kept)
-        boxes.push_back(set.volumes[size_t(v)].boxVolume());
-    std::vector<int> drawOrder = profile::volumeDrawOrder(boxes, kept); // largest first
-    const bool stencil = o.profile.gi.multiVolume == profile::GiMultiVolume::Stencil;
-    const bool shFlags = o.profile.gi.dynamic == profile::GiDynamic::Sh;
-    if (stencil) std::reverse(drawOrder.begin(), drawOrder.end()); // smallest first
-    GiPassCounters& c = r.counters;
+// The GI target's size and format, as GiTargets allocates it.
+void describeTarget(const CostModelOptions& o, GiPassCounters& c) {
     c.multiVolume = o.profile.get("gi.multi_volume");
     c.gbufferWidth = o.width;
     c.gbufferHeight = o.height;
@@ -151,125 +134,216 @@ CostReport runCostModel(const views::CoverageTester& tester, const scene::View& 
     c.targetFormat = o.profile.get("gi.target_format");
     c.targetBytesPerPixel = targetBytes(o.profile.gi.targetFormat);
     c.targetPixels = std::uint64_t(c.targetWidth) * std::uint64_t(c.targetHeight);
-    const std::vector<glm::ivec2> order = gpuPixelOrder(c.targetWidth, c.targetHeight, o.tile);
+}
 
-    // gi_ddgi_apply.frag reads GBuffer pixel fragCoord * divisor + (divisor - 1) / 2 (GL rows
-    // count from the bottom; the rays' rows from the top).
-    std::vector<glm::ivec2> rayPixels(order.size()), gbufferPx(order.size());
-    for (size_t i = 0; i < order.size(); ++i) {
-        gbufferPx[i] = order[i] * c.divisor + (c.divisor - 1) / 2;
-        rayPixels[i] = {gbufferPx[i].x, o.height - 1 - gbufferPx[i].y};
+// One run of the model as the pass's steps: the kept volumes in draw order, the target's
+// pixels in shading order and their surface points, then per volume and chunk of pixels the
+// lookups, their counters and every (variant, cache) replay, then the totals.
+class CostModelRun {
+public:
+    CostModelRun(const views::CoverageTester& tester, const scene::View& view,
+                 const CostModelOptions& o, const std::vector<CacheConfig>& caches,
+                 GiPassCounters& c)
+        : view_(view), o_(o), set_(tester.probes()), caches_(caches), c_(c),
+          kept_(profile::selectVolumes(set_, profile::parseVolumeLod(o.profile.gi.volumeLod))),
+          stencil_(o.profile.gi.multiVolume == profile::GiMultiVolume::Stencil),
+          shFlags_(o.profile.gi.dynamic == profile::GiDynamic::Sh), sampler_(set_, o.scenario),
+          table_(makeTextureTable(o.width, o.height, set_, kept_, o.layout)),
+          variants_(allGiVariants()) {
+        const size_t group = size_t(o.warpPixels) * size_t(o.warpsInFlight);
+        chunk_ = (kChunkMin + group - 1) / group * group;
+        orderVolumes();
+        shadingPixels(tester);
+        for (const GiVariant& v : variants_)
+            structures_.push_back(variantStructure(v));
+        replays_.reserve(variants_.size() * caches_.size()); // variant-major: variants x caches
+        for (size_t v = 0; v < variants_.size(); ++v)
+            for (const CacheConfig& cfg : caches_)
+                replays_.emplace_back(cfg, table_);
+        covered_.assign(order_.size(), 0);
+        winner_.assign(order_.size(), -1);
+        lookups_.resize(chunk_);
     }
-    const std::vector<views::SurfacePoint> surface =
-        tester.surfacePoints(view, o.width, o.height, rayPixels);
-    const probes::ProbeSampler sampler(set, o.scenario);
-    const TextureTable table = makeTextureTable(o.width, o.height, set, kept, o.layout);
 
-    const std::vector<GiVariant> variants = allGiVariants();
-    std::vector<VariantStructure> structures;
-    for (const GiVariant& v : variants)
-        structures.push_back(variantStructure(v));
-    std::vector<CacheReplay> replays; // variant-major: variants x caches
-    replays.reserve(variants.size() * caches.size());
-    for (size_t v = 0; v < variants.size(); ++v)
-        for (const CacheConfig& cfg : caches)
-            replays.emplace_back(cfg, table);
+    void drawVolumes() {
+        for (int d : drawOrder_)
+            c_.volumes.push_back(drawVolume(d));
+    }
 
-    std::vector<std::uint8_t> covered(order.size(), 0); // stencil: 'any' set
-    std::vector<int> winner(order.size(), -1);
-    std::vector<Lookup> lookups(kChunk);
-    int drawn = 0;
-    for (int d : drawOrder) {
-        const int fileIndex = kept[size_t(d)];
+    void countTotals() {
+        for (size_t i = 0; i < order_.size(); ++i) {
+            c_.giPixels += covered_[i];
+            if (winner_[i] >= 0)
+                for (size_t k = 0; k < drawOrder_.size(); ++k)
+                    if (drawOrder_[k] == winner_[i]) ++c_.volumes[k].won;
+        }
+        if (stencil_) {
+            c_.drawCalls = c_.programBinds = c_.textureBinds = c_.textureUnbinds = -1;
+            c_.depthCopyFetches = c_.targetPixels; // gi_depth_copy.frag: one depth read per texel
+        } else {
+            c_.drawCalls = drawn_;
+            c_.textureBinds = kGBufferTexturesBound + 3 * drawn_;
+            c_.textureUnbinds = 2 * kUnitsUnbound;
+        }
+        c_.gbufferFetches = c_.depthCopyFetches;
+        for (const VolumeCounters& v : c_.volumes) {
+            c_.gbufferFetches += v.depthFetches + v.normalFetches + v.flagsFetches;
+            c_.probeFetches += v.stateFetches + v.visibilityFetches + v.irradianceFetches;
+            c_.probeFootprintBytes += v.probeFootprintBytes;
+            c_.renderTargetBytesWritten += v.evaluated * std::uint64_t(c_.targetBytesPerPixel);
+        }
+        c_.fetchesPerGiPixel =
+            c_.giPixels ? double(c_.gbufferFetches + c_.probeFetches) / double(c_.giPixels) : 0.0;
+        c_.maxFetchesPerLookup =
+            maxFetchesPerLookup(GiVariant{o_.profile.gi.probeOrder, o_.profile.gi.loops});
+        c_.clearBytes = c_.targetPixels * std::uint64_t(c_.targetBytesPerPixel);
+        for (int v : kept_)
+            c_.gpuProbeBytes += profile::gpuVolumeBytes(set_, size_t(v));
+    }
+
+    std::vector<CacheResult> cacheResults() const {
+        std::vector<CacheResult> results;
+        for (size_t k = 0; k < replays_.size(); ++k) {
+            CacheResult res;
+            res.variant = variants_[k / caches_.size()].name();
+            res.cache = caches_[k % caches_.size()];
+            const CacheStats& s = replays_[k].stats();
+            res.probeLines = s.probeLines;
+            res.probeHits = s.probeHits;
+            res.gbufferLines = s.gbufferLines;
+            res.gbufferHits = s.gbufferHits;
+            results.push_back(res);
+        }
+        return results;
+    }
+
+private:
+    // Kept volumes in draw order: largest first, stencil smallest first.
+    void orderVolumes() {
+        std::vector<float> boxes;
+        for (int v : kept_)
+            boxes.push_back(set_.volumes[size_t(v)].boxVolume());
+        drawOrder_ = profile::volumeDrawOrder(boxes, kept_);              // largest first
+        if (stencil_) std::reverse(drawOrder_.begin(), drawOrder_.end()); // smallest first
+    }
+
+    // The target's pixels in shading order and the surface each one sees.
+    void shadingPixels(const views::CoverageTester& tester) {
+        describeTarget(o_, c_);
+        order_ = gpuPixelOrder(c_.targetWidth, c_.targetHeight, o_.tile);
+        // gi_ddgi_apply.frag reads GBuffer pixel fragCoord * divisor + (divisor - 1) / 2 (GL
+        // rows count from the bottom; the rays' rows from the top).
+        std::vector<glm::ivec2> rayPixels(order_.size());
+        gbufferPx_.resize(order_.size());
+        for (size_t i = 0; i < order_.size(); ++i) {
+            gbufferPx_[i] = order_[i] * c_.divisor + (c_.divisor - 1) / 2;
+            rayPixels[i] = {gbufferPx_[i].x, o_.height - 1 - gbufferPx_[i].y};
+        }
+        surface_ = tester.surfacePoints(view_, o_.width, o_.height, rayPixels);
+    }
+
+    VolumeCounters drawVolume(int d) {
+        const int fileIndex = kept_[size_t(d)];
         VolumeCounters vc;
-        vc.name = set.volumes[size_t(fileIndex)].name;
+        vc.name = set_.volumes[size_t(fileIndex)].name;
         vc.fileIndex = fileIndex;
-        vc.culled = std::find(o.culledVolumes.begin(), o.culledVolumes.end(), fileIndex) !=
-                    o.culledVolumes.end();
-        if (vc.culled) {
-            c.volumes.push_back(vc);
-            continue;
+        vc.culled = std::find(o_.culledVolumes.begin(), o_.culledVolumes.end(), fileIndex) !=
+                    o_.culledVolumes.end();
+        if (vc.culled) return vc;
+        ++drawn_;
+        const TextureTable::Volume& tex = table_.volumes[size_t(d)];
+        for (size_t start = 0; start < order_.size(); start += chunk_) {
+            const size_t n = std::min(chunk_, order_.size() - start);
+            lookUpChunk(fileIndex, start, n);
+            countChunk(d, tex, start, n, vc);
+            replayChunks(tex, start, n);
         }
-        ++drawn;
-        const TextureTable::Volume& tex = table.volumes[size_t(d)];
-        for (size_t start = 0; start < order.size(); start += kChunk) {
-            const size_t n = std::min(kChunk, order.size() - start);
-            // 1. The lookups of this chunk (parallel: one slot each).
-            pb::parallelFor(n, 0, [&](size_t i, int) {
-                const views::SurfacePoint& s = surface[start + i];
-                Lookup& l = lookups[i];
-                const Lookup::Stage miss = stencil ? Lookup::Skipped : Lookup::Outside;
-                l.stage = !s.hit                                           ? Lookup::Sky
-                          : stencil && covered[start + i]                  ? Lookup::Skipped
-                          : sampler.influencesPoint(fileIndex, s.position) ? Lookup::Evaluated
-                                                                           : miss;
-                if (stencil && l.stage == Lookup::Sky) l.stage = Lookup::Skipped;
-                if (l.stage == Lookup::Evaluated)
-                    sampler.sampleVolume(fileIndex, s.position, s.normal,
-                                         view.position - s.position, {}, &l.trace);
-            });
-            // 2. Counters (the fetches are the same set in every variant: count the first).
-            std::vector<Fetch> fetches;
-            for (size_t i = 0; i < n; ++i) {
-                fetches.clear();
-                if (lookups[i].stage == Lookup::Evaluated) {
-                    appendProbeFetches(lookups[i].trace, structures[0], tex, fetches);
-                    covered[start + i] = 1;
-                    winner[start + i] = d;
-                }
-                countLookup(lookups[i], fetches, table, shFlags, vc);
+        return vc;
+    }
+
+    // 1. The lookups of this chunk (parallel: one slot each).
+    void lookUpChunk(int fileIndex, size_t start, size_t n) {
+        pb::parallelFor(n, 0, [&](size_t i, int) {
+            const views::SurfacePoint& s = surface_[start + i];
+            Lookup& l = lookups_[i];
+            const Lookup::Stage miss = stencil_ ? Lookup::Skipped : Lookup::Outside;
+            l.stage = !s.hit                                            ? Lookup::Sky
+                      : stencil_ && covered_[start + i]                 ? Lookup::Skipped
+                      : sampler_.influencesPoint(fileIndex, s.position) ? Lookup::Evaluated
+                                                                        : miss;
+            if (stencil_ && l.stage == Lookup::Sky) l.stage = Lookup::Skipped;
+            if (l.stage == Lookup::Evaluated)
+                sampler_.sampleVolume(fileIndex, s.position, s.normal, view_.position - s.position,
+                                      {}, &l.trace);
+        });
+    }
+
+    // 2. Counters (the fetches are the same set in every variant: count the first).
+    void countChunk(int d, const TextureTable::Volume& tex, size_t start, size_t n,
+                    VolumeCounters& vc) {
+        std::vector<Fetch> fetches;
+        for (size_t i = 0; i < n; ++i) {
+            fetches.clear();
+            if (lookups_[i].stage == Lookup::Evaluated) {
+                appendProbeFetches(lookups_[i].trace, structures_[0], tex, fetches);
+                covered_[start + i] = 1;
+                winner_[start + i] = d;
             }
-            // 3. Every (variant, cache) replays the chunk in shading order (parallel: each
-            //    replay owns its cache).
-            pb::parallelFor(replays.size(), 0, [&](size_t k, int) {
-                replayChunk(replays[k], structures[k / caches.size()], table, tex, lookups.data(),
-                            gbufferPx.data() + start, n, o.warpPixels, o.warpsInFlight);
-            });
+            countLookup(lookups_[i], fetches, table_, shFlags_, vc);
         }
-        c.volumes.push_back(vc);
     }
 
-    // Totals.
-    for (size_t i = 0; i < order.size(); ++i) {
-        c.giPixels += covered[i];
-        if (winner[i] >= 0)
-            for (size_t k = 0; k < drawOrder.size(); ++k)
-                if (drawOrder[k] == winner[i]) ++c.volumes[k].won;
+    // 3. Every (variant, cache) replays the chunk in shading order (parallel: each replay
+    //    owns its cache).
+    void replayChunks(const TextureTable::Volume& tex, size_t start, size_t n) {
+        pb::parallelFor(replays_.size(), 0, [&](size_t k, int) {
+            replayChunk(replays_[k], structures_[k / caches_.size()], table_, tex, lookups_.data(),
+                        gbufferPx_.data() + start, n, o_.warpPixels, o_.warpsInFlight);
+        });
     }
-    if (stencil) {
-        c.drawCalls = c.programBinds = c.textureBinds = c.textureUnbinds = -1;
-        c.depthCopyFetches = c.targetPixels; // gi_depth_copy.frag: one depth read per texel
-    } else {
-        c.drawCalls = drawn;
-        c.textureBinds = kGBufferTexturesBound + 3 * drawn;
-        c.textureUnbinds = 2 * kUnitsUnbound;
-    }
-    c.gbufferFetches = c.depthCopyFetches;
-    for (const VolumeCounters& v : c.volumes) {
-        c.gbufferFetches += v.depthFetches + v.normalFetches + v.flagsFetches;
-        c.probeFetches += v.stateFetches + v.visibilityFetches + v.irradianceFetches;
-        c.probeFootprintBytes += v.probeFootprintBytes;
-        c.renderTargetBytesWritten += v.evaluated * std::uint64_t(c.targetBytesPerPixel);
-    }
-    c.fetchesPerGiPixel =
-        c.giPixels ? double(c.gbufferFetches + c.probeFetches) / double(c.giPixels) : 0.0;
-    c.maxFetchesPerLookup =
-        maxFetchesPerLookup(GiVariant{o.profile.gi.probeOrder, o.profile.gi.loops});
-    c.clearBytes = c.targetPixels * std::uint64_t(c.targetBytesPerPixel);
-    for (int v : kept)
-        c.gpuProbeBytes += profile::gpuVolumeBytes(set, size_t(v));
 
-    for (size_t k = 0; k < replays.size(); ++k) {
-        CacheResult res;
-        res.variant = variants[k / caches.size()].name();
-        res.cache = caches[k % caches.size()];
-        const CacheStats& s = replays[k].stats();
-        res.probeLines = s.probeLines;
-        res.probeHits = s.probeHits;
-        res.gbufferLines = s.gbufferLines;
-        res.gbufferHits = s.gbufferHits;
-        r.results.push_back(res);
-    }
+    const scene::View& view_;
+    const CostModelOptions& o_;
+    const probes::ProbeSet& set_;
+    const std::vector<CacheConfig>& caches_;
+    GiPassCounters& c_;
+    const std::vector<int> kept_;
+    const bool stencil_, shFlags_;
+    const probes::ProbeSampler sampler_;
+    const TextureTable table_;
+    const std::vector<GiVariant> variants_;
+    size_t chunk_ = 0;                  // pixels per step, whole SIMT groups
+    std::vector<int> drawOrder_;        // indices into kept_
+    std::vector<glm::ivec2> order_;     // target pixels in shading order
+    std::vector<glm::ivec2> gbufferPx_; // the GBuffer pixel each one reads
+    std::vector<views::SurfacePoint> surface_;
+    std::vector<VariantStructure> structures_;
+    std::vector<CacheReplay> replays_;  // variant-major: variants x caches
+    std::vector<std::uint8_t> covered_; // stencil: 'any' set
+    std::vector<int> winner_;
+    std::vector<Lookup> lookups_;
+    int drawn_ = 0;
+};
+
+} // namespace
+
+CostReport runCostModel(const views::CoverageTester& tester, const scene::View& view,
+                        const CostModelOptions& o) {
+    if (o.width < 1 || o.height < 1) throw Error("cost model: resolution must be at least 1x1");
+    if (o.warpPixels < 1 || o.warpPixels > 1024 || o.warpsInFlight < 1 || o.warpsInFlight > 256)
+        throw Error("cost model: warp size must be in 1..1024 and warps in flight in 1..256");
+    const probes::ProbeSet& set = tester.probes();
+    if (o.scenario < 0 || o.scenario >= int(set.irradiance.size()))
+        throw Error("cost model: the probe set has no scenario #" + std::to_string(o.scenario));
+    const std::vector<CacheConfig> caches = o.caches.empty() ? cachePresets() : o.caches;
+    for (const CacheConfig& c : caches)
+        c.validate();
+
+    CostReport r = describeRun(o, set);
+    CostModelRun run(tester, view, o, caches, r.counters);
+    run.drawVolumes();
+    run.countTotals();
+    r.results = run.cacheResults();
     return r;
 }
 

@@ -6,12 +6,8 @@ namespace pb::render {
 
 image::ImageF readDepthDistance(const FrameTargets& t, const RenderView& view,
                                 gl::ProgramCache& programs) {
-    gl::TextureDesc d;
-    d.format = gl::TextureFormat::RGBA32F;
-    d.width = t.gbuffer.width();
-    d.height = t.gbuffer.height();
-    d.filter = gl::Filter::Nearest;
-    gl::Texture distance(d);
+    gl::Texture distance =
+        gl::nearestTexture(gl::TextureFormat::RGBA32F, t.gbuffer.width(), t.gbuffer.height());
     gl::Framebuffer fbo("depth-readback", {&distance}, nullptr);
     fbo.bind();
     glDisable(GL_DEPTH_TEST);

@@ -40,7 +40,6 @@ FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& set
     passes_.push_back(std::make_unique<GBufferPass>());
     if (gi.probes) {
         profile::Profile prof = gi.profile;
-        checkGiProfileSupported(prof);
         if (std::string why = dynamicShSkipReason(scene, prof); lean && !why.empty()) {
             skipped_.push_back({"pass gi-dynamic-sh", why});
             prof.gi.dynamic = profile::GiDynamic::PerPixel;

@@ -9,22 +9,9 @@
 
 namespace pb::render {
 
-namespace {
-gl::Texture floatTexture(gl::TextureFormat f, int w, int h) {
-    gl::TextureDesc d;
-    d.format = f;
-    d.width = w;
-    d.height = h;
-    d.filter = gl::Filter::Nearest;
-    return gl::Texture(d);
-}
-} // namespace
-
 GiPointEvaluator::GiPointEvaluator(const GpuProbes& probes, const profile::Profile& profile,
                                    gl::ProgramCache& programs)
-    : probes_(probes), profile_(profile), programs_(programs), vao_(gl::genVertexArray()) {
-    checkGiProfileSupported(profile);
-}
+    : probes_(probes), profile_(profile), programs_(programs), vao_(gl::genVertexArray()) {}
 
 std::vector<glm::vec4> GiPointEvaluator::evaluate(const std::vector<GiPoint>& points, int width) {
     if (points.empty()) return {};
@@ -39,13 +26,13 @@ std::vector<glm::vec4> GiPointEvaluator::evaluate(const std::vector<GiPoint>& po
         nrm[i] = glm::vec4(points[i].normal, 0.0f);
         view[i] = glm::vec4(points[i].view, 0.0f);
     }
-    gl::Texture posTex = floatTexture(gl::TextureFormat::RGBA32F, w, h);
-    gl::Texture nrmTex = floatTexture(gl::TextureFormat::RGBA32F, w, h);
-    gl::Texture viewTex = floatTexture(gl::TextureFormat::RGBA32F, w, h);
+    gl::Texture posTex = gl::nearestTexture(gl::TextureFormat::RGBA32F, w, h);
+    gl::Texture nrmTex = gl::nearestTexture(gl::TextureFormat::RGBA32F, w, h);
+    gl::Texture viewTex = gl::nearestTexture(gl::TextureFormat::RGBA32F, w, h);
     posTex.upload(pos.data());
     nrmTex.upload(nrm.data());
     viewTex.upload(view.data());
-    gl::Texture target = floatTexture(giTargetFormat(profile_.gi.targetFormat), w, h);
+    gl::Texture target = gl::nearestTexture(giTargetFormat(profile_.gi.targetFormat), w, h);
     gl::Framebuffer fbo("gi points", {&target}, nullptr);
 
     fbo.bind();

@@ -122,4 +122,13 @@ std::size_t Texture::bytes() const {
     return total;
 }
 
+Texture nearestTexture(TextureFormat format, int width, int height) {
+    TextureDesc d;
+    d.format = format;
+    d.width = width;
+    d.height = height;
+    d.filter = Filter::Nearest;
+    return Texture(d);
+}
+
 } // namespace pb::gl

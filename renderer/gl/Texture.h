@@ -41,4 +41,8 @@ private:
     TextureDesc desc_;
 };
 
+// A 2D texture read texel for texel (render targets, read-backs, data tables): no mips,
+// nearest filtering, so a fetch never blends neighbouring values.
+Texture nearestTexture(TextureFormat format, int width, int height);
+
 } // namespace pb::gl

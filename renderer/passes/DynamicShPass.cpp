@@ -9,12 +9,7 @@ namespace pb::render {
 namespace {
 
 gl::Texture floatTexture(int w, int h) {
-    gl::TextureDesc d;
-    d.format = gl::TextureFormat::RGBA32F;
-    d.width = w;
-    d.height = h;
-    d.filter = gl::Filter::Nearest;
-    return gl::Texture(d);
+    return gl::nearestTexture(gl::TextureFormat::RGBA32F, w, h);
 }
 
 int checkedRows(const DynamicObjects& objects) {

@@ -4,21 +4,11 @@
 
 namespace pb::render {
 
-namespace {
-gl::Texture makeColour(gl::TextureFormat f, int w, int h) {
-    gl::TextureDesc d;
-    d.format = f;
-    d.width = w;
-    d.height = h;
-    d.filter = gl::Filter::Nearest;
-    return gl::Texture(d);
-}
-} // namespace
-
 FrameTargets::FrameTargets(int width, int height)
-    : gbuffer(width, height), radiance(makeColour(gl::TextureFormat::RGBA16F, width, height)),
+    : gbuffer(width, height),
+      radiance(gl::nearestTexture(gl::TextureFormat::RGBA16F, width, height)),
       radianceFbo("radiance", {&radiance}, nullptr),
-      output(makeColour(gl::TextureFormat::RGBA8, width, height)),
+      output(gl::nearestTexture(gl::TextureFormat::RGBA8, width, height)),
       outputFbo("output", {&output}, nullptr), emptyVao(gl::genVertexArray()) {}
 
 float preExposureScale(float exposure) {

@@ -14,18 +14,10 @@ gl::Defines gbufferOutputDefines() {
 int gbufferDepthUnit(int firstUnit) { return firstUnit + int(kGBufferChannels.size()); }
 
 namespace {
-gl::Texture makeTarget(gl::TextureFormat f, int w, int h) {
-    gl::TextureDesc d;
-    d.format = f;
-    d.width = w;
-    d.height = h;
-    d.filter = gl::Filter::Nearest;
-    return gl::Texture(d);
-}
-
 std::vector<gl::Texture> makeChannels(int w, int h) {
     std::vector<gl::Texture> v;
-    for (const auto& c : kGBufferChannels) v.push_back(makeTarget(c.format, w, h));
+    for (const auto& c : kGBufferChannels)
+        v.push_back(gl::nearestTexture(c.format, w, h));
     return v;
 }
 
@@ -38,7 +30,7 @@ std::vector<const gl::Texture*> pointers(const std::vector<gl::Texture>& v) {
 
 GBuffer::GBuffer(int width, int height)
     : width_(width), height_(height), channels_(makeChannels(width, height)),
-      depth_(makeTarget(kGBufferDepthFormat, width, height)),
+      depth_(gl::nearestTexture(kGBufferDepthFormat, width, height)),
       fbo_("gbuffer", pointers(channels_), &depth_) {}
 
 void GBuffer::bindForReading(const gl::Program& program, int firstUnit) const {

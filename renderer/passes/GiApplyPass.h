@@ -22,9 +22,6 @@ namespace pb::render {
 gl::Defines giShaderDefines(const profile::Profile& p, const GpuProbes* probes = nullptr);
 gl::TextureFormat giTargetFormat(profile::GiTargetFormat f);
 
-// Throws pb::Error when the profile asks for a switch value this pass does not implement yet.
-void checkGiProfileSupported(const profile::Profile& p);
-
 class GiApplyPass : public Pass {
 public:
     static constexpr int kFirstProbeUnit = 5; // after the GBuffer's channels and depth

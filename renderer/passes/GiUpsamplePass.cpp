@@ -15,14 +15,6 @@ const char* fragmentShader(profile::GiUpsample mode) {
     return "gi_upsample_bilinear.frag";
 }
 
-gl::Texture makeTarget(gl::TextureFormat format, int w, int h) {
-    gl::TextureDesc d;
-    d.format = format;
-    d.width = w;
-    d.height = h;
-    d.filter = gl::Filter::Nearest;
-    return gl::Texture(d);
-}
 } // namespace
 
 // GI at full resolution, plus (temporal) each pixel's surface - distance from the eye,
@@ -30,8 +22,9 @@ gl::Texture makeTarget(gl::TextureFormat format, int w, int h) {
 // RGBA16F: half precision is 5e-4 relative, a hundredth of the plane tolerance.
 struct GiUpsamplePass::Target {
     Target(gl::TextureFormat format, int w, int h, bool withDistance)
-        : gi(makeTarget(format, w, h)),
-          distance(withDistance ? makeTarget(gl::TextureFormat::RGBA16F, w, h) : gl::Texture()),
+        : gi(gl::nearestTexture(format, w, h)),
+          distance(withDistance ? gl::nearestTexture(gl::TextureFormat::RGBA16F, w, h)
+                                : gl::Texture()),
           fbo("gi upsample",
               withDistance ? std::vector<const gl::Texture*>{&gi, &distance}
                            : std::vector<const gl::Texture*>{&gi},

@@ -2,7 +2,7 @@
 // The profile: every renderer switch (issue 4: the GI apply pass and its per-pixel
 // optimizations) as one typed struct. What each switch means, its allowed values, its default
 // and how it reaches the shaders lives in ONE table (SwitchTable.cpp); parsing (`--set
-// key=value`, later TOML), the JSON description and the shader #defines are generated from it.
+// key=value`, TOML profiles), the JSON description and the shader #defines are generated from it.
 // Adding a switch = a field here + one table row + its use in the pass/shader.
 //
 // GL-free: the passes read a Profile, the GL code never lives here.

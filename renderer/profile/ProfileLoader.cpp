@@ -2,7 +2,7 @@
 
 #include "core/Error.h"
 #include "core/FileIO.h"
-#include "core/TomlText.h"
+#include "core/TomlRead.h"
 #include "profile/ProfileSettings.h"
 #include "profile/SwitchTable.h"
 
@@ -168,14 +168,7 @@ PlatformProfile loadChain(const std::string& path, const ProfileSearch& search,
 PlatformProfile parseChain(const std::string& text, const std::string& path,
                            const ProfileSearch& search, std::vector<std::string>& chain) {
     Parser P(path, search);
-    checkTomlText(text, path); // what toml++ 3.3 cannot read without undefined behaviour
-    toml::table root;
-    try {
-        root = toml::parse(text, path);
-    } catch (const toml::parse_error& e) {
-        throw fileError(path + ":" + std::to_string(e.source().begin.line),
-                        "TOML syntax error: " + std::string(e.description()));
-    }
+    const toml::table root = parseTomlText(text, path);
     std::vector<Entry> entries;
     P.flatten(root, "", entries);
     std::stable_sort(entries.begin(), entries.end(),

@@ -1,8 +1,8 @@
 #pragma once
 // The one table of profile switches. Each row says everything about a switch: key, kind,
 // allowed values or range, default, one line of documentation, how it reaches the shaders,
-// and how to read/write it on a Profile. Loaders (--set now, TOML profiles later), `describe`,
-// the JSON dumps and the shader variant defines all iterate this table.
+// and how to read/write it on a Profile. The loaders (`--set`, TOML profiles: ProfileLoader.h),
+// `describe`, the JSON dumps and the shader variant defines all iterate this table.
 #include "profile/Profile.h"
 
 #include <functional>

@@ -3,10 +3,11 @@
 // table) plus the probe storage format, which is a bake setting rather than a switch and is
 // written `probes.format=rgba16f|rgba32f|bc6h` next to the switch keys.
 //
-// Variants come from `--variant NAME:key=value,key=value` now, from platform profiles later:
-// both end as a StressVariant (name + Profile + storage), the only thing the sweep reads.
-// Guards are the switch rows whose key starts with `gi.guard_` (SwitchTable.cpp): the sweep
-// turns them off to show what breaks and on one at a time to name what fixes it.
+// Variants come from `--variant NAME:key=value,key=value` and from platform profiles
+// (`stress --profiles a,b`, apps/cmd_stress.cpp): both end as a StressVariant (name + Profile +
+// storage), the only thing the sweep reads. Guards are the switch rows whose key starts with
+// `gi.guard_` (SwitchTable.cpp): the sweep turns them off to show what breaks and on one at a time
+// to name what fixes it.
 #include "probes/StorageFormat.h"
 #include "profile/Profile.h"
 

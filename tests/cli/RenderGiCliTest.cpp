@@ -1,6 +1,7 @@
 // `probebench render --probes FILE [--scenario NAME] [--set key=value ...]`: DDGI from a
 // baked file, profile switches from the command line, and clean one-line errors.
 #include "image/Image.h"
+#include "support/CliBakes.h"
 #include "support/RunCommand.h"
 #include "support/TestEnv.h"
 
@@ -12,17 +13,10 @@ using namespace pb::test;
 
 namespace {
 
-// A coarse, quick bake of `rooms`, shared by the tests of this file: bake's input-hash cache
-// reuses it across test processes, and its atomic writes keep parallel runs safe.
+// A coarse bake of `rooms`, shared by the tests of this file (its own file name: the
+// other CLI suites bake theirs in parallel).
 const fs::path& roomsProbes() {
-    static const fs::path file = [] {
-        fs::path f = fs::path(PB_TEST_OUTPUT_DIR) / "rooms_gi_cli.pbp";
-        auto r =
-            runProbebench({"bake", "--scene", "rooms", "--volumes", "auto-uniform", "--spacing",
-                           "0.8", "--rays", "32", "--bounces", "1", "--out", f.string()});
-        EXPECT_EQ(r.exitCode, 0) << r.output;
-        return f;
-    }();
+    static const fs::path file = bakeCoarseRooms(fs::path(PB_TEST_OUTPUT_DIR) / "rooms_gi_cli.pbp");
     return file;
 }
 

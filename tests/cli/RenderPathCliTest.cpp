@@ -2,6 +2,7 @@
 // frames, the per-frame error files, cuts from a path file resetting the GI history, and clean
 // one-line errors that leave nothing behind.
 #include "image/Image.h"
+#include "support/CliBakes.h"
 #include "support/RunCommand.h"
 #include "support/TestEnv.h"
 
@@ -14,16 +15,11 @@ using namespace pb::test;
 
 namespace {
 
-// A coarse bake of `rooms` (seconds); bake's input-hash cache shares it across test processes.
+// A coarse bake of `rooms`, shared by the tests of this file (its own file name: the
+// other CLI suites bake theirs in parallel).
 const fs::path& roomsProbes() {
-    static const fs::path file = [] {
-        fs::path f = fs::path(PB_TEST_OUTPUT_DIR) / "rooms_path_cli.pbp";
-        auto r =
-            runProbebench({"bake", "--scene", "rooms", "--volumes", "auto-uniform", "--spacing",
-                           "0.8", "--rays", "32", "--bounces", "1", "--out", f.string()});
-        EXPECT_EQ(r.exitCode, 0) << r.output;
-        return f;
-    }();
+    static const fs::path file =
+        bakeCoarseRooms(fs::path(PB_TEST_OUTPUT_DIR) / "rooms_path_cli.pbp");
     return file;
 }
 

@@ -15,4 +15,12 @@ std::filesystem::path bakeNestedRooms(const std::filesystem::path& file) {
     return file;
 }
 
+std::filesystem::path bakeCoarseRooms(const std::filesystem::path& file) {
+    const auto r =
+        runProbebench({"bake", "--scene", "rooms", "--volumes", "auto-uniform", "--spacing", "0.8",
+                       "--rays", "32", "--bounces", "1", "--out", file.string()});
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    return file;
+}
+
 } // namespace pb::test

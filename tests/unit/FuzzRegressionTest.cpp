@@ -89,8 +89,11 @@ TEST_P(FuzzCorpus, SeedsLoadOrFailCleanly) {
         << "no seed of " << dir << " loads";
 }
 
+// Every target has regression inputs: a missing or empty folder (a renamed target, a lost
+// checkout) would otherwise pass without replaying anything.
 TEST_P(FuzzCorpus, RegressionInputsLoadOrFailCleanly) {
     const fs::path dir = pb::test::testDataDir() / "fuzz-regressions" / GetParam().name;
+    ASSERT_FALSE(filesIn(dir).empty()) << "no regression inputs in " << dir;
     replay(GetParam(), dir, pb::test::outputDir());
 }
 

@@ -77,6 +77,263 @@ void checkRequest(const BakeRequest& r) {
         throw Error("backface threshold must be in [0, 1]");
 }
 
+// What every stage of one bake shares: the set being filled, the flat probe numbering, the
+// threads and their ray counters, the phase clock and the progress over all stages.
+struct BakeRun {
+    const scene::Scene& scene;
+    const BakeRequest& req;
+    const BakeSettings& cfg;
+    const RayScene& rs;
+    const int threads;
+    const BakeProgressFn& progress;
+    ProbeSet set;
+    std::vector<int> parents; // per volume, its parent's index or -1
+    ProbeIndex index;
+    std::size_t stages;         // geometry + one per scenario and bounce
+    std::size_t doneBefore = 0; // probes of the stages already finished
+    std::vector<RayCounters> counters;
+    BakePhaseClock phases{}; // the tracing time is the sum of its phases
+    RadianceSlab slab{};     // reused by every pass (keeps its buffers)
+
+    void report(const std::string& stage, std::size_t done) const {
+        if (progress) progress({stage, doneBefore + done, stages * index.total()});
+    }
+    std::pair<int, int> locate(std::size_t flat) const { return index.locate(flat); }
+};
+
+ProbeSet emptySet(const scene::Scene& scene, const BakeRequest& req) {
+    ProbeSet set;
+    set.inputHash = bakeInputHash(scene, req);
+    set.settings = req.settings;
+    set.volumes = req.volumes;
+    set.scenarios = req.scenarios;
+    for (const ProbeVolume& v : set.volumes) {
+        set.states.emplace_back(size_t(v.probeCount()));
+        set.visibility.push_back(ProbeTexture::make(visibilityShape(v.counts)));
+    }
+    return set;
+}
+
+// 1. Geometry: per probe its state (validity, relocation) and its visibility tile.
+void bakeGeometry(BakeRun& run) {
+    ProbeSet& set = run.set;
+    const auto dirs = passDirections(run.cfg.raysPerProbe, geometryStream(run.cfg.seed));
+    const ProbeConvolution conv(dirs);
+    std::vector<GeometryScratch> scratch(static_cast<size_t>(run.threads));
+    std::vector<std::vector<float>> vis(
+        static_cast<size_t>(run.threads),
+        std::vector<float>(kVisibilityInterior * kVisibilityInterior * 2));
+    parallelFor(
+        run.index.total(), run.threads,
+        [&](std::size_t flat, int t) {
+            auto [v, p] = run.locate(flat);
+            const ProbeVolume& vol = set.volumes[size_t(v)];
+            glm::ivec3 c = vol.probeCoords(p);
+            float* out = vis[size_t(t)].data();
+            ProbeState& st = set.states[size_t(v)][size_t(p)];
+            bakeProbeGeometry(run.rs, vol, c, dirs, conv, run.cfg, scratch[size_t(t)], st, out,
+                              run.counters[size_t(t)].primary);
+            if (!st.valid) return;
+            float* tile = tileOrigin(set.visibility[size_t(v)], c, kVisibilityTile);
+            const int pitch = set.visibility[size_t(v)].shape.width;
+            for (int y = 0; y < kVisibilityInterior; ++y)
+                for (int x = 0; x < kVisibilityInterior; ++x)
+                    for (int ch = 0; ch < 2; ++ch)
+                        tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 2 + size_t(ch)] =
+                            out[(y * kVisibilityInterior + x) * 2 + ch];
+        },
+        [&](std::size_t done) { run.report("geometry", done); });
+    run.doneBefore += run.index.total();
+    for (ProbeTexture& t : set.visibility)
+        fillAllBorders(t, kVisibilityInterior);
+    run.phases.mark("geometry");
+}
+
+// Which probes the radiance passes trace. Sparse storage keeps only the surface corners
+// (SparseStorage.h), and the radiance of a kept probe reads only kept probes: a later pass
+// looks up the previous one at surface hits, i.e. at surface cells' corners. So the others'
+// radiance is not traced. Except in a parent volume: its children's rings are blended
+// towards it at ring positions, which need not lie on a surface. Their geometry pass still
+// ran: the states stay as dense.
+struct RadianceMask {
+    std::vector<std::vector<std::uint8_t>> keep; // sparse only: per volume, per probe
+    std::vector<bool> isParent;
+
+    explicit RadianceMask(const BakeRun& run) : isParent(run.set.volumes.size(), false) {
+        if (run.req.sparse) {
+            const std::vector<WorldTriangle> triangles = staticBakeTriangles(run.scene);
+            for (size_t v = 0; v < run.set.volumes.size(); ++v)
+                keep.push_back(
+                    surfaceCornerProbes(run.set.volumes[v], run.parents[v] < 0, triangles));
+        }
+        for (int p : run.parents)
+            if (p >= 0) isParent[size_t(p)] = true;
+    }
+    bool needed(const ProbeSet& set, int v, int p) const {
+        if (!set.states[size_t(v)][size_t(p)].valid) return false;
+        return keep.empty() || isParent[size_t(v)] || keep[size_t(v)][size_t(p)] != 0;
+    }
+};
+
+// 2. Radiance of one scenario's bounce `pass`, reading the previous bounce `prev` (empty for
+// the first): the irradiance textures of every volume, nested rings blended.
+std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mask, size_t s,
+                                           int pass, const std::vector<ProbeTexture>& prev) {
+    ProbeSet& set = run.set;
+    const BakeSettings& cfg = run.cfg;
+    const Scenario& sc = run.req.scenarios[s];
+    std::vector<ProbeTexture> cur;
+    for (const ProbeVolume& v : set.volumes)
+        cur.push_back(ProbeTexture::make(irradianceShape(v.counts)));
+    std::vector<SamplerVolume> prevViews, curViews;
+    std::vector<ProbeTexture*> targets;
+    for (size_t v = 0; v < set.volumes.size(); ++v) {
+        if (!prev.empty())
+            prevViews.push_back({&set.volumes[v], set.states[v].data(), &prev[v],
+                                 &set.visibility[v], run.parents[v] < 0});
+        curViews.push_back({&set.volumes[v], set.states[v].data(), &cur[v], &set.visibility[v],
+                            run.parents[v] < 0});
+        targets.push_back(&cur[v]);
+    }
+    const ProbeSampler prevSampler(prevViews);
+    const ProbeSampler* previous = prev.empty() ? nullptr : &prevSampler;
+    const auto dirs = passDirections(cfg.raysPerProbe, radianceStream(cfg.seed, int(s), pass));
+    const ProbeConvolution conv(dirs);
+    std::vector<std::vector<float>> irr(
+        size_t(run.threads), std::vector<float>(kIrradianceInterior * kIrradianceInterior * 3));
+    const std::string stage =
+        sc.name + " pass " + std::to_string(pass) + "/" + std::to_string(cfg.bounces);
+    // Slabs of probes (RadiancePass.h): about 2^18 rays each, so the indirect lookups
+    // of a slab share cells without holding a whole pass's hits in memory.
+    const std::size_t slabProbes =
+        run.req.slabProbes > 0
+            ? std::size_t(run.req.slabProbes)
+            : std::max<std::size_t>(1, (std::size_t(1) << 18) / std::size_t(cfg.raysPerProbe));
+    run.phases.mark("setup");
+    // Convolves probe `first + i` of the slab into its irradiance tile.
+    auto writeTile = [&](std::size_t first, std::size_t i, int t) {
+        auto [v, p] = run.locate(first + i);
+        const ProbeVolume& vol = set.volumes[size_t(v)];
+        glm::ivec3 c = vol.probeCoords(p);
+        float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
+        const int pitch = cur[size_t(v)].shape.width;
+        for (int y = 0; y < kIrradianceTile; ++y)
+            for (int x = 0; x < kIrradianceTile; ++x)
+                tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
+        if (!mask.needed(set, v, p)) return;
+        float* out = irr[size_t(t)].data();
+        run.slab.convolve(i, conv, out);
+        for (int y = 0; y < kIrradianceInterior; ++y)
+            for (int x = 0; x < kIrradianceInterior; ++x)
+                for (int ch = 0; ch < 3; ++ch)
+                    tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 + size_t(ch)] =
+                        out[(y * kIrradianceInterior + x) * 3 + ch];
+    };
+    const std::size_t total = run.index.total();
+    for (std::size_t first = 0; first < total; first += slabProbes) {
+        const std::size_t count = std::min(slabProbes, total - first);
+        run.slab.reset(count, cfg.raysPerProbe);
+        // Without a previous pass a probe's radiance is final once traced: it is
+        // convolved right away, while its rays are still in the cache.
+        parallelFor(
+            count, run.threads,
+            [&](std::size_t i, int t) {
+                auto [v, p] = run.locate(first + i);
+                const ProbeVolume& vol = set.volumes[size_t(v)];
+                const ProbeState& st = set.states[size_t(v)][size_t(p)];
+                if (mask.needed(set, v, p)) {
+                    glm::ivec3 c = vol.probeCoords(p);
+                    run.slab.trace(i, run.rs, sc, run.scene.lights, vol.localToWorldRotation(),
+                                   vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
+                                   run.counters[size_t(t)]);
+                }
+                if (!previous) writeTile(first, i, t);
+            },
+            [&, first](std::size_t done) {
+                if (!previous) run.report(stage, first + done);
+            });
+        run.phases.mark("trace");
+        if (!previous) continue;
+        run.slab.lookUp(*previous, run.threads);
+        run.phases.mark("lookup");
+        parallelFor(
+            count, run.threads, [&](std::size_t i, int t) { writeTile(first, i, t); },
+            [&, first](std::size_t done) { run.report(stage, first + done); });
+        run.phases.mark("convolve");
+    }
+    run.doneBefore += total;
+    for (ProbeTexture& t : cur)
+        fillAllBorders(t, kIrradianceInterior);
+    blendNestedRings(set.volumes, run.parents, curViews, targets);
+    run.phases.mark("convolve");
+    return cur;
+}
+
+// 2. Radiance, per scenario and pass: each scenario's last bounce is its irradiance.
+void bakeRadiance(BakeRun& run, const RadianceMask& mask) {
+    for (size_t s = 0; s < run.req.scenarios.size(); ++s) {
+        std::vector<ProbeTexture> prev;
+        for (int pass = 1; pass <= run.cfg.bounces; ++pass)
+            prev = bakeRadiancePass(run, mask, s, pass, prev);
+        run.set.irradiance.push_back(std::move(prev));
+    }
+}
+
+// 3. Storage format: every texture quantised to the format, with its error per texture.
+std::vector<QuantisationError> quantiseSet(ProbeSet& set, StorageFormat format, int threads) {
+    std::vector<ProbeTexture*> all;
+    std::vector<QuantisationError> errors;
+    for (size_t v = 0; v < set.visibility.size(); ++v) {
+        all.push_back(&set.visibility[v]);
+        errors.push_back({set.volumes[v].name, "visibility"});
+    }
+    for (size_t s = 0; s < set.irradiance.size(); ++s) {
+        assignStorageScale(set.irradiance[s], format); // 1 unless out of range
+        for (size_t v = 0; v < set.irradiance[s].size(); ++v) {
+            all.push_back(&set.irradiance[s][v]);
+            errors.push_back({set.volumes[v].name, "irradiance " + set.scenarios[s].name});
+        }
+    }
+    parallelFor(all.size(), threads, [&](std::size_t i, int) {
+        if (format == StorageFormat::Rgba32f) { // stores the floats as they are: no error
+            quantise(*all[i], format);
+            return;
+        }
+        std::vector<float> before = all[i]->texels;
+        quantise(*all[i], format);
+        errors[i] = measureQuantisation(before, *all[i], errors[i]);
+    });
+    return errors;
+}
+
+std::vector<std::size_t> invalidPerVolume(const ProbeSet& set) {
+    std::vector<std::size_t> invalid;
+    for (const auto& vs : set.states)
+        invalid.push_back(std::size_t(
+            std::count_if(vs.begin(), vs.end(), [](const ProbeState& p) { return !p.valid; })));
+    return invalid;
+}
+
+// The counts of the finished set; the caller adds the times.
+BakeStats countStats(const BakeRun& run, std::vector<std::size_t> bakedInvalidPerVolume) {
+    BakeStats st;
+    st.probes = run.set.probeCount();
+    st.invalidProbes =
+        std::accumulate(bakedInvalidPerVolume.begin(), bakedInvalidPerVolume.end(), std::size_t(0));
+    st.invalidPerVolume = std::move(bakedInvalidPerVolume);
+    st.storedProbes = run.set.storedCount();
+    for (const auto& vs : run.set.states)
+        for (const ProbeState& p : vs)
+            st.relocatedProbes += p.offset != glm::vec3(0.0f);
+    for (const RayCounters& c : run.counters) {
+        st.primaryRays += c.primary;
+        st.shadowRays += c.shadow;
+    }
+    st.triangles = run.rs.triangleCount();
+    st.threads = run.threads;
+    return st;
+}
+
 } // namespace
 
 ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats* statsOut,
@@ -86,248 +343,51 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     if (const glm::dvec3 origin = bakeOrigin(scene, req.volumes); origin != glm::dvec3(0.0))
         return bakeProbesAround(origin, scene, req, statsOut, progress);
     const auto t0 = Clock::now();
-    const std::vector<int> parents = validateVolumes(req.volumes, "volumes");
-    const BakeSettings& cfg = req.settings;
+    std::vector<int> parents = validateVolumes(req.volumes, "volumes");
     const int threads = resolveThreadCount(req.threads);
     std::optional<RayScene> own;
     if (!req.rayScene || req.recordRays) own.emplace(scene);
     const RayScene& rs = own ? *own : *req.rayScene;
     const double buildSeconds = since(t0);
     if (req.recordRays) own->startRecording();
-    BakePhaseClock phases; // the tracing time is the sum of its phases
 
-    ProbeSet set;
-    set.inputHash = bakeInputHash(scene, req);
-    set.settings = cfg;
-    set.volumes = req.volumes;
-    set.scenarios = req.scenarios;
-    for (const ProbeVolume& v : set.volumes) {
-        set.states.emplace_back(size_t(v.probeCount()));
-        set.visibility.push_back(ProbeTexture::make(visibilityShape(v.counts)));
-    }
-
-    const ProbeIndex index(set.volumes);
-    const std::size_t stages = 1 + req.scenarios.size() * size_t(cfg.bounces);
-    std::size_t doneBefore = 0;
-    auto report = [&](const std::string& stage) {
-        return [&, stage](std::size_t done) {
-            if (progress) progress({stage, doneBefore + done, stages * index.total()});
-        };
-    };
-    std::vector<RayCounters> counters(static_cast<size_t>(threads));
-    RadianceSlab slab; // reused by every pass (keeps its buffers)
-
-    // 1. Geometry.
-    {
-        const auto dirs = passDirections(cfg.raysPerProbe, geometryStream(cfg.seed));
-        const ProbeConvolution conv(dirs);
-        std::vector<GeometryScratch> scratch(static_cast<size_t>(threads));
-        std::vector<std::vector<float>> vis(
-            static_cast<size_t>(threads),
-            std::vector<float>(kVisibilityInterior * kVisibilityInterior * 2));
-        parallelFor(
-            index.total(), threads,
-            [&](std::size_t flat, int t) {
-                auto [v, p] = index.locate(flat);
-                const ProbeVolume& vol = set.volumes[size_t(v)];
-                glm::ivec3 c = vol.probeCoords(p);
-                float* out = vis[size_t(t)].data();
-                ProbeState& st = set.states[size_t(v)][size_t(p)];
-                bakeProbeGeometry(rs, vol, c, dirs, conv, cfg, scratch[size_t(t)], st, out,
-                                  counters[size_t(t)].primary);
-                if (!st.valid) return;
-                float* tile = tileOrigin(set.visibility[size_t(v)], c, kVisibilityTile);
-                const int pitch = set.visibility[size_t(v)].shape.width;
-                for (int y = 0; y < kVisibilityInterior; ++y)
-                    for (int x = 0; x < kVisibilityInterior; ++x)
-                        for (int ch = 0; ch < 2; ++ch)
-                            tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 2 + size_t(ch)] =
-                                out[(y * kVisibilityInterior + x) * 2 + ch];
-            },
-            report("geometry"));
-        doneBefore += index.total();
-        for (ProbeTexture& t : set.visibility)
-            fillAllBorders(t, kVisibilityInterior);
-        phases.mark("geometry");
-    }
-
-    // Sparse storage keeps only the surface corners (SparseStorage.h), and the radiance of a
-    // kept probe reads only kept probes: a later pass looks up the previous one at surface
-    // hits, i.e. at surface cells' corners. So the others' radiance is not traced. Except in
-    // a parent volume: its children's rings are blended towards it at ring positions, which
-    // need not lie on a surface. Their geometry pass still ran: the states stay as dense.
-    std::vector<std::vector<std::uint8_t>> keep;
-    if (req.sparse) {
-        const std::vector<WorldTriangle> triangles = staticBakeTriangles(scene);
-        for (size_t v = 0; v < set.volumes.size(); ++v)
-            keep.push_back(surfaceCornerProbes(set.volumes[v], parents[v] < 0, triangles));
-    }
-    std::vector<bool> isParent(set.volumes.size(), false);
-    for (int p : parents)
-        if (p >= 0) isParent[size_t(p)] = true;
-    auto radianceNeeded = [&](int v, int p) {
-        if (!set.states[size_t(v)][size_t(p)].valid) return false;
-        return keep.empty() || isParent[size_t(v)] || keep[size_t(v)][size_t(p)] != 0;
-    };
-
-    // 2. Radiance, per scenario and pass.
-    for (size_t s = 0; s < req.scenarios.size(); ++s) {
-        const Scenario& sc = req.scenarios[s];
-        std::vector<ProbeTexture> prev;
-        for (int pass = 1; pass <= cfg.bounces; ++pass) {
-            std::vector<ProbeTexture> cur;
-            for (const ProbeVolume& v : set.volumes)
-                cur.push_back(ProbeTexture::make(irradianceShape(v.counts)));
-            std::vector<SamplerVolume> prevViews, curViews;
-            std::vector<ProbeTexture*> targets;
-            for (size_t v = 0; v < set.volumes.size(); ++v) {
-                if (!prev.empty())
-                    prevViews.push_back({&set.volumes[v], set.states[v].data(), &prev[v],
-                                         &set.visibility[v], parents[v] < 0});
-                curViews.push_back({&set.volumes[v], set.states[v].data(), &cur[v],
-                                    &set.visibility[v], parents[v] < 0});
-                targets.push_back(&cur[v]);
-            }
-            const ProbeSampler prevSampler(prevViews);
-            const ProbeSampler* previous = prev.empty() ? nullptr : &prevSampler;
-            const auto dirs =
-                passDirections(cfg.raysPerProbe, radianceStream(cfg.seed, int(s), pass));
-            const ProbeConvolution conv(dirs);
-            std::vector<std::vector<float>> irr(
-                size_t(threads), std::vector<float>(kIrradianceInterior * kIrradianceInterior * 3));
-            std::string stage =
-                sc.name + " pass " + std::to_string(pass) + "/" + std::to_string(cfg.bounces);
-            // Slabs of probes (RadiancePass.h): about 2^18 rays each, so the indirect lookups
-            // of a slab share cells without holding a whole pass's hits in memory.
-            const std::size_t slabProbes =
-                req.slabProbes > 0 ? std::size_t(req.slabProbes)
-                                   : std::max<std::size_t>(1, (std::size_t(1) << 18) /
-                                                                  std::size_t(cfg.raysPerProbe));
-            phases.mark("setup");
-            // Convolves probe `first + i` of the slab into its irradiance tile.
-            auto writeTile = [&](std::size_t first, std::size_t i, int t) {
-                auto [v, p] = index.locate(first + i);
-                const ProbeVolume& vol = set.volumes[size_t(v)];
-                glm::ivec3 c = vol.probeCoords(p);
-                float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
-                const int pitch = cur[size_t(v)].shape.width;
-                for (int y = 0; y < kIrradianceTile; ++y)
-                    for (int x = 0; x < kIrradianceTile; ++x)
-                        tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
-                if (!radianceNeeded(v, p)) return;
-                float* out = irr[size_t(t)].data();
-                slab.convolve(i, conv, out);
-                for (int y = 0; y < kIrradianceInterior; ++y)
-                    for (int x = 0; x < kIrradianceInterior; ++x)
-                        for (int ch = 0; ch < 3; ++ch)
-                            tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 + size_t(ch)] =
-                                out[(y * kIrradianceInterior + x) * 3 + ch];
-            };
-            for (std::size_t first = 0; first < index.total(); first += slabProbes) {
-                const std::size_t count = std::min(slabProbes, index.total() - first);
-                slab.reset(count, cfg.raysPerProbe);
-                // Without a previous pass a probe's radiance is final once traced: it is
-                // convolved right away, while its rays are still in the cache.
-                parallelFor(
-                    count, threads,
-                    [&](std::size_t i, int t) {
-                        auto [v, p] = index.locate(first + i);
-                        const ProbeVolume& vol = set.volumes[size_t(v)];
-                        const ProbeState& st = set.states[size_t(v)][size_t(p)];
-                        if (radianceNeeded(v, p)) {
-                            glm::ivec3 c = vol.probeCoords(p);
-                            slab.trace(i, rs, sc, scene.lights, vol.localToWorldRotation(),
-                                       vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
-                                       counters[size_t(t)]);
-                        }
-                        if (!previous) writeTile(first, i, t);
-                    },
-                    [&, first](std::size_t done) {
-                        if (!previous) report(stage)(first + done);
-                    });
-                phases.mark("trace");
-                if (!previous) continue;
-                slab.lookUp(*previous, threads);
-                phases.mark("lookup");
-                parallelFor(
-                    count, threads, [&](std::size_t i, int t) { writeTile(first, i, t); },
-                    [&, first](std::size_t done) { report(stage)(first + done); });
-                phases.mark("convolve");
-            }
-            doneBefore += index.total();
-            for (ProbeTexture& t : cur)
-                fillAllBorders(t, kIrradianceInterior);
-            blendNestedRings(set.volumes, parents, curViews, targets);
-            phases.mark("convolve");
-            prev = std::move(cur);
-        }
-        set.irradiance.push_back(std::move(prev));
-    }
-    const std::vector<BakePhase> phaseTimes = phases.take();
-    double traceSeconds = 0.0, traceCpuSeconds = 0.0;
-    for (const BakePhase& p : phaseTimes) {
-        traceSeconds += p.wallSeconds;
-        traceCpuSeconds += p.cpuSeconds;
-    }
+    BakeRun run{.scene = scene,
+                .req = req,
+                .cfg = req.settings,
+                .rs = rs,
+                .threads = threads,
+                .progress = progress,
+                .set = emptySet(scene, req),
+                .parents = std::move(parents),
+                .index = ProbeIndex(req.volumes),
+                .stages = 1 + req.scenarios.size() * size_t(req.settings.bounces),
+                .counters = std::vector<RayCounters>(static_cast<size_t>(threads))};
+    bakeGeometry(run);
+    const RadianceMask mask(run);
+    bakeRadiance(run, mask);
+    const std::vector<BakePhase> phaseTimes = run.phases.take();
     if (req.recordRays) *req.recordRays = own->stopRecording();
 
-    // 3. Storage format.
     const auto tq = Clock::now();
-    std::vector<ProbeTexture*> all;
-    std::vector<QuantisationError> errors;
-    for (size_t v = 0; v < set.visibility.size(); ++v) {
-        all.push_back(&set.visibility[v]);
-        errors.push_back({set.volumes[v].name, "visibility"});
-    }
-    for (size_t s = 0; s < set.irradiance.size(); ++s) {
-        assignStorageScale(set.irradiance[s], cfg.format); // 1 unless out of range
-        for (size_t v = 0; v < set.irradiance[s].size(); ++v) {
-            all.push_back(&set.irradiance[s][v]);
-            errors.push_back({set.volumes[v].name, "irradiance " + set.scenarios[s].name});
-        }
-    }
-    parallelFor(all.size(), threads, [&](std::size_t i, int) {
-        if (cfg.format == StorageFormat::Rgba32f) { // stores the floats as they are: no error
-            quantise(*all[i], cfg.format);
-            return;
-        }
-        std::vector<float> before = all[i]->texels;
-        quantise(*all[i], cfg.format);
-        errors[i] = measureQuantisation(before, *all[i], errors[i]);
-    });
+    std::vector<QuantisationError> errors = quantiseSet(run.set, req.settings.format, threads);
     // Invalid as baked, before sparse storage marks its absent probes invalid too.
-    std::vector<std::size_t> bakedInvalidPerVolume;
-    for (const auto& vs : set.states)
-        bakedInvalidPerVolume.push_back(std::size_t(
-            std::count_if(vs.begin(), vs.end(), [](const ProbeState& p) { return !p.valid; })));
-    if (req.sparse) storeOnly(set, keep);
+    std::vector<std::size_t> bakedInvalid = invalidPerVolume(run.set);
+    if (req.sparse) storeOnly(run.set, mask.keep);
 
     if (statsOut) {
-        BakeStats st;
-        st.probes = set.probeCount();
-        st.invalidProbes = std::accumulate(bakedInvalidPerVolume.begin(),
-                                           bakedInvalidPerVolume.end(), std::size_t(0));
-        st.invalidPerVolume = std::move(bakedInvalidPerVolume);
-        st.storedProbes = set.storedCount();
-        for (const auto& vs : set.states)
-            for (const ProbeState& p : vs)
-                st.relocatedProbes += p.offset != glm::vec3(0.0f);
-        for (const RayCounters& c : counters) {
-            st.primaryRays += c.primary;
-            st.shadowRays += c.shadow;
-        }
-        st.triangles = rs.triangleCount();
+        BakeStats st = countStats(run, std::move(bakedInvalid));
         st.buildSeconds = buildSeconds;
-        st.traceSeconds = traceSeconds;
-        st.traceCpuSeconds = traceCpuSeconds;
+        for (const BakePhase& p : phaseTimes) {
+            st.traceSeconds += p.wallSeconds;
+            st.traceCpuSeconds += p.cpuSeconds;
+        }
         st.phases = phaseTimes;
         st.quantiseSeconds = since(tq);
         st.seconds = since(t0);
-        st.threads = threads;
         st.quantisation = std::move(errors);
         *statsOut = st;
     }
-    return set;
+    return std::move(run.set);
 }
 
 } // namespace pb::probes

@@ -2,7 +2,7 @@
 
 #include "core/Error.h"
 #include "core/FileIO.h"
-#include "core/TomlText.h"
+#include "core/TomlRead.h"
 
 #include <algorithm>
 #include <charconv>
@@ -16,25 +16,9 @@
 namespace pb::probes {
 namespace {
 
-class Parser {
+class Parser : public TomlReader {
 public:
-    explicit Parser(std::string path) : path_(std::move(path)) {}
-
-    [[noreturn]] void fail(const toml::source_region& where, const std::string& msg) const {
-        throw fileError(path_ + ":" + std::to_string(where.begin.line), msg);
-    }
-
-    void checkKeys(const toml::table& t, const std::set<std::string>& known,
-                   const std::string& what) const {
-        for (auto&& [k, v] : t) {
-            if (known.count(std::string(k.str()))) continue;
-            std::string list;
-            for (const auto& n : known)
-                list += (list.empty() ? "" : ", ") + n;
-            fail(k.source(), "unknown key '" + std::string(k.str()) + "' in " + what +
-                                 " (known: " + list + ")");
-        }
-    }
+    using TomlReader::TomlReader;
 
     const toml::node& require(const toml::table& t, const char* key,
                               const std::string& what) const {
@@ -71,11 +55,6 @@ public:
         if (!s) fail(n.source(), what + ": key '" + key + "' must be a string");
         return s->get();
     }
-
-    const std::string& path() const { return path_; }
-
-private:
-    std::string path_;
 };
 
 struct VolumeLines {
@@ -204,14 +183,7 @@ void forEachTable(const Parser& P, const toml::table& root, const char* key, F f
 
 VolumeFile parseVolumeToml(std::string_view text, const std::string& path) {
     Parser P(path);
-    checkTomlText(text, path); // what toml++ 3.3 cannot read without undefined behaviour
-    toml::table root;
-    try {
-        root = toml::parse(text, path);
-    } catch (const toml::parse_error& e) {
-        throw fileError(path + ":" + std::to_string(e.source().begin.line),
-                        "TOML syntax error: " + std::string(e.description()));
-    }
+    const toml::table root = parseTomlText(text, path);
     P.checkKeys(root, {"volume", "scenario"}, "the file");
     VolumeFile out;
     std::vector<VolumeLines> lines;

@@ -1,19 +1,21 @@
-// BC6H encoder throughput and error on probe-like data of the size the brief names: a
-// 32x8x32 probe volume = 8 slices of 256x256 irradiance (8x8 octahedral tiles) and 8 slices
-// of 512x512 visibility (16x16 tiles, mean distance and mean squared distance). A benchmark,
-// not a test: it asserts nothing about time and is disabled by default. Run it with
-//   build/tests/unit_tests --gtest_filter='Bc6hPerf.*' --gtest_also_run_disabled_tests
-// (PB_BC6H_QUALITY=fast|normal|high picks the quality, default normal).
+// bench_bc6h: BC6H encoder throughput and error on probe-like data of the size the brief names:
+// a 32x8x32 probe volume = 8 slices of 256x256 irradiance (8x8 octahedral tiles) and 8 slices
+// of 512x512 visibility (16x16 tiles, mean distance and mean squared distance). Not a test:
+// nothing here asserts a time.
+//
+//   BM_Bc6hEncode/KIND/QUALITY   one iteration = the 8 slices of one kind (0 irradiance RGB,
+//                                1 visibility RG) encoded at one quality (0 fast, 1 normal,
+//                                2 high). Counters: texels/s, and the relative error of the
+//                                decoded slices (mean over slices, max), measured once outside
+//                                the timing.
+//
+//   build/bench/bench_bc6h --benchmark_filter='BM_Bc6hEncode/.*/1'   # normal quality only
 #include "probes/bc6h/Bc6h.h"
 
-#include <gtest/gtest.h>
-
 #include <algorithm>
-#include <chrono>
+#include <benchmark/benchmark.h>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
-#include <string>
+#include <cstddef>
 #include <vector>
 
 namespace {
@@ -108,40 +110,58 @@ std::vector<float> visibilitySlice(int slice) {
     return img;
 }
 
-Bc6hQuality qualityFromEnv() {
-    const char* q = std::getenv("PB_BC6H_QUALITY");
-    const std::string s = q ? q : "normal";
-    return s == "fast" ? Bc6hQuality::Fast : s == "high" ? Bc6hQuality::High : Bc6hQuality::Normal;
+constexpr int kSlices = 8;
+
+struct Kind {
+    std::vector<std::vector<float>> slices;
+    int size, stride;
+    double errorFloor; // 1e-3 of irradiance level ~1; 1 cm of distance (1e-4 m^2 for d^2)
+};
+
+Kind makeKind(std::vector<float> (*slice)(int), int size, int stride, double errorFloor) {
+    Kind d{{}, size, stride, errorFloor};
+    for (int s = 0; s < kSlices; ++s)
+        d.slices.push_back(slice(s));
+    return d;
 }
 
-TEST(Bc6hPerf, DISABLED_EncodeProbeVolume) {
-    const Bc6hQuality q = qualityFromEnv();
-    double seconds[2] = {}, meanRel[2] = {}, maxRel[2] = {};
-    std::size_t texels[2] = {};
-    for (int slice = 0; slice < 8; ++slice) {
-        const std::vector<float> data[2] = {irradianceSlice(slice), visibilitySlice(slice)};
-        const int sizes[2] = {256, 512}, strides[2] = {3, 2};
-        for (int k = 0; k < 2; ++k) {
-            const auto t0 = std::chrono::steady_clock::now();
-            const std::vector<std::uint8_t> blocks =
-                encodeBc6hUf16(data[k].data(), sizes[k], sizes[k], strides[k], q);
-            seconds[k] +=
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            texels[k] += static_cast<std::size_t>(sizes[k]) * sizes[k];
-            const std::vector<float> out = decodeBc6hUf16(blocks.data(), sizes[k], sizes[k]);
-            // Floors: 1e-3 of irradiance level ~1; 1 cm of distance (1e-4 m^2 for d^2).
-            const Bc6hErrorStats e = measureBc6hError(data[k].data(), strides[k], out.data(),
-                                                      sizes[k], sizes[k], k == 0 ? 1e-3 : 1e-2);
-            meanRel[k] += e.meanRel / 8.0;
-            maxRel[k] = std::max(maxRel[k], e.maxRel);
-        }
-    }
-    const char* names[2] = {"irradiance 8 x 256x256 RGB", "visibility 8 x 512x512 RG"};
-    for (int k = 0; k < 2; ++k)
-        std::printf("%-28s %6.2f s  %5.2f Mtexel/s  rel. error mean %.4f max %.4f\n", names[k],
-                    seconds[k], texels[k] / seconds[k] / 1e6, meanRel[k], maxRel[k]);
-    std::printf("%-28s %6.2f s  %5.2f Mtexel/s\n", "total", seconds[0] + seconds[1],
-                (texels[0] + texels[1]) / (seconds[0] + seconds[1]) / 1e6);
+// The data is deterministic and costly to build: made once per kind, outside the timing.
+const Kind& kind(int k) {
+    static const Kind kinds[2] = {makeKind(&irradianceSlice, 256, 3, 1e-3),
+                                  makeKind(&visibilitySlice, 512, 2, 1e-2)};
+    return kinds[k];
 }
+
+void BM_Bc6hEncode(benchmark::State& state) {
+    const Kind& d = kind(int(state.range(0)));
+    const Bc6hQuality q = state.range(1) == 0   ? Bc6hQuality::Fast
+                          : state.range(1) == 2 ? Bc6hQuality::High
+                                                : Bc6hQuality::Normal;
+    std::vector<std::vector<std::uint8_t>> blocks(kSlices);
+    for (auto _ : state)
+        for (int s = 0; s < kSlices; ++s) {
+            blocks[size_t(s)] =
+                encodeBc6hUf16(d.slices[size_t(s)].data(), d.size, d.size, d.stride, q);
+            benchmark::DoNotOptimize(blocks[size_t(s)].data());
+        }
+    double meanRel = 0.0, maxRel = 0.0;
+    for (int s = 0; s < kSlices; ++s) {
+        const std::vector<float> out = decodeBc6hUf16(blocks[size_t(s)].data(), d.size, d.size);
+        const Bc6hErrorStats e = measureBc6hError(d.slices[size_t(s)].data(), d.stride, out.data(),
+                                                  d.size, d.size, d.errorFloor);
+        meanRel += e.meanRel / kSlices;
+        maxRel = std::max(maxRel, e.maxRel);
+    }
+    state.SetItemsProcessed(state.iterations() * kSlices * d.size * d.size); // texels
+    state.counters["rel_error_mean"] = meanRel;
+    state.counters["rel_error_max"] = maxRel;
+}
+BENCHMARK(BM_Bc6hEncode)
+    ->ArgsProduct({{0, 1}, {0, 1, 2}})
+    ->ArgNames({"kind", "quality"})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 } // namespace
+
+BENCHMARK_MAIN();
