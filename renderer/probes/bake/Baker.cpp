@@ -5,6 +5,7 @@
 #include "probes/bake/BakePhaseClock.h"
 #include "probes/bake/GeometryPass.h"
 #include "probes/bake/NestingBlend.h"
+#include "probes/bake/NoiseRounds.h"
 #include "core/ParallelFor.h"
 #include "probes/bake/RadiancePass.h"
 #include "probes/bake/RayDirections.h"
@@ -75,6 +76,13 @@ void checkRequest(const BakeRequest& r) {
                     ")");
     if (!(r.settings.backfaceThreshold >= 0.0f && r.settings.backfaceThreshold <= 1.0f))
         throw Error("backface threshold must be in [0, 1]");
+    if (!(r.settings.noiseTarget == 0.0f ||
+          (r.settings.noiseTarget > 0.0f && r.settings.noiseTarget < 1.0f)))
+        throw Error("--noise-target: must be in (0, 1), or 0 for no noise control (got " +
+                    std::to_string(r.settings.noiseTarget) + ")");
+    if (r.settings.emitterSamples < 0 || r.settings.emitterSamples > 65536)
+        throw Error("--emitter-samples: must be in [0, 65536] (got " +
+                    std::to_string(r.settings.emitterSamples) + ")");
 }
 
 } // namespace
@@ -116,6 +124,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     };
     std::vector<RayCounters> counters(static_cast<size_t>(threads));
     RadianceSlab slab; // reused by every pass (keeps its buffers)
+    NoiseRounds noise(cfg.noiseTarget); // the converged bake's bookkeeping (NoiseRounds.h)
 
     // 1. Geometry.
     {
@@ -193,6 +202,9 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
             const auto dirs =
                 passDirections(cfg.raysPerProbe, radianceStream(cfg.seed, int(s), pass));
             const ProbeConvolution conv(dirs);
+            // Emitter samples draw from their own stream ("emit"), each probe by its index.
+            const EmitterSampling nee{cfg.emitterSamples,
+                                      radianceStream(cfg.seed, int(s), pass) ^ 0x656d6974ull};
             std::vector<std::vector<float>> irr(
                 size_t(threads), std::vector<float>(kIrradianceInterior * kIrradianceInterior * 3));
             std::string stage =
@@ -217,15 +229,65 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
                 if (!radianceNeeded(v, p)) return;
                 float* out = irr[size_t(t)].data();
                 slab.convolve(i, conv, out);
+                noise.firstRound(i, slab, conv, out);
                 for (int y = 0; y < kIrradianceInterior; ++y)
                     for (int x = 0; x < kIrradianceInterior; ++x)
                         for (int ch = 0; ch < 3; ++ch)
                             tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 + size_t(ch)] =
                                 out[(y * kIrradianceInterior + x) * 3 + ch];
             };
+            // The converged bake (BakeSettings::noiseTarget): the slab's noisy probes get more
+            // rounds, each a fresh rotation and fresh emitter samples, averaged into their tile.
+            auto moreRounds = [&](std::size_t first, std::size_t count) {
+                for (int round = 1; round < kMaxNoiseRounds; ++round) {
+                    const std::vector<std::size_t> todo = noise.aboveTarget(count);
+                    if (todo.empty()) break;
+                    const std::uint64_t stream = roundStream(cfg.seed, int(s), pass, round);
+                    const auto roundDirs = passDirections(cfg.raysPerProbe, stream);
+                    const ProbeConvolution roundConv(roundDirs);
+                    const EmitterSampling roundNee{cfg.emitterSamples, stream ^ 0x656d6974ull};
+                    slab.reset(todo.size(), cfg.raysPerProbe);
+                    parallelFor(todo.size(), threads, [&](std::size_t j, int t) {
+                        auto [v, p] = index.locate(first + todo[j]);
+                        const ProbeVolume& vol = set.volumes[size_t(v)];
+                        const ProbeState& st = set.states[size_t(v)][size_t(p)];
+                        glm::ivec3 c = vol.probeCoords(p);
+                        slab.trace(j, rs, sc, scene.lights, vol.localToWorldRotation(),
+                                   vol.toWorld(vol.gridLocal(c) + st.offset), roundDirs, previous,
+                                   counters[size_t(t)], roundNee, first + todo[j]);
+                    });
+                    noise.extraRays += std::uint64_t(todo.size()) * std::uint64_t(cfg.raysPerProbe);
+                    phases.mark("trace");
+                    if (previous) {
+                        slab.lookUp(*previous, threads);
+                        phases.mark("lookup");
+                    }
+                    parallelFor(todo.size(), threads, [&](std::size_t j, int t) {
+                        auto [v, p] = index.locate(first + todo[j]);
+                        glm::ivec3 c = set.volumes[size_t(v)].probeCoords(p);
+                        float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
+                        const int pitch = cur[size_t(v)].shape.width;
+                        float* out = irr[size_t(t)].data();
+                        slab.convolve(j, roundConv, out);
+                        const int k = noise.addRound(todo[j], out);
+                        for (int y = 0; y < kIrradianceInterior; ++y)
+                            for (int x = 0; x < kIrradianceInterior; ++x)
+                                for (int ch = 0; ch < 3; ++ch) {
+                                    float& texel = tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 +
+                                                        size_t(ch)];
+                                    // The running mean over the probe's k rounds.
+                                    texel += (out[(y * kIrradianceInterior + x) * 3 + ch] - texel) /
+                                             float(k);
+                                }
+                        noise.setMean(todo[j], tile, pitch);
+                    });
+                    phases.mark("convolve");
+                }
+            };
             for (std::size_t first = 0; first < index.total(); first += slabProbes) {
                 const std::size_t count = std::min(slabProbes, index.total() - first);
                 slab.reset(count, cfg.raysPerProbe);
+                noise.startSlab(count);
                 // Without a previous pass a probe's radiance is final once traced: it is
                 // convolved right away, while its rays are still in the cache.
                 parallelFor(
@@ -238,7 +300,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
                             glm::ivec3 c = vol.probeCoords(p);
                             slab.trace(i, rs, sc, scene.lights, vol.localToWorldRotation(),
                                        vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
-                                       counters[size_t(t)]);
+                                       counters[size_t(t)], nee, first + i);
                         }
                         if (!previous) writeTile(first, i, t);
                     },
@@ -253,6 +315,8 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
                     count, threads, [&](std::size_t i, int t) { writeTile(first, i, t); },
                     [&, first](std::size_t done) { report(stage)(first + done); });
                 phases.mark("convolve");
+                if (noise.active()) moreRounds(first, count);
+                noise.finishSlab(count);
             }
             doneBefore += index.total();
             for (ProbeTexture& t : cur)
@@ -325,6 +389,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         st.seconds = since(t0);
         st.threads = threads;
         st.quantisation = std::move(errors);
+        noise.summarise(st);
         *statsOut = st;
     }
     return set;
