@@ -35,6 +35,8 @@ struct BakeArgs {
     std::string writeVolumes;
     const CLI::Option *levelsOption = nullptr, *childrenOption = nullptr; // given or not
     int rays = 256, bounces = 2, threads = 0;
+    int emitterSamples = probes::BakeSettings().emitterSamples;
+    float noiseTarget = probes::BakeSettings().noiseTarget;
     std::vector<std::string> scenarios;
     std::string format = "rgba16f";
     std::uint64_t seed = 1;
@@ -214,6 +216,8 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
     r.scenarios = resolveScenarios(a.scenarios, fileScenarios, s);
     r.settings.raysPerProbe = a.rays;
     r.settings.bounces = a.bounces;
+    r.settings.emitterSamples = a.emitterSamples;
+    r.settings.noiseTarget = a.noiseTarget;
     r.settings.seed = a.seed;
     r.settings.format = format;
     r.settings.relocate = !a.noRelocate;
@@ -312,6 +316,14 @@ void printSummary(const BakeArgs& a, const PlacementInfo& placement, const Probe
             j["rays_per_second"] = st->seconds > 0 ? rays / st->seconds : 0.0;
             j["threads"] = st->threads;
             j["triangles"] = st->triangles;
+            j["noise"] = {{"target", set.settings.noiseTarget},
+                          {"emitter_samples", set.settings.emitterSamples},
+                          {"mean_relative_se", st->noiseMean},
+                          {"p95_relative_se", st->noiseP95},
+                          {"probe_passes", st->tracedProbePasses},
+                          {"probe_passes_with_more_rounds", st->noisyProbePasses},
+                          {"probe_passes_above_target", st->probePassesAboveTarget},
+                          {"extra_round_rays", st->extraRoundRays}};
             nlohmann::json q = nlohmann::json::array();
             for (const auto& e : st->quantisation)
                 q.push_back({{"volume", e.volume},
@@ -333,6 +345,16 @@ void printSummary(const BakeArgs& a, const PlacementInfo& placement, const Probe
                     "triangles\n",
                     (unsigned long long)st->primaryRays, set.settings.raysPerProbe,
                     (unsigned long long)st->shadowRays, st->threads, st->triangles);
+        std::printf("noise: mean %.2f%%, p95 %.2f%% relative standard error of a probe's "
+                    "irradiance",
+                    100 * st->noiseMean, 100 * st->noiseP95);
+        if (set.settings.noiseTarget > 0)
+            std::printf(" (target %.3g%%: %zu of %zu probe passes took more rounds, +%llu rays; "
+                        "%zu stayed above after %d rounds)",
+                        100 * set.settings.noiseTarget, st->noisyProbePasses,
+                        st->tracedProbePasses, (unsigned long long)st->extraRoundRays,
+                        st->probePassesAboveTarget, probes::kMaxNoiseRounds);
+        std::printf("\n");
         std::printf("time: %.2f s (BVH %.2f s, tracing %.2f s, %s encoding %.2f s), %.2f M "
                     "rays/s\n",
                     st->seconds, st->buildSeconds, st->traceSeconds, formatName(set.format()),
@@ -484,6 +506,15 @@ const RegisterCommand reg{{
         cmd.add_option("--format", a->format, "Storage: rgba16f, rgba32f or bc6h")
             ->capture_default_str();
         cmd.add_option("--seed", a->seed, "Seed of the per-pass ray rotations")
+            ->capture_default_str();
+        cmd.add_option("--noise-target", a->noiseTarget,
+                       "Converged bake: probes whose irradiance noise (relative standard error) "
+                       "is above this after a pass get more rounds of rays, up to 16x; in (0, 1), "
+                       "0 = one round")
+            ->capture_default_str();
+        cmd.add_option("--emitter-samples", a->emitterSamples,
+                       "Points sampled on the emissive triangles per probe and pass, weighted "
+                       "against the rays by MIS (0: emitters found by the rays alone)")
             ->capture_default_str();
         cmd.add_option("--threads", a->threads,
                        "Worker threads (0 = all cores; never changes "

@@ -24,7 +24,21 @@ struct BakeSettings {
     StorageFormat format = StorageFormat::Rgba16f;
     bool relocate = true;            // move probes up to kMaxRelocation cell out of geometry
     float backfaceThreshold = 0.25f; // back-face hit ratio above which a probe is invalid
+    // Points sampled on the emissive triangles per probe, pass and round, weighted against
+    // the rays by MIS (probes/bake/RadiancePass.h EmitterSampling); 0: the rays alone. A bake
+    // input (hashed), not stored in the probe file.
+    int emitterSamples = 512;
+    // The converged bake: a probe whose estimated irradiance noise (relative standard error of
+    // its texels, RadianceSlab::relativeNoise) is above this after a pass's first round of
+    // rays gets more rounds - a fresh ray rotation and fresh emitter samples each, averaged -
+    // until it is below or has had kMaxNoiseRounds. 0: one round (no noise control). A bake
+    // input (hashed), not stored in the probe file.
+    float noiseTarget = 0.03f;
 };
+
+// The most rounds of rays a probe gets per pass under a noise target (so at most this many
+// times the rays of a plain bake, for the probes that need them).
+constexpr int kMaxNoiseRounds = 16;
 
 // Relocation never moves a probe further than this fraction of its cell along any axis.
 constexpr float kMaxRelocation = 0.45f;

@@ -9,7 +9,8 @@
 namespace pb::probes {
 namespace {
 
-constexpr std::uint32_t kBakeAlgorithmVersion = 2; // 2: far scenes bake in a moved frame
+constexpr std::uint32_t kBakeAlgorithmVersion = 3; // 2: far scenes bake in a moved frame;
+                                                   // 3: emitter sampling (MIS) at the probe
 
 void hashSun(Hasher& h, const scene::Sun& s) {
     h.pod(std::uint8_t(s.enabled));
@@ -85,6 +86,9 @@ std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& r) {
     h.pod(std::uint32_t(b.format));
     h.pod(std::uint8_t(b.relocate));
     h.pod(b.backfaceThreshold);
+    h.pod(std::int32_t(b.emitterSamples));
+    h.pod(b.noiseTarget);
+    h.pod(std::int32_t(kMaxNoiseRounds));
     h.pod(std::uint8_t(r.sparse));
     return h.value();
 }

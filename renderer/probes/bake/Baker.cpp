@@ -5,6 +5,7 @@
 #include "probes/bake/BakePhaseClock.h"
 #include "probes/bake/GeometryPass.h"
 #include "probes/bake/NestingBlend.h"
+#include "probes/bake/NoiseRounds.h"
 #include "core/ParallelFor.h"
 #include "probes/bake/RadiancePass.h"
 #include "probes/bake/RayDirections.h"
@@ -75,6 +76,13 @@ void checkRequest(const BakeRequest& r) {
                     ")");
     if (!(r.settings.backfaceThreshold >= 0.0f && r.settings.backfaceThreshold <= 1.0f))
         throw Error("backface threshold must be in [0, 1]");
+    if (!(r.settings.noiseTarget == 0.0f ||
+          (r.settings.noiseTarget > 0.0f && r.settings.noiseTarget < 1.0f)))
+        throw Error("--noise-target: must be in (0, 1), or 0 for no noise control (got " +
+                    std::to_string(r.settings.noiseTarget) + ")");
+    if (r.settings.emitterSamples < 0 || r.settings.emitterSamples > 65536)
+        throw Error("--emitter-samples: must be in [0, 65536] (got " +
+                    std::to_string(r.settings.emitterSamples) + ")");
 }
 
 // What every stage of one bake shares: the set being filled, the flat probe numbering, the
@@ -94,6 +102,7 @@ struct BakeRun {
     std::vector<RayCounters> counters;
     BakePhaseClock phases{}; // the tracing time is the sum of its phases
     RadianceSlab slab{};     // reused by every pass (keeps its buffers)
+    NoiseRounds noise{0.0f}; // the converged bake's bookkeeping (NoiseRounds.h)
 
     void report(const std::string& stage, std::size_t done) const {
         if (progress) progress({stage, doneBefore + done, stages * index.total()});
@@ -175,6 +184,58 @@ struct RadianceMask {
     }
 };
 
+// The converged bake (BakeSettings::noiseTarget): the slab's probes still above the target get
+// more rounds, each a fresh ray rotation and fresh emitter samples, averaged into their tile
+// (cur) until they are below it or have had kMaxNoiseRounds.
+void traceMoreRounds(BakeRun& run, const Scenario& sc, size_t s, int pass,
+                     const ProbeSampler* previous, std::vector<ProbeTexture>& cur,
+                     std::vector<std::vector<float>>& irr, std::size_t first, std::size_t count) {
+    const BakeSettings& cfg = run.cfg;
+    for (int round = 1; round < kMaxNoiseRounds; ++round) {
+        const std::vector<std::size_t> todo = run.noise.aboveTarget(count);
+        if (todo.empty()) return;
+        const std::uint64_t stream = roundStream(cfg.seed, int(s), pass, round);
+        const auto dirs = passDirections(cfg.raysPerProbe, stream);
+        const ProbeConvolution conv(dirs);
+        const EmitterSampling nee{cfg.emitterSamples, stream ^ 0x656d6974ull}; // "emit"
+        run.slab.reset(todo.size(), cfg.raysPerProbe);
+        parallelFor(todo.size(), run.threads, [&](std::size_t j, int t) {
+            auto [v, p] = run.locate(first + todo[j]);
+            const ProbeVolume& vol = run.set.volumes[size_t(v)];
+            const ProbeState& st = run.set.states[size_t(v)][size_t(p)];
+            glm::ivec3 c = vol.probeCoords(p);
+            run.slab.trace(j, run.rs, sc, run.scene.lights, vol.localToWorldRotation(),
+                           vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
+                           run.counters[size_t(t)], nee, first + todo[j]);
+        });
+        run.noise.extraRays += std::uint64_t(todo.size()) * std::uint64_t(cfg.raysPerProbe);
+        run.phases.mark("trace");
+        if (previous) {
+            run.slab.lookUp(*previous, run.threads);
+            run.phases.mark("lookup");
+        }
+        parallelFor(todo.size(), run.threads, [&](std::size_t j, int t) {
+            auto [v, p] = run.locate(first + todo[j]);
+            glm::ivec3 c = run.set.volumes[size_t(v)].probeCoords(p);
+            float* tile = tileOrigin(cur[size_t(v)], c, kIrradianceTile);
+            const int pitch = cur[size_t(v)].shape.width;
+            float* out = irr[size_t(t)].data();
+            run.slab.convolve(j, conv, out);
+            const int k = run.noise.addRound(todo[j], out);
+            for (int y = 0; y < kIrradianceInterior; ++y)
+                for (int x = 0; x < kIrradianceInterior; ++x)
+                    for (int ch = 0; ch < 3; ++ch) {
+                        float& texel =
+                            tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 4 + size_t(ch)];
+                        // The running mean over the probe's k rounds.
+                        texel += (out[(y * kIrradianceInterior + x) * 3 + ch] - texel) / float(k);
+                    }
+            run.noise.setMean(todo[j], tile, pitch);
+        });
+        run.phases.mark("convolve");
+    }
+}
+
 // 2. Radiance of one scenario's bounce `pass`, reading the previous bounce `prev` (empty for
 // the first): the irradiance textures of every volume, nested rings blended.
 std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mask, size_t s,
@@ -199,6 +260,9 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     const ProbeSampler* previous = prev.empty() ? nullptr : &prevSampler;
     const auto dirs = passDirections(cfg.raysPerProbe, radianceStream(cfg.seed, int(s), pass));
     const ProbeConvolution conv(dirs);
+    // Emitter samples draw from their own stream ("emit"), each probe by its index.
+    const EmitterSampling nee{cfg.emitterSamples,
+                              radianceStream(cfg.seed, int(s), pass) ^ 0x656d6974ull};
     std::vector<std::vector<float>> irr(
         size_t(run.threads), std::vector<float>(kIrradianceInterior * kIrradianceInterior * 3));
     const std::string stage =
@@ -223,6 +287,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
         if (!mask.needed(set, v, p)) return;
         float* out = irr[size_t(t)].data();
         run.slab.convolve(i, conv, out);
+        run.noise.firstRound(i, run.slab, conv, out);
         for (int y = 0; y < kIrradianceInterior; ++y)
             for (int x = 0; x < kIrradianceInterior; ++x)
                 for (int ch = 0; ch < 3; ++ch)
@@ -233,6 +298,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     for (std::size_t first = 0; first < total; first += slabProbes) {
         const std::size_t count = std::min(slabProbes, total - first);
         run.slab.reset(count, cfg.raysPerProbe);
+        run.noise.startSlab(count);
         // Without a previous pass a probe's radiance is final once traced: it is
         // convolved right away, while its rays are still in the cache.
         parallelFor(
@@ -245,7 +311,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
                     glm::ivec3 c = vol.probeCoords(p);
                     run.slab.trace(i, run.rs, sc, run.scene.lights, vol.localToWorldRotation(),
                                    vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
-                                   run.counters[size_t(t)]);
+                                   run.counters[size_t(t)], nee, first + i);
                 }
                 if (!previous) writeTile(first, i, t);
             },
@@ -253,13 +319,16 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
                 if (!previous) run.report(stage, first + done);
             });
         run.phases.mark("trace");
-        if (!previous) continue;
-        run.slab.lookUp(*previous, run.threads);
-        run.phases.mark("lookup");
-        parallelFor(
-            count, run.threads, [&](std::size_t i, int t) { writeTile(first, i, t); },
-            [&, first](std::size_t done) { run.report(stage, first + done); });
-        run.phases.mark("convolve");
+        if (previous) {
+            run.slab.lookUp(*previous, run.threads);
+            run.phases.mark("lookup");
+            parallelFor(
+                count, run.threads, [&](std::size_t i, int t) { writeTile(first, i, t); },
+                [&, first](std::size_t done) { run.report(stage, first + done); });
+            run.phases.mark("convolve");
+        }
+        if (run.noise.active()) traceMoreRounds(run, sc, s, pass, previous, cur, irr, first, count);
+        run.noise.finishSlab(count);
     }
     run.doneBefore += total;
     for (ProbeTexture& t : cur)
@@ -362,6 +431,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
                 .index = ProbeIndex(req.volumes),
                 .stages = 1 + req.scenarios.size() * size_t(req.settings.bounces),
                 .counters = std::vector<RayCounters>(static_cast<size_t>(threads))};
+    run.noise = NoiseRounds(req.settings.noiseTarget);
     bakeGeometry(run);
     const RadianceMask mask(run);
     bakeRadiance(run, mask);
@@ -385,6 +455,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         st.quantiseSeconds = since(tq);
         st.seconds = since(t0);
         st.quantisation = std::move(errors);
+        run.noise.summarise(st);
         *statsOut = st;
     }
     return std::move(run.set);

@@ -70,6 +70,13 @@ struct BakeStats {
     double traceCpuSeconds = 0.0;
     std::vector<BakePhase> phases; // traceSeconds split up (their sums)
     double quantiseSeconds = 0.0;  // encoding to the storage format
+    // The converged bake (BakeSettings::noiseTarget): each traced probe's relative irradiance
+    // noise after its last round, over every pass and scenario - mean and 95th percentile -,
+    // how many probe passes needed more than one round, how many stayed above the target
+    // after kMaxNoiseRounds, and the primary rays those extra rounds traced.
+    double noiseMean = 0.0, noiseP95 = 0.0;
+    std::size_t noisyProbePasses = 0, probePassesAboveTarget = 0, tracedProbePasses = 0;
+    std::uint64_t extraRoundRays = 0;
     int threads = 1;
     std::vector<QuantisationError> quantisation;
 };

@@ -71,6 +71,25 @@ void ProbeConvolution::irradiance(const float* rgbx, float* out) const {
     }
 }
 
+void ProbeConvolution::irradianceLumaVariance(const float* rgbx, float* out) const {
+    auto luma = [&](int r) {
+        const float* l = rgbx + 4 * size_t(r);
+        return 0.2126f * l[0] + 0.7152f * l[1] + 0.0722f * l[2];
+    };
+    for (size_t t = 0; t + 1 < irr_.start.size(); ++t) {
+        float e = 0.0f;
+        for (int k = irr_.start[t]; k < irr_.start[t + 1]; ++k)
+            e += irr_.weight[size_t(k)] * luma(irr_.ray[size_t(k)]);
+        const float mu = e / float(M_PI);
+        float v = 0.0f;
+        for (int k = irr_.start[t]; k < irr_.start[t + 1]; ++k) {
+            const float w = irr_.weight[size_t(k)], dy = luma(irr_.ray[size_t(k)]) - mu;
+            v += w * w * dy * dy;
+        }
+        out[t] = v;
+    }
+}
+
 void ProbeConvolution::visibility(const float* d, float* out) const {
     for (size_t t = 0; t + 1 < vis_.start.size(); ++t) {
         float m = 0, m2 = 0;

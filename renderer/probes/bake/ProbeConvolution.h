@@ -28,6 +28,11 @@ public:
     // texel. (Four floats per ray: one SIMD multiply-add per weight, the same per-channel
     // arithmetic in the same order as three scalar sums.)
     void irradiance(const float* rgbx, float* outRgb) const;
+    // The variance of each interior texel's luminance estimate, from the rays' sample
+    // variance: E_t = sum_e W_e L_e (W: the weights above, pi included), so with mu_t = E_t / pi
+    //     var_t = sum_e W_e^2 (Y(L_e) - Y(mu_t))^2
+    // (independent samples; the Fibonacci rays are stratified, so this is an upper estimate).
+    void irradianceLumaVariance(const float* rgbx, float* outVar) const;
     // dist01: rays() normalised distances; out: interior texels, (mean, meanSq) per texel.
     void visibility(const float* dist01, float* outMeanMeanSq) const;
 

@@ -1,11 +1,44 @@
 #include "probes/bake/RadiancePass.h"
 
-#include "probes/bake/DirectLight.h"
 #include "core/ParallelFor.h"
+#include "probes/Octahedral.h"
+#include "probes/ProbeLayout.h"
+#include "probes/bake/DirectLight.h"
+#include "probes/bake/RayDirections.h"
 
 #include <cmath>
+#include <limits>
 
 namespace pb::probes {
+
+namespace {
+
+constexpr int kTexels = kIrradianceInterior * kIrradianceInterior;
+constexpr float kUniformSpherePdf = float(1.0 / (4.0 * M_PI));
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+// The interior texels' directions, volume-local (as ProbeConvolution's).
+const std::vector<glm::vec3>& texelDirections() {
+    static const std::vector<glm::vec3> dirs = [] {
+        std::vector<glm::vec3> d;
+        for (int j = 0; j < kIrradianceInterior; ++j)
+            for (int i = 0; i < kIrradianceInterior; ++i)
+                d.push_back(octTexelDirection(i, j, kIrradianceInterior));
+        return d;
+    }();
+    return dirs;
+}
+
+// Solid-angle density of sampling direction `d` (unit) through emitter triangle k hit at
+// distance t: pdfArea * t^2 / |cos_l|; infinite at grazing angles.
+float emitterPdf(const EmitterTable& table, int k, const glm::vec3& d, float t) {
+    const float cosL = std::fabs(glm::dot(table.triangle(k).normal, d));
+    if (!(cosL > 1e-6f)) return std::numeric_limits<float>::infinity();
+    return table.pdfArea(k) * t * t / cosL;
+}
+
+} // namespace
 
 void RadianceSlab::reset(std::size_t probes, int rays) {
     rays_ = rays;
@@ -18,18 +51,27 @@ void RadianceSlab::reset(std::size_t probes, int rays) {
         p.clear();
     for (auto& k : keys_)
         k.clear();
+    emitterSamples_ = 0;
+    lightRgb_.assign(probes * kTexels * 3, 0.0f);
+    lightY_.assign(probes * kTexels, 0.0f);
+    lightY2_.assign(probes * kTexels, 0.0f);
 }
 
 void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& sc,
                          const std::vector<scene::Light>& lights, const glm::mat3& rot,
                          const glm::vec3& origin, const std::vector<glm::vec3>& dirs,
-                         const ProbeSampler* previous, RayCounters& counters) {
+                         const ProbeSampler* previous, RayCounters& counters,
+                         const EmitterSampling& nee, std::uint64_t probeKey) {
     const std::size_t n = std::size_t(rays_), first = slot * n;
     std::vector<Pending>& pending = pending_[slot];
     std::vector<std::uint32_t>& keys = keys_[slot];
     pending.clear();
     keys.clear();
     const float invPi = float(1.0 / M_PI);
+    const EmitterTable& emitters = rs.emitters();
+    const int m = emitters.empty() ? 0 : std::max(nee.samples, 0);
+    emitterSamples_ = m;
+    const float nPu = float(n) * kUniformSpherePdf;
     // All rays first, then the shading: the face normal of each hit is prefetched while the
     // following rays are traced (results are per ray: the order of the calls does not matter).
     RayHit* hits = hits_.data() + first;
@@ -53,6 +95,10 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
             } else {
                 if (back) nrm = -nrm;
                 L = surf.emissive;
+                if (m > 0 && L != glm::vec3(0.0f)) { // the balance heuristic's ray weight
+                    const int k = emitters.find(h.geomID, h.primID);
+                    if (k >= 0) L *= nPu / (nPu + float(m) * emitterPdf(emitters, k, d, h.t));
+                }
                 if (surf.albedo != glm::vec3(0.0f)) {
                     const glm::vec3 x = origin + d * h.t;
                     glm::vec3 e = directIrradiance(rs, sc, lights, x, nrm, counters.shadow);
@@ -66,6 +112,46 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
             }
         }
         radiance_[first + i] = glm::vec4(L, 0.0f);
+    }
+    if (m == 0) return;
+
+    // The emitter samples: M points on the emitters, each visible one added to every texel
+    // facing it (volume-local directions, as the rays' convolution).
+    std::uint64_t state = nee.stream ^ (probeKey * 0x9e3779b97f4a7c15ull);
+    splitmix64(state);
+    const glm::mat3 toLocal = glm::transpose(rot);
+    const std::vector<glm::vec3>& texels = texelDirections();
+    float* rgb = lightRgb_.data() + slot * kTexels * 3;
+    float* y1 = lightY_.data() + slot * kTexels;
+    float* y2 = lightY2_.data() + slot * kTexels;
+    for (int j = 0; j < m; ++j) {
+        const float u0 = uniformFloat(state), u1 = uniformFloat(state), u2 = uniformFloat(state);
+        const EmitterSample s = emitters.sample(u0, u1, u2);
+        const EmissiveTriangle& tri = emitters.triangle(s.triangle);
+        glm::vec3 w = s.point - origin;
+        const float dist = glm::length(w);
+        if (!(dist > 0.0f)) continue;
+        w /= dist;
+        const float cosL = glm::dot(tri.normal, -w);
+        if (!(cosL > 0.0f) && !tri.doubleSided) continue; // its back: emits nothing here
+        const float pdf = emitterPdf(emitters, s.triangle, w, dist);
+        if (!std::isfinite(pdf)) continue;
+        ++counters.shadow;
+        const float eps = rs.epsilon();
+        if (rs.occluded(origin, w, 0.0f, std::max(dist - 2.0f * eps, 0.0f))) continue;
+        const glm::vec3 c = tri.radiance / (nPu + float(m) * pdf);
+        const glm::vec3 local = toLocal * w;
+        for (int t = 0; t < kTexels; ++t) {
+            const float cosT = glm::dot(texels[size_t(t)], local);
+            if (!(cosT > 0.0f)) continue;
+            const glm::vec3 x = c * cosT;
+            rgb[3 * t] += x.r;
+            rgb[3 * t + 1] += x.g;
+            rgb[3 * t + 2] += x.b;
+            const float y = luminance(x);
+            y1[t] += y;
+            y2[t] += y * y;
+        }
     }
 }
 
@@ -123,6 +209,40 @@ const glm::vec4* RadianceSlab::finish(std::size_t slot) {
 
 void RadianceSlab::convolve(std::size_t slot, const ProbeConvolution& conv, float* outRgb) {
     conv.irradiance(&finish(slot)->x, outRgb);
+    if (emitterSamples_ == 0) return;
+    const float* rgb = lightRgb_.data() + slot * kTexels * 3;
+    for (int i = 0; i < kTexels * 3; ++i)
+        outRgb[i] += rgb[i];
+}
+
+void RadianceSlab::texelVariance(std::size_t slot, const ProbeConvolution& conv,
+                                 float* outVar) const {
+    conv.irradianceLumaVariance(&radiance_[slot * std::size_t(rays_)].x, outVar);
+    const int m = emitterSamples_;
+    if (m < 2) return;
+    // The light part is a sum of M samples: its variance is M times their sample variance.
+    const float* y1 = lightY_.data() + slot * kTexels;
+    const float* y2 = lightY2_.data() + slot * kTexels;
+    for (int t = 0; t < kTexels; ++t) {
+        const float s2 = std::max(0.0f, (y2[t] - y1[t] * y1[t] / float(m)) / float(m - 1));
+        outVar[t] += float(m) * s2;
+    }
+}
+
+float RadianceSlab::relativeNoise(std::size_t slot, const ProbeConvolution& conv) const {
+    float var[kTexels];
+    texelVariance(slot, conv, var);
+    float e[kTexels * 3];
+    conv.irradiance(&radiance_[slot * std::size_t(rays_)].x, e);
+    const float* rgb = lightRgb_.data() + slot * kTexels * 3;
+    double meanY = 0.0, meanVar = 0.0;
+    for (int t = 0; t < kTexels; ++t) {
+        glm::vec3 c(e[3 * t], e[3 * t + 1], e[3 * t + 2]);
+        if (emitterSamples_ > 0) c += glm::vec3(rgb[3 * t], rgb[3 * t + 1], rgb[3 * t + 2]);
+        meanY += luminance(c) / kTexels;
+        meanVar += double(var[t]) / kTexels;
+    }
+    return meanY > 0.0 ? float(std::sqrt(meanVar) / meanY) : 0.0f;
 }
 
 } // namespace pb::probes

@@ -32,6 +32,24 @@ struct RayCounters {
     std::uint64_t primary = 0, shadow = 0;
 };
 
+// Next-event estimation toward the scene's emissive triangles (RayScene::emitters), at the
+// probe itself. With samples M > 0, each traced probe also samples M points on the emitters
+// (alias table by power, EmitterTable.h) and weights them against its N rays by the balance
+// heuristic, with the rays' density taken as uniform on the sphere (1 / 4pi, what the
+// convolution's normalised weights amount to):
+//     a ray hitting an emitter keeps      L_e * N p_u / (N p_u + M p_l(omega))
+//     a visible light sample adds to texel t   L_e * max(0, n_t.omega) / (N p_u + M p_l(omega))
+// so emitted light is counted once, from whichever strategy samples it better: the light
+// samples for small or distant emitters (a panel a few rays would miss), the rays for large
+// and close ones. Only emitted radiance the probe sees directly is sampled so: light that
+// bounced off a surface first is still the hits' shading (below), as before.
+// samples = 0: the rays alone (what SurfaceGather uses). The stream seeds the pass; each
+// probe draws from it by its probe key, so results do not depend on the thread count.
+struct EmitterSampling {
+    int samples = 0;
+    std::uint64_t stream = 0;
+};
+
 class RadianceSlab {
 public:
     // Room for `probes` probes of `rays` rays each; forgets the previous slab.
@@ -43,7 +61,8 @@ public:
     void trace(std::size_t slot, const RayScene& rs, const Scenario& sc,
                const std::vector<scene::Light>& lights, const glm::mat3& volumeRotation,
                const glm::vec3& probeWorld, const std::vector<glm::vec3>& localDirs,
-               const ProbeSampler* previous, RayCounters& counters);
+               const ProbeSampler* previous, RayCounters& counters,
+               const EmitterSampling& emitters = {}, std::uint64_t probeKey = 0);
     // Phase 2, once per slab after every trace: E_indirect of every queued hit, sorted by
     // the previous pass's grid cell, on `threads` threads.
     void lookUp(const ProbeSampler& previous, int threads);
@@ -51,8 +70,17 @@ public:
     // in the order of the directions) and returns it. Also for gathers that weight the rays
     // themselves (SurfaceGather.h).
     const glm::vec4* finish(std::size_t slot);
-    // Phase 3 for a probe: finish, then outRgb = the 6x6 interior, RGB per texel, row-major.
+    // Phase 3 for a probe: finish, then outRgb = the 6x6 interior, RGB per texel, row-major
+    // (the rays' convolution plus the emitter samples' texels).
     void convolve(std::size_t slot, const ProbeConvolution& conv, float* outRgb);
+    // After convolve: the probe's irradiance noise, the standard error of its texels' luminance
+    // estimated from the sample variances of its rays (ProbeConvolution::irradianceLumaVariance)
+    // and of its emitter samples, as the RMS over the texels over their mean luminance (0 for
+    // a black probe). The rays are stratified, so this overestimates a little: a conservative
+    // figure to decide whether a probe needs more rays.
+    float relativeNoise(std::size_t slot, const ProbeConvolution& conv) const;
+    // The same as an absolute variance per texel (luminance), for combining rounds.
+    void texelVariance(std::size_t slot, const ProbeConvolution& conv, float* outVar) const;
 
 private:
     struct Pending { // a hit waiting for E_indirect
@@ -66,6 +94,9 @@ private:
     std::vector<std::vector<Pending>> pending_;    // per slot
     std::vector<std::vector<std::uint32_t>> keys_; // per slot: localityKey of each pending hit
     std::vector<glm::vec3> indirect_;              // E_indirect per ray (pending hits only)
+    // Emitter samples per slot and interior texel: RGB sum, luminance sum and sum of squares.
+    int emitterSamples_ = 0;
+    std::vector<float> lightRgb_, lightY_, lightY2_;
 };
 
 } // namespace pb::probes

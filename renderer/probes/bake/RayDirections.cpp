@@ -49,6 +49,12 @@ std::uint64_t radianceStream(std::uint64_t seed, int scenario, int pass) {
     return splitmix64(s);
 }
 
+std::uint64_t roundStream(std::uint64_t seed, int scenario, int pass, int round) {
+    std::uint64_t s = radianceStream(seed, scenario, pass) ^ (std::uint64_t(round) * 0x726f756e64ull);
+    splitmix64(s);
+    return splitmix64(s);
+}
+
 std::vector<glm::vec3> passDirections(int rays, std::uint64_t stream) {
     std::uint64_t state = stream;
     glm::mat3 rot = randomRotation(state);

@@ -23,6 +23,8 @@ glm::mat3 randomRotation(std::uint64_t& state);
 // Streams of the bake: the geometry pass, and pass p of scenario s.
 std::uint64_t geometryStream(std::uint64_t seed);
 std::uint64_t radianceStream(std::uint64_t seed, int scenario, int pass);
+// Round r > 0 of a pass under a noise target (Baker.h): its own rotation and emitter samples.
+std::uint64_t roundStream(std::uint64_t seed, int scenario, int pass, int round);
 
 // The pass's directions: rotation(stream) applied to the Fibonacci set (volume-local).
 std::vector<glm::vec3> passDirections(int rays, std::uint64_t stream);

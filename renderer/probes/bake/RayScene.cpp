@@ -56,7 +56,6 @@ std::vector<MaterialSummary> summariseMaterials(const scene::Scene& s) {
 }
 
 scene::Bounds staticBakeBounds(const scene::Scene& s) {
-    auto mats = summariseMaterials(s);
     scene::Bounds b;
     for (const scene::Instance& inst : s.instances) {
         if (!bakesInstance(s, inst)) continue;
@@ -74,6 +73,7 @@ RayScene::RayScene(const scene::Scene& s) : recorder_(std::make_unique<Recorder>
     scene_ = rtcNewScene(device_);
     rtcSetSceneBuildQuality(scene_, RTC_BUILD_QUALITY_HIGH);
     auto mats = summariseMaterials(s);
+    std::vector<EmissiveTriangle> emissive;
 
     for (const scene::Instance& inst : s.instances) {
         if (!bakesInstance(s, inst)) continue;
@@ -119,10 +119,17 @@ RayScene::RayScene(const scene::Scene& s) : recorder_(std::make_unique<Recorder>
             normals_.resize(id + 1);
         }
         surfaces_[id] = si;
+        if (si.emissive != glm::vec3(0.0f))
+            for (std::size_t t = 0; t < nt; ++t) {
+                const unsigned* i = idx + 3 * t;
+                emissive.push_back({world[i[0]], world[i[1]], world[i[2]], normals[t], si.emissive,
+                                    si.doubleSided, 0.0f, id, unsigned(t)});
+            }
         normals_[id] = std::move(normals);
         triangles_ += nt;
     }
     rtcCommitScene(scene_);
+    emitters_ = EmitterTable(std::move(emissive));
     if (rtcGetDeviceError(device_) != RTC_ERROR_NONE)
         throw Error("Embree: building the bake scene failed (out of memory?)");
     glm::vec3 size = bounds_.size();

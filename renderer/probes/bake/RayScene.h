@@ -8,6 +8,7 @@
 // Albedo  = baseColor factor x the MEAN linear colour of the base colour texture (sRGB
 // decoded); emissive = emissive factor x the mean linear emissive texture colour. Probes
 // capture low-frequency light, and the mean keeps hits free of UV interpolation.
+#include "probes/bake/EmitterTable.h"
 #include "scene/Scene.h"
 
 #include <embree3/rtcore.h>
@@ -65,6 +66,8 @@ public:
         return normals_[geomID][primID];
     }
     const scene::Bounds& bounds() const { return bounds_; }
+    // The emissive triangles, for sampling them directly (EmitterTable.h).
+    const EmitterTable& emitters() const { return emitters_; }
     // Starts loading what shading a hit reads (its face normal: a cache miss per hit).
     void prefetchSurface(const RayHit& h) const {
         if (h.hit()) __builtin_prefetch(&normals_[h.geomID][h.primID]);
@@ -87,6 +90,7 @@ private:
     RTCScene scene_ = nullptr;
     std::vector<SurfaceInfo> surfaces_;
     std::vector<std::vector<glm::vec3>> normals_;
+    EmitterTable emitters_;
     scene::Bounds bounds_;
     std::size_t triangles_ = 0;
     float epsilon_ = 1e-4f;

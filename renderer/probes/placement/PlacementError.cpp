@@ -10,6 +10,15 @@
 
 namespace pb::probes {
 
+namespace {
+// Trial bakes are estimates compared with each other: one round of rays (no noise target), and
+// a few emitter samples so that an emitter-lit scene is not ranked on chance hits.
+void trialNoise(BakeSettings& s) {
+    s.noiseTarget = 0.0f;
+    s.emitterSamples = 64;
+}
+} // namespace
+
 PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const RayScene& rs,
                                                const Scenario& scenario, float sealedBelow,
                                                float truthSpacing,
@@ -35,6 +44,7 @@ PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const 
     req.settings.raysPerProbe = settings.probeRays;
     req.settings.bounces = settings.bounces - 1;
     req.settings.format = StorageFormat::Rgba32f;
+    trialNoise(req.settings);
     req.threads = settings.threads;
     req.rayScene = &rs;
     const ProbeSet earlier = bakeProbes(scene, req);
@@ -52,6 +62,7 @@ double PlacementErrorEstimate::relativeError(const std::vector<ProbeVolume>& vol
     // rgba32f: no encoding pass (rgba16f's cost more than the trial's tracing), and the lattice,
     // not the storage format, is what the estimate compares.
     req.settings.format = StorageFormat::Rgba32f;
+    trialNoise(req.settings);
     req.threads = settings_.threads;
     req.sparse = sparse;
     req.rayScene = &rays_;

@@ -1,0 +1,86 @@
+#include "probes/bake/EmitterTable.h"
+
+#include <cmath>
+
+namespace pb::probes {
+
+namespace {
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+} // namespace
+
+EmitterTable::EmitterTable(std::vector<EmissiveTriangle> all) {
+    std::vector<double> power;
+    for (EmissiveTriangle& t : all) {
+        t.area = 0.5f * glm::length(glm::cross(t.b - t.a, t.c - t.a));
+        const double p = double(luminance(t.radiance)) * t.area * (t.doubleSided ? 2.0 : 1.0);
+        if (!(p > 0.0) || !std::isfinite(p)) continue;
+        triangles_.push_back(t);
+        power.push_back(p);
+    }
+    const std::size_t n = triangles_.size();
+    if (n == 0) return;
+    double total = 0.0;
+    for (double p : power)
+        total += p;
+    pdfArea_.resize(n);
+    for (std::size_t k = 0; k < n; ++k)
+        pdfArea_[k] = float(power[k] / total / double(triangles_[k].area));
+
+    // Vose: scaled probabilities n * P(k); small ones are topped up by a large one.
+    aliasProbability_.assign(n, 1.0f);
+    alias_.assign(n, 0);
+    std::vector<double> scaled(n);
+    std::vector<int> small, large;
+    for (std::size_t k = 0; k < n; ++k) {
+        scaled[k] = power[k] / total * double(n);
+        (scaled[k] < 1.0 ? small : large).push_back(int(k));
+    }
+    while (!small.empty() && !large.empty()) {
+        const int s = small.back(), l = large.back();
+        small.pop_back();
+        aliasProbability_[std::size_t(s)] = float(scaled[std::size_t(s)]);
+        alias_[std::size_t(s)] = l;
+        scaled[std::size_t(l)] -= 1.0 - scaled[std::size_t(s)];
+        if (scaled[std::size_t(l)] < 1.0) {
+            large.pop_back();
+            small.push_back(l);
+        }
+    }
+    // What is left has probability 1 up to rounding.
+    for (int k : small)
+        aliasProbability_[std::size_t(k)] = 1.0f;
+    for (int k : large)
+        aliasProbability_[std::size_t(k)] = 1.0f;
+
+    for (std::size_t k = 0; k < n; ++k) {
+        const EmissiveTriangle& t = triangles_[k];
+        if (indexOfPrim_.size() <= t.geomID) indexOfPrim_.resize(t.geomID + 1);
+        std::vector<int>& prims = indexOfPrim_[t.geomID];
+        if (prims.size() <= t.primID) prims.resize(t.primID + 1, -1);
+        prims[t.primID] = int(k);
+    }
+}
+
+int EmitterTable::find(unsigned geomID, unsigned primID) const {
+    if (geomID >= indexOfPrim_.size()) return -1;
+    const std::vector<int>& prims = indexOfPrim_[geomID];
+    return primID < prims.size() ? prims[primID] : -1;
+}
+
+EmitterSample EmitterTable::sample(float u0, float u1, float u2) const {
+    EmitterSample s;
+    if (triangles_.empty()) return s;
+    const float scaled = u0 * float(triangles_.size());
+    std::size_t k = std::min(std::size_t(scaled), triangles_.size() - 1);
+    const float frac = scaled - float(k);
+    if (frac >= aliasProbability_[k]) k = std::size_t(alias_[k]);
+    const EmissiveTriangle& t = triangles_[k];
+    // Uniform on the triangle: the square-root warp of two uniforms.
+    const float r = std::sqrt(u1);
+    s.point = t.a * (1.0f - r) + t.b * (r * (1.0f - u2)) + t.c * (r * u2);
+    s.triangle = int(k);
+    s.pdfArea = pdfArea_[k];
+    return s;
+}
+
+} // namespace pb::probes

@@ -1,0 +1,106 @@
+#include "probes/bake/NoiseRounds.h"
+
+#include "probes/ProbeLayout.h"
+#include "probes/ProbeSet.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pb::probes {
+
+namespace {
+constexpr int kTexels = kIrradianceInterior * kIrradianceInterior;
+float luminance(float r, float g, float b) { return 0.2126f * r + 0.7152f * g + 0.0722f * b; }
+} // namespace
+
+void NoiseRounds::startSlab(std::size_t count) {
+    firstVariance_.assign(count * kTexels, 0.0f);
+    sumY_.assign(count * kTexels, 0.0);
+    sumY2_.assign(count * kTexels, 0.0);
+    meanY_.assign(count, 0.0f);
+    rounds_.assign(count, 0);
+}
+
+void NoiseRounds::firstRound(std::size_t i, const RadianceSlab& slab, const ProbeConvolution& conv,
+                             const float* rgb) {
+    slab.texelVariance(i, conv, &firstVariance_[i * kTexels]);
+    float y = 0.0f;
+    for (int t = 0; t < kTexels; ++t) {
+        const float yt = luminance(rgb[3 * t], rgb[3 * t + 1], rgb[3 * t + 2]);
+        sumY_[i * kTexels + size_t(t)] = yt;
+        sumY2_[i * kTexels + size_t(t)] = double(yt) * yt;
+        y += yt / kTexels;
+    }
+    meanY_[i] = y;
+    rounds_[i] = 1;
+}
+
+float NoiseRounds::noise(std::size_t i) const {
+    if (!(meanY_[i] > 0.0f) || rounds_[i] == 0) return 0.0f;
+    const double k = rounds_[i];
+    double v = 0.0;
+    for (int t = 0; t < kTexels; ++t) {
+        const std::size_t at = i * kTexels + size_t(t);
+        if (rounds_[i] == 1) {
+            v += double(firstVariance_[at]) / kTexels;
+        } else {
+            const double s2 = std::max(0.0, (sumY2_[at] - sumY_[at] * sumY_[at] / k) / (k - 1.0));
+            v += s2 / k / kTexels;
+        }
+    }
+    return float(std::sqrt(v) / meanY_[i]);
+}
+
+std::vector<std::size_t> NoiseRounds::aboveTarget(std::size_t count) const {
+    std::vector<std::size_t> out;
+    if (!active()) return out;
+    for (std::size_t i = 0; i < count; ++i)
+        if (rounds_[i] > 0 && rounds_[i] < kMaxNoiseRounds && noise(i) > target_) out.push_back(i);
+    return out;
+}
+
+int NoiseRounds::addRound(std::size_t i, const float* rgb) {
+    for (int t = 0; t < kTexels; ++t) {
+        const double yt = luminance(rgb[3 * t], rgb[3 * t + 1], rgb[3 * t + 2]);
+        sumY_[i * kTexels + size_t(t)] += yt;
+        sumY2_[i * kTexels + size_t(t)] += yt * yt;
+    }
+    return ++rounds_[i];
+}
+void NoiseRounds::setMean(std::size_t i, const float* tile, int pitch) {
+    float y = 0.0f;
+    for (int ty = 0; ty < kIrradianceInterior; ++ty)
+        for (int tx = 0; tx < kIrradianceInterior; ++tx) {
+            const float* p = tile + (size_t(ty + 1) * size_t(pitch) + size_t(tx + 1)) * 4;
+            y += luminance(p[0], p[1], p[2]) / kTexels;
+        }
+    meanY_[i] = y;
+}
+
+void NoiseRounds::finishSlab(std::size_t count) {
+    for (std::size_t i = 0; i < count; ++i) {
+        if (rounds_[i] == 0) continue;
+        const float n = noise(i);
+        finals_.push_back(n);
+        if (rounds_[i] > 1) ++multiRound_;
+        if (active() && n > target_) ++aboveAfterAll_;
+    }
+}
+
+void NoiseRounds::summarise(BakeStats& st) const {
+    st.tracedProbePasses = finals_.size();
+    st.noisyProbePasses = multiRound_;
+    st.probePassesAboveTarget = aboveAfterAll_;
+    st.extraRoundRays = extraRays;
+    if (finals_.empty()) return;
+    double sum = 0.0;
+    for (float n : finals_)
+        sum += n;
+    st.noiseMean = sum / double(finals_.size());
+    std::vector<float> sorted = finals_;
+    const std::size_t k = std::min(sorted.size() - 1, std::size_t(0.95 * double(sorted.size())));
+    std::nth_element(sorted.begin(), sorted.begin() + std::ptrdiff_t(k), sorted.end());
+    st.noiseP95 = sorted[k];
+}
+
+} // namespace pb::probes
