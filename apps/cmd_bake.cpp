@@ -505,7 +505,7 @@ const RegisterCommand reg{{
                        "volumes file (default: day)");
         cmd.add_option("--format", a->format, "Storage: rgba16f, rgba32f or bc6h")
             ->capture_default_str();
-        cmd.add_option("--seed", a->seed, "Seed of the per-pass ray rotations")
+        cmd.add_option("--seed", a->seed, "Seed of the radiance passes' ray rotations and emitter samples (where probes sit and which are valid does not depend on it)")
             ->capture_default_str();
         cmd.add_option("--noise-target", a->noiseTarget,
                        "Converged bake: probes whose irradiance noise (relative standard error) "

@@ -126,7 +126,11 @@ ProbeSet emptySet(const scene::Scene& scene, const BakeRequest& req) {
 // 1. Geometry: per probe its state (validity, relocation) and its visibility tile.
 void bakeGeometry(BakeRun& run) {
     ProbeSet& set = run.set;
-    const auto dirs = passDirections(run.cfg.raysPerProbe, geometryStream(run.cfg.seed));
+    // The geometry pass's rotation does not follow the seed: where probes sit (relocation) and
+    // which are valid must not change when a scene is re-baked with another seed, only the
+    // radiance's sampling noise may (the seed's job). kGeometrySeed keeps the rotation the
+    // default seed always had.
+    const auto dirs = passDirections(run.cfg.raysPerProbe, geometryStream(kGeometrySeed));
     const ProbeConvolution conv(dirs);
     std::vector<GeometryScratch> scratch(static_cast<size_t>(run.threads));
     std::vector<std::vector<float>> vis(

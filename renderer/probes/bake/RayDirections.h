@@ -20,7 +20,9 @@ std::vector<glm::vec3> sphericalFibonacci(int n);
 // A uniformly distributed random rotation (Shoemake's unit quaternion from 3 uniforms).
 glm::mat3 randomRotation(std::uint64_t& state);
 
-// Streams of the bake: the geometry pass, and pass p of scenario s.
+// Streams of the bake: the geometry pass, and pass p of scenario s. The bake's geometry pass
+// always uses kGeometrySeed (Baker.cpp says why); the radiance passes use the bake's seed.
+constexpr std::uint64_t kGeometrySeed = 1;
 std::uint64_t geometryStream(std::uint64_t seed);
 std::uint64_t radianceStream(std::uint64_t seed, int scenario, int pass);
 // Round r > 0 of a pass under a noise target (Baker.h): its own rotation and emitter samples.
