@@ -42,6 +42,7 @@ struct Context {
     bool sunFromFile = false;               // a directional light became Scene::sun
     int defaultMaterial = -1;               // Scene::materials index, created on first use
     std::map<int, int> imageToTexture;      // glTF image -> Scene::textures
+    std::set<int> missingImages;            // files not found (warned about by the prepass)
     std::map<int, std::vector<int>> meshes; // glTF mesh -> Scene::primitives
     std::size_t geometryBytes = 0;          // charged by reserveGeometry
     std::set<std::string> viewNames;        // names taken by Scene::views

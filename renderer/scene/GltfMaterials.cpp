@@ -48,6 +48,7 @@ int textureFor(Context& ctx, int index, const std::string& material) {
                  std::to_string(source));
     if (auto it = ctx.imageToTexture.find(source); it != ctx.imageToTexture.end())
         return it->second;
+    if (ctx.missingImages.count(source)) return -1; // the material's factor alone
     const tinygltf::Image& img = m.images[size_t(source)];
     Texture tex;
     tex.name = !img.name.empty() ? img.name : img.uri;
