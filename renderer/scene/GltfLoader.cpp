@@ -107,6 +107,11 @@ void emitGroupedWarnings(gltf::Context& ctx) {
         ctx.scene.warnings.push_back(ctx.path + ": zero or non-finite normals in " +
                                      std::to_string(ctx.regeneratedNormals) +
                                      " primitive(s); smooth normals generated instead");
+    if (!ctx.basisuOnlyTextures.empty())
+        ctx.scene.warnings.push_back(
+            ctx.path + ": " + std::to_string(ctx.basisuOnlyTextures.size()) +
+            " texture(s) only in KHR_texture_basisu (KTX2, which probebench does not decode) "
+            "without a PNG/JPEG fallback; their materials use their factors");
     for (std::string& w : ctx.otherWarnings)
         ctx.scene.warnings.push_back(std::move(w));
 }

@@ -145,3 +145,64 @@ TEST(GltfExtensions, CorruptCompressedDataIsOneLineError) {
         EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
     }
 }
+
+namespace {
+
+// A triangle with UVs (0,0), (1,0), (0,1) and material 0 whose base colour texture has
+// `transform` as its KHR_texture_transform (the image file need not exist: UVs are what is
+// tested, and the missing image only warns).
+GltfWriter uvTriangle(const json& transform) {
+    GltfWriter w;
+    const int pos = w.addVec3(pb::test::triangleXY());
+    const int uv = w.addVec2({{0, 0}, {1, 0}, {0, 1}});
+    w.addMesh({{"attributes", {{"POSITION", pos}, {"TEXCOORD_0", uv}}}, {"material", 0}});
+    w.addNode({{"mesh", 0}});
+    w.doc["extensionsUsed"] = {"KHR_texture_transform"};
+    w.doc["images"] = json::array({{{"uri", "absent.png"}}});
+    w.doc["textures"] = json::array({{{"source", 0}}});
+    json info = {{"index", 0}};
+    if (!transform.is_null()) info["extensions"]["KHR_texture_transform"] = transform;
+    w.doc["materials"] = json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", info}}}}});
+    return w;
+}
+
+} // namespace
+
+TEST(GltfExtensions, TextureTransformIsAppliedToTheUvs) {
+    // The extension's example: offset, then rotation by 90 degrees, then scale.
+    const json t = {{"offset", {0.5, 0.25}}, {"rotation", 1.57079632679}, {"scale", {2.0, 3.0}}};
+    const Scene s = loadGltf(uvTriangle(t).write(pb::test::outputDir(), "tt"));
+    ASSERT_EQ(s.primitives.size(), 1u);
+    const auto& uv = s.primitives[0].uvs;
+    ASSERT_EQ(uv.size(), 3u);
+    // u' = cos*sx*u + sin*sy*v + ox; v' = -sin*sx*u + cos*sy*v + oy
+    EXPECT_NEAR(uv[0].x, 0.5f, 1e-5f);
+    EXPECT_NEAR(uv[0].y, 0.25f, 1e-5f);
+    EXPECT_NEAR(uv[1].x, 0.5f, 1e-5f);  // (1,0): x = 0*2 + 0.5
+    EXPECT_NEAR(uv[1].y, -1.75f, 1e-5f); // y = -1*2 + 0.25
+    EXPECT_NEAR(uv[2].x, 3.5f, 1e-5f);  // (0,1): x = 1*3 + 0.5
+    EXPECT_NEAR(uv[2].y, 0.25f, 1e-5f);
+
+    const Scene plain = loadGltf(uvTriangle(json()).write(pb::test::outputDir(), "plain"));
+    EXPECT_EQ(plain.primitives[0].uvs[1], glm::vec2(1.0f, 0.0f));
+}
+
+TEST(GltfExtensions, BasisuTexturesWithoutFallbackWarnOnce) {
+    GltfWriter w = uvTriangle(json());
+    w.doc["extensionsUsed"] = {"KHR_texture_basisu"};
+    w.doc["images"] = json::array({{{"uri", "a.ktx2"}, {"mimeType", "image/ktx2"}}});
+    w.doc["textures"] = json::array({{{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}},
+                                     {{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}}});
+    w.doc["materials"][0]["emissiveTexture"] = {{"index", 1}};
+    w.doc["materials"][0]["emissiveFactor"] = {1, 1, 1};
+    const auto dir = pb::test::outputDir();
+    const std::string path = w.write(dir, "basisu");
+    GltfWriter::writeBytes(dir / "a.ktx2", "\xABKTX 20\xBB", 8); // present, never decoded
+    const Scene s = loadGltf(path);
+    EXPECT_EQ(s.materials[0].baseColorTexture, -1);
+    EXPECT_EQ(s.materials[0].emissiveTexture, -1);
+    int basisu = 0;
+    for (const auto& warning : s.warnings)
+        basisu += warning.find("KHR_texture_basisu") != std::string::npos;
+    EXPECT_EQ(basisu, 1) << ::testing::PrintToString(s.warnings);
+}
