@@ -22,7 +22,7 @@ class CompressedRender : public test::GlTest, public ::testing::WithParamInterfa
 
 TEST_P(CompressedRender, MatchesTheUncompressedSource) {
     PB_REQUIRE_SHARED_SCENES();
-    const fs::path file = test::testDataDir() / "gltf" / (std::string("cornell_") + GetParam() + ".glb");
+    const fs::path file = test::testDataDir() / "gltf" / GetParam();
     ASSERT_TRUE(fs::exists(file)) << file;
     const scene::Scene source =
         scene::loadGltf((test::scenesDir() / "cornell_box" / "CornellBox-Original.gltf").string());
@@ -47,6 +47,9 @@ TEST_P(CompressedRender, MatchesTheUncompressedSource) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Files, CompressedRender, ::testing::Values("meshopt", "draco", "quantize"));
+INSTANTIATE_TEST_SUITE_P(Files, CompressedRender,
+                         ::testing::Values("cornell_meshopt.glb", "cornell_draco.glb",
+                                           "cornell_quantize.glb",
+                                           "cornell_meshopt_separate.gltf"));
 
 } // namespace

@@ -56,8 +56,9 @@ TEST(DefaultViewCheck, SharedScenes) {
 }
 
 TEST(DefaultViewCheck, CompressedTestFiles) {
-    for (const char* kind : {"meshopt", "draco", "quantize"}) {
-        const auto file = pb::test::testDataDir() / "gltf" / (std::string("cornell_") + kind + ".glb");
+    for (const char* name : {"cornell_meshopt.glb", "cornell_draco.glb", "cornell_quantize.glb",
+                             "cornell_meshopt_separate.gltf"}) {
+        const auto file = pb::test::testDataDir() / "gltf" / name;
         expectGoodDefaultView(loadGltf(file.string()), file.filename().string());
     }
 }
