@@ -21,11 +21,14 @@ void addSceneOptions(CLI::App& cmd, SceneArgs& a) {
     cmd.add_option("--dynamic", a.dynamicNodes,
                    "Mark the glTF node NAME (and its mesh) dynamic: not baked, lit by the dynamic "
                    "GI path (repeatable)");
+    cmd.add_flag("--allow-external-uris", a.allowExternalUris,
+                 "Let a glTF's buffer and image URIs be absolute or leave its folder");
 }
 
 scene::Scene loadSceneWithOverrides(const SceneArgs& a) {
     scene::SceneOptions opts;
     opts.dynamicNodes = a.dynamicNodes;
+    opts.allowExternalUris = a.allowExternalUris;
     scene::Scene s = scene::loadScene(a.scene, opts);
     if (!a.sun.empty()) scene::applySunOverride(s, a.sun);
     if (!a.sky.empty()) scene::applySkyOverride(s, a.sky);

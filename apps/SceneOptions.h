@@ -13,6 +13,7 @@ struct SceneArgs {
     std::string sun; // empty = scene default
     std::string sky;
     std::vector<std::string> dynamicNodes;
+    bool allowExternalUris = false;
 };
 
 void addSceneOptions(CLI::App& cmd, SceneArgs& args);

@@ -3,6 +3,7 @@
 #include "PlatformOptions.h"
 #include "gl/Capabilities.h"
 #include "platforms/Platform.h"
+#include "scene/SceneLoader.h"
 
 #include <iostream>
 
@@ -45,12 +46,17 @@ int runInfo(const InfoOptions& o) {
     if (o.json) {
         nlohmann::json j = gl::toJson(caps);
         j["platform"] = {{"name", p->name()}, {"description", p->description()}};
+        j["gltf_extensions"] = scene::supportedGltfExtensions();
         std::cout << j.dump(2) << "\n";
         return 0;
     }
     std::cout << "platform                             " << p->name() << ": " << p->description()
               << "\n"
               << gl::toText(caps) << "(`probebench info --json` lists the extensions)\n";
+    std::string gltf;
+    for (const auto& e : scene::supportedGltfExtensions())
+        gltf += (gltf.empty() ? "" : " ") + e;
+    std::cout << "glTF extensions supported           " << gltf << "\n";
     return 0;
 }
 

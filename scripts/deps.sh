@@ -6,7 +6,7 @@ PB_PACKAGES=(
     libegl-dev libgles-dev libegl-mesa0 libgl1-mesa-dri libosmesa6-dev
     libglm-dev libglfw3-dev xvfb xauth
     libtinygltf-dev libembree-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev
-    libpng-dev libjpeg62-turbo-dev zlib1g-dev
+    libpng-dev libjpeg62-turbo-dev zlib1g-dev libmeshoptimizer-dev libdraco-dev
     libcli11-dev python3-glad libgtest-dev libbenchmark-dev
     valgrind
     # The HTML report is opened by a real browser in the tests (BenchCli.ReportOpens...).

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace pb::scene {
 
@@ -45,47 +46,71 @@ View poseView(const Bounds& b, const Pose& p) {
     return v;
 }
 
-// How well a pose sees the scene, from 9 rays across a 60-degree 16:9 frustum and 6 rays
-// that check the eye is not inside or against something. Good: the eye is clear, nothing is
-// close in front (5% of the length), the centre sees 30% of the length or more, most rays hit
-// geometry (sky pixels need no GI; an eye outside a roofless building sees mostly sky) and
-// few hit single-sided faces from behind (an eye inside a solid object sees only those).
-struct Verdict {
-    bool good;
-    float score;
-};
-
-Verdict judge(const RayGrid& grid, const View& v, float length, float diagonal) {
+// What a pose sees (DefaultView.h): a 16x9 grid across the 16:9 frustum and 14 rays all
+// around the eye (the 6 axes and 8 diagonals). `length` is the scene's long side.
+ViewCheck look(const RayGrid& grid, const View& v, float length, float diagonal) {
     const glm::vec3 f = glm::normalize(v.target - v.position);
     const glm::vec3 r = glm::normalize(glm::cross(f, glm::vec3(0, 1, 0)));
     const glm::vec3 u = glm::cross(r, f);
-    const float th = std::tan(glm::radians(v.fovYDegrees) * 0.5f) * 0.7f, tw = th * 16.0f / 9.0f;
-    float score = 0.0f, nearest = diagonal;
-    int backFacing = 0, hits = 0;
-    bool centreOpen = false;
-    for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x) {
-            const glm::vec3 d = glm::normalize(f + float(x) * tw * r + float(y) * th * u);
-            const RayHit hit = grid.cast(v.position, d, diagonal);
-            const bool hitSomething = std::isfinite(hit.distance);
-            const float free = std::min(hit.distance, length);
-            score += hitSomething ? free / length : 0.3f;
-            nearest = std::min(nearest, free);
-            backFacing += hit.backFacing;
-            hits += hitSomething;
-            if (x == 0 && y == 0) centreOpen = free >= 0.3f * length;
+    const float th = std::tan(glm::radians(v.fovYDegrees) * 0.5f), tw = th * 16.0f / 9.0f;
+    constexpr int kW = 16, kH = 9;
+    int front = 0, back = 0, sky = 0, nearHits = 0;
+    std::vector<float> depths;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const float sx = (2.0f * (float(x) + 0.5f) / kW - 1.0f) * tw;
+            const float sy = (2.0f * (float(y) + 0.5f) / kH - 1.0f) * th;
+            const glm::vec3 d = glm::normalize(f + sx * r + sy * u);
+            const RayHit hit = grid.cast(v.position, d, 2.0f * diagonal);
+            if (!std::isfinite(hit.distance)) {
+                ++sky;
+                continue;
+            }
+            (hit.backFacing ? back : front) += 1;
+            nearHits += hit.distance < 0.05f * length;
+            depths.push_back(hit.distance / length);
         }
-    bool clear = true; // nothing within 2% of the length around the eye
-    for (int a = 0; a < 3; ++a)
-        for (float s : {-1.0f, 1.0f}) {
-            glm::vec3 d(0.0f);
-            d[a] = s;
-            clear = clear && grid.cast(v.position, d, 0.02f * length).distance > 0.02f * length;
-        }
-    score -= 0.5f * float(backFacing) + (clear ? 0.0f : 5.0f);
-    const bool good =
-        clear && centreOpen && nearest >= 0.05f * length && hits >= 6 && backFacing <= 2;
-    return {good, score};
+    ViewCheck c;
+    const float rays = float(kW * kH);
+    c.frontFraction = float(front) / rays;
+    c.backFraction = float(back) / rays;
+    c.skyFraction = float(sky) / rays;
+    c.nearFraction = float(nearHits) / rays;
+    if (!depths.empty()) {
+        std::nth_element(depths.begin(), depths.begin() + std::ptrdiff_t(depths.size() / 2),
+                         depths.end());
+        c.medianDepth = depths[depths.size() / 2];
+    }
+    c.centreDepth = glm::min(grid.cast(v.position, f, 2.0f * diagonal).distance / length, 2.0f);
+    int aroundBack = 0;
+    c.eyeClear = true;
+    for (int i = 0; i < 14; ++i) {
+        glm::vec3 d(0.0f);
+        if (i < 6)
+            d[i / 2] = i % 2 ? -1.0f : 1.0f;
+        else
+            d = glm::normalize(glm::vec3(i & 1 ? -1 : 1, i & 2 ? -1 : 1, i & 4 ? -1 : 1));
+        const RayHit hit = grid.cast(v.position, d, 2.0f * diagonal);
+        aroundBack += std::isfinite(hit.distance) && hit.backFacing;
+        if (i < 6) c.eyeClear = c.eyeClear && hit.distance > 0.02f * length;
+    }
+    // A solid object's single-sided faces all point away from an eye inside it.
+    c.insideClosedMesh = aroundBack >= 10;
+    return c;
+}
+
+// Higher is better, for when no pose is good(): front faces and depth count, back faces,
+// sky, an eye in something and geometry right in front count against.
+float score(const ViewCheck& c) {
+    return 2.0f * c.frontFraction + glm::min(c.medianDepth, 1.0f) +
+           0.5f * glm::min(c.centreDepth, 1.0f) - 3.0f * c.backFraction -
+           c.skyFraction - 2.0f * c.nearFraction - (c.eyeClear ? 0.0f : 5.0f) -
+           (c.insideClosedMesh ? 10.0f : 0.0f);
+}
+
+float longSide(const Bounds& b) {
+    const glm::vec3 size = b.size();
+    return glm::max(glm::max(size.x, size.z), 1e-3f * glm::length(size));
 }
 
 } // namespace
@@ -105,7 +130,8 @@ View makeDefaultView(const Bounds& b) {
 // The bounds rule first; when its eye is in or against geometry, or something blocks the
 // view, nearby poses in a fixed order: other heights, sideways, nearer the centre, then the
 // opposite direction and the other horizontal axis. The first pose that sees well wins, else
-// the best-scoring one. Deterministic; 10-25 ms for 0.2 M triangles, mostly building the grid.
+// the best-scoring one. Each pose is judged by what it sees (look(): front faces, sky, back
+// faces, depth, an eye inside a closed mesh). Deterministic.
 View makeDefaultView(const Scene& scene) {
     const Bounds b = scene.staticWorldBounds();
     const View simple = makeDefaultView(b);
@@ -115,6 +141,7 @@ View makeDefaultView(const Scene& scene) {
     const glm::vec3 size = b.size();
     const float diagonal = glm::length(size);
     const int longAxis = size.x > size.z ? 0 : 2;
+    const float length = longSide(b);
     View best = simple;
     float bestScore = -1e30f;
     for (int axis : {longAxis, 2 - longAxis})
@@ -123,15 +150,21 @@ View makeDefaultView(const Scene& scene) {
                 for (float lateral : {0.0f, 0.15f, -0.15f, 0.3f, -0.3f})
                     for (float height : {kEyeHeight, 0.45f, 0.2f}) {
                         const View v = poseView(b, {axis, sign, along, lateral, height});
-                        const float length = glm::max(size[axis], 1e-3f * diagonal);
-                        const Verdict verdict = judge(grid, v, length, diagonal);
-                        if (verdict.good) return v;
-                        if (verdict.score > bestScore) {
-                            bestScore = verdict.score;
+                        const ViewCheck c = look(grid, v, length, diagonal);
+                        if (c.good()) return v;
+                        if (score(c) > bestScore) {
+                            bestScore = score(c);
                             best = v;
                         }
                     }
     return best;
+}
+
+ViewCheck checkView(const Scene& scene, const View& view) {
+    const Bounds b = scene.staticWorldBounds();
+    const RayGrid grid(scene);
+    if (b.empty() || grid.empty()) return {};
+    return look(grid, view, longSide(b), glm::length(b.size()));
 }
 
 std::string uniqueViewName(const Scene& scene, const std::string& base) {

@@ -12,6 +12,28 @@ View makeDefaultView(const Bounds& staticBounds);
 // order) that sees well. See DefaultView.cpp.
 View makeDefaultView(const Scene& scene);
 
+// What a view sees of the static geometry, from a 16x9 grid of CPU rays across its frustum
+// (16:9) and 14 rays all around the eye. The default view is judged by it.
+struct ViewCheck {
+    float frontFraction = 0; // rays that hit geometry from its front (or double-sided)
+    float backFraction = 0;  // rays that hit single-sided geometry from behind
+    float skyFraction = 0;   // rays that hit nothing
+    float nearFraction = 0;  // rays that hit within 5% of the scene's long side
+    float medianDepth = 0;   // of the hits, in units of the scene's long side (0 = none)
+    float centreDepth = 0;   // free distance along the centre ray, same units (capped at 2)
+    bool insideClosedMesh = false; // most rays all around the eye hit back faces
+    bool eyeClear = false;         // nothing within 2% of the long side around the eye
+    // Mostly front faces, not sky-only, not inside a mesh or against something, an open depth
+    // range (the median hit is not right in front of the eye, the centre sees 30% of the
+    // scene's length).
+    bool good() const {
+        return eyeClear && !insideClosedMesh && frontFraction >= 0.5f && skyFraction <= 0.5f &&
+               backFraction <= 0.1f && nearFraction <= 0.25f && medianDepth >= 0.1f &&
+               centreDepth >= 0.3f;
+    }
+};
+ViewCheck checkView(const Scene& scene, const View& view);
+
 // `base`, or `base_2`, `base_3`, ... whichever no view of `scene` uses yet.
 std::string uniqueViewName(const Scene& scene, const std::string& base);
 

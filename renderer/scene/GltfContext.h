@@ -42,6 +42,9 @@ struct Context {
     bool sunFromFile = false;               // a directional light became Scene::sun
     int defaultMaterial = -1;               // Scene::materials index, created on first use
     std::map<int, int> imageToTexture;      // glTF image -> Scene::textures
+    std::set<int> missingImages;            // files not found (warned about by the prepass)
+    std::set<int> basisuOnlyTextures;       // KHR_texture_basisu without a PNG/JPEG fallback
+    std::set<int> uvTransformWarned;        // materials warned about (GltfTextureTransform)
     std::map<int, std::vector<int>> meshes; // glTF mesh -> Scene::primitives
     std::size_t geometryBytes = 0;          // charged by reserveGeometry
     std::set<std::string> viewNames;        // names taken by Scene::views

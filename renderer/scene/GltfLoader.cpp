@@ -2,10 +2,12 @@
 #include "core/FileIO.h"
 #include "scene/DefaultView.h"
 #include "scene/GltfContext.h"
+#include "scene/GltfDecompress.h"
 #include "scene/GltfInputChecks.h"
 #include "scene/GltfMaterials.h"
 #include "scene/GltfMeshes.h"
 #include "scene/GltfNodes.h"
+#include "scene/GltfPrepass.h"
 #include "scene/SceneLoader.h"
 
 #include <cmath>
@@ -18,10 +20,6 @@ namespace pb::scene {
 using namespace gltf; // the checks tinygltf is wrapped in
 
 namespace {
-
-// Extensions this loader implements; a file that requires any other cannot be drawn right.
-const char* const kSupportedRequired[] = {"KHR_lights_punctual", "KHR_materials_emissive_strength",
-                                          "KHR_mesh_quantization"};
 
 // tinygltf reports several problems as several lines; pb::Error messages are one line.
 std::string oneLine(const std::string& text) {
@@ -51,8 +49,8 @@ std::vector<std::string> lines(const std::string& text) {
     return out;
 }
 
-void parseWithTinygltf(const std::string& path, tinygltf::Model& model,
-                       std::vector<std::string>& warnings) {
+PreparedGltf parseWithTinygltf(const std::string& path, bool allowExternalUris,
+                               tinygltf::Model& model, std::vector<std::string>& warnings) {
     const std::vector<unsigned char> bytes = readFileBytes(path); // "path: file not found" etc.
     if (bytes.size() > std::numeric_limits<unsigned int>::max())
         throw fileError(path, "larger than 4 GiB, which tinygltf cannot read");
@@ -61,17 +59,24 @@ void parseWithTinygltf(const std::string& path, tinygltf::Model& model,
     const std::string baseDir = dir.string();
 
     checkRawGltf(path, bytes); // GLB structure, JSON nesting
+    // Extensions, URIs, missing images: before tinygltf opens any buffer or image.
+    PreparedGltf prepared = prepareGltf(path, bytes, baseDir, allowExternalUris);
+    for (std::string& w : prepared.warnings)
+        warnings.push_back(std::move(w));
+    const std::vector<unsigned char>& input = prepared.bytes;
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks(regularFileCallbacks());
     ImageGuard imageGuard{&model};
     loader.SetImageLoader(&checkedImageLoader, &imageGuard);
     std::string err, warn;
-    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
-    const auto size = static_cast<unsigned int>(bytes.size());
+    const bool binary = input.size() >= 4 && std::memcmp(input.data(), "glTF", 4) == 0;
+    if (input.size() > std::numeric_limits<unsigned int>::max())
+        throw fileError(path, "larger than 4 GiB, which tinygltf cannot read");
+    const auto size = static_cast<unsigned int>(input.size());
     const bool ok =
-        binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, baseDir)
+        binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, input.data(), size, baseDir)
                : loader.LoadASCIIFromString(&model, &err, &warn,
-                                            reinterpret_cast<const char*>(bytes.data()), size,
+                                            reinterpret_cast<const char*>(input.data()), size,
                                             baseDir);
     if (!ok) {
         if (err.empty()) err = warn.empty() ? "not a valid glTF file" : warn;
@@ -83,15 +88,7 @@ void parseWithTinygltf(const std::string& path, tinygltf::Model& model,
     // tinygltf also reports fixable oddities in `err` while still succeeding.
     for (const std::string& line : lines(err + "\n" + warn))
         warnings.push_back(path + ": " + line);
-}
-
-void checkRequiredExtensions(const std::string& path, const tinygltf::Model& model) {
-    for (const std::string& ext : model.extensionsRequired) {
-        bool supported = false;
-        for (const char* s : kSupportedRequired)
-            supported = supported || ext == s;
-        if (!supported) throw fileError(path, "requires unsupported glTF extension " + ext);
-    }
+    return prepared;
 }
 
 void emitGroupedWarnings(gltf::Context& ctx) {
@@ -110,6 +107,11 @@ void emitGroupedWarnings(gltf::Context& ctx) {
         ctx.scene.warnings.push_back(ctx.path + ": zero or non-finite normals in " +
                                      std::to_string(ctx.regeneratedNormals) +
                                      " primitive(s); smooth normals generated instead");
+    if (!ctx.basisuOnlyTextures.empty())
+        ctx.scene.warnings.push_back(
+            ctx.path + ": " + std::to_string(ctx.basisuOnlyTextures.size()) +
+            " texture(s) only in KHR_texture_basisu (KTX2, which probebench does not decode) "
+            "without a PNG/JPEG fallback; their materials use their factors");
     for (std::string& w : ctx.otherWarnings)
         ctx.scene.warnings.push_back(std::move(w));
 }
@@ -130,10 +132,12 @@ Scene loadGltfUnchecked(const std::string& path, const SceneOptions& options) {
     scene.sourcePath = path;
 
     tinygltf::Model model;
-    parseWithTinygltf(path, model, scene.warnings);
-    checkRequiredExtensions(path, model);
+    const PreparedGltf prepared =
+        parseWithTinygltf(path, options.allowExternalUris, model, scene.warnings);
+    decompressMeshes(path, prepared.meshoptFallbacks, model);
 
     gltf::Context ctx{path, model, scene};
+    ctx.missingImages = prepared.missingImages;
     // "default" comes first and is reserved before glTF cameras are named; its pose needs the
     // bounds, known once the nodes are walked.
     scene.views.push_back(View{"default"});

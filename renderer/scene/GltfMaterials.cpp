@@ -39,7 +39,11 @@ int textureFor(Context& ctx, int index, const std::string& material) {
     if (size_t(index) >= m.textures.size())
         ctx.fail(material + " refers to missing texture " + std::to_string(index));
     const int source = m.textures[size_t(index)].source;
-    if (source < 0) { // e.g. only an extension source such as KHR_texture_basisu
+    if (source < 0 && m.textures[size_t(index)].extensions.count("KHR_texture_basisu")) {
+        ctx.basisuOnlyTextures.insert(index); // one warning for all (GltfLoader)
+        return -1;
+    }
+    if (source < 0) { // only some other extension's source (EXT_texture_webp, ...)
         ctx.warn("texture " + std::to_string(index) + " has no PNG/JPEG source; ignored");
         return -1;
     }
@@ -48,6 +52,7 @@ int textureFor(Context& ctx, int index, const std::string& material) {
                  std::to_string(source));
     if (auto it = ctx.imageToTexture.find(source); it != ctx.imageToTexture.end())
         return it->second;
+    if (ctx.missingImages.count(source)) return -1; // the material's factor alone
     const tinygltf::Image& img = m.images[size_t(source)];
     Texture tex;
     tex.name = !img.name.empty() ? img.name : img.uri;

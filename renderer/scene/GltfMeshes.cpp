@@ -1,6 +1,7 @@
 #include "scene/GltfMeshes.h"
 
 #include "scene/GltfAccessor.h"
+#include "scene/GltfTextureTransform.h"
 #include "scene/MeshOps.h"
 
 #include <cmath>
@@ -102,6 +103,9 @@ bool convertPrimitive(Context& ctx, int meshIndex, size_t primIndex, Primitive& 
             if (!std::isfinite(out.uvs[i].x) || !std::isfinite(out.uvs[i].y))
                 ctx.fail("NaN or infinite TEXCOORD_0 (vertex " + std::to_string(i) + ") in " +
                          mesh);
+        if (const auto t = materialUvTransform(ctx, src.material))
+            for (glm::vec2& p : out.uvs)
+                p = glm::vec2(*t * glm::vec3(p, 1.0f));
     }
 
     if (src.material >= 0 && size_t(src.material) >= ctx.model.materials.size())

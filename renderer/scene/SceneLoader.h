@@ -11,7 +11,12 @@ namespace pb::scene {
 
 struct SceneOptions {
     std::vector<std::string> dynamicNodes; // --dynamic NODE_NAME (repeatable)
+    // --allow-external-uris: buffer and image URIs may be absolute or leave the glTF's folder.
+    bool allowExternalUris = false;
 };
+
+// The glTF extensions loadGltf honours (a file may require any of them), sorted.
+const std::vector<std::string>& supportedGltfExtensions();
 
 // `nameOrPath` is a built-in scene name (see builtinSceneNames()) or a path to .gltf/.glb.
 Scene loadScene(const std::string& nameOrPath, const SceneOptions& options = {});

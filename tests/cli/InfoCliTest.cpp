@@ -61,6 +61,19 @@ TEST(InfoCli, TextListsCapabilitiesAsYesNo) {
         EXPECT_NE(r.out.find(text), std::string::npos) << text << " in:\n" << r.out;
 }
 
+TEST(InfoCli, ListsTheSupportedGltfExtensions) {
+    const RunResult text = runProbebench("info");
+    ASSERT_EQ(text.exitCode, 0) << text.err;
+    for (const char* ext : {"EXT_meshopt_compression", "KHR_draco_mesh_compression",
+                            "KHR_mesh_quantization", "KHR_texture_transform"})
+        EXPECT_NE(text.out.find(ext), std::string::npos) << ext << " in:\n" << text.out;
+    const RunResult js = runProbebench("info --json");
+    ASSERT_EQ(js.exitCode, 0) << js.err;
+    const auto j = nlohmann::json::parse(js.out);
+    ASSERT_TRUE(j.contains("gltf_extensions"));
+    EXPECT_NE(j["gltf_extensions"].dump().find("KHR_draco_mesh_compression"), std::string::npos);
+}
+
 TEST(InfoCli, RunsOnOsMesa) {
     const RunResult r = runProbebench("info --platform osmesa");
     if (osmesaMissing(r) && !underCi()) GTEST_SKIP() << r.err;

@@ -25,9 +25,7 @@ struct GoldenCase {
     *os << c.scene << "/" << c.view;
 }
 
-// Tolerance: llvmpipe is deterministic for one build, but LLVM's code generation differs
-// between CPUs (AVX2 vs AVX-512) and Mesa versions; a few LSBs on edges are allowed.
-const test::ImageTolerance kGoldenTolerance{3, 0.002, 0.25};
+using test::kGoldenTolerance; // support/ImageCompare.h
 
 class Golden : public test::GlTest, public ::testing::WithParamInterface<GoldenCase> {};
 

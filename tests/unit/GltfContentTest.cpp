@@ -96,9 +96,16 @@ TEST(GltfContent, MissingImageFileWarnsAndDrawsWithoutIt) {
     w.doc["textures"] = json::array({{{"source", 0}}});
     w.doc["materials"] =
         json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
-    const Scene s = loadGltf(w.write(pb::test::outputDir(), "noimage"));
+    w.doc["materials"][0]["pbrMetallicRoughness"]["baseColorFactor"] = {0.5, 0.25, 1.0, 1.0};
+    const std::string path = w.write(pb::test::outputDir(), "noimage");
+    const Scene s = loadGltf(path);
     EXPECT_EQ(s.materials[0].baseColorTexture, -1);
-    EXPECT_FALSE(s.warnings.empty());
+    EXPECT_EQ(s.materials[0].baseColor, glm::vec4(0.5f, 0.25f, 1.0f, 1.0f)); // the factor alone
+    EXPECT_TRUE(s.textures.empty());
+    ASSERT_EQ(s.warnings.size(), 1u); // one line, naming the file; not tinygltf's three
+    EXPECT_EQ(s.warnings[0].rfind(path + ": ", 0), 0u) << s.warnings[0];
+    EXPECT_NE(s.warnings[0].find("missing.png"), std::string::npos) << s.warnings[0];
+    EXPECT_EQ(s.warnings[0].find('\n'), std::string::npos);
 }
 
 TEST(GltfContent, PunctualLightsAndTheSun) {

@@ -1,0 +1,79 @@
+// The default view is judged by what it sees (DefaultView.h, checkView): every built-in
+// scene, every shared scene and every compressed test file gets a default view that sees
+// mostly front faces, with an open depth range, not sky only and not from inside a mesh.
+// checkView itself is tested on views that must fail.
+#include "scene/DefaultView.h"
+#include "scene/SceneLoader.h"
+#include "support/TestEnv.h"
+
+#include <cstdio>
+#include <gtest/gtest.h>
+
+using namespace pb::scene;
+
+namespace {
+
+void expectGoodDefaultView(const Scene& s, const std::string& label) {
+    ASSERT_FALSE(s.views.empty());
+    const View& v = s.views.front();
+    const ViewCheck c = checkView(s, v);
+    std::printf("[ view     ] %-40s front %.2f back %.2f sky %.2f near %.2f depth median %.2f "
+                "centre %.2f%s\n",
+                label.c_str(), c.frontFraction, c.backFraction, c.skyFraction, c.nearFraction,
+                c.medianDepth, c.centreDepth, c.insideClosedMesh ? " INSIDE A MESH" : "");
+    EXPECT_TRUE(c.good()) << label << ": front " << c.frontFraction << ", back "
+                          << c.backFraction << ", sky " << c.skyFraction << ", near "
+                          << c.nearFraction << ", median depth " << c.medianDepth
+                          << ", centre depth " << c.centreDepth
+                          << ", inside " << c.insideClosedMesh << ", eye clear " << c.eyeClear;
+    EXPECT_GE(c.frontFraction, 0.5f) << label;
+    EXPECT_LT(c.skyFraction, 0.5f) << label;
+    EXPECT_FALSE(c.insideClosedMesh) << label;
+}
+
+View lookFrom(glm::vec3 eye, glm::vec3 target) {
+    View v;
+    v.position = eye;
+    v.target = target;
+    return v;
+}
+
+} // namespace
+
+TEST(DefaultViewCheck, BuiltinScenes) {
+    for (const char* name : {"cornell", "rooms", "courtyard"})
+        expectGoodDefaultView(makeBuiltinScene(name), name);
+}
+
+TEST(DefaultViewCheck, SharedScenes) {
+    PB_REQUIRE_SHARED_SCENES();
+    for (const char* file :
+         {"cornell_box/CornellBox-Original.gltf", "sponza_decimated/sponza_s_lod4.glb",
+          "space_ship_hallway/space_ship_hallway.glb",
+          "japanese_bridge_garden/japanese_bridge_garden.gltf",
+          "dream_apartment/dream_apartment.gltf"})
+        expectGoodDefaultView(loadGltf((pb::test::scenesDir() / file).string()), file);
+}
+
+TEST(DefaultViewCheck, CompressedTestFiles) {
+    for (const char* name : {"cornell_meshopt.glb", "cornell_draco.glb", "cornell_quantize.glb",
+                             "cornell_meshopt_separate.gltf"}) {
+        const auto file = pb::test::testDataDir() / "gltf" / name;
+        expectGoodDefaultView(loadGltf(file.string()), file.filename().string());
+    }
+}
+
+TEST(DefaultViewCheck, BadViewsFail) {
+    const Scene s = makeBuiltinScene("cornell");
+    // Inside the tall box (a closed box, faces outwards): every ray meets a back face.
+    const ViewCheck inside = checkView(s, lookFrom({-0.4f, 0.6f, -0.35f}, {0.5f, 0.6f, -0.35f}));
+    EXPECT_TRUE(inside.insideClosedMesh);
+    EXPECT_FALSE(inside.good());
+    // Far outside, looking away from the scene: sky only.
+    const ViewCheck sky = checkView(s, lookFrom({0, 1, 50}, {0, 1, 100}));
+    EXPECT_EQ(sky.skyFraction, 1.0f);
+    EXPECT_FALSE(sky.good());
+    // Nose against a wall: everything near.
+    const ViewCheck wall = checkView(s, lookFrom({0, 1, -0.9f}, {0, 1, -2}));
+    EXPECT_FALSE(wall.good()) << wall.nearFraction;
+}
