@@ -62,14 +62,7 @@ void ensureParentFolder(const std::string& path) {
 }
 
 scene::View chooseView(const scene::Scene& s, const RenderArgs& a) {
-    if (!a.camera.empty()) return scene::parseCameraSpec(a.camera);
-    if (a.view.empty()) return s.views.front();
-    if (const scene::View* v = s.findView(a.view)) return *v;
-    std::string names;
-    for (const auto& v : s.views)
-        names += (names.empty() ? "" : ", ") + v.name;
-    throw Error("--view '" + a.view + "': scene '" + s.name +
-                "' has no such view (views: " + names + ")");
+    return app::chooseView(s, a.view, a.camera); // SceneOptions: one message, with "did you mean"
 }
 
 int runInteractive(platform::Platform& p, render::FrameRenderer& r, const scene::Scene& s,
