@@ -3,6 +3,7 @@
 // the GI irradiance), the GI pass's texture-fetch floor, and with --ablate what every switch
 // saves and costs. JSON for machines, a self-contained HTML report, a Markdown summary on stdout.
 #include "CommandRegistry.h"
+#include "ProbeOptions.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
 #include "SceneOptions.h"
@@ -35,6 +36,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct BenchArgs {
+    bool force = false; // --probes baked for another scene
     SceneArgs scene;
     platform::PlatformOptions platform;
     std::vector<std::string> profiles, sets;
@@ -174,7 +176,7 @@ int run(const BenchArgs& a) {
             ? bench::benchProbes(s, a.volumes,
                                  a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir,
                                  &probesPath, progress)
-            : probes::readProbeFileWithRanks(a.probes);
+            : readProbesForScene(a.probes, s, a.force);
 
     bench::BenchResult result;
     scene::View view;
@@ -278,6 +280,7 @@ const RegisterCommand reg{
          cmd.add_option("--view", a->view, "A named view of the scene instead of the worst case");
          cmd.add_option("--camera", a->camera,
                         "Camera px,py,pz,tx,ty,tz[,fovdeg] instead of the worst case");
+         addForceProbesFlag(cmd, a->force);
          cmd.add_option("--probes", a->probes,
                         "Probe file (probebench bake); default: bake --volumes once and cache it");
          cmd.add_option("--volumes", a->volumes,

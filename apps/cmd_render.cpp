@@ -3,6 +3,7 @@
 // probes, shaped by the profile switches (--set key=value, renderer/profile/SwitchTable.cpp);
 // --debug NAME shows a GI debug view, --verbose / --json report the GI pass per volume.
 #include "CommandRegistry.h"
+#include "ProbeOptions.h"
 #include "FlyCamera.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
@@ -26,6 +27,7 @@ namespace pb::app {
 namespace {
 
 struct RenderArgs {
+    bool force = false; // --probes baked for another scene
     SceneArgs scene;
     platform::PlatformOptions platform;
     std::string view;
@@ -164,7 +166,7 @@ int run(RenderArgs& a) {
     probes::ProbeSet probeSet;
     render::GiOptions gi;
     if (!a.probes.empty()) {
-        probeSet = probes::readProbeFileWithRanks(a.probes);
+        probeSet = readProbesForScene(a.probes, s, a.force);
         gi.probes = &probeSet;
         gi.scenario = scenarioIndex(probeSet, a);
         gi.profile = prof;
@@ -289,6 +291,7 @@ const RegisterCommand reg{
                         "--path: 'full' also renders full-resolution GI per frame and writes "
                         "errors.csv/errors.json (PSNR, FLIP, disocclusion error)");
          cmd.add_option("--probes", a->probes, "Probe file (probebench bake): render with DDGI");
+         addForceProbesFlag(cmd, a->force);
          cmd.add_option("--scenario", a->scenario,
                         "Lighting scenario of --probes (default: its first)");
          addProfileOptions(cmd, a->profileArgs, "Needs --probes.");

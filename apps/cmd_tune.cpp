@@ -5,6 +5,7 @@
 // memory, FLIP), writes the winner as a profile inheriting the base, loads it back and
 // re-measures it. The search itself is bench/tune (GL-free); this file wires it to GL.
 #include "CommandRegistry.h"
+#include "ProbeOptions.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
 #include "SceneOptions.h"
@@ -36,6 +37,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct TuneArgs {
+    bool force = false; // --probes baked for another scene
     SceneArgs scene;
     platform::PlatformOptions platform;
     std::string base = "reference", reference = "reference", out, json, probes, volumes = "auto",
@@ -177,7 +179,7 @@ private:
 probes::ProbeSet tuneProbes(const TuneArgs& a, const scene::Scene& s, std::string& path) {
     if (!a.probes.empty()) {
         path = a.probes;
-        return probes::readProbeFileWithRanks(a.probes);
+        return readProbesForScene(a.probes, s, a.force);
     }
     probes::ProbeSet set = bench::benchProbes(
         s, a.volumes, a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir, &path,
@@ -356,6 +358,7 @@ const RegisterCommand reg{
              ->delimiter(',');
          cmd.add_option("--width", a->width, "Output width (default: the base profile's)");
          cmd.add_option("--height", a->height, "Output height (default: the base profile's)");
+         addForceProbesFlag(cmd, a->force);
          cmd.add_option("--probes", a->probes,
                         "Probe file (probebench bake; its FILE.ranks.json adds rank_budget_mib "
                         "levels); default: bake --volumes once and cache it");
