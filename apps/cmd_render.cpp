@@ -3,6 +3,7 @@
 // probes, shaped by the profile switches (--set key=value, renderer/profile/SwitchTable.cpp);
 // --debug NAME shows a GI debug view, --verbose / --json report the GI pass per volume.
 #include "CommandRegistry.h"
+#include "OutputPaths.h"
 #include "ProbeOptions.h"
 #include "FlyCamera.h"
 #include "PlatformOptions.h"
@@ -28,6 +29,7 @@ namespace {
 
 struct RenderArgs {
     bool force = false; // --probes baked for another scene
+    bool mkdir = false;  // create missing parent folders of the outputs
     SceneArgs scene;
     platform::PlatformOptions platform;
     std::string view;
@@ -55,12 +57,24 @@ int scenarioIndex(const probes::ProbeSet& set, const RenderArgs& a) {
     throw Error("--scenario: '" + a.scenario + "' is not in " + a.probes + " (" + names + ")");
 }
 
-void ensureParentFolder(const std::string& path) {
-    auto parent = std::filesystem::path(path).parent_path();
-    if (parent.empty()) return;
-    std::error_code ec;
-    std::filesystem::create_directories(parent, ec);
-    if (ec) throw fileError(path, "cannot create its folder: " + ec.message());
+// Refused before anything renders (OutputPaths.h): each output is written as its name says,
+// where it says, or the command fails - never silently skipped.
+void checkOutputs(const RenderArgs& a) {
+    const bool window = a.platform.name == "glfw" && a.out.empty() && a.path.empty();
+    for (const auto& [option, value] : {std::pair{"--out-hdr", &a.outHdr},
+                                        std::pair{"--dump-gbuffer", &a.dumpDir}}) {
+        if (value->empty()) continue;
+        if (window)
+            throw Error(std::string(option) + ": the window mode writes nothing at exit; add "
+                                              "--out to render one frame and write it too");
+        if (!a.path.empty())
+            throw Error(std::string(option) + ": not written in --path mode (frames are PNGs "
+                                              "in --out-dir)");
+    }
+    if (!a.out.empty()) checkOutputFile("--out", a.out, {".png"}, "an 8-bit sRGB PNG", a.mkdir);
+    if (!a.outHdr.empty())
+        checkOutputFile("--out-hdr", a.outHdr, {".pfm"}, "a linear HDR PFM", a.mkdir);
+    if (!a.dumpDir.empty()) checkOutputFolder("--dump-gbuffer", a.dumpDir, a.mkdir);
 }
 
 scene::View chooseView(const scene::Scene& s, const RenderArgs& a) {
@@ -161,6 +175,7 @@ int run(RenderArgs& a) {
         throw Error("--path: frames go to --out-dir DIR (required; not --out)");
     if (a.out.empty() && a.path.empty() && a.platform.name != "glfw")
         throw Error("--out is required (the PNG to write)");
+    checkOutputs(a);
     scene::Scene s = loadSceneWithOverrides(a.scene);
     scene::View view = chooseView(s, a);
     probes::ProbeSet probeSet;
@@ -228,10 +243,10 @@ int run(RenderArgs& a) {
         throw Error("the GL reported " + std::to_string(errors.size()) +
                     " error(s) while rendering; nothing written:\n" +
                     gl::DebugOutput::format(errors));
-    ensureParentFolder(a.out);
+    makeParentFolder(a.out);
     image::writePng(a.out, ldr);
     if (!a.outHdr.empty()) {
-        ensureParentFolder(a.outHdr);
+        makeParentFolder(a.outHdr);
         image::writePfm(a.outHdr, hdr);
     }
     if (!a.dumpDir.empty()) renderer.dumpGBuffer(a.dumpDir);
@@ -275,7 +290,10 @@ const RegisterCommand reg{
              "--width", a->width, "Image width in pixels (default: the --profile's, else 1280)");
          a->heightOption = cmd.add_option(
              "--height", a->height, "Image height in pixels (default: the --profile's, else 720)");
-         cmd.add_option("--out", a->out, "PNG to write (8-bit sRGB, tonemapped)");
+         cmd.add_option("--out", a->out, "PNG to write (8-bit sRGB, tonemapped; name ends in .png)");
+         cmd.add_flag("--mkdir", a->mkdir,
+                      "Create missing parent folders of --out, --out-hdr, --dump-gbuffer (else "
+                      "a missing folder is an error)");
          cmd.add_option("--out-hdr", a->outHdr,
                         "PFM to write (linear HDR radiance before exposure)");
          cmd.add_option("--dump-gbuffer", a->dumpDir, "Folder to write every GBuffer channel to");
