@@ -52,6 +52,8 @@ std::string loadAverage() {
     return a + " " + b + " " + c;
 }
 
+std::string gitCommit() { return PB_GIT_COMMIT; }
+
 nlohmann::json benchContext(const platform::Platform& platform, const gl::GlCaps& caps) {
     struct utsname u {};
     uname(&u);
@@ -68,7 +70,7 @@ nlohmann::json benchContext(const platform::Platform& platform, const gl::GlCaps
         {"cpu_threads", std::thread::hardware_concurrency()},
         {"lp_num_threads", lp ? std::string(lp) : std::string("unset (llvmpipe: one per core)")},
         {"os", std::string(u.sysname) + " " + u.release + " " + u.machine},
-        {"commit", PB_GIT_COMMIT},
+        {"commit", gitCommit()},
         {"date", utcNow()},
         {"load_average_start", loadAverage()}};
 }

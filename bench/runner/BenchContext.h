@@ -11,5 +11,8 @@ namespace pb::bench {
 nlohmann::json benchContext(const platform::Platform& platform, const gl::GlCaps& caps);
 // "0.52 0.61 0.70" from /proc/loadavg ("unknown" elsewhere).
 std::string loadAverage();
+// The source tree's commit at build time (git describe --always --dirty), refreshed at every
+// build by runner/BuildInfo.cmake; also `probebench --version`.
+std::string gitCommit();
 
 } // namespace pb::bench
