@@ -10,6 +10,7 @@
 #include "bench/report/HtmlReport.h"
 #include "bench/report/MarkdownSummary.h"
 #include "bench/report/ResultJson.h"
+#include "bench/report/CiLevels.h"
 #include "bench/runner/BenchContext.h"
 #include "bench/runner/CacheModelRun.h"
 #include "bench/runner/ProbeCache.h"
@@ -70,6 +71,9 @@ std::string cameraSpec(const scene::View& v) {
 void validate(const BenchArgs& a) {
     if (a.frames < 1 || a.frames > 1000) throw Error("--frames must be in 1..1000");
     if (a.rounds < 1 || a.rounds > 1000) throw Error("--rounds must be in 1..1000");
+    // Said before the minutes of measuring, and again in every table's header and summary.
+    if (const std::string w = bench::roundsWarning(a.rounds); !w.empty())
+        std::cerr << "warning: " << w << "\n";
     if (a.warmup < 1 || a.warmup > 100)
         throw Error("--warmup must be in 1..100 (the first frame compiles shaders)");
     if ((a.width > 0) != (a.height > 0)) throw Error("--width and --height go together");
@@ -268,7 +272,9 @@ const RegisterCommand reg{
          cmd.add_option("--frames", a->frames, "Measured frames per variant per round")
              ->capture_default_str();
          cmd.add_option("--rounds", a->rounds,
-                        "Interleaved rounds (A B A B ...): the deltas' 95% CIs come from them")
+                        "Interleaved rounds (A B A B ...): the deltas' intervals come from them; "
+                        "6 or more give 95%, fewer a lower level (printed with each table, "
+                        "and warned about)")
              ->capture_default_str();
          cmd.add_option("--warmup", a->warmup,
                         "Frames per variant before timing (never counted; the first compiles "

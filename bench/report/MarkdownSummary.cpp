@@ -1,5 +1,6 @@
 #include "MarkdownSummary.h"
 
+#include "CiLevels.h"
 #include "Format.h"
 #include "ResultJson.h"
 
@@ -17,12 +18,14 @@ std::string accuracyCells(const AccuracyResult& a) {
 
 std::string deltaCells(const DeltaResult* d) {
     if (!d || !d->measured) return "n/a | n/a";
-    return shiftWithCi(d->ms) + (significant(d->ms) ? "" : " (ns)") + " | " +
+    const bool noCi = !(d->ms.ciLevel > 0); // "[no CI]" says it already
+    return shiftWithCi(d->ms) + (significant(d->ms) || noCi ? "" : " (ns)") + " | " +
            (d->flip >= 0 ? "+" : "") + fixed(d->flip, 4);
 }
 
 void profileTable(std::ostringstream& out, const BenchResult& r) {
-    out << "| profile | size | frame ms median [95% CI] | Δ ms vs reference [95% CI] | GI ms | "
+    out << "| profile | size | frame ms median [" << ciLabel(frameCiLevels(r))
+        << "] | Δ ms vs reference [" << ciLabel(deltaCiLevels(r)) << "] | GI ms | "
            "floor ms | FLIP | PSNR dB | SSIM | rel. MSE GI | coverage | GI MiB (budget) |\n"
         << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const SessionResult& s : r.sessions) {
@@ -78,7 +81,8 @@ void ablationTables(std::ostringstream& out, const BenchResult& r) {
         if (!any) continue;
         out << "\nAblation of **" << s.session.profile.name
             << "** (Δ = switch on − off; negative ms = the switch saves time; ΔFLIP > 0 = it "
-               "costs accuracy; (ns) = 95% CI contains 0):\n\n"
+               "costs accuracy; (ns) = the "
+            << ciLabel(deltaCiLevels(r)) << " contains 0):\n\n"
             << "| switch | reference → profile | Δ ms in profile | ΔFLIP in profile | Δ ms on "
                "reference | ΔFLIP on reference |\n|---|---|---|---|---|---|\n";
         for (const DeltaResult& d : s.deltas) {
@@ -109,6 +113,8 @@ std::string markdownSummary(const BenchResult& r) {
     if (ctx.value("software_renderer", false))
         out << " **Software rasterizer: the times are of this CPU, not of a GPU; accuracy, memory "
                "and coverage are hardware-independent.**";
+    if (const std::string w = roundsWarning(r.settings.rounds); !w.empty())
+        out << " **Warning: " << w << ".**";
     out << "\n\n";
     profileTable(out, r);
     passTable(out, r);

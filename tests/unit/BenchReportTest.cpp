@@ -1,5 +1,6 @@
 // The bench's outputs from a hand-made result (no GL): JSON fields and nulls, the Markdown
 // table, a self-contained HTML report, and the Pareto front.
+#include "bench/report/CiLevels.h"
 #include "bench/report/HtmlReport.h"
 #include "bench/report/MarkdownSummary.h"
 #include "bench/report/ResultJson.h"
@@ -148,6 +149,75 @@ TEST(BenchReport, CacheModelSectionComparesTheVariantsPerProfile) {
     ASSERT_EQ(j.size(), 1u);
     EXPECT_EQ(j[0]["profile_variant"], "slice_first/split");
     EXPECT_DOUBLE_EQ(j[0]["variants"][2]["probe_bytes_missed_per_pixel"].get<double>(), 9.0);
+}
+
+} // namespace
+} // namespace pb::test
+
+namespace pb::test {
+namespace {
+
+// Every table, chart and line says the level its intervals reach (issue 25, item 1): never
+// "95%" unless it is, and a warning when the rounds are too few.
+BenchResult resultWithRounds(int rounds) {
+    BenchResult r = result();
+    r.settings.rounds = rounds;
+    for (SessionResult& s : r.sessions) {
+        for (VariantResult& v : s.variants) {
+            v.roundMedians.resize(size_t(rounds), v.roundMedians.front());
+            for (int i = 0; i < rounds; ++i)
+                v.roundMedians[size_t(i)] = v.frameMs.median + 0.1 * i;
+            v.frameSamples = v.roundMedians; // 1 frame per round
+            v.frameMs = stats::summarize(v.frameSamples);
+        }
+        for (DeltaResult& d : s.deltas)
+            d.ms = stats::pairedShift(s.variants[size_t(d.planned.off)].roundMedians,
+                                      s.variants[size_t(d.planned.on)].roundMedians);
+    }
+    return r;
+}
+
+TEST(BenchCiLevel, LabelsSayTheLevelReachedNeverAnOverstated95) {
+    EXPECT_EQ(ciLabel({0.75, 0.75}), "75% CI");
+    EXPECT_EQ(ciLabel({0.96875}), "96.8% CI"); // rounded down
+    EXPECT_EQ(ciLabel({0.94999}), "94.9% CI");
+    EXPECT_EQ(ciLabel({0.75, 0.96875}), "CI ≥ 75%");
+    EXPECT_EQ(ciLabel({0.0}), "no CI");
+    EXPECT_EQ(roundsFor95(), 6);
+    EXPECT_NEAR(deltaLevelOfRounds(3), 0.75, 1e-12);
+}
+
+TEST(BenchCiLevel, ThreeRoundsPrint75PercentAndWarnEverywhere) {
+    const BenchResult r = resultWithRounds(3);
+    const std::string md = markdownSummary(r);
+    const std::string html = htmlReport(r);
+    for (const std::string* text : {&md, &html}) {
+        EXPECT_EQ(text->find("95% CI"), std::string::npos) << *text;
+        EXPECT_NE(text->find("[75% CI]"), std::string::npos) << *text;
+        EXPECT_NE(text->find("3 round(s) give delta intervals of 75% at most, not 95%; --rounds 6 "
+                             "or more give 95%"),
+                  std::string::npos)
+            << *text;
+    }
+    EXPECT_NE(md.find("(ns) = the 75% CI contains 0"), std::string::npos) << md;
+    EXPECT_NE(html.find("Δ frame ms vs reference, 75% CI"), std::string::npos); // Pareto axis
+}
+
+TEST(BenchCiLevel, OneRoundHasNoIntervalAndNoSignificance) {
+    const BenchResult r = resultWithRounds(1);
+    const std::string md = markdownSummary(r);
+    EXPECT_NE(md.find("[no CI]"), std::string::npos) << md;
+    EXPECT_EQ(md.find("[-6.00, -6.00]"), std::string::npos) << "a point is not an interval:\n" << md;
+    EXPECT_NE(md.find("give no interval at all"), std::string::npos) << md;
+}
+
+TEST(BenchCiLevel, EnoughRoundsSayTheirTrueLevelWithoutWarning) {
+    const BenchResult r = resultWithRounds(10);
+    const std::string md = markdownSummary(r);
+    EXPECT_NE(md.find("Δ ms vs reference [" + ciLabel(deltaCiLevels(r)) + "]"), std::string::npos)
+        << md;
+    EXPECT_EQ(ciLabel(deltaCiLevels(r)), "95.1% CI"); // Wilcoxon at n = 10: 95.1%, not 95%
+    EXPECT_EQ(md.find("Warning"), std::string::npos) << md;
 }
 
 } // namespace
