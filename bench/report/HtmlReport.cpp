@@ -2,6 +2,7 @@
 
 #include "CiLevels.h"
 #include "Format.h"
+#include "GiSections.h"
 #include "Html.h"
 #include "ResultJson.h"
 #include "SvgCharts.h"
@@ -65,7 +66,8 @@ void profileTable(std::ostringstream& h, const BenchResult& r) {
                   p.giMemoryMiB <= prof.giMemoryBudgetMiB ? "good" : "bad")
           << "</tr>\n";
     }
-    h << "</table>\n";
+    h << "</table>\n<p class=\"note\">GI ms: median per frame of " << kGiSectionsText
+      << " (every pass that exists for GI).</p>\n";
 }
 
 void charts(std::ostringstream& h, const BenchResult& r) {

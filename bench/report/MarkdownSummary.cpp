@@ -2,6 +2,7 @@
 
 #include "CiLevels.h"
 #include "Format.h"
+#include "GiSections.h"
 #include "ResultJson.h"
 
 #include <sstream>
@@ -50,6 +51,8 @@ void profileTable(std::ostringstream& out, const BenchResult& r) {
             << fixed(p.giMemoryMiB, 2) << " (" << fixed(s.session.profile.giMemoryBudgetMiB, 1)
             << ") |\n";
     }
+    out << "\nGI ms: median per frame of " << kGiSectionsText
+        << " (every pass that exists for GI; absent passes count 0).\n";
 }
 
 void passTable(std::ostringstream& out, const BenchResult& r) {

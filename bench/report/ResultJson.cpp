@@ -1,5 +1,7 @@
 #include "ResultJson.h"
 
+#include "GiSections.h"
+
 #include <cmath>
 
 namespace pb::bench {
@@ -24,7 +26,7 @@ nlohmann::json shiftJson(const stats::Shift& s) {
 std::vector<double> giPassSamples(const VariantResult& v) {
     std::vector<double> out(v.frameSamples.size(), 0.0);
     for (const SectionTiming& s : v.sections)
-        if (s.name.rfind("gi-", 0) == 0)
+        if (isGiSection(s.name))
             for (size_t i = 0; i < s.samples.size() && i < out.size(); ++i)
                 out[i] += s.samples[i];
     return out;

@@ -1,6 +1,7 @@
 // The bench's outputs from a hand-made result (no GL): JSON fields and nulls, the Markdown
 // table, a self-contained HTML report, and the Pareto front.
 #include "bench/report/CiLevels.h"
+#include "bench/report/GiSections.h"
 #include "bench/report/HtmlReport.h"
 #include "bench/report/MarkdownSummary.h"
 #include "bench/report/ResultJson.h"
@@ -218,6 +219,47 @@ TEST(BenchCiLevel, EnoughRoundsSayTheirTrueLevelWithoutWarning) {
         << md;
     EXPECT_EQ(ciLabel(deltaCiLevels(r)), "95.1% CI"); // Wilcoxon at n = 10: 95.1%, not 95%
     EXPECT_EQ(md.find("Warning"), std::string::npos) << md;
+}
+
+} // namespace
+} // namespace pb::test
+
+namespace pb::test {
+namespace {
+
+// "GI ms" counts every pass that exists for GI (issue 25, item 2), not only "gi-" names: the
+// temporal upsample made handheld look cheaper than the reference.
+TEST(BenchGiMs, SumsUpsampleDepthCopyStencilFillAndShProjection) {
+    EXPECT_TRUE(isGiSection("upsample"));
+    EXPECT_TRUE(isGiSection("gi-apply"));
+    EXPECT_FALSE(isGiSection("gi-fetch-floor")); // a separate measurement
+    EXPECT_FALSE(isGiSection("gbuffer"));
+
+    VariantResult v;
+    v.frameSamples = {20, 20};
+    for (const auto& [name, ms] : std::vector<std::pair<std::string, double>>{
+             {"gbuffer", 5}, {"gi-depth-copy", 1}, {"gi-apply", 2}, {"gi-fill", 0.5},
+             {"gi-dynamic-sh", 0.25}, {"upsample", 3}, {"direct", 4}}) {
+        SectionTiming t{name, std::vector<double>(2, ms), {}};
+        t.ms = stats::summarize(t.samples);
+        v.sections.push_back(t);
+    }
+    EXPECT_EQ(giPassSamples(v), (std::vector<double>{6.75, 6.75}));
+
+    BenchResult r = result(); // gi-apply 4/3 ms in every variant
+    for (VariantResult& low : r.sessions[1].variants)
+        low.sections.push_back({"upsample", std::vector<double>(6, 7.7),
+                                stats::summarize(std::vector<double>(6, 7.7))});
+    EXPECT_NEAR(stats::summarize(giPassSamples(r.sessions[1].profile())).median, 4.0 / 3 + 7.7,
+                1e-9);
+    // The low row's GI ms cell: 9.03, not gi-apply's 1.33 alone.
+    const std::string md = markdownSummary(r);
+    const size_t row = md.find("| low | 64x36 |");
+    ASSERT_NE(row, std::string::npos) << md;
+    const std::string line = md.substr(row, md.find('\n', row) - row);
+    EXPECT_NE(line.find("| 9.03 |"), std::string::npos) << line;
+    EXPECT_NE(markdownSummary(r).find("upsample (every pass that exists for GI"),
+              std::string::npos);
 }
 
 } // namespace
