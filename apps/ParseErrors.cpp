@@ -43,6 +43,21 @@ std::string unknownLongOption(const CLI::App& cmd, const std::vector<std::string
     return "";
 }
 
+// Options renamed, which "did you mean" cannot find by spelling: command, old, new, why.
+struct Renamed {
+    const char *command, *from, *to, *why;
+};
+constexpr Renamed kRenamed[] = {
+    {"probe", "--view", "--eye-dir", "--view names a view of the scene elsewhere"},
+};
+
+std::string renamedHint(const std::string& command, const std::string& option) {
+    for (const Renamed& r : kRenamed)
+        if (command == r.command && option == r.from)
+            return std::string("; renamed '") + r.to + "' (" + r.why + ")";
+    return "";
+}
+
 std::string typeWords(const std::string& cliType) {
     if (cliType.rfind("INT", 0) == 0) return "an integer";
     if (cliType.rfind("UINT", 0) == 0) return "a non-negative integer";
@@ -109,10 +124,13 @@ std::string usageMessage(const CLI::App& app, const CLI::ParseError& e,
         return printable(args[at] + ": unknown command" + didYouMean(args[at], names) +
                          " (commands: " + joined(names) + ")");
     const std::vector<std::string> rest(args.begin() + long(at) + 1, args.end());
-    if (const std::string bad = unknownLongOption(*cmd, rest); !bad.empty())
+    if (const std::string bad = unknownLongOption(*cmd, rest); !bad.empty()) {
+        const std::string renamed = renamedHint(cmd->get_name(), bad);
         return printable(bad + ": unknown option of '" + cmd->get_name() + "'" +
-                         didYouMean(bad, longOptionNames(*cmd)) + " (probebench " +
+                         (renamed.empty() ? didYouMean(bad, longOptionNames(*cmd)) : renamed) +
+                         " (probebench " +
                          cmd->get_name() + " --help)");
+    }
     return printable(rewrite(*cmd, e));
 }
 

@@ -269,7 +269,9 @@ const RegisterCommand reg{
          cmd.add_flag("--ablate", a->ablate,
                       "Per switch where a profile differs from the reference: the profile with "
                       "only that switch reverted, and the reference with only that switch applied");
-         cmd.add_option("--frames", a->frames, "Measured frames per variant per round")
+         cmd.add_option("--frames", a->frames,
+                        "Timed frames per variant per round (each round times this many "
+                        "after the warm-up). (`render --frames` is frames to show or play.)")
              ->capture_default_str();
          cmd.add_option("--rounds", a->rounds,
                         "Interleaved rounds (A B A B ...): the deltas' intervals come from them; "

@@ -299,8 +299,9 @@ const RegisterCommand reg{
          cmd.add_option("--dump-gbuffer", a->dumpDir, "Folder to write every GBuffer channel to");
          cmd.add_option("--exposure", a->exposure, "Linear exposure scale (default: the scene's)");
          cmd.add_option("--frames", a->frames,
-                        "glfw: close the window after N frames (0 = on ESC); --path: frames to "
-                        "render (0 = all of it)");
+                        "Frames to show or play, not to time: glfw: close the window after N "
+                        "frames (0 = on ESC); --path: frames to render (0 = all of it). "
+                        "(`bench --frames` is the timed frames per variant per round.)");
          cmd.add_option("--path", a->path,
                         "Play a camera path: static, slow_pan, fast_turn, doorway_walk (rooms) or "
                         "a TOML file; it starts at --view/--camera");

@@ -369,7 +369,9 @@ const RegisterCommand reg{
          cmd.add_option("--cache-dir", a->cacheDir, "Folder of the baked-probe cache");
          cmd.add_option("--view", a->view, "A named view instead of the worst case");
          cmd.add_option("--camera", a->camera, "Camera px,py,pz,tx,ty,tz[,fovdeg] instead");
-         cmd.add_option("--frames", a->frames, "Timed frames per candidate per round")
+         cmd.add_option("--frames", a->frames,
+                        "Timed frames per candidate per round, as `bench --frames` (not "
+                        "`render --frames`, the frames to show or play)")
              ->capture_default_str();
          cmd.add_option("--rounds", a->rounds, "Interleaved rounds per session")
              ->capture_default_str();
