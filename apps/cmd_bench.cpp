@@ -185,7 +185,7 @@ int run(const BenchArgs& a) {
     bench::BenchResult result;
     scene::View view;
     result.view = chooseBenchView(a, s, set, plan, view);
-    auto platform = platform::createPlatform(a.platform);
+    auto platform = platform::createPlatform(timingPlatform(a.platform));
     gl::DebugOutput debug;
     const gl::GlCaps caps = gl::queryCaps();
     const bench::TimingChoice timing =

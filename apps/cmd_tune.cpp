@@ -146,7 +146,7 @@ private:
                      std::to_string(w) + "x" + std::to_string(h));
             view_ = views::findWorstCaseView(scene_, set_, w, h).view;
         }
-        platform_ = platform::createPlatform(a_.platform);
+        platform_ = platform::createPlatform(timingPlatform(a_.platform));
         debug_ = std::make_unique<gl::DebugOutput>();
         const gl::GlCaps caps = gl::queryCaps();
         options_.frames = a_.frames;

@@ -110,7 +110,12 @@ std::string markdownSummary(const BenchResult& r) {
     out << "## probebench bench: " << r.scene.value("name", std::string("?")) << ", view "
         << r.view.value("source", std::string("?")) << "\n\n"
         << "Device: " << ctx.value("gl_renderer", std::string("?")) << " ("
-        << ctx.value("platform", std::string("?")) << "), timing " << r.settings.timingMethod
+        << ctx.value("platform", std::string("?")) << "; "
+        << (!ctx.contains("debug_context") || ctx["debug_context"].is_null()
+                ? "debug context: unknown"
+                : ctx["debug_context"].get<bool>() ? "a debug context (KHR_debug checks timed too)"
+                                                   : "a non-debug context")
+        << "), timing " << r.settings.timingMethod
         << "; " << r.settings.rounds << " rounds x " << r.settings.frames << " frames after "
         << r.settings.warmup << " warm-up frames per variant; " << fixed(r.seconds, 1) << " s.";
     if (ctx.value("software_renderer", false))
