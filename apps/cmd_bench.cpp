@@ -71,9 +71,6 @@ std::string cameraSpec(const scene::View& v) {
 void validate(const BenchArgs& a) {
     if (a.frames < 1 || a.frames > 1000) throw Error("--frames must be in 1..1000");
     if (a.rounds < 1 || a.rounds > 1000) throw Error("--rounds must be in 1..1000");
-    // Said before the minutes of measuring, and again in every table's header and summary.
-    if (const std::string w = bench::roundsWarning(a.rounds); !w.empty())
-        std::cerr << "warning: " << w << "\n";
     if (a.warmup < 1 || a.warmup > 100)
         throw Error("--warmup must be in 1..100 (the first frame compiles shaders)");
     if ((a.width > 0) != (a.height > 0)) throw Error("--width and --height go together");
@@ -198,6 +195,10 @@ int run(const BenchArgs& a) {
                     {"probes", set.probeCount()},
                     {"probe_format", probes::formatName(set.format())}};
     result.settings = {a.frames, a.rounds, a.warmup, a.ablate, timing.name, timing.reason, a.ppd};
+    // Said once everything is checked, before the minutes of measuring, and again in every
+    // table's header and the summary.
+    if (const std::string w = bench::roundsWarning(a.rounds); !w.empty())
+        std::cerr << "warning: " << w << "\n";
     progress(std::to_string(plan.sessions.size()) + " profile(s), " +
              std::to_string(plan.variantCount()) + " variant(s), " + std::to_string(a.rounds) +
              " rounds x " + std::to_string(a.frames) + " frames; timing " + timing.name + " on " +

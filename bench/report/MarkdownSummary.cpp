@@ -3,6 +3,7 @@
 #include "CiLevels.h"
 #include "Format.h"
 #include "GiSections.h"
+#include "Spread.h"
 #include "ResultJson.h"
 
 #include <sstream>
@@ -22,6 +23,25 @@ std::string deltaCells(const DeltaResult* d) {
     const bool noCi = !(d->ms.ciLevel > 0); // "[no CI]" says it already
     return shiftWithCi(d->ms) + (significant(d->ms) || noCi ? "" : " (ns)") + " | " +
            (d->flip >= 0 ? "+" : "") + fixed(d->flip, 4);
+}
+
+// Percentiles and the noise flags of each profile's delta vs the reference: a median delta
+// between two bimodal or differently noisy distributions needs a second look.
+void spreadTable(std::ostringstream& out, const BenchResult& r) {
+    out << "\nFrame ms percentiles (every measured frame) and noise flags of the delta vs "
+           "reference (bimodal: Sarle's coefficient > 5/9; variance: ratio > 4):\n\n"
+        << "| profile | p50 | p90 | p99 | flags |\n|---|---|---|---|---|\n";
+    for (const SessionResult& s : r.sessions) {
+        const VariantResult& p = s.profile();
+        if (!p.ok()) continue;
+        const DeltaResult* vs = s.vsReference();
+        const std::string flags =
+            vs && vs->measured ? noiseFlags(s.variants[size_t(vs->planned.off)], p) : "";
+        out << "| " << s.session.profile.name << " | " << fixed(percentile(p.frameSamples, 0.5), 2)
+            << " | " << fixed(percentile(p.frameSamples, 0.9), 2) << " | "
+            << fixed(percentile(p.frameSamples, 0.99), 2) << " | " << (flags.empty() ? "-" : flags)
+            << " |\n";
+    }
 }
 
 void profileTable(std::ostringstream& out, const BenchResult& r) {
@@ -53,11 +73,12 @@ void profileTable(std::ostringstream& out, const BenchResult& r) {
     }
     out << "\nGI ms: median per frame of " << kGiSectionsText
         << " (every pass that exists for GI; absent passes count 0).\n";
+    spreadTable(out, r);
 }
 
 void passTable(std::ostringstream& out, const BenchResult& r) {
     std::vector<std::string> names = sectionNames(r);
-    out << "\nMedian ms per pass:\n\n| profile |";
+    out << "\nMedian ms per pass (IQR in parentheses: the pass's spread):\n\n| profile |";
     for (const auto& n : names)
         out << " " << n << " |";
     out << " frame |\n|---|";
@@ -70,7 +91,9 @@ void passTable(std::ostringstream& out, const BenchResult& r) {
         out << "| " << s.session.profile.name << " |";
         for (const auto& n : names) {
             const SectionTiming* t = p.section(n);
-            out << " " << (t ? fixed(t->ms.median, 2) : std::string("-")) << " |";
+            out << " "
+                << (t ? fixed(t->ms.median, 2) + " (" + fixed(t->ms.iqr, 2) + ")" : std::string("-"))
+                << " |";
         }
         out << " " << fixed(p.frameMs.median, 2) << " |\n";
     }

@@ -2,6 +2,7 @@
 // table, a self-contained HTML report, and the Pareto front.
 #include "bench/report/CiLevels.h"
 #include "bench/report/GiSections.h"
+#include "bench/report/Spread.h"
 #include "bench/report/HtmlReport.h"
 #include "bench/report/MarkdownSummary.h"
 #include "bench/report/ResultJson.h"
@@ -260,6 +261,49 @@ TEST(BenchGiMs, SumsUpsampleDepthCopyStencilFillAndShProjection) {
     EXPECT_NE(line.find("| 9.03 |"), std::string::npos) << line;
     EXPECT_NE(markdownSummary(r).find("upsample (every pass that exists for GI"),
               std::string::npos);
+}
+
+} // namespace
+} // namespace pb::test
+
+namespace pb::test {
+namespace {
+
+// Percentiles and noise flags beside the medians (issue 25, item 4).
+TEST(BenchSpread, PercentilesAndBimodalityFlagTheDelta) {
+    std::vector<double> ramp;
+    for (int i = 0; i <= 100; ++i)
+        ramp.push_back(i);
+    EXPECT_DOUBLE_EQ(percentile(ramp, 0.5), 50);
+    EXPECT_DOUBLE_EQ(percentile(ramp, 0.9), 90);
+    EXPECT_DOUBLE_EQ(percentile(ramp, 0.99), 99);
+
+    std::vector<double> twoModes, oneMode;
+    for (int i = 0; i < 20; ++i) {
+        twoModes.push_back(i % 2 ? 15.0 + 0.01 * i : 5.0 + 0.01 * i);
+        const int bell[10] = {-2, -1, -1, 0, 0, 0, 0, 1, 1, 2}; // one symmetric mode
+        oneMode.push_back(10.0 + 0.1 * bell[i % 10]);
+    }
+    EXPECT_GT(bimodalityCoefficient(twoModes), kBimodalAbove);
+    EXPECT_LT(bimodalityCoefficient(oneMode), kBimodalAbove);
+
+    BenchResult r = result();
+    SessionResult& low = r.sessions[1];
+    low.variants[0].frameSamples = twoModes; // the profile itself (SessionResult::profile())
+    const std::string md = markdownSummary(r);
+    EXPECT_NE(md.find("| profile | p50 | p90 | p99 | flags |"), std::string::npos) << md;
+    EXPECT_NE(md.find("bimodal: on"), std::string::npos) << md;
+    EXPECT_NE(md.find("variance x"), std::string::npos) << md;
+    EXPECT_NE(md.find("Median ms per pass (IQR"), std::string::npos) << md;
+
+    const nlohmann::json j = benchJson(r);
+    bool sawPercentiles = false;
+    for (const auto& v : j["variants"])
+        if (v.contains("frame_percentiles_ms"))
+            sawPercentiles = v["frame_percentiles_ms"].contains("p99");
+    EXPECT_TRUE(sawPercentiles);
+    EXPECT_FALSE(j["profiles"][1]["vs_reference"]["noise_flags"].is_null())
+        << j["profiles"][1]["vs_reference"].dump();
 }
 
 } // namespace
