@@ -10,19 +10,18 @@
 namespace pb::app {
 
 namespace {
-constexpr double kIdenticalPsnr = 100.0; // dB counted for identical frames in summaries
 constexpr double kConvergedRelative = 0.1, kConvergedAbsolute = 1e-4;
-
-double cappedPsnr(double psnr) {
-    return std::min(psnr, kIdenticalPsnr);
-}
 
 nlohmann::json finiteOrNull(double v) {
     return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
+// PSNR of identical frames is +inf, written "inf" in text and null in JSON, as `compare` and
+// `bench` write it (it used to count as 100 dB here): the PSNR mean and min are over the
+// frames that differ, with the identical ones counted apart.
 struct Totals {
-    double psnrMean = 0, psnrMin = 1e300, flipMean = 0, maeMean = 0;
+    double psnrMean = INFINITY, psnrMin = INFINITY, flipMean = 0, maeMean = 0;
+    std::int64_t identical = 0;
     double giRelMse = 0, giRelMae = 0;
     std::int64_t entered = 0, disoccluded = 0;
     double disoccludedMae = 0;      // pixel-weighted over all frames
@@ -31,13 +30,17 @@ struct Totals {
 
 Totals totals(const std::vector<PathFrameError>& frames) {
     Totals t;
-    double disoccludedSum = 0, disoccludedGiSum = 0;
+    double disoccludedSum = 0, disoccludedGiSum = 0, psnrSum = 0;
     for (const auto& f : frames) {
         t.giRelMse += f.giRelMse;
         t.giRelMae += f.giRelMae;
         disoccludedGiSum += f.disoccludedGiRelMae * double(f.disoccludedPixels);
-        t.psnrMean += cappedPsnr(f.psnr);
-        t.psnrMin = std::min(t.psnrMin, cappedPsnr(f.psnr));
+        if (std::isfinite(f.psnr)) {
+            psnrSum += f.psnr;
+            t.psnrMin = std::min(t.psnrMin, f.psnr);
+        } else {
+            ++t.identical;
+        }
         t.flipMean += f.flipMean;
         t.maeMean += f.mae;
         t.entered += f.enteredPixels;
@@ -45,7 +48,8 @@ Totals totals(const std::vector<PathFrameError>& frames) {
         disoccludedSum += f.disoccludedMae * double(f.disoccludedPixels);
     }
     const double n = std::max<double>(1.0, double(frames.size()));
-    t.psnrMean /= n;
+    const std::int64_t differing = std::int64_t(frames.size()) - t.identical;
+    if (differing > 0) t.psnrMean = psnrSum / double(differing);
     t.flipMean /= n;
     t.maeMean /= n;
     t.giRelMse /= n;
@@ -168,9 +172,9 @@ nlohmann::json pathErrorsJson(const std::vector<PathFrameError>& frames, nlohman
                                {"frames_to_converge", c.frames < 0 ? nlohmann::json(nullptr)
                                                                    : nlohmann::json(c.frames)}});
     about["frames"] = list;
-    about["summary"] = {{"psnr_mean_db", t.psnrMean},
-                        {"psnr_min_db", t.psnrMin},
-                        {"identical_frames_count_as_db", kIdenticalPsnr},
+    about["summary"] = {{"psnr_mean_db", finiteOrNull(t.psnrMean)}, // of the differing frames
+                        {"psnr_min_db", finiteOrNull(t.psnrMin)},
+                        {"identical_frames", t.identical}, // PSNR inf (null per frame)
                         {"flip_mean", t.flipMean},
                         {"mae_mean", t.maeMean},
                         {"gi_rel_mse_mean", t.giRelMse},
@@ -185,13 +189,16 @@ nlohmann::json pathErrorsJson(const std::vector<PathFrameError>& frames, nlohman
 
 std::string pathSummaryText(const std::vector<PathFrameError>& frames) {
     const Totals t = totals(frames);
-    char line[256];
+    char line[512];
     std::string out;
     std::snprintf(line, sizeof line,
-                  "error vs full-resolution GI over %zu frames: PSNR mean %.2f dB (min %.2f; "
-                  "identical = %.0f), FLIP mean %.4f, MAE %.3f; GI rel. MAE %.4f, rel. MSE %.3g\n",
-                  frames.size(), t.psnrMean, t.psnrMin, kIdenticalPsnr, t.flipMean, t.maeMean,
-                  t.giRelMae, t.giRelMse);
+                  "error vs full-resolution GI over %zu frames: PSNR mean %.2f dB (min %.2f) "
+                  "over the %lld that differ, %lld identical (PSNR inf), FLIP mean %.4f, MAE "
+                  "%.3f; GI rel. MAE %.4f, rel. MSE %.3g\n",
+                  frames.size(), t.psnrMean, t.psnrMin,
+                  static_cast<long long>(std::int64_t(frames.size()) - t.identical),
+                  static_cast<long long>(t.identical), t.flipMean, t.maeMean, t.giRelMae,
+                  t.giRelMse);
     out += line;
     std::snprintf(line, sizeof line,
                   "disocclusions (hidden in the previous frame): %lld pixels, MAE there %.3f, GI "

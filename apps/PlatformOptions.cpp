@@ -1,5 +1,7 @@
 #include "PlatformOptions.h"
 
+#include "NumberChecks.h"
+
 namespace pb::app {
 
 void addPlatformOptions(CLI::App& cmd, pb::platform::PlatformOptions& o) {
@@ -13,7 +15,7 @@ void addPlatformOptions(CLI::App& cmd, pb::platform::PlatformOptions& o) {
     cmd.add_option("--device", o.device,
                    "EGL device index from `probebench info --devices` (egl only; default: the "
                    "first hardware device, else llvmpipe)")
-        ->check(CLI::NonNegativeNumber)
+        ->check(numberAtLeastZero(false))
         ->group("Platform");
 }
 

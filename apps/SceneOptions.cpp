@@ -1,8 +1,12 @@
 #include "SceneOptions.h"
 
 #include "core/Error.h"
+#include "core/Suggest.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 namespace pb::app {
@@ -25,7 +29,24 @@ void addSceneOptions(CLI::App& cmd, SceneArgs& a) {
                  "Let a glTF's buffer and image URIs be absolute or leave its folder");
 }
 
+// A name that is neither a built-in scene nor a glTF path is most likely a typo of a built-in:
+// say which (the loader's own message, in renderer/scene/, cannot guess).
+void requireSceneName(const std::string& name) {
+    const auto& builtins = scene::builtinSceneNames();
+    if (std::find(builtins.begin(), builtins.end(), name) != builtins.end()) return;
+    std::string ext = std::filesystem::path(name).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    if (ext == ".gltf" || ext == ".glb") return;
+    std::string names;
+    for (const auto& n : builtins)
+        names += (names.empty() ? "" : ", ") + n;
+    throw fileError(name, "not a built-in scene" + didYouMean(name, builtins) + " (" + names +
+                              ") nor a .gltf/.glb file");
+}
+
 scene::Scene loadSceneWithOverrides(const SceneArgs& a) {
+    requireSceneName(a.scene);
     scene::SceneOptions opts;
     opts.dynamicNodes = a.dynamicNodes;
     opts.allowExternalUris = a.allowExternalUris;
@@ -60,10 +81,13 @@ scene::View chooseView(const scene::Scene& s, const std::string& viewName,
     if (viewName.empty()) return s.views.front();
     if (const scene::View* v = s.findView(viewName)) return *v;
     std::string names;
-    for (const auto& v : s.views)
+    std::vector<std::string> list;
+    for (const auto& v : s.views) {
         names += (names.empty() ? "" : ", ") + v.name;
-    throw Error("--view '" + viewName + "': scene '" + s.name +
-                "' has no such view (views: " + names + ")");
+        list.push_back(v.name);
+    }
+    throw Error("--view '" + viewName + "': scene '" + s.name + "' has no such view" +
+                didYouMean(viewName, list) + " (views: " + names + ")");
 }
 
 } // namespace pb::app

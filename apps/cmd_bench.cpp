@@ -3,12 +3,14 @@
 // the GI irradiance), the GI pass's texture-fetch floor, and with --ablate what every switch
 // saves and costs. JSON for machines, a self-contained HTML report, a Markdown summary on stdout.
 #include "CommandRegistry.h"
+#include "ProbeOptions.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
 #include "SceneOptions.h"
 #include "bench/report/HtmlReport.h"
 #include "bench/report/MarkdownSummary.h"
 #include "bench/report/ResultJson.h"
+#include "bench/report/CiLevels.h"
 #include "bench/runner/BenchContext.h"
 #include "bench/runner/CacheModelRun.h"
 #include "bench/runner/ProbeCache.h"
@@ -35,6 +37,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct BenchArgs {
+    bool force = false; // --probes baked for another scene
     SceneArgs scene;
     platform::PlatformOptions platform;
     std::vector<std::string> profiles, sets;
@@ -174,12 +177,12 @@ int run(const BenchArgs& a) {
             ? bench::benchProbes(s, a.volumes,
                                  a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir,
                                  &probesPath, progress)
-            : probes::readProbeFileWithRanks(a.probes);
+            : readProbesForScene(a.probes, s, a.force);
 
     bench::BenchResult result;
     scene::View view;
     result.view = chooseBenchView(a, s, set, plan, view);
-    auto platform = platform::createPlatform(a.platform);
+    auto platform = platform::createPlatform(timingPlatform(a.platform));
     gl::DebugOutput debug;
     const gl::GlCaps caps = gl::queryCaps();
     const bench::TimingChoice timing =
@@ -192,6 +195,10 @@ int run(const BenchArgs& a) {
                     {"probes", set.probeCount()},
                     {"probe_format", probes::formatName(set.format())}};
     result.settings = {a.frames, a.rounds, a.warmup, a.ablate, timing.name, timing.reason, a.ppd};
+    // Said once everything is checked, before the minutes of measuring, and again in every
+    // table's header and the summary.
+    if (const std::string w = bench::roundsWarning(a.rounds); !w.empty())
+        std::cerr << "warning: " << w << "\n";
     progress(std::to_string(plan.sessions.size()) + " profile(s), " +
              std::to_string(plan.variantCount()) + " variant(s), " + std::to_string(a.rounds) +
              " rounds x " + std::to_string(a.frames) + " frames; timing " + timing.name + " on " +
@@ -263,10 +270,14 @@ const RegisterCommand reg{
          cmd.add_flag("--ablate", a->ablate,
                       "Per switch where a profile differs from the reference: the profile with "
                       "only that switch reverted, and the reference with only that switch applied");
-         cmd.add_option("--frames", a->frames, "Measured frames per variant per round")
+         cmd.add_option("--frames", a->frames,
+                        "Timed frames per variant per round (each round times this many "
+                        "after the warm-up). (`render --frames` is frames to show or play.)")
              ->capture_default_str();
          cmd.add_option("--rounds", a->rounds,
-                        "Interleaved rounds (A B A B ...): the deltas' 95% CIs come from them")
+                        "Interleaved rounds (A B A B ...): the deltas' intervals come from them; "
+                        "6 or more give 95%, fewer a lower level (printed with each table, "
+                        "and warned about)")
              ->capture_default_str();
          cmd.add_option("--warmup", a->warmup,
                         "Frames per variant before timing (never counted; the first compiles "
@@ -278,6 +289,7 @@ const RegisterCommand reg{
          cmd.add_option("--view", a->view, "A named view of the scene instead of the worst case");
          cmd.add_option("--camera", a->camera,
                         "Camera px,py,pz,tx,ty,tz[,fovdeg] instead of the worst case");
+         addForceProbesFlag(cmd, a->force);
          cmd.add_option("--probes", a->probes,
                         "Probe file (probebench bake); default: bake --volumes once and cache it");
          cmd.add_option("--volumes", a->volumes,

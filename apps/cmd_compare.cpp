@@ -1,6 +1,7 @@
 // probebench compare: image-error metrics (PSNR, SSIM, LDR-FLIP) of a test PNG against a
 // reference PNG, optionally with a FLIP heat map. GL-free.
 #include "CommandRegistry.h"
+#include "NumberChecks.h"
 #include "core/Error.h"
 #include "image/Image.h"
 #include "metrics/ImageMetrics.h"
@@ -83,7 +84,7 @@ const RegisterCommand reg{{
         cmd.add_option("--ppd", a->ppd,
                        "Viewing condition for FLIP in pixels per degree of visual angle "
                        "(default 67: a 0.7 m wide 4K screen seen from 0.7 m)")
-            ->check(CLI::PositiveNumber);
+            ->check(numberAtLeastZero(true));
         cmd.add_option("--heatmap", a->heatmap,
                        "Write the per-pixel FLIP error as a PNG heat map (black = no error, "
                        "pale yellow = 1)");

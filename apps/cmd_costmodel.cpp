@@ -3,6 +3,7 @@
 // shader variant's texel stream through texture-cache models (hit rate, bytes missed per
 // pixel). Hardware-independent: what a testbed without the target GPU can say about it.
 #include "CommandRegistry.h"
+#include "ProbeOptions.h"
 #include "ProfileOptions.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
@@ -19,6 +20,7 @@ namespace pb::app {
 namespace {
 
 struct CostArgs {
+    bool force = false; // --probes baked for another scene
     SceneArgs scene;
     std::string probes, view, camera, scenario, layout = "tiled";
     ProfileArgs profileArgs;
@@ -79,7 +81,7 @@ int run(CostArgs& a) {
     o.layout = costmodel::parseMemoryLayout(a.layout);
     o.caches = chooseCaches(a, platformProfile);
     scene::Scene s = loadSceneWithOverrides(a.scene);
-    probes::ProbeSet set = probes::readProbeFileWithRanks(a.probes);
+    probes::ProbeSet set = readProbesForScene(a.probes, s, a.force);
     if (!a.scenario.empty()) {
         o.scenario = set.findScenario(a.scenario);
         if (o.scenario < 0) throw Error("--scenario '" + a.scenario + "': not in " + a.probes);
@@ -113,6 +115,7 @@ const RegisterCommand reg{
          auto a = std::make_shared<CostArgs>();
          addSceneOptions(cmd, a->scene);
          cmd.add_option("--probes", a->probes, "Probe file (probebench bake)")->required();
+         addForceProbesFlag(cmd, a->force);
          cmd.add_option("--view", a->view, "Named view of the scene (default: its first)");
          cmd.add_option("--camera", a->camera, "Camera px,py,pz,tx,ty,tz[,fovdeg]");
          cmd.add_flag("--worst-case", a->worstCase,

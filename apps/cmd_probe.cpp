@@ -16,7 +16,7 @@ namespace {
 using namespace pb::probes;
 
 struct ProbeArgs {
-    std::string probes, at, normal, view, scenario;
+    std::string probes, at, normal, eyeDir, scenario;
     bool json = false;
 };
 
@@ -38,7 +38,8 @@ nlohmann::json vecJson(const glm::vec3& v) {
 int run(const ProbeArgs& a) {
     glm::vec3 at = parseVec3(a.at, "--at", false);
     glm::vec3 normal = glm::normalize(parseVec3(a.normal, "--normal", true));
-    glm::vec3 view = a.view.empty() ? normal : glm::normalize(parseVec3(a.view, "--view", true));
+    glm::vec3 view =
+        a.eyeDir.empty() ? normal : glm::normalize(parseVec3(a.eyeDir, "--eye-dir", true));
     ProbeSet set = readProbeFile(a.probes);
     int scenario = 0;
     if (!a.scenario.empty()) {
@@ -59,7 +60,7 @@ int run(const ProbeArgs& a) {
                          {"scenario", set.scenarios[size_t(scenario)].name},
                          {"at", vecJson(at)},
                          {"normal", vecJson(normal)},
-                         {"view", vecJson(view)},
+                         {"eye_dir", vecJson(view)},
                          {"irradiance", vecJson(r.irradiance)},
                          {"weight", r.weight},
                          {"volume", r.volume >= 0 ? nlohmann::json(volume) : nlohmann::json()},
@@ -87,7 +88,8 @@ const RegisterCommand reg{{
             ->required();
         cmd.add_option("--at", a->at, "World position X,Y,Z")->required();
         cmd.add_option("--normal", a->normal, "Surface normal X,Y,Z")->required();
-        cmd.add_option("--view", a->view,
+        // Not --view: everywhere else that names a view of the scene (issue 25, item 9).
+        cmd.add_option("--eye-dir", a->eyeDir,
                        "Direction from the point towards the viewer X,Y,Z "
                        "(default: the normal)");
         cmd.add_option("--scenario", a->scenario, "Lighting scenario (default: the first)");

@@ -3,6 +3,8 @@
 // probes, shaped by the profile switches (--set key=value, renderer/profile/SwitchTable.cpp);
 // --debug NAME shows a GI debug view, --verbose / --json report the GI pass per volume.
 #include "CommandRegistry.h"
+#include "OutputPaths.h"
+#include "ProbeOptions.h"
 #include "FlyCamera.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
@@ -26,6 +28,8 @@ namespace pb::app {
 namespace {
 
 struct RenderArgs {
+    bool force = false; // --probes baked for another scene
+    bool mkdir = false;  // create missing parent folders of the outputs
     SceneArgs scene;
     platform::PlatformOptions platform;
     std::string view;
@@ -53,23 +57,28 @@ int scenarioIndex(const probes::ProbeSet& set, const RenderArgs& a) {
     throw Error("--scenario: '" + a.scenario + "' is not in " + a.probes + " (" + names + ")");
 }
 
-void ensureParentFolder(const std::string& path) {
-    auto parent = std::filesystem::path(path).parent_path();
-    if (parent.empty()) return;
-    std::error_code ec;
-    std::filesystem::create_directories(parent, ec);
-    if (ec) throw fileError(path, "cannot create its folder: " + ec.message());
+// Refused before anything renders (OutputPaths.h): each output is written as its name says,
+// where it says, or the command fails - never silently skipped.
+void checkOutputs(const RenderArgs& a) {
+    const bool window = a.platform.name == "glfw" && a.out.empty() && a.path.empty();
+    for (const auto& [option, value] : {std::pair{"--out-hdr", &a.outHdr},
+                                        std::pair{"--dump-gbuffer", &a.dumpDir}}) {
+        if (value->empty()) continue;
+        if (window)
+            throw Error(std::string(option) + ": the window mode writes nothing at exit; add "
+                                              "--out to render one frame and write it too");
+        if (!a.path.empty())
+            throw Error(std::string(option) + ": not written in --path mode (frames are PNGs "
+                                              "in --out-dir)");
+    }
+    if (!a.out.empty()) checkOutputFile("--out", a.out, {".png"}, "an 8-bit sRGB PNG", a.mkdir);
+    if (!a.outHdr.empty())
+        checkOutputFile("--out-hdr", a.outHdr, {".pfm"}, "a linear HDR PFM", a.mkdir);
+    if (!a.dumpDir.empty()) checkOutputFolder("--dump-gbuffer", a.dumpDir, a.mkdir);
 }
 
 scene::View chooseView(const scene::Scene& s, const RenderArgs& a) {
-    if (!a.camera.empty()) return scene::parseCameraSpec(a.camera);
-    if (a.view.empty()) return s.views.front();
-    if (const scene::View* v = s.findView(a.view)) return *v;
-    std::string names;
-    for (const auto& v : s.views)
-        names += (names.empty() ? "" : ", ") + v.name;
-    throw Error("--view '" + a.view + "': scene '" + s.name +
-                "' has no such view (views: " + names + ")");
+    return app::chooseView(s, a.view, a.camera); // SceneOptions: one message, with "did you mean"
 }
 
 int runInteractive(platform::Platform& p, render::FrameRenderer& r, const scene::Scene& s,
@@ -161,6 +170,7 @@ render::GiDebugView checkArgs(RenderArgs& a, const profile::PlatformProfile& pla
         throw Error("--path: frames go to --out-dir DIR (required; not --out)");
     if (a.out.empty() && a.path.empty() && a.platform.name != "glfw")
         throw Error("--out is required (the PNG to write)");
+    checkOutputs(a);
     return debugView;
 }
 
@@ -207,10 +217,10 @@ RenderedFrame renderFrame(const RenderArgs& a, render::FrameRenderer& renderer,
 }
 
 void writeFrame(const RenderArgs& a, render::FrameRenderer& renderer, const RenderedFrame& f) {
-    ensureParentFolder(a.out);
+    makeParentFolder(a.out);
     image::writePng(a.out, f.ldr);
     if (!a.outHdr.empty()) {
-        ensureParentFolder(a.outHdr);
+        makeParentFolder(a.outHdr);
         image::writePfm(a.outHdr, f.hdr);
     }
     if (!a.dumpDir.empty()) renderer.dumpGBuffer(a.dumpDir);
@@ -258,7 +268,7 @@ int run(RenderArgs& a) {
     probes::ProbeSet probeSet;
     render::GiOptions gi;
     if (!a.probes.empty()) {
-        probeSet = probes::readProbeFileWithRanks(a.probes);
+        probeSet = readProbesForScene(a.probes, s, a.force);
         gi.probes = &probeSet;
         gi.scenario = scenarioIndex(probeSet, a);
         gi.profile = prof;
@@ -314,14 +324,18 @@ const RegisterCommand reg{
              "--width", a->width, "Image width in pixels (default: the --profile's, else 1280)");
          a->heightOption = cmd.add_option(
              "--height", a->height, "Image height in pixels (default: the --profile's, else 720)");
-         cmd.add_option("--out", a->out, "PNG to write (8-bit sRGB, tonemapped)");
+         cmd.add_option("--out", a->out, "PNG to write (8-bit sRGB, tonemapped; name ends in .png)");
+         cmd.add_flag("--mkdir", a->mkdir,
+                      "Create missing parent folders of --out, --out-hdr, --dump-gbuffer (else "
+                      "a missing folder is an error)");
          cmd.add_option("--out-hdr", a->outHdr,
                         "PFM to write (linear HDR radiance before exposure)");
          cmd.add_option("--dump-gbuffer", a->dumpDir, "Folder to write every GBuffer channel to");
          cmd.add_option("--exposure", a->exposure, "Linear exposure scale (default: the scene's)");
          cmd.add_option("--frames", a->frames,
-                        "glfw: close the window after N frames (0 = on ESC); --path: frames to "
-                        "render (0 = all of it)");
+                        "Frames to show or play, not to time: glfw: close the window after N "
+                        "frames (0 = on ESC); --path: frames to render (0 = all of it). "
+                        "(`bench --frames` is the timed frames per variant per round.)");
          cmd.add_option("--path", a->path,
                         "Play a camera path: static, slow_pan, fast_turn, doorway_walk (rooms) or "
                         "a TOML file; it starts at --view/--camera");
@@ -330,6 +344,7 @@ const RegisterCommand reg{
                         "--path: 'full' also renders full-resolution GI per frame and writes "
                         "errors.csv/errors.json (PSNR, FLIP, disocclusion error)");
          cmd.add_option("--probes", a->probes, "Probe file (probebench bake): render with DDGI");
+         addForceProbesFlag(cmd, a->force);
          cmd.add_option("--scenario", a->scenario,
                         "Lighting scenario of --probes (default: its first)");
          addProfileOptions(cmd, a->profileArgs, "Needs --probes.");

@@ -92,7 +92,7 @@ int run(const StressArgs& a) {
     }
     stress::selectCases(stress::stressCases(co), a.cases); // names checked before any GL
 
-    auto platform = platform::createPlatform(a.platform);
+    auto platform = platform::createPlatform(timingPlatform(a.platform));
     gl::DebugOutput debug;
     co.maxResolution = stress::largestStressResolution(a.maxResolution);
     const std::vector<stress::StressCase> cases =

@@ -5,12 +5,14 @@
 // memory, FLIP), writes the winner as a profile inheriting the base, loads it back and
 // re-measures it. The search itself is bench/tune (GL-free); this file wires it to GL.
 #include "CommandRegistry.h"
+#include "ProbeOptions.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
 #include "SceneOptions.h"
 #include "bench/runner/BenchContext.h"
 #include "bench/runner/ProbeCache.h"
 #include "bench/runner/SessionRunner.h"
+#include "bench/tune/BudgetCheck.h"
 #include "bench/tune/TuneReport.h"
 #include "bench/tune/TunedProfile.h"
 #include "bench/tune/VolumeLodLevels.h"
@@ -36,12 +38,14 @@ namespace {
 namespace fs = std::filesystem;
 
 struct TuneArgs {
+    bool force = false; // --probes baked for another scene
     SceneArgs scene;
     platform::PlatformOptions platform;
     std::string base = "reference", reference = "reference", out, json, probes, volumes = "auto",
                 cacheDir, view, camera, timing = "auto";
     std::vector<std::string> search, sets;
     double budgetMs = 0, budgetMiB = 0, ppd = 67.0;
+    bool acceptOverBudget = false; // write a profile that re-measures over --budget-ms
     int width = 0, height = 0, frames = 2, rounds = 3, warmup = 2, maxExhaustive = 24,
         maxPasses = 2;
 };
@@ -144,7 +148,7 @@ private:
                      std::to_string(w) + "x" + std::to_string(h));
             view_ = views::findWorstCaseView(scene_, set_, w, h).view;
         }
-        platform_ = platform::createPlatform(a_.platform);
+        platform_ = platform::createPlatform(timingPlatform(a_.platform));
         debug_ = std::make_unique<gl::DebugOutput>();
         const gl::GlCaps caps = gl::queryCaps();
         options_.frames = a_.frames;
@@ -177,7 +181,7 @@ private:
 probes::ProbeSet tuneProbes(const TuneArgs& a, const scene::Scene& s, std::string& path) {
     if (!a.probes.empty()) {
         path = a.probes;
-        return probes::readProbeFileWithRanks(a.probes);
+        return readProbesForScene(a.probes, s, a.force);
     }
     probes::ProbeSet set = bench::benchProbes(
         s, a.volumes, a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir, &path,
@@ -276,8 +280,20 @@ int run(const TuneArgs& a) {
         "[budget] gi_memory_mib is the tune budget: probe textures AND GI targets (stricter than "
         "the probe-only meaning elsewhere)."};
     const std::string text = bench::tunedProfileToml(base.switches, best.switches, info);
-    writeFileAtomic(a.out, text.data(), text.size());
-    const profile::PlatformProfile loaded = profile::loadProfileFile(a.out, search);
+    // Staged beside --out, re-measured from that file, renamed to --out only when it holds its
+    // budget (or --accept-over-budget): a failed tune leaves no profile behind.
+    const fs::path staged = fs::path(a.out).parent_path() /
+                            ("." + fs::path(a.out).stem().string() + ".partial.toml");
+    struct RemoveUnlessKept {
+        fs::path path;
+        bool keep = false;
+        ~RemoveUnlessKept() {
+            std::error_code ec;
+            if (!keep) fs::remove(path, ec);
+        }
+    } stagedFile{staged};
+    writeFileAtomic(staged.string(), text.data(), text.size());
+    const profile::PlatformProfile loaded = profile::loadProfileFile(staged.string(), search);
     if (!(loaded.switches == best.switches) || loaded.width != width || loaded.height != height)
         throw Error(a.out + ": the written profile does not load back to the tuned switches");
 
@@ -292,17 +308,24 @@ int run(const TuneArgs& a) {
         std::cout << "  held at the base: " << f << "\n";
     std::cout << "frame ms: timing " << measurer.timing() << "\n";
     std::cout << bench::paretoTable(r, o);
-    std::printf("chosen: %s: %.2f ms (budget %g), %.3f MiB (budget %g), FLIP %.4f\nwrote %s\n",
+    std::printf("chosen: %s: %.2f ms (budget %g), %.3f MiB (budget %g), FLIP %.4f\n",
                 best.label.c_str(), best.m.frameMs, a.budgetMs, best.memoryMiB, a.budgetMiB,
-                best.m.flip, a.out.c_str());
+                best.m.flip);
     progress("re-measuring " + a.out);
     const bench::TuneMeasurement again = measurer({loaded.switches}).front();
     if (!again.ok) throw Error(a.out + ": the written profile did not run: " + again.error);
     printComparison(best, again, memory(loaded.switches), a.out);
-    if (again.frameMs > a.budgetMs)
-        std::printf("  note: the re-measured time is over the %g ms budget (the search's "
-                    "measurement fit; the device's noise decides near the edge)\n",
-                    a.budgetMs);
+    if (const std::string over = bench::overBudgetProblem(again.frameMs, best.m.frameMs, a.budgetMs);
+        !over.empty()) {
+        if (!a.acceptOverBudget)
+            throw Error("tune: " + a.out + ": " + over +
+                        "; nothing written (--accept-over-budget writes it anyway; more "
+                        "--rounds steady the measure)");
+        std::printf("  note: %s; written anyway (--accept-over-budget)\n", over.c_str());
+    }
+    fs::rename(staged, a.out);
+    stagedFile.keep = true;
+    std::printf("wrote %s\n", a.out.c_str());
     if (!a.json.empty()) {
         nlohmann::json j = bench::tuneJson(r, o);
         j["context"] = measurer.context();
@@ -337,6 +360,9 @@ const RegisterCommand reg{
          cmd.add_option("--budget-ms", a->budgetMs,
                         "Frame-time budget: median frame ms on THIS device at the output size")
              ->required();
+         cmd.add_flag("--accept-over-budget", a->acceptOverBudget,
+                      "Write the profile even when its re-measure (loaded back from the file) "
+                      "is over --budget-ms (else: an error, exit 1, nothing written)");
          cmd.add_option("--budget-mib", a->budgetMiB,
                         "GI memory budget, MiB: probe textures under gi.volume_lod + GI targets "
                         "(evaluation, upsample/history, SH)")
@@ -356,6 +382,7 @@ const RegisterCommand reg{
              ->delimiter(',');
          cmd.add_option("--width", a->width, "Output width (default: the base profile's)");
          cmd.add_option("--height", a->height, "Output height (default: the base profile's)");
+         addForceProbesFlag(cmd, a->force);
          cmd.add_option("--probes", a->probes,
                         "Probe file (probebench bake; its FILE.ranks.json adds rank_budget_mib "
                         "levels); default: bake --volumes once and cache it");
@@ -366,7 +393,9 @@ const RegisterCommand reg{
          cmd.add_option("--cache-dir", a->cacheDir, "Folder of the baked-probe cache");
          cmd.add_option("--view", a->view, "A named view instead of the worst case");
          cmd.add_option("--camera", a->camera, "Camera px,py,pz,tx,ty,tz[,fovdeg] instead");
-         cmd.add_option("--frames", a->frames, "Timed frames per candidate per round")
+         cmd.add_option("--frames", a->frames,
+                        "Timed frames per candidate per round, as `bench --frames` (not "
+                        "`render --frames`, the frames to show or play)")
              ->capture_default_str();
          cmd.add_option("--rounds", a->rounds, "Interleaved rounds per session")
              ->capture_default_str();

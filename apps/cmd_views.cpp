@@ -2,6 +2,7 @@
 // probe volume), for the scene's named views, a given camera, or the worst-case view the
 // benchmark uses (--worst-case: every pixel needs GI, no sky, no early-out).
 #include "CommandRegistry.h"
+#include "ProbeOptions.h"
 #include "ProfileOptions.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
@@ -20,6 +21,7 @@ namespace pb::app {
 namespace {
 
 struct ViewsArgs {
+    bool force = false; // --probes baked for another scene
     SceneArgs scene;
     std::string probes, view, camera;
     ProfileArgs profileArgs;
@@ -68,7 +70,7 @@ int run(ViewsArgs& a) {
     if (a.worstCase && (!a.view.empty() || !a.camera.empty()))
         throw Error("--worst-case searches a camera: leave out --view and --camera");
     scene::Scene s = loadSceneWithOverrides(a.scene);
-    probes::ProbeSet set = probes::readProbeFileWithRanks(a.probes);
+    probes::ProbeSet set = readProbesForScene(a.probes, s, a.force);
     // gi.volume_lod: coverage counts only the volumes the renderer would load.
     std::vector<bool> kept(set.volumes.size(), false);
     for (int v : profile::selectVolumes(set, profile::parseVolumeLod(prof.gi.volumeLod)))
@@ -142,6 +144,7 @@ const RegisterCommand reg{
      [](CLI::App& cmd) {
          auto a = std::make_shared<ViewsArgs>();
          addSceneOptions(cmd, a->scene);
+         addForceProbesFlag(cmd, a->force);
          cmd.add_option("--probes", a->probes, "Probe file (probebench bake) giving the volumes")
              ->required();
          cmd.add_flag("--worst-case", a->worstCase,

@@ -3,6 +3,8 @@
 // against its GPU memory and GI lookups (costmodel/VolumeRanking.h). --write-ranks stores the
 // ranking next to the probe file for gi.volume_lod=rank_budget_mib:MIB.
 #include "CommandRegistry.h"
+#include "ProbeOptions.h"
+#include "probes/bake/SceneMatch.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
 #include "profile/GiVolumeLod.h"
@@ -19,6 +21,7 @@ namespace pb::app {
 namespace {
 
 struct VolumesArgs {
+    bool force = false; // --probes baked for another scene
     SceneArgs scene;
     std::string probes, scenario, views = "worst-case";
     int width = 320, height = 180;
@@ -126,6 +129,7 @@ int run(const VolumesArgs& a) {
         return 0;
     }
     const scene::Scene s = loadSceneWithOverrides(a.scene);
+    probes::requireProbesForScene(a.probes, set, s, a.force);
     const render::FrameSettings frame = render::defaultFrameSettings(s);
     costmodel::RankingInputs in;
     in.scene = &s;
@@ -167,6 +171,7 @@ const RegisterCommand reg{
          auto a = std::make_shared<VolumesArgs>();
          addSceneOptions(cmd, a->scene);
          cmd.add_option("--probes", a->probes, "Probe file (probebench bake)")->required();
+         addForceProbesFlag(cmd, a->force);
          cmd.add_option("--scenario", a->scenario,
                         "Lighting scenario the errors are measured in (default: the first)");
          cmd.add_flag("--rank", a->rank,

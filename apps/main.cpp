@@ -1,10 +1,14 @@
 // probebench: the command-line entry point. Each subcommand lives in its own apps/cmd_*.cpp.
 #include "CommandRegistry.h"
+#include "ParseErrors.h"
+#include "Version.h"
 #include "core/Error.h"
 
 #include <algorithm>
 #include <iostream>
 #include <map>
+#include <string>
+#include <vector>
 
 namespace pb::app {
 std::vector<Command>& commands() {
@@ -22,7 +26,12 @@ int main(int argc, char** argv) {
                  "probebench"};
     app.require_subcommand(1);
     app.set_help_all_flag("--help-all", "Show help for every subcommand");
-    app.footer("Run `probebench <command> --help` for a command's options.");
+    app.set_version_flag("--version", versionText,
+                         "Print the commit, build type, Embree and Mesa versions and exit");
+    app.footer("Run `probebench <command> --help` for a command's options.\n"
+               "Errors are one line, `probebench: error: <file or option>: <problem>`; exit 2\n"
+               "for a usage error (unknown option or command, a value that does not parse),\n"
+               "1 for any other failure (README, \"Errors and exit codes\").");
 
     auto& cmds = commands();
     std::stable_sort(cmds.begin(), cmds.end(),
@@ -35,7 +44,11 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
-        return app.exit(e);
+        // --help, --help-all and --version arrive as "errors" with exit code 0.
+        if (e.get_exit_code() == 0) return app.exit(e);
+        std::cerr << "probebench: error: "
+                  << usageMessage(app, e, std::vector<std::string>(argv + 1, argv + argc)) << "\n";
+        return kUsageExit;
     }
     try {
         for (auto& [sub, run] : runners)

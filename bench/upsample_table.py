@@ -4,7 +4,7 @@
 Per path, resolution and gi.upsample mode, from each run's errors.json:
   GI err     mean over frames of the GI irradiance's relative MAE vs full resolution
              (sum |test - ref| / sum |ref| over RGB: the upsampling's own error)
-  PSNR       mean PSNR of the final 8-bit image (identical frames count as 100 dB)
+  PSNR       mean PSNR of the final 8-bit image over the frames that differ (inf: all identical)
   FLIP       mean LDR-FLIP of the final image
   converge   frames after each cut until the GI error stays within 10% (or 1e-4) of the
              segment's last frame; only for paths that end still (static, fast_turn - whose
@@ -52,8 +52,10 @@ def main():
                 ghost = (s["disoccluded_gi_rel_mae"] / base) if base > 0 else float("nan")
                 disocc = s["disoccluded_pixels"]
                 derr = "-" if disocc < 1000 else f"{s['disoccluded_gi_rel_mae']:.4f}"
+                # null: every frame identical (PSNR inf); older runs wrote a number
+                psnr = "inf" if s["psnr_mean_db"] is None else f"{s['psnr_mean_db']:.1f}"
                 print(f"| {path} | {res} | {mode} | {len(j['frames'])} | {s['gi_rel_mae_mean']:.4f} "
-                      f"| {s['psnr_mean_db']:.1f} | {s['flip_mean']:.4f} | {conv} "
+                      f"| {psnr} | {s['flip_mean']:.4f} | {conv} "
                       f"| {s['entered_pixels']} | {disocc} "
                       f"| {derr} | "
                       f"{'-' if disocc < 1000 else f'{ghost:.2f}'} |")

@@ -22,12 +22,14 @@ int decimalsFor(double v) {
 
 std::string msWithCi(const stats::Summary& s) {
     int d = decimalsFor(s.median);
+    if (!(s.ciLevel > 0)) return fixed(s.median, d) + " [no CI]"; // one sample: no interval
     return fixed(s.median, d) + " [" + fixed(s.ciLow, d) + ", " + fixed(s.ciHigh, d) + "]";
 }
 
 std::string shiftWithCi(const stats::Shift& s) {
     int d = decimalsFor(s.estimate);
     std::string sign = s.estimate > 0 ? "+" : "";
+    if (!(s.ciLevel > 0)) return sign + fixed(s.estimate, d) + " [no CI]"; // one round
     return sign + fixed(s.estimate, d) + " [" + fixed(s.ciLow, d) + ", " + fixed(s.ciHigh, d) + "]";
 }
 
@@ -45,7 +47,7 @@ std::string scientific(double v) {
 }
 
 bool significant(const stats::Shift& s) {
-    return s.ciLow > 0 || s.ciHigh < 0;
+    return s.ciLevel > 0 && (s.ciLow > 0 || s.ciHigh < 0);
 }
 
 std::vector<std::string> sectionNames(const BenchResult& r) {

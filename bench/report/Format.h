@@ -8,11 +8,14 @@
 namespace pb::bench {
 
 std::string fixed(double v, int decimals);      // "12.35"; "n/a" when not finite
-std::string msWithCi(const stats::Summary& s);  // "12.3 [12.1, 12.6]"
-std::string shiftWithCi(const stats::Shift& s); // "-3.21 [-3.50, -2.90]"
+// "12.3 [12.1, 12.6]"; "12.3 [no CI]" for an interval of no coverage (one sample). The level
+// goes in the column's header (CiLevels.h: ciLabel).
+std::string msWithCi(const stats::Summary& s);
+std::string shiftWithCi(const stats::Shift& s); // "-3.21 [-3.50, -2.90]", "+7.71 [no CI]"
 std::string psnrText(double db);                // "34.52" or "inf" (identical)
 std::string scientific(double v);               // "1.23e-04"
-// Whether the interval excludes zero: the delta is a measured difference, not noise.
+// Whether the interval excludes zero: the delta is a measured difference, not noise (never
+// without an interval).
 bool significant(const stats::Shift& s);
 // Pass names in first-seen order over every ok variant of every session.
 std::vector<std::string> sectionNames(const BenchResult& r);

@@ -1,6 +1,8 @@
 #include "HtmlReport.h"
 
+#include "CiLevels.h"
 #include "Format.h"
+#include "GiSections.h"
 #include "Html.h"
 #include "ResultJson.h"
 #include "SvgCharts.h"
@@ -31,7 +33,9 @@ std::string deltaCell(const DeltaResult* d) {
 
 void profileTable(std::ostringstream& h, const BenchResult& r) {
     h << "<table id=\"profiles\"><tr><th class=\"l\">profile</th><th>size</th><th>frame ms "
-         "median [95% CI]</th><th>min</th><th>IQR</th><th>Δ ms vs reference [95% CI]</th>"
+         "median ["
+      << htmlEscape(ciLabel(frameCiLevels(r))) << "]</th><th>min</th><th>IQR</th><th>Δ ms vs "
+      << "reference [" << htmlEscape(ciLabel(deltaCiLevels(r))) << "]</th>"
          "<th>budget ms</th><th>GI ms</th><th>fetch floor ms</th><th>GI / floor</th>"
          "<th>FLIP mean</th><th>FLIP max</th><th>PSNR dB</th><th>SSIM</th><th>rel. MSE GI</th>"
          "<th>coverage</th><th>GI MiB / budget</th></tr>\n";
@@ -62,7 +66,8 @@ void profileTable(std::ostringstream& h, const BenchResult& r) {
                   p.giMemoryMiB <= prof.giMemoryBudgetMiB ? "good" : "bad")
           << "</tr>\n";
     }
-    h << "</table>\n";
+    h << "</table>\n<p class=\"note\">GI ms: median per frame of " << kGiSectionsText
+      << " (every pass that exists for GI).</p>\n";
 }
 
 void charts(std::ostringstream& h, const BenchResult& r) {
@@ -102,8 +107,9 @@ void charts(std::ostringstream& h, const BenchResult& r) {
     h << "<h2>Speed and accuracy (Pareto)</h2>\n<p class=\"note\">Each profile against "
          "<code>reference</code> on the same frame (filled), and single switches applied to the "
          "reference (numbered, from the ablation). Dashed: the points nothing beats on both "
-         "axes. Horizontal bars: 95% CI of the time delta.</p>\n"
-      << paretoSvg(pts);
+         "axes. Horizontal bars: "
+      << htmlEscape(ciLabel(deltaCiLevels(r))) << " of the time delta.</p>\n"
+      << paretoSvg(pts, ciLabel(deltaCiLevels(r)));
     if (!applied.empty()) {
         h << "<ol class=\"note\" id=\"pareto-switches\">";
         for (const auto& a : applied)
@@ -124,7 +130,9 @@ void ablation(std::ostringstream& h, const BenchResult& r) {
         if (!header) {
             h << "<h2>Ablation: what each switch saves and costs</h2>\n<p class=\"note\">Δ = "
                  "switch on − switch off, paired over interleaved rounds (Hodges-Lehmann estimate, "
-                 "Wilcoxon 95% CI); green: faster with the switch, red: slower, grey: the interval "
+                 "Wilcoxon "
+              << htmlEscape(ciLabel(deltaCiLevels(r)))
+              << "); green: faster with the switch, red: slower, grey: the interval "
                  "contains 0. ΔFLIP &gt; 0: the switch costs accuracy.</p>\n";
             header = true;
         }
@@ -195,6 +203,8 @@ std::string htmlReport(const BenchResult& r) {
         h << "<p class=\"note bad\">Software rasterizer: frame times are of this CPU, not of the "
              "target GPUs (budgets shown for reference only). Accuracy, GI memory and coverage "
              "are hardware-independent.</p>\n";
+    if (const std::string w = roundsWarning(r.settings.rounds); !w.empty())
+        h << "<p class=\"note bad\" id=\"ci-warning\">Warning: " << htmlEscape(w) << ".</p>\n";
     h << "<h2>Profiles</h2>\n";
     profileTable(h, r);
     charts(h, r);

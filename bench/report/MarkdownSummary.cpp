@@ -1,6 +1,9 @@
 #include "MarkdownSummary.h"
 
+#include "CiLevels.h"
 #include "Format.h"
+#include "GiSections.h"
+#include "Spread.h"
 #include "ResultJson.h"
 
 #include <sstream>
@@ -17,12 +20,33 @@ std::string accuracyCells(const AccuracyResult& a) {
 
 std::string deltaCells(const DeltaResult* d) {
     if (!d || !d->measured) return "n/a | n/a";
-    return shiftWithCi(d->ms) + (significant(d->ms) ? "" : " (ns)") + " | " +
+    const bool noCi = !(d->ms.ciLevel > 0); // "[no CI]" says it already
+    return shiftWithCi(d->ms) + (significant(d->ms) || noCi ? "" : " (ns)") + " | " +
            (d->flip >= 0 ? "+" : "") + fixed(d->flip, 4);
 }
 
+// Percentiles and the noise flags of each profile's delta vs the reference: a median delta
+// between two bimodal or differently noisy distributions needs a second look.
+void spreadTable(std::ostringstream& out, const BenchResult& r) {
+    out << "\nFrame ms percentiles (every measured frame) and noise flags of the delta vs "
+           "reference (bimodal: Sarle's coefficient > 5/9; variance: ratio > 4):\n\n"
+        << "| profile | p50 | p90 | p99 | flags |\n|---|---|---|---|---|\n";
+    for (const SessionResult& s : r.sessions) {
+        const VariantResult& p = s.profile();
+        if (!p.ok()) continue;
+        const DeltaResult* vs = s.vsReference();
+        const std::string flags =
+            vs && vs->measured ? noiseFlags(s.variants[size_t(vs->planned.off)], p) : "";
+        out << "| " << s.session.profile.name << " | " << fixed(percentile(p.frameSamples, 0.5), 2)
+            << " | " << fixed(percentile(p.frameSamples, 0.9), 2) << " | "
+            << fixed(percentile(p.frameSamples, 0.99), 2) << " | " << (flags.empty() ? "-" : flags)
+            << " |\n";
+    }
+}
+
 void profileTable(std::ostringstream& out, const BenchResult& r) {
-    out << "| profile | size | frame ms median [95% CI] | Δ ms vs reference [95% CI] | GI ms | "
+    out << "| profile | size | frame ms median [" << ciLabel(frameCiLevels(r))
+        << "] | Δ ms vs reference [" << ciLabel(deltaCiLevels(r)) << "] | GI ms | "
            "floor ms | FLIP | PSNR dB | SSIM | rel. MSE GI | coverage | GI MiB (budget) |\n"
         << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const SessionResult& s : r.sessions) {
@@ -47,11 +71,14 @@ void profileTable(std::ostringstream& out, const BenchResult& r) {
             << fixed(p.giMemoryMiB, 2) << " (" << fixed(s.session.profile.giMemoryBudgetMiB, 1)
             << ") |\n";
     }
+    out << "\nGI ms: median per frame of " << kGiSectionsText
+        << " (every pass that exists for GI; absent passes count 0).\n";
+    spreadTable(out, r);
 }
 
 void passTable(std::ostringstream& out, const BenchResult& r) {
     std::vector<std::string> names = sectionNames(r);
-    out << "\nMedian ms per pass:\n\n| profile |";
+    out << "\nMedian ms per pass (IQR in parentheses: the pass's spread):\n\n| profile |";
     for (const auto& n : names)
         out << " " << n << " |";
     out << " frame |\n|---|";
@@ -64,7 +91,9 @@ void passTable(std::ostringstream& out, const BenchResult& r) {
         out << "| " << s.session.profile.name << " |";
         for (const auto& n : names) {
             const SectionTiming* t = p.section(n);
-            out << " " << (t ? fixed(t->ms.median, 2) : std::string("-")) << " |";
+            out << " "
+                << (t ? fixed(t->ms.median, 2) + " (" + fixed(t->ms.iqr, 2) + ")" : std::string("-"))
+                << " |";
         }
         out << " " << fixed(p.frameMs.median, 2) << " |\n";
     }
@@ -78,7 +107,8 @@ void ablationTables(std::ostringstream& out, const BenchResult& r) {
         if (!any) continue;
         out << "\nAblation of **" << s.session.profile.name
             << "** (Δ = switch on − off; negative ms = the switch saves time; ΔFLIP > 0 = it "
-               "costs accuracy; (ns) = 95% CI contains 0):\n\n"
+               "costs accuracy; (ns) = the "
+            << ciLabel(deltaCiLevels(r)) << " contains 0):\n\n"
             << "| switch | reference → profile | Δ ms in profile | ΔFLIP in profile | Δ ms on "
                "reference | ΔFLIP on reference |\n|---|---|---|---|---|---|\n";
         for (const DeltaResult& d : s.deltas) {
@@ -103,12 +133,19 @@ std::string markdownSummary(const BenchResult& r) {
     out << "## probebench bench: " << r.scene.value("name", std::string("?")) << ", view "
         << r.view.value("source", std::string("?")) << "\n\n"
         << "Device: " << ctx.value("gl_renderer", std::string("?")) << " ("
-        << ctx.value("platform", std::string("?")) << "), timing " << r.settings.timingMethod
+        << ctx.value("platform", std::string("?")) << "; "
+        << (!ctx.contains("debug_context") || ctx["debug_context"].is_null()
+                ? "debug context: unknown"
+                : ctx["debug_context"].get<bool>() ? "a debug context (KHR_debug checks timed too)"
+                                                   : "a non-debug context")
+        << "), timing " << r.settings.timingMethod
         << "; " << r.settings.rounds << " rounds x " << r.settings.frames << " frames after "
         << r.settings.warmup << " warm-up frames per variant; " << fixed(r.seconds, 1) << " s.";
     if (ctx.value("software_renderer", false))
         out << " **Software rasterizer: the times are of this CPU, not of a GPU; accuracy, memory "
                "and coverage are hardware-independent.**";
+    if (const std::string w = roundsWarning(r.settings.rounds); !w.empty())
+        out << " **Warning: " << w << ".**";
     out << "\n\n";
     profileTable(out, r);
     passTable(out, r);

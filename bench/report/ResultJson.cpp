@@ -1,5 +1,8 @@
 #include "ResultJson.h"
 
+#include "GiSections.h"
+#include "Spread.h"
+
 #include <cmath>
 
 namespace pb::bench {
@@ -24,7 +27,7 @@ nlohmann::json shiftJson(const stats::Shift& s) {
 std::vector<double> giPassSamples(const VariantResult& v) {
     std::vector<double> out(v.frameSamples.size(), 0.0);
     for (const SectionTiming& s : v.sections)
-        if (s.name.rfind("gi-", 0) == 0)
+        if (isGiSection(s.name))
             for (size_t i = 0; i < s.samples.size() && i < out.size(); ++i)
                 out[i] += s.samples[i];
     return out;
@@ -59,6 +62,10 @@ nlohmann::json variantJson(const VariantResult& v, const Session& s) {
         return j;
     }
     j["frame_ms"] = summaryJson(v.frameMs);
+    j["frame_percentiles_ms"] = {{"p50", percentile(v.frameSamples, 0.50)},
+                                 {"p90", percentile(v.frameSamples, 0.90)},
+                                 {"p99", percentile(v.frameSamples, 0.99)}};
+    j["bimodality_coefficient"] = finiteOrNull(bimodalityCoefficient(v.frameSamples));
     nlohmann::json passes = nlohmann::json::array();
     for (const SectionTiming& t : v.sections)
         passes.push_back({{"name", t.name}, {"ms", summaryJson(t.ms)}});
@@ -94,6 +101,9 @@ nlohmann::json deltaJson(const DeltaResult& d, const SessionResult& s) {
     j["delta_psnr_db"] = finiteOrNull(d.psnr);
     j["delta_ssim"] = d.ssim;
     j["delta_relative_mse_gi"] = d.relativeMseGi;
+    const std::string flags =
+        noiseFlags(s.variants[size_t(d.planned.off)], s.variants[size_t(d.planned.on)]);
+    j["noise_flags"] = flags.empty() ? nlohmann::json(nullptr) : nlohmann::json(flags);
     return j;
 }
 

@@ -12,7 +12,8 @@ nlohmann::json summaryJson(const stats::Summary& s);
 nlohmann::json shiftJson(const stats::Shift& s);
 nlohmann::json benchJson(const BenchResult& r);
 
-// Per frame: the summed exclusive time of every GI section ("gi-" names: gi-apply, gi-fill...).
+// Per frame: the summed exclusive time of every GI section (GiSections.h: the "gi-" sections
+// and the upsample).
 std::vector<double> giPassSamples(const VariantResult& v);
 // A number or null when not finite.
 nlohmann::json finiteOrNull(double v);

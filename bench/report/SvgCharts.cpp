@@ -63,7 +63,7 @@ std::vector<size_t> paretoFront(const std::vector<ParetoPoint>& p) {
     return front;
 }
 
-std::string paretoSvg(const std::vector<ParetoPoint>& pts) {
+std::string paretoSvg(const std::vector<ParetoPoint>& pts, const std::string& ciLabel) {
     const double W = 720, H = 420, L = 70, R = 30, T = 20, B = 50;
     double x0 = 0, x1 = 0, y1 = 0;
     for (const auto& p : pts) {
@@ -93,7 +93,8 @@ std::string paretoSvg(const std::vector<ParetoPoint>& pts) {
           << num(Y(t)) << "\" stroke=\"#e3e3e3\"/><text x=\"" << L - 6 << "\" y=\"" << num(Y(t) + 4)
           << "\" text-anchor=\"end\">" << tickText(t) << "</text>\n";
     s << "<text x=\"" << (L + W - R) / 2 << "\" y=\"" << H - 12
-      << "\" text-anchor=\"middle\">Δ frame ms vs reference, 95% CI (left = faster)</text>\n"
+      << "\" text-anchor=\"middle\">Δ frame ms vs reference, " << htmlEscape(ciLabel)
+      << " (left = faster)</text>\n"
       << "<text transform=\"translate(16," << (T + H - B) / 2
       << ") rotate(-90)\" text-anchor=\"middle\">LDR-FLIP mean vs reference (up = worse)</text>\n";
     std::vector<size_t> front = paretoFront(pts);

@@ -2,6 +2,8 @@
 
 #include "BuildInfo.h"
 
+#include <glad/gl.h>
+
 #include <sys/utsname.h>
 
 #include <chrono>
@@ -52,6 +54,16 @@ std::string loadAverage() {
     return a + " " + b + " " + c;
 }
 
+std::string gitCommit() { return PB_GIT_COMMIT; }
+
+nlohmann::json debugContextFlag(const gl::GlCaps& caps) {
+    // GL_CONTEXT_FLAGS exists from ES 3.2 and GL 4.3; before that the context cannot say.
+    if (!caps.versionAtLeast(caps.es ? 3 : 4, caps.es ? 2 : 3)) return nullptr;
+    GLint flags = 0;
+    glGetIntegerv(GL_CONTEXT_FLAGS, &flags);
+    return (flags & GL_CONTEXT_FLAG_DEBUG_BIT) != 0;
+}
+
 nlohmann::json benchContext(const platform::Platform& platform, const gl::GlCaps& caps) {
     struct utsname u {};
     uname(&u);
@@ -68,7 +80,9 @@ nlohmann::json benchContext(const platform::Platform& platform, const gl::GlCaps
         {"cpu_threads", std::thread::hardware_concurrency()},
         {"lp_num_threads", lp ? std::string(lp) : std::string("unset (llvmpipe: one per core)")},
         {"os", std::string(u.sysname) + " " + u.release + " " + u.machine},
-        {"commit", PB_GIT_COMMIT},
+        {"commit", gitCommit()},
+        // Timing commands ask for a non-debug context: KHR_debug's checks cost time (issue 25).
+        {"debug_context", debugContextFlag(caps)},
         {"date", utcNow()},
         {"load_average_start", loadAverage()}};
 }

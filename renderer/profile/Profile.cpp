@@ -1,6 +1,7 @@
 #include "profile/Profile.h"
 
 #include "core/Error.h"
+#include "core/Suggest.h"
 #include "profile/SwitchTable.h"
 
 namespace pb::profile {
@@ -15,7 +16,11 @@ std::string knownKeys() {
 
 const SwitchInfo& requireSwitch(const std::string& key, const std::string& context) {
     if (const SwitchInfo* s = findSwitch(key)) return *s;
-    throw Error(context + ": unknown switch '" + key + "' (switches: " + knownKeys() + ")");
+    std::vector<std::string> keys;
+    for (const SwitchInfo& s : switchTable())
+        keys.push_back(s.key);
+    throw Error(context + ": unknown switch '" + key + "'" + didYouMean(key, keys) +
+                " (switches: " + knownKeys() + ")");
 }
 } // namespace
 

@@ -1,6 +1,7 @@
 #include "profile/ProfileLoader.h"
 
 #include "core/Error.h"
+#include "core/Suggest.h"
 #include "core/FileIO.h"
 #include "core/TomlRead.h"
 #include "profile/ProfileSettings.h"
@@ -253,9 +254,11 @@ PlatformProfile loadProfile(const std::string& nameOrPath, const ProfileSearch& 
         if (fs::is_regular_file(p)) return loadProfileFile(p.string(), search);
     }
     std::string list;
-    for (const auto& n : profileNames(search))
+    const std::vector<std::string> names = profileNames(search);
+    for (const auto& n : names)
         list += (list.empty() ? "" : ", ") + n;
-    throw Error("profile '" + nameOrPath + "': no such profile (profiles: " +
+    throw Error("profile '" + nameOrPath + "': no such profile" + didYouMean(nameOrPath, names) +
+                " (profiles: " +
                 (list.empty() ? "none found" : list) + "; or give a .toml path)");
 }
 

@@ -167,6 +167,15 @@ TEST(BenchCli, TinyRunWritesTheJsonShapeTheReportAndHeatMaps) {
     for (const char* k : {"platform", "gl_version", "gl_renderer", "driver", "cpu",
                           "lp_num_threads", "commit", "date", "load_average_start"})
         EXPECT_TRUE(j["context"].contains(k)) << k;
+    // Timed in a non-debug context (KHR_debug's checks are not the device's cost), and said so
+    // (issue 25, item 3); EGL on Mesa gives ES 3.2, where the context can tell.
+    EXPECT_EQ(j["context"]["debug_context"], false) << j["context"].dump();
+    EXPECT_EQ(j["context"]["platform"].get<std::string>().find("debug context"), std::string::npos);
+    EXPECT_NE(r.output.find("a non-debug context"), std::string::npos) << r.output;
+    // 2 rounds give no 95% interval: said before measuring and in the summary (item 1).
+    EXPECT_NE(r.output.find("warning: 2 round(s) give delta intervals of 50% at most"),
+              std::string::npos)
+        << r.output;
     EXPECT_EQ(j["settings"]["rounds"], 2);
     EXPECT_FALSE(j["settings"]["timing_method"].get<std::string>().empty());
     EXPECT_EQ(j["view"]["source"], "worst-case");

@@ -86,6 +86,25 @@ TEST(RenderPathCli, ComparesEveryFrameWithFullResolution) {
     // A still camera at half resolution: every pixel has been sampled by frame 3, after which
     // the frames equal full resolution (psnr null = identical).
     EXPECT_TRUE(j["frames"][4]["psnr_db"].is_null()) << j["frames"][4].dump();
+    // One value for identical images everywhere (issue 25, item 9): inf / null, as `compare`
+    // and `bench` write it - the summary no longer counts them as 100 dB.
+    const auto& summary = j["summary"];
+    EXPECT_FALSE(summary.contains("identical_frames_count_as_db")) << summary.dump();
+    ASSERT_TRUE(summary.contains("identical_frames")) << summary.dump();
+    int identical = 0;
+    double differingSum = 0;
+    for (const auto& f : j["frames"]) {
+        if (f["psnr_db"].is_null())
+            ++identical;
+        else
+            differingSum += f["psnr_db"].get<double>();
+    }
+    EXPECT_EQ(summary["identical_frames"].get<int>(), identical);
+    if (identical < 5) {
+        EXPECT_NEAR(summary["psnr_mean_db"].get<double>(), differingSum / (5 - identical), 1e-9);
+    }
+    EXPECT_EQ(r.output.find("identical = 100"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("identical (PSNR inf)"), std::string::npos) << r.output;
     const auto& conv = j["summary"]["convergence"];
     ASSERT_EQ(conv.size(), 1u);
     EXPECT_LE(conv[0]["frames_to_converge"].get<int>(), 3);

@@ -79,6 +79,7 @@ TEST(TuneCli, RespectsItsBudgetsAndWritesAProfileThatLoads) {
     std::ifstream in(dir / "tune.json");
     const nlohmann::json j = nlohmann::json::parse(in);
     EXPECT_EQ(j["method"], "exhaustive");
+    EXPECT_EQ(j["context"]["debug_context"], false) << "timed in a non-debug context (issue 25)";
     ASSERT_FALSE(j["chosen"].is_null());
     int measured = 0, overMemory = 0;
     for (const auto& c : j["candidates"]) {

@@ -1,5 +1,8 @@
 // The bench's outputs from a hand-made result (no GL): JSON fields and nulls, the Markdown
 // table, a self-contained HTML report, and the Pareto front.
+#include "bench/report/CiLevels.h"
+#include "bench/report/GiSections.h"
+#include "bench/report/Spread.h"
 #include "bench/report/HtmlReport.h"
 #include "bench/report/MarkdownSummary.h"
 #include "bench/report/ResultJson.h"
@@ -148,6 +151,159 @@ TEST(BenchReport, CacheModelSectionComparesTheVariantsPerProfile) {
     ASSERT_EQ(j.size(), 1u);
     EXPECT_EQ(j[0]["profile_variant"], "slice_first/split");
     EXPECT_DOUBLE_EQ(j[0]["variants"][2]["probe_bytes_missed_per_pixel"].get<double>(), 9.0);
+}
+
+} // namespace
+} // namespace pb::test
+
+namespace pb::test {
+namespace {
+
+// Every table, chart and line says the level its intervals reach (issue 25, item 1): never
+// "95%" unless it is, and a warning when the rounds are too few.
+BenchResult resultWithRounds(int rounds) {
+    BenchResult r = result();
+    r.settings.rounds = rounds;
+    for (SessionResult& s : r.sessions) {
+        for (VariantResult& v : s.variants) {
+            v.roundMedians.resize(size_t(rounds), v.roundMedians.front());
+            for (int i = 0; i < rounds; ++i)
+                v.roundMedians[size_t(i)] = v.frameMs.median + 0.1 * i;
+            v.frameSamples = v.roundMedians; // 1 frame per round
+            v.frameMs = stats::summarize(v.frameSamples);
+        }
+        for (DeltaResult& d : s.deltas)
+            d.ms = stats::pairedShift(s.variants[size_t(d.planned.off)].roundMedians,
+                                      s.variants[size_t(d.planned.on)].roundMedians);
+    }
+    return r;
+}
+
+TEST(BenchCiLevel, LabelsSayTheLevelReachedNeverAnOverstated95) {
+    EXPECT_EQ(ciLabel({0.75, 0.75}), "75% CI");
+    EXPECT_EQ(ciLabel({0.96875}), "96.8% CI"); // rounded down
+    EXPECT_EQ(ciLabel({0.94999}), "94.9% CI");
+    EXPECT_EQ(ciLabel({0.75, 0.96875}), "CI ≥ 75%");
+    EXPECT_EQ(ciLabel({0.0}), "no CI");
+    EXPECT_EQ(roundsFor95(), 6);
+    EXPECT_NEAR(deltaLevelOfRounds(3), 0.75, 1e-12);
+}
+
+TEST(BenchCiLevel, ThreeRoundsPrint75PercentAndWarnEverywhere) {
+    const BenchResult r = resultWithRounds(3);
+    const std::string md = markdownSummary(r);
+    const std::string html = htmlReport(r);
+    for (const std::string* text : {&md, &html}) {
+        EXPECT_EQ(text->find("95% CI"), std::string::npos) << *text;
+        EXPECT_NE(text->find("[75% CI]"), std::string::npos) << *text;
+        EXPECT_NE(text->find("3 round(s) give delta intervals of 75% at most, not 95%; --rounds 6 "
+                             "or more give 95%"),
+                  std::string::npos)
+            << *text;
+    }
+    EXPECT_NE(md.find("(ns) = the 75% CI contains 0"), std::string::npos) << md;
+    EXPECT_NE(html.find("Δ frame ms vs reference, 75% CI"), std::string::npos); // Pareto axis
+}
+
+TEST(BenchCiLevel, OneRoundHasNoIntervalAndNoSignificance) {
+    const BenchResult r = resultWithRounds(1);
+    const std::string md = markdownSummary(r);
+    EXPECT_NE(md.find("[no CI]"), std::string::npos) << md;
+    EXPECT_EQ(md.find("[-6.00, -6.00]"), std::string::npos) << "a point is not an interval:\n" << md;
+    EXPECT_NE(md.find("give no interval at all"), std::string::npos) << md;
+}
+
+TEST(BenchCiLevel, EnoughRoundsSayTheirTrueLevelWithoutWarning) {
+    const BenchResult r = resultWithRounds(10);
+    const std::string md = markdownSummary(r);
+    EXPECT_NE(md.find("Δ ms vs reference [" + ciLabel(deltaCiLevels(r)) + "]"), std::string::npos)
+        << md;
+    EXPECT_EQ(ciLabel(deltaCiLevels(r)), "95.1% CI"); // Wilcoxon at n = 10: 95.1%, not 95%
+    EXPECT_EQ(md.find("Warning"), std::string::npos) << md;
+}
+
+} // namespace
+} // namespace pb::test
+
+namespace pb::test {
+namespace {
+
+// "GI ms" counts every pass that exists for GI (issue 25, item 2), not only "gi-" names: the
+// temporal upsample made handheld look cheaper than the reference.
+TEST(BenchGiMs, SumsUpsampleDepthCopyStencilFillAndShProjection) {
+    EXPECT_TRUE(isGiSection("upsample"));
+    EXPECT_TRUE(isGiSection("gi-apply"));
+    EXPECT_FALSE(isGiSection("gi-fetch-floor")); // a separate measurement
+    EXPECT_FALSE(isGiSection("gbuffer"));
+
+    VariantResult v;
+    v.frameSamples = {20, 20};
+    for (const auto& [name, ms] : std::vector<std::pair<std::string, double>>{
+             {"gbuffer", 5}, {"gi-depth-copy", 1}, {"gi-apply", 2}, {"gi-fill", 0.5},
+             {"gi-dynamic-sh", 0.25}, {"upsample", 3}, {"direct", 4}}) {
+        SectionTiming t{name, std::vector<double>(2, ms), {}};
+        t.ms = stats::summarize(t.samples);
+        v.sections.push_back(t);
+    }
+    EXPECT_EQ(giPassSamples(v), (std::vector<double>{6.75, 6.75}));
+
+    BenchResult r = result(); // gi-apply 4/3 ms in every variant
+    for (VariantResult& low : r.sessions[1].variants)
+        low.sections.push_back({"upsample", std::vector<double>(6, 7.7),
+                                stats::summarize(std::vector<double>(6, 7.7))});
+    EXPECT_NEAR(stats::summarize(giPassSamples(r.sessions[1].profile())).median, 4.0 / 3 + 7.7,
+                1e-9);
+    // The low row's GI ms cell: 9.03, not gi-apply's 1.33 alone.
+    const std::string md = markdownSummary(r);
+    const size_t row = md.find("| low | 64x36 |");
+    ASSERT_NE(row, std::string::npos) << md;
+    const std::string line = md.substr(row, md.find('\n', row) - row);
+    EXPECT_NE(line.find("| 9.03 |"), std::string::npos) << line;
+    EXPECT_NE(markdownSummary(r).find("upsample (every pass that exists for GI"),
+              std::string::npos);
+}
+
+} // namespace
+} // namespace pb::test
+
+namespace pb::test {
+namespace {
+
+// Percentiles and noise flags beside the medians (issue 25, item 4).
+TEST(BenchSpread, PercentilesAndBimodalityFlagTheDelta) {
+    std::vector<double> ramp;
+    for (int i = 0; i <= 100; ++i)
+        ramp.push_back(i);
+    EXPECT_DOUBLE_EQ(percentile(ramp, 0.5), 50);
+    EXPECT_DOUBLE_EQ(percentile(ramp, 0.9), 90);
+    EXPECT_DOUBLE_EQ(percentile(ramp, 0.99), 99);
+
+    std::vector<double> twoModes, oneMode;
+    for (int i = 0; i < 20; ++i) {
+        twoModes.push_back(i % 2 ? 15.0 + 0.01 * i : 5.0 + 0.01 * i);
+        const int bell[10] = {-2, -1, -1, 0, 0, 0, 0, 1, 1, 2}; // one symmetric mode
+        oneMode.push_back(10.0 + 0.1 * bell[i % 10]);
+    }
+    EXPECT_GT(bimodalityCoefficient(twoModes), kBimodalAbove);
+    EXPECT_LT(bimodalityCoefficient(oneMode), kBimodalAbove);
+
+    BenchResult r = result();
+    SessionResult& low = r.sessions[1];
+    low.variants[0].frameSamples = twoModes; // the profile itself (SessionResult::profile())
+    const std::string md = markdownSummary(r);
+    EXPECT_NE(md.find("| profile | p50 | p90 | p99 | flags |"), std::string::npos) << md;
+    EXPECT_NE(md.find("bimodal: on"), std::string::npos) << md;
+    EXPECT_NE(md.find("variance x"), std::string::npos) << md;
+    EXPECT_NE(md.find("Median ms per pass (IQR"), std::string::npos) << md;
+
+    const nlohmann::json j = benchJson(r);
+    bool sawPercentiles = false;
+    for (const auto& v : j["variants"])
+        if (v.contains("frame_percentiles_ms"))
+            sawPercentiles = v["frame_percentiles_ms"].contains("p99");
+    EXPECT_TRUE(sawPercentiles);
+    EXPECT_FALSE(j["profiles"][1]["vs_reference"]["noise_flags"].is_null())
+        << j["profiles"][1]["vs_reference"].dump();
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 // canonical candidates, exhaustive and coordinate-descent search against a deterministic model
 // of time, memory and FLIP (no renders, no timings), the Pareto front, the one-line failure, and
 // the written profile loading back to the tuned switches.
+#include "bench/tune/BudgetCheck.h"
 #include "bench/tune/TuneReport.h"
 #include "bench/tune/TuneSearch.h"
 #include "bench/tune/TunedProfile.h"
@@ -234,6 +235,16 @@ TEST(TunedProfile, InheritsTheBaseAndLoadsBackToTheTunedSwitches) {
     EXPECT_EQ(loaded.cachePreset, base.cachePreset);
     ASSERT_FALSE(loaded.inherits.empty());
     EXPECT_EQ(loaded.inherits.front(), "handheld");
+}
+
+// A tuned profile whose re-measure misses the budget is a failure (cmd_tune throws with this
+// text unless --accept-over-budget), not a note under an exit 0 (issue 25, item 5).
+TEST(TuneBudget, ReMeasureOverTheBudgetIsAProblemWithinIsNot) {
+    EXPECT_EQ(bench::overBudgetProblem(39.9, 38.0, 40.0), "");
+    EXPECT_EQ(bench::overBudgetProblem(40.0, 38.0, 40.0), "");
+    const std::string p = bench::overBudgetProblem(48.5, 39.0, 40.0);
+    EXPECT_NE(p.find("re-measured 48.50 ms, over the 40 ms budget"), std::string::npos) << p;
+    EXPECT_NE(p.find("search measured 39.00 ms"), std::string::npos) << p;
 }
 
 } // namespace

@@ -29,7 +29,9 @@ bool finiteNonNegative(const glm::vec3& v) {
 // to the sampler and the GPU. What the bake itself guarantees is checked here.
 void checkSettings(const BakeSettings& b, const std::string& path) {
     if (b.raysPerProbe < 1 || b.raysPerProbe > 65536 || b.bounces < 1 || b.bounces > 64 ||
-        !(b.backfaceThreshold >= 0.0f && b.backfaceThreshold <= 1.0f))
+        !(b.backfaceThreshold >= 0.0f && b.backfaceThreshold <= 1.0f) ||
+        b.emitterSamples < 0 || b.emitterSamples > 65536 ||
+        !(b.noiseTarget >= 0.0f && b.noiseTarget < 1.0f))
         throw fileError(path, "corrupt bake settings (rays " + std::to_string(b.raysPerProbe) +
                                   ", bounces " + std::to_string(b.bounces) + ")");
 }
@@ -219,6 +221,8 @@ std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
     w.pod(b.seed);
     w.pod(std::uint8_t(b.relocate));
     w.pod(b.backfaceThreshold);
+    w.pod(std::int32_t(b.emitterSamples));
+    w.pod(b.noiseTarget);
     w.pod(std::uint32_t(kIrradianceTile));
     w.pod(std::uint32_t(kVisibilityTile));
 
@@ -276,8 +280,8 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
     if (version < kProbeFileFirstVersion || version > kProbeFileVersion || version == 2)
         throw fileError(path, "probe file version " + std::to_string(version) +
                                   ", this build reads versions " +
-                                  std::to_string(kProbeFileFirstVersion) + " and " +
-                                  std::to_string(kProbeFileVersion) + " (re-bake it)");
+                                  std::to_string(kProbeFileFirstVersion) + " to " +
+                                  std::to_string(kProbeFileVersion) + " (not 2; re-bake it)");
     auto declared = r.pod<std::uint64_t>("file size");
     if (declared != bytes.size())
         throw fileError(path, "file is truncated or padded (" + std::to_string(bytes.size()) +
@@ -302,6 +306,9 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
     b.seed = body.pod<std::uint64_t>("seed");
     b.relocate = body.pod<std::uint8_t>("relocate") != 0;
     b.backfaceThreshold = body.pod<float>("backface threshold");
+    // Before version 4 the bake had neither emitter samples nor a noise target.
+    b.emitterSamples = version >= 4 ? body.pod<std::int32_t>("emitter samples") : 0;
+    b.noiseTarget = version >= 4 ? body.pod<float>("noise target") : 0.0f;
     checkSettings(b, path);
     if (body.pod<std::uint32_t>("tile") != std::uint32_t(kIrradianceTile) ||
         body.pod<std::uint32_t>("tile") != std::uint32_t(kVisibilityTile))

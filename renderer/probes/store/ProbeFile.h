@@ -22,7 +22,8 @@ namespace pb::probes {
 
 inline constexpr char kProbeFileMagic[8] = {'P', 'B', 'P', 'R', 'O', 'B', 'E', 'S'};
 // 3: per-scenario storage scales (StorageScale.h) and the sparse storage record.
-inline constexpr std::uint32_t kProbeFileVersion = 3;
+// 4: the converged bake's settings (emitter samples, noise target) after the backface threshold.
+inline constexpr std::uint32_t kProbeFileVersion = 4;
 inline constexpr std::uint32_t kProbeFileFirstVersion = 1; // oldest version still read
 
 std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set);
