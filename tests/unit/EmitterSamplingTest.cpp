@@ -158,7 +158,9 @@ TEST(EmitterSampling, AProbeUnderAPanelMatchesTheQuadratureWithoutBias) {
         const glm::vec3 n = octTexelDirection(t % kIrradianceInterior, t / kIrradianceInterior,
                                               kIrradianceInterior);
         const float ref = panelIrradiance(le, n);
-        if (ref >= 0.2f * top) EXPECT_NEAR(meanNee[size_t(t)], ref, 0.01 * ref) << "texel " << t;
+        if (ref >= 0.2f * top) {
+            EXPECT_NEAR(meanNee[size_t(t)], ref, 0.01 * ref) << "texel " << t;
+        }
     }
 }
 
