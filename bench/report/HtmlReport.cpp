@@ -4,6 +4,7 @@
 #include "Html.h"
 #include "ResultJson.h"
 #include "SvgCharts.h"
+#include "TruthSection.h"
 
 #include <sstream>
 
@@ -201,6 +202,7 @@ std::string htmlReport(const BenchResult& r) {
     ablation(h, r);
     h << cacheModelHtml(r.cacheModel);
     heatmaps(h, r);
+    h << truthHtml(r);
     context(h, r);
     h << "</body></html>\n";
     return h.str();

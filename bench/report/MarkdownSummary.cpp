@@ -2,6 +2,7 @@
 
 #include "Format.h"
 #include "ResultJson.h"
+#include "TruthSection.h"
 
 #include <sstream>
 
@@ -114,6 +115,7 @@ std::string markdownSummary(const BenchResult& r) {
     passTable(out, r);
     ablationTables(out, r);
     out << cacheModelMarkdown(r.cacheModel);
+    out << truthMarkdown(r);
     return out.str();
 }
 
