@@ -83,6 +83,8 @@ nlohmann::json toJson(const TruthArgs& a, const scene::Scene& s, const scene::Vi
              n.varianceKnown ? nlohmann::json(n.relativeStandardError) : nlohmann::json(nullptr)},
             {"pixel_relative_standard_error",
              n.varianceKnown ? nlohmann::json(n.pixelRelativeStandardError) : nlohmann::json(nullptr)},
+            {"relative_mse_noise_floor",
+             n.varianceKnown ? nlohmann::json(n.relativeMseNoiseFloor) : nlohmann::json(nullptr)},
             {"camera_rays", r.cameraRays},
             {"seconds", r.seconds},
             {"cached", cached},
@@ -143,9 +145,9 @@ int run(TruthArgs& a) {
     if (n.varianceKnown)
         std::snprintf(line, sizeof line,
                       "mean luminance %.6g +- %.3g (standard error, %.3f%% relative); per pixel "
-                      "%.1f%% (RMS)\n",
+                      "%.1f%% (RMS); relative MSE noise floor %.2e\n",
                       n.meanLuminance, n.standardError, 100.0 * n.relativeStandardError,
-                      100.0 * n.pixelRelativeStandardError);
+                      100.0 * n.pixelRelativeStandardError, n.relativeMseNoiseFloor);
     else
         std::snprintf(line, sizeof line, "mean luminance %.6g (no noise estimate with --spp 1)\n",
                       n.meanLuminance);

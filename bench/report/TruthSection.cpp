@@ -3,6 +3,7 @@
 #include "Format.h"
 #include "Html.h"
 
+#include <algorithm>
 #include <sstream>
 
 namespace pb::bench {
@@ -17,6 +18,16 @@ bool anyTruth(const BenchResult& r) {
 
 std::string sppText(const BenchResult& r) {
     return r.truth.is_object() && r.truth.contains("spp") ? r.truth["spp"].dump() : "?";
+}
+
+// The largest relative-MSE noise floor of the truths (the truth's own noise in that figure).
+std::string floorText(const BenchResult& r) {
+    double worst = -1.0;
+    if (r.truth.is_object() && r.truth.contains("sizes"))
+        for (const auto& s : r.truth["sizes"])
+            if (s.contains("relative_mse_noise_floor") && s["relative_mse_noise_floor"].is_number())
+                worst = std::max(worst, s["relative_mse_noise_floor"].get<double>());
+    return worst < 0.0 ? std::string() : "; the truth's own noise adds about " + scientific(worst) + " to rel. MSE";
 }
 
 std::string cell(const std::string& text, const std::string& cls = "") {
@@ -43,7 +54,7 @@ std::string truthHtml(const BenchResult& r) {
     h << "<h2>Against the ground truth</h2>\n<p class=\"note\">The path-traced truth of the same "
          "view (<code>probebench truth</code>, "
       << htmlEscape(sppText(r))
-      << " spp): FLIP and PSNR of the tonemapped frame, relative MSE of the linear radiance. The "
+      << " spp" << htmlEscape(floorText(r)) << "): FLIP and PSNR of the tonemapped frame, relative MSE of the linear radiance. The "
          "reference is DDGI from the same probes; its row is how far the probes are from the real "
          "answer. Heat maps on one scale: black 0, pale yellow "
       << htmlEscape(r.truth.is_object() && r.truth.contains("heatmap_scale") ? r.truth["heatmap_scale"].dump() : "?")
@@ -80,7 +91,8 @@ std::string truthMarkdown(const BenchResult& r) {
     if (!anyTruth(r)) return {};
     std::ostringstream out;
     out << "\nAgainst the path-traced truth (" << sppText(r)
-        << " spp; FLIP/PSNR of the tonemapped frame, relative MSE of the radiance):\n\n"
+        << " spp; FLIP/PSNR of the tonemapped frame, relative MSE of the radiance" << floorText(r)
+        << "):\n\n"
         << "| profile | FLIP | PSNR dB | rel. MSE | reference FLIP | reference PSNR dB | reference rel. MSE |\n"
         << "|---|---|---|---|---|---|---|\n";
     for (const SessionResult& s : r.sessions) {

@@ -51,6 +51,8 @@ TruthBySize computeBenchTruth(const scene::Scene& s, const scene::View& view, co
                           r->noise.varianceKnown ? nlohmann::json(r->noise.relativeStandardError) : nlohmann::json(nullptr)},
                          {"pixel_relative_standard_error",
                           r->noise.varianceKnown ? nlohmann::json(r->noise.pixelRelativeStandardError) : nlohmann::json(nullptr)},
+                         {"relative_mse_noise_floor",
+                          r->noise.varianceKnown ? nlohmann::json(r->noise.relativeMseNoiseFloor) : nlohmann::json(nullptr)},
                          {"seconds", r->seconds},
                          {"cached", cached},
                          {"cache_file", truth::truthCachePath(o.cacheDir, hash)},

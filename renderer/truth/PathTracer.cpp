@@ -279,10 +279,12 @@ TruthResult renderTruth(const scene::Scene& scene, const scene::View& view,
             if (progress) progress(int(done), H);
         });
 
-    double lumTotal = 0.0, varTotal = 0.0;
+    double lumTotal = 0.0, lumSquares = 0.0, varTotal = 0.0;
     for (std::size_t p = 0; p < pixelVariance.size(); ++p) {
         const float* px = &result.hdr.pixels[p * 4];
-        lumTotal += double(luminance(glm::vec3(px[0], px[1], px[2])));
+        const double lum = double(luminance(glm::vec3(px[0], px[1], px[2])));
+        lumTotal += lum;
+        lumSquares += lum * lum;
         varTotal += pixelVariance[p];
     }
     const double P = double(W) * double(H);
@@ -292,6 +294,7 @@ TruthResult renderTruth(const scene::Scene& scene, const scene::View& view,
         result.noise.standardError = std::sqrt(varTotal / n) / P;
         result.noise.relativeStandardError =
             result.noise.meanLuminance > 0.0 ? result.noise.standardError / result.noise.meanLuminance : 0.0;
+        result.noise.relativeMseNoiseFloor = lumSquares > 0.0 ? varTotal / n / lumSquares : 0.0;
         result.noise.pixelRelativeStandardError =
             result.noise.meanLuminance > 0.0 ? std::sqrt(varTotal / P / n) / result.noise.meanLuminance : 0.0;
     }

@@ -38,6 +38,10 @@ struct TruthNoise {
     // The typical pixel's noise: sqrt(mean_p s_p^2 / n) / meanLuminance. The mean's error
     // shrinks with the pixel count; this one says how grainy the image still looks.
     double pixelRelativeStandardError = 0.0;
+    // What the truth's own noise adds to a relative MSE against it: sum_p s_p^2 / n over
+    // sum_p L_p^2 (luminance standing in for the RGB sums). A relative MSE near this floor says
+    // more about the truth's spp than about the image compared with it.
+    double relativeMseNoiseFloor = 0.0;
     bool varianceKnown = false;      // spp >= 2
 };
 

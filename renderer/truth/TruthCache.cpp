@@ -99,8 +99,18 @@ std::optional<TruthResult> loadCachedTruth(const std::string& dir, std::uint64_t
         return std::nullopt;
     try {
         TruthResult r;
-        r.hdr = image::readPfm(pfm);
-        if (r.hdr.width != settings.width || r.hdr.height != settings.height) return std::nullopt;
+        const image::ImageF rgb = image::readPfm(pfm);
+        if (rgb.width != settings.width || rgb.height != settings.height || rgb.channels < 3)
+            return std::nullopt;
+        // PFM holds RGB; the tracer's image is RGBA (a = 1), as the renderer's read-back.
+        r.hdr.width = rgb.width;
+        r.hdr.height = rgb.height;
+        r.hdr.channels = 4;
+        r.hdr.pixels.assign(size_t(rgb.width) * size_t(rgb.height) * 4, 1.0f);
+        for (int y = 0; y < rgb.height; ++y)
+            for (int x = 0; x < rgb.width; ++x)
+                for (int c = 0; c < 3; ++c)
+                    r.hdr.at(x, y, c) = rgb.at(x, y, c);
         auto bytes = readFileBytes(sidecarPath(pfm));
         auto j = nlohmann::json::parse(bytes.begin(), bytes.end());
         if (j.at("hash").get<std::string>() != std::to_string(hash)) return std::nullopt;
@@ -108,6 +118,7 @@ std::optional<TruthResult> loadCachedTruth(const std::string& dir, std::uint64_t
         r.noise.standardError = j.at("standard_error").get<double>();
         r.noise.relativeStandardError = j.at("relative_standard_error").get<double>();
         r.noise.pixelRelativeStandardError = j.at("pixel_relative_standard_error").get<double>();
+        r.noise.relativeMseNoiseFloor = j.at("relative_mse_noise_floor").get<double>();
         r.noise.varianceKnown = j.at("variance_known").get<bool>();
         r.cameraRays = j.at("camera_rays").get<std::uint64_t>();
         r.seconds = j.at("seconds").get<double>();
@@ -129,6 +140,7 @@ void storeCachedTruth(const std::string& dir, std::uint64_t hash, const TruthRes
     j["standard_error"] = r.noise.standardError;
     j["relative_standard_error"] = r.noise.relativeStandardError;
     j["pixel_relative_standard_error"] = r.noise.pixelRelativeStandardError;
+    j["relative_mse_noise_floor"] = r.noise.relativeMseNoiseFloor;
     j["variance_known"] = r.noise.varianceKnown;
     j["camera_rays"] = r.cameraRays;
     j["seconds"] = r.seconds;

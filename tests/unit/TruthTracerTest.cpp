@@ -57,10 +57,12 @@ TEST(TruthTracer, StandardErrorHalvesWithFourTimesTheSamples) {
     truth::TruthSettings ts;
     ts.width = ts.height = 16;
     ts.spp = 16;
-    double se16 = truth::renderTruth(s, kInside, ts).noise.standardError;
+    const truth::TruthNoise n16 = truth::renderTruth(s, kInside, ts).noise;
     ts.spp = 64;
-    double se64 = truth::renderTruth(s, kInside, ts).noise.standardError;
-    EXPECT_NEAR(se64 / se16, 0.5, 0.1);
+    const truth::TruthNoise n64 = truth::renderTruth(s, kInside, ts).noise;
+    EXPECT_NEAR(n64.standardError / n16.standardError, 0.5, 0.1);
+    EXPECT_NEAR(n64.pixelRelativeStandardError / n16.pixelRelativeStandardError, 0.5, 0.1);
+    EXPECT_NEAR(n64.relativeMseNoiseFloor / n16.relativeMseNoiseFloor, 0.25, 0.05);
 }
 
 TEST(TruthTracer, BadSettingsAndBlindViewsAreOneLineErrors) {
