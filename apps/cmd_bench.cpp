@@ -12,6 +12,7 @@
 #include "bench/report/ResultJson.h"
 #include "bench/report/CiLevels.h"
 #include "bench/runner/BenchContext.h"
+#include "bench/runner/BenchTruth.h"
 #include "bench/runner/CacheModelRun.h"
 #include "bench/runner/ProbeCache.h"
 #include "bench/runner/SessionRunner.h"
@@ -47,6 +48,8 @@ struct BenchArgs {
     std::string view, camera, probes, volumes = "auto", cacheDir, json, html, heatmaps,
                                       timing = "auto";
     double ppd = 67.0;
+    bool truth = false; // --truth: accuracy against the path-traced ground truth too
+    int truthSpp = 64;
 };
 
 void progress(const std::string& line) {
@@ -80,6 +83,7 @@ void validate(const BenchArgs& a) {
         throw Error("--width/--height must be in 16..16384");
     if (!a.view.empty() && !a.camera.empty()) throw Error("give --view or --camera, not both");
     if (!(a.ppd > 0)) throw Error("--ppd must be positive");
+    if (a.truthSpp < 1) throw Error("--truth-spp must be at least 1");
 }
 
 std::vector<profile::PlatformProfile> loadProfiles(const BenchArgs& a,
@@ -124,7 +128,8 @@ nlohmann::json chooseBenchView(const BenchArgs& a, const scene::Scene& s,
 // Heat maps share one scale (the largest FLIP of any profile, at least 0.05) so they compare;
 // FLIP errors of GI switches are small, and a 0..1 ramp would show them black.
 void writeOutputs(const BenchArgs& a, bench::BenchResult& r,
-                  const std::vector<image::ImageF>& flipMaps) {
+                  const std::vector<image::ImageF>& flipMaps,
+                  const std::vector<bench::TruthMaps>& truthMaps) {
     r.heatmapScale = 0.05;
     for (const auto& s : r.sessions)
         if (s.profile().accuracy.measured)
@@ -145,6 +150,7 @@ void writeOutputs(const BenchArgs& a, bench::BenchResult& r,
             image::writePng(png, metrics::errorHeatMap(flipMaps[s], float(r.heatmapScale)));
             r.sessions[s].variants[0].accuracy.heatmapFile = png;
         }
+        if (!truthMaps.empty()) bench::writeTruthPictures(r.sessions, truthMaps, dir, r.truth);
     }
     if (!a.json.empty()) {
         std::string text = bench::benchJson(r).dump(2) + "\n";
@@ -214,8 +220,15 @@ int run(const BenchArgs& a) {
     o.pixelsPerDegree = a.ppd;
     o.progress = progress;
     bench::RunnerInputs in{&s, &set, view, render::defaultFrameSettings(s), &debug};
+    bench::TruthBySize truths;
+    if (a.truth) {
+        const std::string cacheDir = a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir;
+        truths = bench::computeBenchTruth(s, view, plan, {a.truthSpp, 32, cacheDir, progress}, &result.truth);
+        in.truth = &truths;
+    }
     std::vector<image::ImageF> flipMaps;
-    result.sessions = bench::runBenchPlan(plan, in, o, &flipMaps);
+    std::vector<bench::TruthMaps> truthMaps;
+    result.sessions = bench::runBenchPlan(plan, in, o, &flipMaps, a.truth ? &truthMaps : nullptr);
     if (!a.noCacheModel) result.cacheModel = bench::cacheModelEntries(plan, s, set, view, progress);
     result.context["load_average_end"] = bench::loadAverage();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -227,7 +240,7 @@ int run(const BenchArgs& a) {
     if (a.strict && !skipped.empty())
         throw Error("--strict: " + std::to_string(skipped.size()) +
                     " variant(s) could not run, nothing written; first: " + skipped.front());
-    writeOutputs(a, result, flipMaps);
+    writeOutputs(a, result, flipMaps, truthMaps);
     std::cout << bench::markdownSummary(result);
     // One warning per distinct reason, naming the variants it hit.
     std::vector<std::pair<std::string, std::string>> reasons; // reason, variant ids
@@ -312,6 +325,11 @@ const RegisterCommand reg{
          cmd.add_flag("--no-cache-model", a->noCacheModel,
                       "Skip the report's texture-cache model (GL-free; minutes at 1440p)");
          cmd.add_option("--ppd", a->ppd, "FLIP viewing condition, pixels per degree")
+             ->capture_default_str();
+         cmd.add_flag("--truth", a->truth,
+                      "Also measure every profile and ablation row (and the reference) against the "
+                      "path-traced ground truth of the view (probebench truth; cached)");
+         cmd.add_option("--truth-spp", a->truthSpp, "Samples per pixel of that truth")
              ->capture_default_str();
          cmd.add_flag("--strict", a->strict,
                       "Fail (writing nothing) when any variant cannot run, instead of reporting "

@@ -10,6 +10,7 @@
 #include "ProfileOptions.h"
 #include "SceneOptions.h"
 #include "bench/runner/BenchContext.h"
+#include "bench/runner/BenchTruth.h"
 #include "bench/runner/ProbeCache.h"
 #include "bench/runner/SessionRunner.h"
 #include "bench/tune/BudgetCheck.h"
@@ -48,6 +49,8 @@ struct TuneArgs {
     bool acceptOverBudget = false; // write a profile that re-measures over --budget-ms
     int width = 0, height = 0, frames = 2, rounds = 3, warmup = 2, maxExhaustive = 24,
         maxPasses = 2;
+    bool truth = false; // --truth: minimise FLIP against the path-traced truth instead
+    int truthSpp = 64;
 };
 
 void progress(const std::string& line) {
@@ -56,6 +59,7 @@ void progress(const std::string& line) {
 }
 
 void validate(const TuneArgs& a) {
+    if (a.truthSpp < 1) throw Error("--truth-spp must be at least 1");
     if (!(a.budgetMs > 0 && a.budgetMs <= 1000)) throw Error("--budget-ms must be in (0, 1000]");
     if (!(a.budgetMiB > 0 && a.budgetMiB <= 65536))
         throw Error("--budget-mib must be in (0, 65536]");
@@ -107,18 +111,20 @@ public:
         plan.sessions.push_back(session);
         bench::RunnerInputs in{&scene_, &set_, view_, render::defaultFrameSettings(scene_),
                                debug_.get()};
+        if (a_.truth) in.truth = &truth_;
         const std::vector<bench::SessionResult> got = bench::runBenchPlan(plan, in, options_);
         const bench::SessionResult& r = got.front();
         std::vector<bench::TuneMeasurement> out;
         for (size_t i = 0; i < batch.size(); ++i) {
             const bench::VariantResult& v = r.variants[i];
             bench::TuneMeasurement m;
-            m.ok = v.ok() && v.accuracy.measured;
+            m.ok = v.ok() && v.accuracy.measured && (!a_.truth || v.vsTruth.measured);
             m.error = !v.ok() ? v.error
                       : m.ok  ? ""
                               : "the reference did not run: " + r.reference().error;
             m.frameMs = v.frameMs.median;
-            m.flip = v.accuracy.flipMean;
+            // The objective: FLIP against the reference, or with --truth against the truth.
+            m.flip = a_.truth ? v.vsTruth.flipMean : v.accuracy.flipMean;
             m.relativeMseGi = v.accuracy.relativeMseGi;
             out.push_back(m);
         }
@@ -127,6 +133,7 @@ public:
 
     const scene::View& view() const { return view_; }
     const nlohmann::json& context() const { return context_; }
+    const nlohmann::json& truthInfo() const { return truthInfo_; }
     // "cpu-finish (...why)": how frame ms were taken (cpu-time: process CPU-ms, all threads).
     std::string timing() const {
         return options_.timing.name + " (" + options_.timing.reason + ")";
@@ -147,6 +154,16 @@ private:
             progress("searching the worst-case view (every pixel needs GI) at " +
                      std::to_string(w) + "x" + std::to_string(h));
             view_ = views::findWorstCaseView(scene_, set_, w, h).view;
+        }
+        if (a_.truth) {
+            bench::BenchPlan one;
+            bench::Session session;
+            session.width = width_;
+            session.height = height_;
+            one.sessions.push_back(session);
+            const std::string dir = a_.cacheDir.empty() ? bench::defaultProbeCacheDir() : a_.cacheDir;
+            truth_ = bench::computeBenchTruth(scene_, view_, one, {a_.truthSpp, 32, dir, progress},
+                                              &truthInfo_);
         }
         platform_ = platform::createPlatform(timingPlatform(a_.platform));
         debug_ = std::make_unique<gl::DebugOutput>();
@@ -176,6 +193,8 @@ private:
     std::unique_ptr<gl::DebugOutput> debug_;
     bench::RunnerOptions options_;
     nlohmann::json context_;
+    bench::TruthBySize truth_; // --truth: the truth of view_ at width_ x height_
+    nlohmann::json truthInfo_;
 };
 
 probes::ProbeSet tuneProbes(const TuneArgs& a, const scene::Scene& s, std::string& path) {
@@ -265,9 +284,10 @@ int run(const TuneArgs& a) {
     char measured[600];
     std::snprintf(measured, sizeof measured,
                   "measured: %.2f ms per frame (median, timing %s), GI memory %.3f MiB (probes + "
-                  "GI targets), FLIP %.4f vs profile '%s'",
+                  "GI targets), FLIP %.4f vs %s",
                   best.m.frameMs, measurer.timingName().c_str(), best.memoryMiB, best.m.flip,
-                  reference.name.c_str());
+                  a.truth ? ("the path-traced truth (" + std::to_string(a.truthSpp) + " spp)").c_str()
+                          : ("profile '" + reference.name + "'").c_str());
     info.comments = {
         "Written by `probebench tune`: the most accurate configuration found that fits the "
         "budgets below on the device named here.",
@@ -335,6 +355,8 @@ int run(const TuneArgs& a) {
         j["height"] = height;
         j["base"] = base.name;
         j["reference"] = reference.name;
+        j["accuracy_target"] = a.truth ? "truth" : "reference"; // what "flip" is measured against
+        j["truth"] = a.truth ? measurer.truthInfo() : nlohmann::json(nullptr);
         j["out"] = a.out;
         j["renders_per_candidate"] = measurer.rendersPerVariant();
         j["timing"] = measurer.timing();
@@ -375,6 +397,11 @@ const RegisterCommand reg{
          cmd.add_option("--reference", a->reference, "Accuracy baseline profile (FLIP vs it)")
              ->capture_default_str();
          cmd.add_option("--set", a->sets, "Switch key=value applied to the base (repeatable)");
+         cmd.add_flag("--truth", a->truth,
+                      "Minimise FLIP against the path-traced ground truth of the view "
+                      "(probebench truth; cached) instead of against --reference");
+         cmd.add_option("--truth-spp", a->truthSpp, "Samples per pixel of that truth")
+             ->capture_default_str();
          cmd.add_option("--search", a->search,
                         "Only these switches are searched, comma-separated (default: every "
                         "switch of the table except the guards gi.guard_*, which are held at "

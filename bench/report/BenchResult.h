@@ -34,6 +34,22 @@ struct AccuracyResult {
     std::string heatmapFile;  // FLIP heat-map PNG ("" when none written)
 };
 
+// The same frame against the path-traced ground truth of the view (`bench --truth`,
+// renderer/truth/): FLIP and PSNR of the tonemapped output, relative MSE of the linear
+// radiance (not of the GI irradiance: the truth has no separate GI term).
+struct TruthAccuracy {
+    bool measured = false;
+    double flipMean = 0, flipMax = 0;
+    double psnr = 0;        // dB; +inf when identical
+    double relativeMse = 0; // linear radiance, sum (t - r)^2 / sum r^2
+};
+
+// What the report shows side by side per session: the truth, the reference and the profile
+// frames (PNG files) and their FLIP heat maps against the truth ("" when not written).
+struct TruthPictures {
+    std::string truthFile, referenceFile, profileFile, referenceHeatmapFile, profileHeatmapFile;
+};
+
 struct VariantResult {
     Variant variant;
     std::string status = "ok"; // "ok" | "unsupported" (error says why)
@@ -44,6 +60,7 @@ struct VariantResult {
     std::vector<double> roundMedians;        // frame ms per round (median of its frames)
     std::optional<SectionTiming> fetchFloor; // the GI pass's texture-fetch floor
     AccuracyResult accuracy;
+    TruthAccuracy vsTruth;
     CoverageResult coverage;
     double giMemoryMiB = 0; // probe data on the GPU
     int volumesKept = 0;
@@ -65,6 +82,7 @@ struct SessionResult {
     const VariantResult& profile() const { return variants[0]; }
     const VariantResult& reference() const { return variants[size_t(session.referenceVariant)]; }
     const DeltaResult* vsReference() const;
+    TruthPictures truthPictures;
 };
 
 struct BenchSettings {
@@ -84,6 +102,8 @@ struct BenchResult {
     double heatmapScale = 1; // FLIP value shown as the ramp's brightest colour in every heat map
     double seconds = 0;      // wall time of the whole run
     std::vector<CacheModelEntry> cacheModel; // per profile (empty: not modelled)
+    // `bench --truth`: spp, depth, per image size its noise, time and cache file; null without.
+    nlohmann::json truth;
 };
 
 } // namespace pb::bench

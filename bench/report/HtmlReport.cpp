@@ -6,6 +6,7 @@
 #include "Html.h"
 #include "ResultJson.h"
 #include "SvgCharts.h"
+#include "TruthSection.h"
 
 #include <sstream>
 
@@ -211,6 +212,7 @@ std::string htmlReport(const BenchResult& r) {
     ablation(h, r);
     h << cacheModelHtml(r.cacheModel);
     heatmaps(h, r);
+    h << truthHtml(r);
     context(h, r);
     h << "</body></html>\n";
     return h.str();

@@ -5,6 +5,7 @@
 #include "GiSections.h"
 #include "Spread.h"
 #include "ResultJson.h"
+#include "TruthSection.h"
 
 #include <sstream>
 
@@ -151,6 +152,7 @@ std::string markdownSummary(const BenchResult& r) {
     passTable(out, r);
     ablationTables(out, r);
     out << cacheModelMarkdown(r.cacheModel);
+    out << truthMarkdown(r);
     return out.str();
 }
 

@@ -46,6 +46,15 @@ nlohmann::json accuracyJson(const AccuracyResult& a) {
              a.heatmapFile.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.heatmapFile)}};
 }
 
+// Null without `bench --truth` (or when the variant did not run).
+nlohmann::json truthJson(const TruthAccuracy& a) {
+    if (!a.measured) return nullptr;
+    return {{"flip_mean", a.flipMean},
+            {"flip_max", a.flipMax},
+            {"psnr_db", finiteOrNull(a.psnr)},
+            {"relative_mse", a.relativeMse}};
+}
+
 nlohmann::json variantJson(const VariantResult& v, const Session& s) {
     nlohmann::json j{{"id", v.variant.id},
                      {"session", s.profile.name},
@@ -80,6 +89,7 @@ nlohmann::json variantJson(const VariantResult& v, const Session& s) {
         j["fetch_floor_ms"] = nullptr;
     }
     j["accuracy"] = accuracyJson(v.accuracy);
+    j["accuracy_vs_truth"] = truthJson(v.vsTruth);
     j["coverage"] = {{"fraction", v.coverage.fraction},
                      {"max_overlap", v.coverage.maxOverlap},
                      {"mean_overlap", v.coverage.meanOverlap}};
@@ -104,6 +114,9 @@ nlohmann::json deltaJson(const DeltaResult& d, const SessionResult& s) {
     const std::string flags =
         noiseFlags(s.variants[size_t(d.planned.off)], s.variants[size_t(d.planned.on)]);
     j["noise_flags"] = flags.empty() ? nlohmann::json(nullptr) : nlohmann::json(flags);
+    // Both sides of the row against the truth (null without --truth).
+    j["accuracy_vs_truth"] = {{"off", truthJson(s.variants[size_t(d.planned.off)].vsTruth)},
+                              {"on", truthJson(s.variants[size_t(d.planned.on)].vsTruth)}};
     return j;
 }
 
@@ -126,6 +139,16 @@ nlohmann::json profileJson(const SessionResult& s) {
                        {"gi_memory_mib", s.session.profile.giMemoryBudgetMiB},
                        {"gi_memory_within", p.giMemoryMiB <= s.session.profile.giMemoryBudgetMiB}};
         j["accuracy"] = accuracyJson(p.accuracy);
+        j["accuracy_vs_truth"] = truthJson(p.vsTruth);
+        j["reference_accuracy_vs_truth"] = truthJson(s.reference().vsTruth);
+        const TruthPictures& tp = s.truthPictures;
+        auto file = [](const std::string& f) { return f.empty() ? nlohmann::json(nullptr) : nlohmann::json(f); };
+        if (!tp.truthFile.empty())
+            j["truth_pictures"] = {{"truth", file(tp.truthFile)},
+                                   {"reference", file(tp.referenceFile)},
+                                   {"profile", file(tp.profileFile)},
+                                   {"reference_heatmap", file(tp.referenceHeatmapFile)},
+                                   {"profile_heatmap", file(tp.profileHeatmapFile)}};
     }
     const DeltaResult* vs = s.vsReference();
     j["vs_reference"] = vs ? deltaJson(*vs, s) : nlohmann::json(nullptr); // null: P is reference
@@ -172,6 +195,7 @@ nlohmann::json benchJson(const BenchResult& r) {
     j["profiles"] = profiles;
     j["variants"] = variants;
     j["cache_model"] = cacheModelJson(r.cacheModel);
+    j["truth"] = r.truth; // null without --truth
     return j;
 }
 

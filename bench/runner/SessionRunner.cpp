@@ -107,7 +107,7 @@ void measureDeltas(SessionResult& s) {
 }
 
 SessionResult runSession(const Session& session, const RunnerInputs& in, const RunnerOptions& o,
-                         const std::string& tag, image::ImageF* flipMap) {
+                         const std::string& tag, image::ImageF* flipMap, TruthMaps* truthMaps) {
     auto say = [&](const std::string& line) {
         if (o.progress) o.progress(tag + " " + line);
     };
@@ -186,6 +186,14 @@ SessionResult runSession(const Session& session, const RunnerInputs& in, const R
                       1, // the irradiance renderer's first frame: also right after a cut
                       o.pixelsPerDegree};
     captureAccuracy(out, renderers, ai, flipMap);
+    if (in.truth) {
+        auto it = in.truth->find({session.width, session.height});
+        if (it == in.truth->end())
+            throw Error("bench --truth: no truth computed at " + std::to_string(session.width) + "x" +
+                        std::to_string(session.height));
+        captureTruthAccuracy(out, renderers, it->second, in.settings.exposure, o.pixelsPerDegree,
+                             truthMaps);
+    }
     measureDeltas(out);
     return out;
 }
@@ -194,18 +202,21 @@ SessionResult runSession(const Session& session, const RunnerInputs& in, const R
 
 std::vector<SessionResult> runBenchPlan(const BenchPlan& plan, const RunnerInputs& in,
                                         const RunnerOptions& o,
-                                        std::vector<image::ImageF>* flipMaps) {
+                                        std::vector<image::ImageF>* flipMaps,
+                                        std::vector<TruthMaps>* truthMaps) {
     if (o.frames < 1 || o.rounds < 1 || o.warmup < 1)
         throw Error("--frames, --rounds and --warmup must be at least 1 (the first frame "
                     "compiles shaders and is never counted)");
     std::vector<SessionResult> out;
     if (flipMaps) flipMaps->assign(plan.sessions.size(), {});
+    if (truthMaps) truthMaps->assign(plan.sessions.size(), {});
     for (size_t s = 0; s < plan.sessions.size(); ++s) {
         const Session& session = plan.sessions[s];
         std::string tag = "[" + std::to_string(s + 1) + "/" + std::to_string(plan.sessions.size()) +
                           "] " + session.profile.name + " " + std::to_string(session.width) + "x" +
                           std::to_string(session.height) + ":";
-        out.push_back(runSession(session, in, o, tag, flipMaps ? &(*flipMaps)[s] : nullptr));
+        out.push_back(runSession(session, in, o, tag, flipMaps ? &(*flipMaps)[s] : nullptr,
+                                 truthMaps ? &(*truthMaps)[s] : nullptr));
     }
     return out;
 }

@@ -7,6 +7,7 @@
 // fetch floor follows each profile/reference variant's frames. Accuracy, coverage and GI memory
 // are taken after the timing (AccuracyCapture.h).
 #include "SectionTimer.h"
+#include "TruthAccuracyCapture.h"
 #include "bench/report/AblationPlan.h"
 #include "bench/report/BenchResult.h"
 #include "gl/DebugOutput.h"
@@ -35,12 +36,16 @@ struct RunnerInputs {
     scene::View view;
     render::FrameSettings settings;
     gl::DebugOutput* debug = nullptr; // GL errors fail the variant that caused them
+    // `bench --truth`: the ground truth at every session's size; null = no truth accuracy.
+    const TruthBySize* truth = nullptr;
 };
 
 // `flipMaps` (optional) receives, parallel to the sessions, the profile variant's per-pixel
-// FLIP map against the reference (empty when not measured), for heat maps.
+// FLIP map against the reference (empty when not measured), for heat maps; `truthMaps`
+// (optional, with in.truth) the pictures against the truth (TruthAccuracyCapture.h).
 std::vector<SessionResult> runBenchPlan(const BenchPlan& plan, const RunnerInputs& in,
                                         const RunnerOptions& o,
-                                        std::vector<image::ImageF>* flipMaps = nullptr);
+                                        std::vector<image::ImageF>* flipMaps = nullptr,
+                                        std::vector<TruthMaps>* truthMaps = nullptr);
 
 } // namespace pb::bench

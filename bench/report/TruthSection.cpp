@@ -1,0 +1,110 @@
+#include "TruthSection.h"
+
+#include "Format.h"
+#include "Html.h"
+
+#include <algorithm>
+#include <sstream>
+
+namespace pb::bench {
+namespace {
+
+bool anyTruth(const BenchResult& r) {
+    for (const SessionResult& s : r.sessions)
+        for (const VariantResult& v : s.variants)
+            if (v.vsTruth.measured) return true;
+    return false;
+}
+
+std::string sppText(const BenchResult& r) {
+    return r.truth.is_object() && r.truth.contains("spp") ? r.truth["spp"].dump() : "?";
+}
+
+// The largest relative-MSE noise floor of the truths (the truth's own noise in that figure).
+std::string floorText(const BenchResult& r) {
+    double worst = -1.0;
+    if (r.truth.is_object() && r.truth.contains("sizes"))
+        for (const auto& s : r.truth["sizes"])
+            if (s.contains("relative_mse_noise_floor") && s["relative_mse_noise_floor"].is_number())
+                worst = std::max(worst, s["relative_mse_noise_floor"].get<double>());
+    return worst < 0.0 ? std::string() : "; the truth's own noise adds about " + scientific(worst) + " to rel. MSE";
+}
+
+std::string cell(const std::string& text, const std::string& cls = "") {
+    return "<td" + (cls.empty() ? "" : " class=\"" + cls + "\"") + ">" + htmlEscape(text) + "</td>";
+}
+
+std::string roleText(const SessionResult& s, size_t i) {
+    if (i == 0) return "profile";
+    if (i == size_t(s.session.referenceVariant)) return "reference";
+    return "ablation";
+}
+
+void figure(std::ostringstream& h, const std::string& file, const std::string& caption) {
+    if (file.empty()) return;
+    h << "<figure><img alt=\"" << htmlEscape(caption) << "\" src=\"" << pngDataUri(file)
+      << "\"><figcaption>" << htmlEscape(caption) << "</figcaption></figure>\n";
+}
+
+} // namespace
+
+std::string truthHtml(const BenchResult& r) {
+    if (!anyTruth(r)) return {};
+    std::ostringstream h;
+    h << "<h2>Against the ground truth</h2>\n<p class=\"note\">The path-traced truth of the same "
+         "view (<code>probebench truth</code>, "
+      << htmlEscape(sppText(r))
+      << " spp" << htmlEscape(floorText(r)) << "): FLIP and PSNR of the tonemapped frame, relative MSE of the linear radiance. The "
+         "reference is DDGI from the same probes; its row is how far the probes are from the real "
+         "answer. Heat maps on one scale: black 0, pale yellow "
+      << htmlEscape(r.truth.is_object() && r.truth.contains("heatmap_scale") ? r.truth["heatmap_scale"].dump() : "?")
+      << " or more.</p>\n";
+    for (const SessionResult& s : r.sessions) {
+        h << "<h3>" << htmlEscape(s.session.profile.name) << " " << s.session.width << "x"
+          << s.session.height << "</h3>\n<table class=\"truth\"><tr><th class=\"l\">variant</th>"
+             "<th class=\"l\">role</th><th>FLIP mean</th><th>FLIP max</th><th>PSNR dB</th>"
+             "<th>rel. MSE</th></tr>\n";
+        for (size_t i = 0; i < s.variants.size(); ++i) {
+            const VariantResult& v = s.variants[i];
+            h << "<tr>" << cell(v.variant.label.empty() ? v.variant.id : v.variant.label, "l")
+              << cell(roleText(s, i), "l");
+            if (!v.vsTruth.measured) {
+                h << "<td colspan=\"4\">n/a</td></tr>\n";
+                continue;
+            }
+            h << cell(fixed(v.vsTruth.flipMean, 4)) << cell(fixed(v.vsTruth.flipMax, 3))
+              << cell(psnrText(v.vsTruth.psnr)) << cell(scientific(v.vsTruth.relativeMse)) << "</tr>\n";
+        }
+        h << "</table>\n";
+        const TruthPictures& p = s.truthPictures;
+        figure(h, p.truthFile, "truth");
+        figure(h, p.referenceFile, "reference: FLIP " + fixed(s.reference().vsTruth.flipMean, 4));
+        figure(h, p.profileFile, s.session.profile.name + ": FLIP " + fixed(s.profile().vsTruth.flipMean, 4));
+        h << "<br>\n";
+        figure(h, p.referenceHeatmapFile, "FLIP reference vs truth");
+        figure(h, p.profileHeatmapFile, "FLIP " + s.session.profile.name + " vs truth");
+    }
+    return h.str();
+}
+
+std::string truthMarkdown(const BenchResult& r) {
+    if (!anyTruth(r)) return {};
+    std::ostringstream out;
+    out << "\nAgainst the path-traced truth (" << sppText(r)
+        << " spp; FLIP/PSNR of the tonemapped frame, relative MSE of the radiance" << floorText(r)
+        << "):\n\n"
+        << "| profile | FLIP | PSNR dB | rel. MSE | reference FLIP | reference PSNR dB | reference rel. MSE |\n"
+        << "|---|---|---|---|---|---|---|\n";
+    for (const SessionResult& s : r.sessions) {
+        const TruthAccuracy& p = s.profile().vsTruth;
+        const TruthAccuracy& ref = s.reference().vsTruth;
+        auto cells = [](const TruthAccuracy& a) {
+            return a.measured ? fixed(a.flipMean, 4) + " | " + psnrText(a.psnr) + " | " + scientific(a.relativeMse)
+                              : std::string("n/a | n/a | n/a");
+        };
+        out << "| " << s.session.profile.name << " | " << cells(p) << " | " << cells(ref) << " |\n";
+    }
+    return out.str();
+}
+
+} // namespace pb::bench

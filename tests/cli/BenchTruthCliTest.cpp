@@ -1,0 +1,69 @@
+// `probebench bench --truth` as a user runs it: every profile, ablation variant and the
+// reference measured against the path-traced truth, the truth's noise in the JSON, the report's
+// side-by-side pictures, and a one-line error for --truth-spp 0.
+#include "support/RunCommand.h"
+#include "support/TestEnv.h"
+
+#include <algorithm>
+#include <fstream>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace pb::test;
+
+namespace {
+
+std::vector<std::string> tinyTruthBench(const fs::path& dir) {
+    return {"bench", "--scene", "cornell", "--profiles", "handheld", "--ablate", "--width", "64",
+            "--height", "36", "--rounds", "1", "--frames", "1", "--warmup", "1", "--no-floor",
+            "--no-cache-model", "--truth", "--truth-spp", "8", "--cache-dir", (dir / "cache").string(),
+            "--json", (dir / "out.json").string(), "--html", (dir / "report.html").string()};
+}
+
+std::string readText(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+} // namespace
+
+TEST(BenchTruthCli, EveryRowIsMeasuredAgainstTheTruthReferenceIncluded) {
+    const fs::path dir = outputDir();
+    auto r = runProbebench(tinyTruthBench(dir));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("Against the path-traced truth"), std::string::npos) << r.output;
+    auto j = nlohmann::json::parse(readText(dir / "out.json"));
+    ASSERT_TRUE(j["truth"].is_object());
+    EXPECT_EQ(j["truth"]["spp"], 8);
+    ASSERT_EQ(j["truth"]["sizes"].size(), 1u);
+    EXPECT_GT(j["truth"]["sizes"][0]["standard_error"].get<double>(), 0.0);
+    ASSERT_GE(j["variants"].size(), 3u);
+    for (const auto& v : j["variants"]) {
+        ASSERT_TRUE(v["accuracy_vs_truth"].is_object()) << v["id"];
+        // Nothing here is the truth: the reference included, every FLIP is above 0.
+        EXPECT_GT(v["accuracy_vs_truth"]["flip_mean"].get<double>(), 0.0) << v["id"];
+        EXPECT_GT(v["accuracy_vs_truth"]["relative_mse"].get<double>(), 0.0) << v["id"];
+    }
+    const auto& p = j["profiles"][0];
+    EXPECT_TRUE(p["reference_accuracy_vs_truth"].is_object());
+    for (const char* k : {"truth", "reference", "profile", "reference_heatmap", "profile_heatmap"})
+        EXPECT_TRUE(fs::exists(p["truth_pictures"][k].get<std::string>())) << k;
+    const std::string html = readText(dir / "report.html");
+    EXPECT_NE(html.find("Against the ground truth"), std::string::npos);
+    EXPECT_NE(html.find("alt=\"truth\" src=\"data:image/png;base64,"), std::string::npos);
+}
+
+TEST(BenchTruthCli, TruthSppZeroIsAOneLineError) {
+    const fs::path dir = outputDir();
+    auto args = tinyTruthBench(dir);
+    auto it = std::find(args.begin(), args.end(), "--truth-spp");
+    *(it + 1) = "0";
+    auto r = runProbebench(args);
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_EQ(r.output.rfind("probebench: error: --truth-spp", 0), 0u) << r.output;
+    EXPECT_FALSE(fs::exists(dir / "out.json"));
+}

@@ -1,0 +1,95 @@
+// `bench --truth` in the bench's outputs, from a hand-made result (no GL): accuracy_vs_truth on
+// every variant, profile (with its reference) and ablation row; null without a truth; the
+// Markdown table and the HTML section only when there is a truth.
+#include "bench/report/HtmlReport.h"
+#include "bench/report/MarkdownSummary.h"
+#include "bench/report/ResultJson.h"
+
+#include <gtest/gtest.h>
+
+namespace pb::test {
+namespace {
+
+using namespace pb::bench;
+
+BenchResult result(bool withTruth) {
+    profile::PlatformProfile ref, low;
+    ref.name = "reference";
+    low.name = "low";
+    low.switches.set("gi.resolution", "half");
+    BenchPlan plan = makeBenchPlan({ref, low}, ref, {true, 64, 36});
+    BenchResult r;
+    r.context = {{"gl_renderer", "llvmpipe"}, {"date", "today"}};
+    r.scene = {{"name", "cornell"}};
+    r.view = {{"source", "worst-case"}, {"camera", "0,1,2,0,1,0,60"}};
+    r.settings = {1, 2, 1, true, "cpu-finish", "test", 67};
+    if (withTruth) r.truth = {{"spp", 256}, {"heatmap_scale", 0.3}};
+    for (const Session& s : plan.sessions) {
+        SessionResult sr;
+        sr.session = s;
+        for (size_t i = 0; i < s.variants.size(); ++i) {
+            VariantResult v;
+            v.variant = s.variants[i];
+            v.frameSamples = {1.0, 1.1};
+            v.roundMedians = {1.0, 1.1};
+            v.frameMs = stats::summarize(v.frameSamples);
+            // The reference is not at 0 against the truth: that is the point.
+            if (withTruth) v.vsTruth = {true, 0.1 + 0.01 * double(i), 0.5, 25.0, 0.02 + 0.001 * double(i)};
+            sr.variants.push_back(v);
+        }
+        for (const PlannedDelta& p : s.deltas) {
+            DeltaResult d;
+            d.planned = p;
+            d.measured = true;
+            d.ms = stats::pairedShift(sr.variants[size_t(p.off)].roundMedians,
+                                      sr.variants[size_t(p.on)].roundMedians);
+            sr.deltas.push_back(d);
+        }
+        r.sessions.push_back(sr);
+    }
+    return r;
+}
+
+} // namespace
+
+TEST(BenchTruthReport, EveryVariantProfileAndAblationRowHasAccuracyVsTruth) {
+    const BenchResult r = result(true);
+    const nlohmann::json j = benchJson(r);
+    EXPECT_EQ(j["truth"]["spp"], 256);
+    for (const auto& v : j["variants"]) {
+        ASSERT_TRUE(v["accuracy_vs_truth"].is_object()) << v["id"];
+        EXPECT_GT(v["accuracy_vs_truth"]["flip_mean"].get<double>(), 0.0);
+        EXPECT_EQ(v["accuracy_vs_truth"]["psnr_db"], 25.0);
+        EXPECT_TRUE(v["accuracy_vs_truth"].contains("relative_mse"));
+    }
+    bool sawAblation = false;
+    for (const auto& p : j["profiles"]) {
+        ASSERT_TRUE(p["accuracy_vs_truth"].is_object());
+        ASSERT_TRUE(p["reference_accuracy_vs_truth"].is_object());
+        EXPECT_GT(p["reference_accuracy_vs_truth"]["flip_mean"].get<double>(), 0.0);
+        for (const auto& a : p["ablation"]) {
+            sawAblation = true;
+            EXPECT_TRUE(a["in_profile"]["accuracy_vs_truth"]["on"].is_object());
+            EXPECT_TRUE(a["in_profile"]["accuracy_vs_truth"]["off"].is_object());
+            EXPECT_TRUE(a["on_reference"]["accuracy_vs_truth"]["on"].is_object());
+        }
+    }
+    EXPECT_TRUE(sawAblation);
+    const std::string md = markdownSummary(r);
+    EXPECT_NE(md.find("Against the path-traced truth (256 spp"), std::string::npos) << md;
+    const std::string html = htmlReport(r);
+    EXPECT_NE(html.find("Against the ground truth"), std::string::npos);
+    EXPECT_NE(html.find("<td class=\"l\">reference</td>"), std::string::npos);
+}
+
+TEST(BenchTruthReport, WithoutATruthTheKeysAreNullAndNoSectionIsShown) {
+    const BenchResult r = result(false);
+    const nlohmann::json j = benchJson(r);
+    EXPECT_TRUE(j["truth"].is_null());
+    for (const auto& v : j["variants"])
+        EXPECT_TRUE(v["accuracy_vs_truth"].is_null());
+    EXPECT_EQ(markdownSummary(r).find("path-traced truth"), std::string::npos);
+    EXPECT_EQ(htmlReport(r).find("Against the ground truth"), std::string::npos);
+}
+
+} // namespace pb::test
