@@ -194,8 +194,8 @@ std::vector<gate::GateRow> ratioTiming(const GateArgs& a, gate::GateRecord& now,
     return rows;
 }
 
-int run(GateArgs& a) {
-    const auto t0 = std::chrono::steady_clock::now();
+// The baseline (absent only with --update) and the suite this run measures.
+std::optional<gate::GateRecord> loadBaseline(const GateArgs& a) {
     std::optional<gate::GateRecord> base;
     if (fs::exists(a.baseline))
         base = gate::readGateRecord(a.baseline);
@@ -203,51 +203,50 @@ int run(GateArgs& a) {
         throw fileError(a.baseline, "no such baseline (create it with --update)");
     if (!a.against.empty() && !fs::exists(a.against) && a.against.find('/') != std::string::npos)
         throw Error("--against " + a.against + ": no such file");
-    const profile::ProfileSearch search = profileSearch();
-    gate::GateRecord now;
-    now.suite = resolveGateSuite(a.suite, a.update, base ? &base->suite : nullptr,
-                                 profile::profileNames(search));
-    gate::GateSuite& s = now.suite;
-    if (const std::string inj = render::giDebugInjectionSummary(); !inj.empty())
-        std::fprintf(stderr, "warning: test-only fault injection active: %s\n", inj.c_str());
+    return base;
+}
 
-    // Every ray of this run (the bake, the cost model) on one Embree ISA on any x86-64 machine,
-    // so that the probe data and the counters do not depend on the CI machine's CPU
+// What the counters and accuracy are measured on: the suite's scene and probes, its camera
+// (searched once and stored in the suite when it has none), and the GL context's facts.
+struct GateSetup {
+    scene::Scene scene;
+    GateProbes probes;
+    scene::View view;
+};
+
+GateSetup setUpSuite(const GateArgs& a, gate::GateRecord& now) {
+    gate::GateSuite& s = now.suite;
+    // Every ray of this run (the bake, the cost model) on one Embree ISA on any x86-64 machine
     // (GateRecord.h; PB_EMBREE_ISA still overrides it, for experiments).
     probes::pinEmbreeIsa(gate::kGateEmbreeIsa);
     now.environment.embreeIsa = probes::embreeIsa();
-
     now.environment.cpu = bench::cpuModel();
     SceneArgs sceneArgs;
     sceneArgs.scene = s.scene;
-    const scene::Scene scene = loadSceneWithOverrides(sceneArgs);
-    const GateProbes gp = gateProbes(a, s, scene, now);
-    const probes::ProbeSet& set = gp.set;
-    const std::string& probesFile = gp.file;
-    scene::View view;
+    GateSetup g{loadSceneWithOverrides(sceneArgs), {}, {}};
+    g.probes = gateProbes(a, s, g.scene, now);
     if (s.camera.empty()) {
         progress("searching the worst-case view (stored in the baseline)");
-        view =
-            views::findWorstCaseView(scene, set, 320, std::max(16, 320 * s.height / s.width)).view;
-        s.camera = gateCameraSpec(view);
+        g.view = views::findWorstCaseView(g.scene, g.probes.set, 320,
+                                          std::max(16, 320 * s.height / s.width))
+                     .view;
+        s.camera = gateCameraSpec(g.view);
     }
-    view = chooseView(scene, "", s.camera);
+    g.view = chooseView(g.scene, "", s.camera);
+    return g;
+}
 
-    auto platform = platform::createPlatform(a.platform);
-    gl::DebugOutput debug;
-    const gl::GlCaps caps = gl::queryCaps();
-    const bench::TimingChoice timing =
-        bench::chooseTiming(s.timing.method, caps, gl::detectDriverQuirks());
-    now.recorded = bench::benchContext(*platform, caps);
-    now.environment.glRenderer = caps.renderer;
-    const gate::GateInputs in{
-        &scene,  &set,     view,           render::defaultFrameSettings(scene),
-        s.width, s.height, s.timing.warmup};
-
-    // Counters and accuracy: every profile's renderer through the same frame sequence.
+// Counters and accuracy: every profile's renderer through the same frame sequence. Returns
+// the renderers (the timing rounds reuse them) and the reference's index in them.
+std::vector<std::unique_ptr<gate::GateRenderer>> measureProfiles(const gate::GateInputs& in,
+                                                                 gate::GateRecord& now,
+                                                                 gl::DebugOutput& debug,
+                                                                 std::size_t& ref) {
+    const gate::GateSuite& s = now.suite;
+    const profile::ProfileSearch search = profileSearch();
     gate::ModelScenes scenes(in);
     std::vector<std::unique_ptr<gate::GateRenderer>> renderers;
-    size_t ref = 0;
+    ref = 0;
     for (size_t i = 0; i < s.profiles.size(); ++i) {
         progress("counting " + s.profiles[i] + " (" + std::to_string(s.width) + "x" +
                  std::to_string(s.height) + ")");
@@ -264,11 +263,77 @@ int run(GateArgs& a) {
             progress("accuracy of " + s.profiles[i] + " against " + s.reference);
             now.profiles[i].accuracy = gate::measureAccuracy(*renderers[i], *renderers[ref], in);
         }
+    return renderers;
+}
+
+// --callgrind: one frame per profile under valgrind in a worker, compared with the baseline's
+// counts of the same toolchain (into `outcome`, recorded into `now`).
+void callgrindStage(const GateArgs& a, const std::string& probesFile, const gl::GlCaps& caps,
+                    const gate::GateRecord& base, gate::GateRecord& now,
+                    gate::GateOutcome& outcome) {
+    const gate::GateSuite& s = now.suite;
+    const fs::path dir =
+        fs::temp_directory_path() / ("probebench-callgrind-" + std::to_string(::getpid()));
+    progress("callgrind: one frame per profile under valgrind, LP_NUM_THREADS=0 (minutes)");
+    std::vector<std::string> argv = workerArgs(gate::selfExecutable(), s, probesFile, a);
+    argv.push_back("--callgrind-profiles");
+    std::string list;
+    for (const std::string& p : s.profiles)
+        list += (list.empty() ? "" : ",") + p;
+    argv.push_back(list);
+    const gate::CallgrindRecord cg =
+        gate::runCallgrind(argv, caps.version, caps.renderer, dir.string());
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+    now.callgrind = {cg};
+    gate::compareCallgrind(base, cg, outcome);
+}
+
+// --update: the baseline rewritten from this run (callgrind counts of other toolchains kept),
+// with the probe data it was measured with committed beside it.
+void updateBaseline(const GateArgs& a, const std::optional<gate::GateRecord>& base,
+                    const gate::GateRecord& now, const std::string& probesFile) {
+    gate::GateRecord out = now;
+    if (!a.callgrind && base) out.callgrind = base->callgrind;
+    if (a.callgrind && base)
+        for (const gate::CallgrindRecord& c : base->callgrind)
+            if (!(c.key == now.callgrind.front().key)) out.callgrind.push_back(c);
+    const std::string committed = gate::committedProbesPath(a.baseline);
+    const std::vector<unsigned char> bytes = readFileBytes(probesFile);
+    const std::vector<unsigned char> gz = gzipCompress(bytes.data(), bytes.size());
+    writeFileAtomic(committed, gz.data(), gz.size());
+    gate::writeGateRecord(a.baseline, out);
+    std::cout << "updated " << a.baseline << " and " << committed
+              << " (review `git diff` of it and commit it with the change that explains it)\n";
+}
+
+int run(GateArgs& a) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::optional<gate::GateRecord> base = loadBaseline(a);
+    gate::GateRecord now;
+    now.suite = resolveGateSuite(a.suite, a.update, base ? &base->suite : nullptr,
+                                 profile::profileNames(profileSearch()));
+    const gate::GateSuite& s = now.suite;
+    if (const std::string inj = render::giDebugInjectionSummary(); !inj.empty())
+        std::fprintf(stderr, "warning: test-only fault injection active: %s\n", inj.c_str());
+    const GateSetup g = setUpSuite(a, now);
+
+    auto platform = platform::createPlatform(a.platform);
+    gl::DebugOutput debug;
+    const gl::GlCaps caps = gl::queryCaps();
+    const bench::TimingChoice timing =
+        bench::chooseTiming(s.timing.method, caps, gl::detectDriverQuirks());
+    now.recorded = bench::benchContext(*platform, caps);
+    now.environment.glRenderer = caps.renderer;
+    const gate::GateInputs in{&g.scene, &g.probes.set, g.view, render::defaultFrameSettings(g.scene),
+                              s.width,  s.height,      s.timing.warmup};
+    std::size_t ref = 0;
+    auto renderers = measureProfiles(in, now, debug, ref);
 
     std::vector<gate::GateRow> timingRows;
     const int budget = a.quick ? s.timing.quickMaxRounds : s.timing.maxRounds;
     if (!a.noTiming && !a.against.empty())
-        timingRows = againstTiming(a, s, budget, probesFile);
+        timingRows = againstTiming(a, s, budget, g.probes.file);
     else if (!a.noTiming)
         timingRows =
             ratioTiming(a, now, base ? &*base : nullptr, renderers, ref, timing, caps.es, budget);
@@ -279,26 +344,11 @@ int run(GateArgs& a) {
     gate::compareRecords(base ? *base : empty, now, outcome);
     outcome.rows.insert(outcome.rows.end(), timingRows.begin(), timingRows.end());
     if (a.noTiming) outcome.notes.push_back("timing: not run (--no-timing)");
-
-    if (a.callgrind) {
-        const fs::path dir =
-            fs::temp_directory_path() / ("probebench-callgrind-" + std::to_string(::getpid()));
-        progress("callgrind: one frame per profile under valgrind, LP_NUM_THREADS=0 (minutes)");
-        std::vector<std::string> argv = workerArgs(gate::selfExecutable(), s, probesFile, a);
-        argv.push_back("--callgrind-profiles");
-        std::string list;
-        for (const std::string& p : s.profiles)
-            list += (list.empty() ? "" : ",") + p;
-        argv.push_back(list);
-        const gate::CallgrindRecord cg =
-            gate::runCallgrind(argv, caps.version, caps.renderer, dir.string());
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-        now.callgrind = {cg};
-        gate::compareCallgrind(base ? *base : empty, cg, outcome);
-    } else if (base && !base->callgrind.empty()) {
+    if (a.callgrind)
+        callgrindStage(a, g.probes.file, caps, base ? *base : empty, now, outcome);
+    else if (base && !base->callgrind.empty())
         outcome.notes.push_back("callgrind: not run (--callgrind runs it)");
-    }
+
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     now.recorded["load_average_end"] = bench::loadAverage();
@@ -306,7 +356,6 @@ int run(GateArgs& a) {
     now.recorded["quick"] = a.quick;
     outcome.notes.push_back("ran " + std::to_string(int(seconds + 0.5)) + " s, load average " +
                             bench::loadAverage() + (a.quick ? ", --quick" : ""));
-
     std::cout << gate::gateTable(outcome);
     if (!a.json.empty()) {
         nlohmann::json j = gate::gateJson(outcome);
@@ -315,19 +364,7 @@ int run(GateArgs& a) {
         writeFileAtomic(a.json, text.data(), text.size());
     }
     if (a.update) {
-        gate::GateRecord out = now;
-        if (!a.callgrind && base) out.callgrind = base->callgrind;
-        if (a.callgrind && base)
-            for (const gate::CallgrindRecord& c : base->callgrind)
-                if (!(c.key == now.callgrind.front().key)) out.callgrind.push_back(c);
-        const std::string committed = gate::committedProbesPath(a.baseline);
-        const std::vector<unsigned char> bytes = readFileBytes(probesFile);
-        const std::vector<unsigned char> gz = gzipCompress(bytes.data(), bytes.size());
-        writeFileAtomic(committed, gz.data(), gz.size());
-        gate::writeGateRecord(a.baseline, out);
-        std::cout << "updated " << a.baseline << " and " << committed
-                  << " (review `git diff` of it and commit it with the change that explains "
-                     "it)\n";
+        updateBaseline(a, base, now, g.probes.file);
         return 0;
     }
     return outcome.exitCode();

@@ -51,7 +51,7 @@ void RadianceSlab::reset(std::size_t probes, int rays) {
         p.clear();
     for (auto& k : keys_)
         k.clear();
-    emitterSamples_ = 0;
+    slotSamples_.assign(probes, 0);
     lightRgb_.assign(probes * kTexels * 3, 0.0f);
     lightY_.assign(probes * kTexels, 0.0f);
     lightY2_.assign(probes * kTexels, 0.0f);
@@ -69,8 +69,6 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
     keys.clear();
     const float invPi = float(1.0 / M_PI);
     const EmitterTable& emitters = rs.emitters();
-    const int m = emitters.empty() ? 0 : std::max(nee.samples, 0);
-    emitterSamples_ = m;
     const float nPu = float(n) * kUniformSpherePdf;
     // All rays first, then the shading: the face normal of each hit is prefetched while the
     // following rays are traced (results are per ray: the order of the calls does not matter).
@@ -80,6 +78,18 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
         rs.prefetchSurface(hits[i]);
     }
     counters.primary += n;
+    // Emitters that fill a large part of the probe's sphere (a quarter or more of its rays hit
+    // one) are sampled well by the rays, whose normalised convolution is exact for a uniform
+    // radiance: light samples would only add their own noise there, so such a probe keeps its
+    // rays alone. The emitter samples are for small and distant emitters.
+    int m = 0;
+    if (!emitters.empty() && nee.samples > 0) {
+        std::size_t emitterHits = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            emitterHits += hits[i].hit() && emitters.find(hits[i].geomID, hits[i].primID) >= 0;
+        if (4 * emitterHits < n) m = nee.samples;
+    }
+    slotSamples_[slot] = m;
     for (std::size_t i = 0; i < n; ++i) {
         const glm::vec3 d = rot * dirs[i];
         const RayHit& h = hits[i];
@@ -209,7 +219,7 @@ const glm::vec4* RadianceSlab::finish(std::size_t slot) {
 
 void RadianceSlab::convolve(std::size_t slot, const ProbeConvolution& conv, float* outRgb) {
     conv.irradiance(&finish(slot)->x, outRgb);
-    if (emitterSamples_ == 0) return;
+    if (slotSamples_[slot] == 0) return;
     const float* rgb = lightRgb_.data() + slot * kTexels * 3;
     for (int i = 0; i < kTexels * 3; ++i)
         outRgb[i] += rgb[i];
@@ -218,7 +228,7 @@ void RadianceSlab::convolve(std::size_t slot, const ProbeConvolution& conv, floa
 void RadianceSlab::texelVariance(std::size_t slot, const ProbeConvolution& conv,
                                  float* outVar) const {
     conv.irradianceLumaVariance(&radiance_[slot * std::size_t(rays_)].x, outVar);
-    const int m = emitterSamples_;
+    const int m = slotSamples_[slot];
     if (m < 2) return;
     // The light part is a sum of M samples: its variance is M times their sample variance.
     const float* y1 = lightY_.data() + slot * kTexels;
@@ -238,7 +248,7 @@ float RadianceSlab::relativeNoise(std::size_t slot, const ProbeConvolution& conv
     double meanY = 0.0, meanVar = 0.0;
     for (int t = 0; t < kTexels; ++t) {
         glm::vec3 c(e[3 * t], e[3 * t + 1], e[3 * t + 2]);
-        if (emitterSamples_ > 0) c += glm::vec3(rgb[3 * t], rgb[3 * t + 1], rgb[3 * t + 2]);
+        if (slotSamples_[slot] > 0) c += glm::vec3(rgb[3 * t], rgb[3 * t + 1], rgb[3 * t + 2]);
         meanY += luminance(c) / kTexels;
         meanVar += double(var[t]) / kTexels;
     }

@@ -43,6 +43,9 @@ struct RayCounters {
 // samples for small or distant emitters (a panel a few rays would miss), the rays for large
 // and close ones. Only emitted radiance the probe sees directly is sampled so: light that
 // bounced off a surface first is still the hits' shading (below), as before.
+// A probe a quarter or more of whose rays hit emitters (inside a glowing room, against a light
+// wall) takes no light samples: its rays sample those emitters well, and their normalised
+// convolution is exact for a uniform radiance (RadiancePass.cpp).
 // samples = 0: the rays alone (what SurfaceGather uses). The stream seeds the pass; each
 // probe draws from it by its probe key, so results do not depend on the thread count.
 struct EmitterSampling {
@@ -95,7 +98,7 @@ private:
     std::vector<std::vector<std::uint32_t>> keys_; // per slot: localityKey of each pending hit
     std::vector<glm::vec3> indirect_;              // E_indirect per ray (pending hits only)
     // Emitter samples per slot and interior texel: RGB sum, luminance sum and sum of squares.
-    int emitterSamples_ = 0;
+    std::vector<int> slotSamples_; // emitter samples each slot's probe took (0: rays alone)
     std::vector<float> lightRgb_, lightY_, lightY2_;
 };
 
