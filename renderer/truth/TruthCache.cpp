@@ -2,7 +2,7 @@
 
 #include "core/Error.h"
 #include "core/FileIO.h"
-#include "probes/store/Hash.h"
+#include "probes/store/SceneHash.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -35,31 +35,14 @@ void hashScene(probes::Hasher& h, const scene::Scene& s) {
         h.pod(std::int32_t(inst.primitive));
         if (inst.primitive < 0 || inst.primitive >= int(s.primitives.size())) continue;
         const scene::Primitive& p = s.primitives[size_t(inst.primitive)];
-        h.pod(std::int32_t(p.material));
-        h.pod(std::uint64_t(p.positions.size()));
-        h.bytes(p.positions.data(), p.positions.size() * sizeof(glm::vec3));
+        hashPrimitiveGeometry(h, p);
         h.pod(std::uint64_t(p.normals.size()));
         h.bytes(p.normals.data(), p.normals.size() * sizeof(glm::vec3));
         h.pod(std::uint64_t(p.uvs.size()));
         h.bytes(p.uvs.data(), p.uvs.size() * sizeof(glm::vec2));
-        h.pod(std::uint64_t(p.indices.size()));
-        h.bytes(p.indices.data(), p.indices.size() * sizeof(std::uint32_t));
     }
-    h.pod(std::uint64_t(s.lights.size()));
-    for (const scene::Light& l : s.lights) {
-        h.pod(std::uint32_t(l.type));
-        h.pod(l.color);
-        h.pod(l.intensity);
-        h.pod(l.position);
-        h.pod(l.direction);
-        h.pod(l.range);
-        h.pod(l.innerConeAngle);
-        h.pod(l.outerConeAngle);
-    }
-    h.pod(std::uint8_t(s.sun.enabled));
-    h.pod(s.sun.toSun);
-    h.pod(s.sun.color);
-    h.pod(s.sun.intensity);
+    hashLights(h, s.lights);
+    hashSun(h, s.sun);
     h.pod(s.sky.radiance);
 }
 

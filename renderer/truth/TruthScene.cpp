@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 #include "probes/bake/EmbreeIsa.h"
+#include "probes/bake/RayScene.h"
 
 #include <array>
 #include <cmath>
@@ -55,21 +56,6 @@ glm::vec3 meanTextureColour(const scene::Scene& s, int texture) {
         for (int c = 0; c < 3; ++c)
             sum[c] += lut[t.rgba8[i * 4 + size_t(c)]];
     return glm::vec3(float(sum[0] / double(n)), float(sum[1] / double(n)), float(sum[2] / double(n)));
-}
-
-void initRay(RTCRay& r, const glm::vec3& o, const glm::vec3& d, float tnear, float tfar) {
-    r.org_x = o.x;
-    r.org_y = o.y;
-    r.org_z = o.z;
-    r.dir_x = d.x;
-    r.dir_y = d.y;
-    r.dir_z = d.z;
-    r.tnear = tnear;
-    r.tfar = tfar;
-    r.time = 0.0f;
-    r.mask = 0xFFFFFFFFu;
-    r.id = 0;
-    r.flags = 0;
 }
 
 } // namespace
@@ -260,7 +246,7 @@ SurfaceHit TruthScene::intersect(const glm::vec3& o, const glm::vec3& d, float t
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         RTCRayHit rh;
-        initRay(rh.ray, o, d, tnear, tfar);
+        probes::initEmbreeRay(rh.ray, o, d, tnear, tfar);
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(rtc_, &ctx, &rh);
@@ -281,7 +267,7 @@ bool TruthScene::occluded(const glm::vec3& o, const glm::vec3& d, float tnear, f
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     RTCRay r;
-    initRay(r, o, d, tnear, tfar);
+    probes::initEmbreeRay(r, o, d, tnear, tfar);
     rtcOccluded1(rtc_, &ctx, &r);
     return r.tfar < 0.0f; // Embree sets tfar to -inf on a hit
 }

@@ -4,6 +4,7 @@
 #include "probes/bake/Baker.h"
 #include "probes/store/Hash.h"
 #include "probes/store/ProbeFile.h"
+#include "probes/store/SceneHash.h"
 #include "probes/bake/RayScene.h"
 
 namespace pb::probes {
@@ -11,13 +12,6 @@ namespace {
 
 constexpr std::uint32_t kBakeAlgorithmVersion = 3; // 2: far scenes bake in a moved frame;
                                                    // 3: emitter sampling (MIS) at the probe
-
-void hashSun(Hasher& h, const scene::Sun& s) {
-    h.pod(std::uint8_t(s.enabled));
-    h.pod(s.toSun);
-    h.pod(s.color);
-    h.pod(s.intensity);
-}
 
 void hashScene(Hasher& h, const scene::Scene& s) {
     const auto mats = summariseMaterials(s);
@@ -36,24 +30,10 @@ void hashScene(Hasher& h, const scene::Scene& s) {
         const scene::Primitive& p = s.primitives[size_t(inst.primitive)];
         ++baked;
         h.pod(inst.transform);
-        h.pod(std::int32_t(p.material));
-        h.pod(std::uint64_t(p.positions.size()));
-        h.bytes(p.positions.data(), p.positions.size() * sizeof(glm::vec3));
-        h.pod(std::uint64_t(p.indices.size()));
-        h.bytes(p.indices.data(), p.indices.size() * sizeof(std::uint32_t));
+        hashPrimitiveGeometry(h, p);
     }
     h.pod(baked);
-    h.pod(std::uint64_t(s.lights.size()));
-    for (const scene::Light& l : s.lights) {
-        h.pod(std::uint32_t(l.type));
-        h.pod(l.color);
-        h.pod(l.intensity);
-        h.pod(l.position);
-        h.pod(l.direction);
-        h.pod(l.range);
-        h.pod(l.innerConeAngle);
-        h.pod(l.outerConeAngle);
-    }
+    hashLights(h, s.lights);
 }
 
 } // namespace

@@ -180,22 +180,26 @@ void RayScene::record(const RecordedRay& r) const {
     buffer->push_back(r);
 }
 
+void initEmbreeRay(RTCRay& r, const glm::vec3& o, const glm::vec3& d, float tnear, float tfar) {
+    r.org_x = o.x;
+    r.org_y = o.y;
+    r.org_z = o.z;
+    r.dir_x = d.x;
+    r.dir_y = d.y;
+    r.dir_z = d.z;
+    r.tnear = tnear;
+    r.tfar = tfar;
+    r.time = 0.0f;
+    r.mask = 0xFFFFFFFFu;
+    r.id = 0;
+    r.flags = 0;
+}
+
 RayHit RayScene::intersect(const glm::vec3& o, const glm::vec3& d, float tnear, float tfar) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     RTCRayHit rh;
-    rh.ray.org_x = o.x;
-    rh.ray.org_y = o.y;
-    rh.ray.org_z = o.z;
-    rh.ray.dir_x = d.x;
-    rh.ray.dir_y = d.y;
-    rh.ray.dir_z = d.z;
-    rh.ray.tnear = tnear;
-    rh.ray.tfar = tfar;
-    rh.ray.time = 0.0f;
-    rh.ray.mask = 0xFFFFFFFFu;
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
+    initEmbreeRay(rh.ray, o, d, tnear, tfar);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     if (recorder_->on.load(std::memory_order_relaxed)) record({o, d, tnear, tfar, false});
@@ -213,18 +217,7 @@ bool RayScene::occluded(const glm::vec3& o, const glm::vec3& d, float tnear, flo
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     RTCRay r;
-    r.org_x = o.x;
-    r.org_y = o.y;
-    r.org_z = o.z;
-    r.dir_x = d.x;
-    r.dir_y = d.y;
-    r.dir_z = d.z;
-    r.tnear = tnear;
-    r.tfar = tfar;
-    r.time = 0.0f;
-    r.mask = 0xFFFFFFFFu;
-    r.id = 0;
-    r.flags = 0;
+    initEmbreeRay(r, o, d, tnear, tfar);
     if (recorder_->on.load(std::memory_order_relaxed)) record({o, d, tnear, tfar, true});
     rtcOccluded1(scene_, &ctx, &r);
     return r.tfar < 0.0f; // Embree sets tfar to -inf on a hit

@@ -34,6 +34,10 @@ struct MaterialSummary {
 // Per-material values the bake uses (also hashed as bake inputs).
 std::vector<MaterialSummary> summariseMaterials(const scene::Scene& scene);
 
+// An Embree ray from o along d over [tnear, tfar], every other field at its neutral value
+// (shared by every Embree caller, so no ray starts with a stale field).
+void initEmbreeRay(RTCRay& r, const glm::vec3& o, const glm::vec3& d, float tnear, float tfar);
+
 struct RayHit {
     float t = -1.0f; // < 0: miss
     unsigned geomID = RTC_INVALID_GEOMETRY_ID, primID = 0;
