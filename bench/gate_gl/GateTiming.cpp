@@ -1,5 +1,6 @@
 #include "GateTiming.h"
 
+#include "bench/report/GiSections.h"
 #include "core/Error.h"
 #include "metrics/Statistics.h"
 
@@ -17,7 +18,7 @@ RoundTimes timeRound(GateRenderer& r, bench::SectionTimer& timer, int frames) {
         if (!ok) throw Error("timer queries reported disjoint GPU time 3 times in a row");
         double g = 0;
         for (const auto& [name, ms] : timer.sections())
-            if (name.rfind("gi-", 0) == 0) g += ms;
+            if (bench::isGiSection(name)) g += ms; // the bench's GI column: upsample included
         frame.push_back(timer.frameMs());
         gi.push_back(g);
     }
