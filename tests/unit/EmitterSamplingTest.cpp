@@ -81,6 +81,21 @@ std::vector<float> probeTexels(const RayScene& rs, const scene::Scene& s, int ra
     return out;
 }
 
+// One volume, the scene's own sun and sky, 64 rays, one round (no noise target).
+BakeRequest oneVolumeBake(const scene::Scene& s, glm::vec3 center, glm::vec3 half,
+                          glm::ivec3 counts) {
+    BakeRequest req;
+    req.volumes = {ProbeVolume{}};
+    req.volumes[0].name = "v";
+    req.volumes[0].center = center;
+    req.volumes[0].halfExtents = half;
+    req.volumes[0].counts = counts;
+    req.scenarios = {Scenario{"day", s.sun, s.sky}};
+    req.settings.raysPerProbe = 64;
+    req.settings.noiseTarget = 0.0f;
+    return req;
+}
+
 } // namespace
 
 TEST(EmitterTable, PicksTrianglesInProportionToTheirPower) {
@@ -168,15 +183,7 @@ TEST(EmitterSampling, WithoutEmittersTheSamplesChangeNothing) {
     const scene::Scene s = sunlitFloor();
     const RayScene rs(s);
     ASSERT_TRUE(rs.emitters().empty());
-    BakeRequest req;
-    req.volumes = {ProbeVolume{}};
-    req.volumes[0].name = "v";
-    req.volumes[0].center = {0, 1, 0};
-    req.volumes[0].halfExtents = {2, 1, 2};
-    req.volumes[0].counts = {4, 3, 4};
-    req.scenarios = {Scenario{"day", s.sun, s.sky}};
-    req.settings.raysPerProbe = 64;
-    req.settings.noiseTarget = 0.0f;
+    BakeRequest req = oneVolumeBake(s, {0, 1, 0}, {2, 1, 2}, {4, 3, 4});
     req.settings.emitterSamples = 0;
     const ProbeSet a = bakeProbes(s, req);
     req.settings.emitterSamples = 512;
@@ -186,15 +193,7 @@ TEST(EmitterSampling, WithoutEmittersTheSamplesChangeNothing) {
 
 TEST(NoiseTarget, MoreRoundsWhereTheNoiseIsTheSameBytesOnAnyThreadCount) {
     const scene::Scene s = scene::makeCornellScene();
-    BakeRequest req;
-    req.volumes = {ProbeVolume{}};
-    req.volumes[0].name = "room";
-    req.volumes[0].center = {0, 1, 0};
-    req.volumes[0].halfExtents = {0.95f, 0.95f, 0.95f};
-    req.volumes[0].counts = {5, 5, 5};
-    req.scenarios = {Scenario{"day", s.sun, s.sky}};
-    req.settings.raysPerProbe = 64;
-    req.settings.noiseTarget = 0.0f;
+    BakeRequest req = oneVolumeBake(s, {0, 1, 0}, glm::vec3(0.95f), {5, 5, 5});
     BakeStats one, converged, single;
     bakeProbes(s, req, &one);
     EXPECT_EQ(one.extraRoundRays, 0u);
