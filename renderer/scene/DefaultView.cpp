@@ -48,13 +48,61 @@ View poseView(const Bounds& b, const Pose& p) {
 
 // What a pose sees (DefaultView.h): a 16x9 grid across the 16:9 frustum and 14 rays all
 // around the eye (the 6 axes and 8 diagonals). `length` is the scene's long side.
-ViewCheck look(const RayGrid& grid, const View& v, float length, float diagonal) {
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+bool sceneHasLight(const Scene& s, const RayGrid& grid) {
+    return (s.sun.enabled && s.sun.intensity > 0.0f) || luminance(s.sky.radiance) > 0.0f ||
+           !s.lights.empty() || !grid.emitterCentroids().empty();
+}
+
+// Whether the surface at p (normal n, facing the viewer) receives light directly: shadow rays
+// to the sun, towards the sky (normal, halfway up, zenith), to each punctual light and to up to
+// 32 emissive triangles' centroids. Unshadowed spot cones are not checked: "some light reaches it".
+bool receivesLight(const Scene& s, const RayGrid& grid, glm::vec3 p, glm::vec3 n, float diagonal) {
+    const float far = 2.0f * diagonal;
+    p += n * (1e-4f * diagonal);
+    auto open = [&](glm::vec3 d, float dist) {
+        return glm::dot(n, d) > 0.0f && !std::isfinite(grid.cast(p, d, dist).distance);
+    };
+    if (s.sun.enabled && s.sun.intensity > 0.0f && open(glm::normalize(s.sun.toSun), far))
+        return true;
+    // The sky: along the normal, halfway to the zenith, or at the zenith (a wall sees the sky
+    // above it, not straight ahead).
+    if (luminance(s.sky.radiance) > 0.0f) {
+        const glm::vec3 up(0.0f, 1.0f, 0.0f);
+        if (open(n, far) || open(up, far)) return true;
+        const glm::vec3 half = n + up;
+        if (glm::dot(half, half) > 1e-6f && open(glm::normalize(half), far)) return true;
+    }
+    for (const Light& l : s.lights) {
+        if (!(l.intensity > 0.0f)) continue;
+        if (l.type == LightType::Directional) {
+            if (open(-glm::normalize(l.direction), far)) return true;
+            continue;
+        }
+        const glm::vec3 to = l.position - p;
+        const float d = glm::length(to);
+        if (d > 0.0f && (l.range <= 0.0f || d < l.range) && open(to / d, d * 0.999f))
+            return true;
+    }
+    const std::vector<glm::vec3>& emitters = grid.emitterCentroids();
+    const std::size_t stride = std::max<std::size_t>(1, emitters.size() / 32);
+    for (std::size_t i = 0; i < emitters.size(); i += stride) {
+        const glm::vec3 to = emitters[i] - p;
+        const float d = glm::length(to);
+        if (d > 0.0f && open(to / d, d * 0.999f)) return true;
+    }
+    return false;
+}
+
+ViewCheck look(const Scene& scene, const RayGrid& grid, const View& v, float length,
+               float diagonal) {
     const glm::vec3 f = glm::normalize(v.target - v.position);
     const glm::vec3 r = glm::normalize(glm::cross(f, glm::vec3(0, 1, 0)));
     const glm::vec3 u = glm::cross(r, f);
     const float th = std::tan(glm::radians(v.fovYDegrees) * 0.5f), tw = th * 16.0f / 9.0f;
     constexpr int kW = 16, kH = 9;
-    int front = 0, back = 0, sky = 0, nearHits = 0;
+    int front = 0, back = 0, sky = 0, nearHits = 0, lit = 0;
     std::vector<float> depths;
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {
@@ -67,6 +115,10 @@ ViewCheck look(const RayGrid& grid, const View& v, float length, float diagonal)
                 continue;
             }
             (hit.backFacing ? back : front) += 1;
+            if (!hit.backFacing &&
+                (hit.emissive ||
+                 receivesLight(scene, grid, v.position + d * hit.distance, hit.normal, diagonal)))
+                ++lit;
             nearHits += hit.distance < 0.05f * length;
             depths.push_back(hit.distance / length);
         }
@@ -76,6 +128,8 @@ ViewCheck look(const RayGrid& grid, const View& v, float length, float diagonal)
     c.backFraction = float(back) / rays;
     c.skyFraction = float(sky) / rays;
     c.nearFraction = float(nearHits) / rays;
+    c.litFraction = float(lit) / rays;
+    c.sceneHasLight = sceneHasLight(scene, grid);
     if (!depths.empty()) {
         std::nth_element(depths.begin(), depths.begin() + std::ptrdiff_t(depths.size() / 2),
                          depths.end());
@@ -102,7 +156,7 @@ ViewCheck look(const RayGrid& grid, const View& v, float length, float diagonal)
 // Higher is better, for when no pose is good(): front faces and depth count, back faces,
 // sky, an eye in something and geometry right in front count against.
 float score(const ViewCheck& c) {
-    return 2.0f * c.frontFraction + glm::min(c.medianDepth, 1.0f) +
+    return 2.0f * c.frontFraction + c.litFraction + glm::min(c.medianDepth, 1.0f) +
            0.5f * glm::min(c.centreDepth, 1.0f) - 3.0f * c.backFraction -
            c.skyFraction - 2.0f * c.nearFraction - (c.eyeClear ? 0.0f : 5.0f) -
            (c.insideClosedMesh ? 10.0f : 0.0f);
@@ -131,7 +185,7 @@ View makeDefaultView(const Bounds& b) {
 // view, nearby poses in a fixed order: other heights, sideways, nearer the centre, then the
 // opposite direction and the other horizontal axis. The first pose that sees well wins, else
 // the best-scoring one. Each pose is judged by what it sees (look(): front faces, sky, back
-// faces, depth, an eye inside a closed mesh). Deterministic.
+// faces, depth, an eye inside a closed mesh, how much of it receives light). Deterministic.
 View makeDefaultView(const Scene& scene) {
     const Bounds b = scene.staticWorldBounds();
     const View simple = makeDefaultView(b);
@@ -150,7 +204,7 @@ View makeDefaultView(const Scene& scene) {
                 for (float lateral : {0.0f, 0.15f, -0.15f, 0.3f, -0.3f})
                     for (float height : {kEyeHeight, 0.45f, 0.2f}) {
                         const View v = poseView(b, {axis, sign, along, lateral, height});
-                        const ViewCheck c = look(grid, v, length, diagonal);
+                        const ViewCheck c = look(scene, grid, v, length, diagonal);
                         if (c.good()) return v;
                         if (score(c) > bestScore) {
                             bestScore = score(c);
@@ -164,7 +218,7 @@ ViewCheck checkView(const Scene& scene, const View& view) {
     const Bounds b = scene.staticWorldBounds();
     const RayGrid grid(scene);
     if (b.empty() || grid.empty()) return {};
-    return look(grid, view, longSide(b), glm::length(b.size()));
+    return look(scene, grid, view, longSide(b), glm::length(b.size()));
 }
 
 std::string uniqueViewName(const Scene& scene, const std::string& base) {

@@ -23,13 +23,18 @@ struct ViewCheck {
     float centreDepth = 0;   // free distance along the centre ray, same units (capped at 2)
     bool insideClosedMesh = false; // most rays all around the eye hit back faces
     bool eyeClear = false;         // nothing within 2% of the long side around the eye
+    // Frame rays whose front-facing hit receives light directly: it emits, or it sees the
+    // sun, the sky, a punctual light (within range) or an emissive triangle. A view of an
+    // enclosed scene lit only from inside must see some of what the light reaches.
+    float litFraction = 0;
+    bool sceneHasLight = false; // the scene has a sun, sky, punctual light or emitter
     // Mostly front faces, not sky-only, not inside a mesh or against something, an open depth
     // range (the median hit is not right in front of the eye, the centre sees 30% of the
     // scene's length).
     bool good() const {
         return eyeClear && !insideClosedMesh && frontFraction >= 0.5f && skyFraction <= 0.5f &&
                backFraction <= 0.1f && nearFraction <= 0.25f && medianDepth >= 0.1f &&
-               centreDepth >= 0.3f;
+               centreDepth >= 0.3f && (!sceneHasLight || litFraction >= 0.1f);
     }
 };
 ViewCheck checkView(const Scene& scene, const View& view);

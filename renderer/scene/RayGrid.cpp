@@ -39,7 +39,10 @@ RayGrid::RayGrid(const Scene& scene) {
             t.e1 = worldPosition(scene, inst, b) - t.v0;
             t.e2 = worldPosition(scene, inst, c) - t.v0;
             t.facing = glm::cross(t.e1, t.e2);
-            if (scene.materials[size_t(p.material)].doubleSided)
+            const Material& m = scene.materials[size_t(p.material)];
+            t.emissive = m.emissive != glm::vec3(0.0f);
+            if (t.emissive) emitters_.push_back(t.v0 + (t.e1 + t.e2) / 3.0f);
+            if (m.doubleSided)
                 t.facing = glm::vec3(0.0f); // both sides are front sides
             else if (!p.normals.empty() &&
                      glm::dot(t.facing,
@@ -140,8 +143,11 @@ RayHit RayGrid::cast(const glm::vec3& o, const glm::vec3& d, float maxDistance) 
             const float v = glm::dot(d, q) * inv;
             if (v < 0.0f || u + v > 1.0f) continue;
             const float dist = glm::dot(t.e2, q) * inv;
-            if (dist > minDistance && dist <= maxDistance && dist < best.distance)
-                best = {dist, glm::dot(t.facing, d) > 0.0f};
+            if (dist > minDistance && dist <= maxDistance && dist < best.distance) {
+                glm::vec3 n = glm::normalize(glm::cross(t.e1, t.e2));
+                if (glm::dot(n, d) > 0.0f) n = -n;
+                best = {dist, glm::dot(t.facing, d) > 0.0f, n, t.emissive};
+            }
         }
         // A hit inside this cell cannot be beaten by any later cell.
         const int a = tNext.x < tNext.y ? (tNext.x < tNext.z ? 0 : 2) : (tNext.y < tNext.z ? 1 : 2);

@@ -12,6 +12,8 @@ namespace pb::scene {
 struct RayHit {
     float distance;  // infinity when nothing is hit
     bool backFacing; // a single-sided surface seen from behind (its normals point away)
+    glm::vec3 normal{0.0f}; // unit geometric normal, on the side the ray came from
+    bool emissive = false;  // the hit surface's material emits light
 };
 
 class RayGrid {
@@ -19,6 +21,8 @@ public:
     explicit RayGrid(const Scene& scene);
 
     bool empty() const { return tris_.empty(); }
+    // Centroids of the emissive triangles (sampled by what sees light: DefaultView).
+    const std::vector<glm::vec3>& emitterCentroids() const { return emitters_; }
     // Nearest hit along origin + t * direction (direction unit length) for t in (0, maxDistance].
     RayHit cast(const glm::vec3& origin, const glm::vec3& direction, float maxDistance) const;
 
@@ -26,11 +30,13 @@ private:
     struct Tri {
         glm::vec3 v0, e1, e2;
         glm::vec3 facing; // geometric normal agreeing with the vertex normals; 0: double-sided
+        bool emissive = false;
     };
     void build();
     size_t cellIndex(const glm::ivec3& cell) const;
 
     std::vector<Tri> tris_;
+    std::vector<glm::vec3> emitters_;
     Bounds bounds_;
     glm::ivec3 dims_{1};
     glm::vec3 cellSize_{1.0f};

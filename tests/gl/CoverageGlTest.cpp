@@ -65,19 +65,24 @@ class CoverageGlTest : public GlTest {};
 TEST_F(CoverageGlTest, CpuCoverageMatchesTheRenderedGBuffer) {
     const scene::Scene& s = giTestScene();
     const probes::ProbeSet& set = giTestProbes(probes::StorageFormat::Rgba16f);
-    // Every named view, counting only the rotated child volume: its box covers an
-    // asymmetric part of each image, so a mirrored or flipped CPU image would disagree.
+    // Every named view, counting only the rotated child volume: where its box covers an
+    // asymmetric part of the image, a mirrored or flipped CPU image would disagree. A view
+    // that does not see the child (the default view looks into the sunlit room) must agree
+    // that it covers nothing; at least two views must cover part of the frame, so the
+    // comparison means something.
     const std::vector<bool> childOnly{false, true};
     const views::CoverageTester childTester(s, set, childOnly);
+    int partial = 0;
     for (const scene::View& v : s.views) {
         SCOPED_TRACE(v.name);
         const std::vector<int> cpu = childTester.overlapImage(v, kW, kH);
         const std::vector<int> gpu = renderedCoverage(s, set, childOnly, v, "coverage_" + v.name);
         EXPECT_DOUBLE_EQ(fraction(cpu), childTester.measure(v, kW, kH).fraction);
-        EXPECT_GT(fraction(gpu), 0.02); // partial coverage: the comparison means something
         EXPECT_LT(fraction(gpu), 0.95);
         EXPECT_GE(agreement(cpu, gpu), 0.99); // rays vs rasterised edges: a few pixels differ
+        partial += fraction(gpu) > 0.02;
     }
+    EXPECT_GE(partial, 2);
 
     // The searched worst case over both volumes is fully covered when rendered too.
     const views::CoverageTester tester(s, set);

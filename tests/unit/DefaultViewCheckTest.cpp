@@ -1,7 +1,8 @@
 // The default view is judged by what it sees (DefaultView.h, checkView): every built-in
 // scene, every shared scene and every compressed test file gets a default view that sees
-// mostly front faces, with an open depth range, not sky only and not from inside a mesh.
-// checkView itself is tested on views that must fail.
+// mostly front faces, with an open depth range, not sky only and not from inside a mesh, and
+// (where the scene has any light) much of it lit directly. checkView itself is tested on views
+// that must fail, including a closed room whose light is elsewhere.
 #include "scene/DefaultView.h"
 #include "scene/SceneLoader.h"
 #include "support/TestEnv.h"
@@ -18,9 +19,10 @@ void expectGoodDefaultView(const Scene& s, const std::string& label) {
     const View& v = s.views.front();
     const ViewCheck c = checkView(s, v);
     std::printf("[ view     ] %-40s front %.2f back %.2f sky %.2f near %.2f depth median %.2f "
-                "centre %.2f%s\n",
+                "centre %.2f lit %.2f%s\n",
                 label.c_str(), c.frontFraction, c.backFraction, c.skyFraction, c.nearFraction,
-                c.medianDepth, c.centreDepth, c.insideClosedMesh ? " INSIDE A MESH" : "");
+                c.medianDepth, c.centreDepth, c.litFraction,
+                c.insideClosedMesh ? " INSIDE A MESH" : "");
     EXPECT_TRUE(c.good()) << label << ": front " << c.frontFraction << ", back "
                           << c.backFraction << ", sky " << c.skyFraction << ", near "
                           << c.nearFraction << ", median depth " << c.medianDepth
@@ -29,6 +31,7 @@ void expectGoodDefaultView(const Scene& s, const std::string& label) {
     EXPECT_GE(c.frontFraction, 0.5f) << label;
     EXPECT_LT(c.skyFraction, 0.5f) << label;
     EXPECT_FALSE(c.insideClosedMesh) << label;
+    if (c.sceneHasLight) EXPECT_GE(c.litFraction, 0.1f) << label;
 }
 
 View lookFrom(glm::vec3 eye, glm::vec3 target) {
@@ -76,4 +79,30 @@ TEST(DefaultViewCheck, BadViewsFail) {
     // Nose against a wall: everything near.
     const ViewCheck wall = checkView(s, lookFrom({0, 1, -0.9f}, {0, 1, -2}));
     EXPECT_FALSE(wall.good()) << wall.nearFraction;
+}
+
+// The Cornell box is lit only by its ceiling panel: its classic view sees the panel and walls
+// the panel reaches. The same box with the panel's light moved into a closed box of its own
+// (a point light sealed away, the panel dark) still has a light, but nothing the view sees
+// receives it: the view fails, on light alone.
+TEST(DefaultViewCheck, AViewMustSeeSurfacesTheLightReaches) {
+    Scene s = makeBuiltinScene("cornell");
+    View front;
+    for (const View& v : s.views)
+        if (v.name == "front") front = v;
+    ASSERT_EQ(front.name, "front");
+    const ViewCheck lit = checkView(s, front);
+    EXPECT_TRUE(lit.sceneHasLight);
+    EXPECT_GT(lit.litFraction, 0.5f);
+    EXPECT_TRUE(lit.good());
+    for (Material& m : s.materials)
+        m.emissive = glm::vec3(0.0f);
+    Light sealed;
+    sealed.position = {-0.4f, 0.6f, -0.35f}; // inside the tall box (closed, faces outwards)
+    sealed.intensity = 10.0f;
+    s.lights.push_back(sealed);
+    const ViewCheck dark = checkView(s, front);
+    EXPECT_TRUE(dark.sceneHasLight);
+    EXPECT_EQ(dark.litFraction, 0.0f);
+    EXPECT_FALSE(dark.good());
 }
