@@ -206,6 +206,21 @@ TEST(GltfExtensions, TextureTransformIsAppliedToTheUvs) {
     EXPECT_EQ(plain.primitives[0].uvs[1], glm::vec2(1.0f, 0.0f));
 }
 
+// The direction of the rotation, from the extension's own example: "offset [0, 1], rotation
+// 90 degrees, scale 0.5 uses only the lower left quadrant of the image, rotated clockwise".
+// The unit triangle must land inside u in [0, 0.5], v in [0.5, 1] (the README's GLSL literal,
+// read column by column, would put it outside the image).
+TEST(GltfExtensions, TextureTransformRotatesAsTheExtensionsExample) {
+    const json t = {{"offset", {0.0, 1.0}}, {"rotation", 1.57079632679}, {"scale", {0.5, 0.5}}};
+    const Scene s = loadGltf(uvTriangle(t).write(pb::test::outputDir(), "tt_example"));
+    for (const glm::vec2& uv : s.primitives[0].uvs) {
+        EXPECT_GE(uv.x, -1e-5f);
+        EXPECT_LE(uv.x, 0.5f + 1e-5f);
+        EXPECT_GE(uv.y, 0.5f - 1e-5f);
+        EXPECT_LE(uv.y, 1.0f + 1e-5f);
+    }
+}
+
 TEST(GltfExtensions, BasisuTexturesWithoutFallbackWarnOnce) {
     GltfWriter w = uvTriangle(json());
     w.doc["extensionsUsed"] = {"KHR_texture_basisu"};
