@@ -21,6 +21,7 @@
 #include "gl/DebugOutput.h"
 #include "passes/GiDebugInjection.h"
 #include "probes/bake/EmbreeIsa.h"
+#include "probes/store/Hash.h"
 #include "probes/store/ProbeFile.h"
 #include "views/WorstCaseView.h"
 
@@ -50,7 +51,10 @@ void progress(const std::string& line) {
 }
 
 std::string probeIdentity(const probes::ProbeSet& set, const std::string& file) {
-    std::uint64_t h = 1469598103934665603ull; // FNV-1a 64 of the probe file
+    // FNV-1a 64 of the probe file, with the offset basis this function always used
+    // (1469598103934665603, not FNV's 14695981039346656037 of probes::fnv1a64): every recorded
+    // baseline's `probes` and `bake` identities were written with it.
+    std::uint64_t h = 1469598103934665603ull;
     for (unsigned char b : readFileBytes(file))
         h = (h ^ b) * 1099511628211ull;
     char buf[160];
@@ -81,9 +85,7 @@ GateProbes gateProbes(const GateArgs& a, const gate::GateSuite& s, const scene::
     const std::string committed = gate::committedProbesPath(a.baseline);
     if (a.update || !fs::exists(committed)) return out;
     const std::vector<unsigned char> gz = readFileBytes(committed);
-    std::uint64_t h = 1469598103934665603ull; // FNV-1a 64 of the compressed file: its cache name
-    for (unsigned char b : gz)
-        h = (h ^ b) * 1099511628211ull;
+    const std::uint64_t h = probes::fnv1a64(gz.data(), gz.size()); // its cache name
     char name[64];
     std::snprintf(name, sizeof name, "gate-committed-%016llx.pbp",
                   static_cast<unsigned long long>(h));

@@ -29,7 +29,7 @@ struct BakeSettings {
     // input (hashed), not stored in the probe file.
     int emitterSamples = 512;
     // The converged bake: a probe whose estimated irradiance noise (relative standard error of
-    // its texels, RadianceSlab::relativeNoise) is above this after a pass's first round of
+    // its texels, NoiseRounds.h) is above this after a pass's first round of
     // rays gets more rounds - a fresh ray rotation and fresh emitter samples each, averaged -
     // until it is below or has had kMaxNoiseRounds. 0: one round (no noise control). A bake
     // input (hashed), not stored in the probe file.

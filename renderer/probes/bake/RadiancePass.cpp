@@ -239,20 +239,4 @@ void RadianceSlab::texelVariance(std::size_t slot, const ProbeConvolution& conv,
     }
 }
 
-float RadianceSlab::relativeNoise(std::size_t slot, const ProbeConvolution& conv) const {
-    float var[kTexels];
-    texelVariance(slot, conv, var);
-    float e[kTexels * 3];
-    conv.irradiance(&radiance_[slot * std::size_t(rays_)].x, e);
-    const float* rgb = lightRgb_.data() + slot * kTexels * 3;
-    double meanY = 0.0, meanVar = 0.0;
-    for (int t = 0; t < kTexels; ++t) {
-        glm::vec3 c(e[3 * t], e[3 * t + 1], e[3 * t + 2]);
-        if (slotSamples_[slot] > 0) c += glm::vec3(rgb[3 * t], rgb[3 * t + 1], rgb[3 * t + 2]);
-        meanY += luminance(c) / kTexels;
-        meanVar += double(var[t]) / kTexels;
-    }
-    return meanY > 0.0 ? float(std::sqrt(meanVar) / meanY) : 0.0f;
-}
-
 } // namespace pb::probes

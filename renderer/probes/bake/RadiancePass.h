@@ -76,13 +76,10 @@ public:
     // Phase 3 for a probe: finish, then outRgb = the 6x6 interior, RGB per texel, row-major
     // (the rays' convolution plus the emitter samples' texels).
     void convolve(std::size_t slot, const ProbeConvolution& conv, float* outRgb);
-    // After convolve: the probe's irradiance noise, the standard error of its texels' luminance
-    // estimated from the sample variances of its rays (ProbeConvolution::irradianceLumaVariance)
-    // and of its emitter samples, as the RMS over the texels over their mean luminance (0 for
-    // a black probe). The rays are stratified, so this overestimates a little: a conservative
-    // figure to decide whether a probe needs more rays.
-    float relativeNoise(std::size_t slot, const ProbeConvolution& conv) const;
-    // The same as an absolute variance per texel (luminance), for combining rounds.
+    // After convolve: the variance of each texel's luminance estimate (absolute), from the
+    // sample variances of its rays (ProbeConvolution::irradianceLumaVariance) and of its
+    // emitter samples. The rays are stratified, so this overestimates: NoiseRounds uses it
+    // only to decide whether a second round is worth tracing.
     void texelVariance(std::size_t slot, const ProbeConvolution& conv, float* outVar) const;
 
 private:
