@@ -1,8 +1,10 @@
 // probebench bake: probe volumes -> Embree bake -> probe data file (cached by input hash).
 #include "CommandRegistry.h"
+#include "PlacementCache.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
 #include "probes/placement/AutoPlacement.h"
+#include "probes/placement/PlacementKey.h"
 #include "probes/bake/Baker.h"
 #include "probes/store/MemoryReport.h"
 #include "probes/ProbeCounts.h"
@@ -85,6 +87,29 @@ private:
     std::string stage_;
 };
 
+// Automatic placement's steps (AutoPlacementRequest::progress): on a terminal one line that
+// updates, otherwise one line per lattice-search estimate and every 10th placement, so a log
+// shows where the seconds before the bake went.
+void placementProgress(const std::string& stage, int done, int total) {
+    static const bool tty = ::isatty(::fileno(stderr)) != 0;
+    if (tty) {
+        if (total > 0)
+            std::fprintf(stderr, "\r%-70s\rbake: %s %d/%d", "", stage.c_str(), done, total);
+        else
+            std::fprintf(stderr, "\r%-70s\rbake: %s %d", "", stage.c_str(), done);
+        std::fflush(stderr);
+        return;
+    }
+    if (total > 0)
+        std::fprintf(stderr, "bake: %s %d/%d\n", stage.c_str(), done, total);
+    else if (done == 1 || done % 10 == 0)
+        std::fprintf(stderr, "bake: %s %d\n", stage.c_str(), done);
+}
+
+void endPlacementProgress() {
+    if (::isatty(::fileno(stderr)) != 0) std::fprintf(stderr, "\r%-70s\r", "");
+}
+
 // Nesting depth of each volume (0 = root).
 std::vector<int> volumeDepths(const std::vector<ProbeVolume>& volumes) {
     std::vector<int> parents = validateVolumes(volumes, "placement"), depth(volumes.size(), 0);
@@ -99,6 +124,13 @@ struct PlacementInfo {
     std::string mode;    // "adaptive", "uniform" or "file"
     bool sparse = false; // stored sparse: result.bytes counts what is stored
     AutoPlacementResult result;
+};
+
+// What `bake` prints of the placement: placed this run (placementJson of the result), or
+// read from the placement cache (PlacementCache.h) when the probe file is up to date.
+struct PlacementSummary {
+    nlohmann::json json;
+    bool placedThisRun = true;
 };
 
 nlohmann::json placementJson(const PlacementInfo& p, StorageFormat format) {
@@ -140,34 +172,77 @@ nlohmann::json placementJson(const PlacementInfo& p, StorageFormat format) {
     return j;
 }
 
-std::string placementText(const PlacementInfo& p, StorageFormat format) {
-    nlohmann::json j = placementJson(p, format);
+// One line from the placement's JSON, so a cached placement prints as a fresh one does.
+std::string placementText(const PlacementSummary& summary) {
+    const nlohmann::json& j = summary.json;
     std::ostringstream s;
-    s << "placement: " << p.mode << ", " << p.result.volumes.size() << " volume(s)";
+    int volumes = 0;
+    for (const auto& tier : j["tiers"])
+        volumes += tier["volumes"].get<int>();
+    s << "placement: " << j["mode"].get<std::string>() << ", " << volumes << " volume(s)";
     for (size_t t = 0; t < j["tiers"].size(); ++t) {
         const auto& tier = j["tiers"][t];
         s << (t == 0 ? "; outer " : "; tier " + std::to_string(t) + " ")
           << tier["volumes"].get<int>() << " x spacing " << tier["spacing"].get<double>() << " ("
           << tier["probes"].get<long long>() << " probes)";
     }
-    s << "; " << formatBytes(p.result.bytes) << " as " << formatName(format)
-      << (p.sparse ? " stored sparse" : "");
-    if (p.result.defaultBudget)
-        s << " (default budget: the default uniform grid's "
-          << formatBytes(std::size_t(p.result.budgetBytes)) << ")";
-    else if (p.result.budgetBytes > 0.0)
-        s << " (budget " << formatBytes(std::size_t(p.result.budgetBytes)) << ")";
-    if (p.mode == "adaptive")
-        s << "; " << p.result.stats.rays << " corner rays, " << p.result.placements
-          << " placement(s)";
-    if (p.result.latticeSearched) {
-        const LatticeShift& l = p.result.latticeShift;
+    const double budget = j["budget_bytes"].get<double>();
+    s << "; " << formatBytes(j["bytes"].get<std::size_t>()) << " as "
+      << j["format"].get<std::string>() << (j["storage"] == "sparse" ? " stored sparse" : "");
+    if (j["default_budget"].get<bool>())
+        s << " (default budget: the default uniform grid's " << formatBytes(std::size_t(budget))
+          << ")";
+    else if (budget > 0.0)
+        s << " (budget " << formatBytes(std::size_t(budget)) << ")";
+    if (j.contains("corner_rays"))
+        s << "; " << j["corner_rays"].get<long long>() << " corner rays, "
+          << j["placements"].get<int>() << " placement(s)";
+    if (j.contains("lattice_search")) {
+        const auto& l = j["lattice_search"];
         s.precision(3);
-        s << "; lattice search: shift (" << l.cells.x << ", " << l.cells.y << ", " << l.cells.z
-          << ") cells, estimated error " << l.errorBefore << " -> " << l.errorAfter << ", "
-          << l.trials << " trial bakes in " << p.result.latticeSearchSeconds << " s";
+        s << "; lattice search: shift (" << l["shift_cells"][0].get<double>() << ", "
+          << l["shift_cells"][1].get<double>() << ", " << l["shift_cells"][2].get<double>()
+          << ") cells, estimated error " << l["estimated_error_before"].get<double>() << " -> "
+          << l["estimated_error_after"].get<double>() << ", " << l["trials"].get<int>()
+          << " trial bakes in " << l["seconds"].get<double>() << " s";
     }
+    if (!summary.placedThisRun) s << " (when baked; not placed again: the placement cache matches)";
     return s.str();
+}
+
+// The automatic placement request of these options (its key decides the placement cache).
+AutoPlacementRequest autoPlacementRequest(const BakeArgs& a, const scene::Scene& s,
+                                          AutoMode mode) {
+    AutoPlacementRequest req;
+    req.mode = mode;
+    req.adaptive.spacing = a.spacing;
+    req.adaptive.levels = a.autoLevels;
+    req.adaptive.maxChildren = a.autoMaxChildren;
+    req.adaptive.threads = a.threads;
+    req.budgetBytes = a.budgetMib * 1024.0 * 1024.0;
+    req.format = parseStorageFormat(a.format);
+    req.sparse = storesSparse(a);
+    // The lattice search bakes trials as this bake will be baked, under its first scenario.
+    req.latticeSearch = !a.noLatticeSearch;
+    req.lighting = resolveScenarios(a.scenarios, {}, s).front();
+    req.bounces = a.bounces;
+    return req;
+}
+
+// Everything of the request but the volumes.
+void setBakeSettings(const BakeArgs& a, const scene::Scene& s,
+                     const std::vector<ScenarioSpec>& fileScenarios, BakeRequest& r) {
+    r.scenarios = resolveScenarios(a.scenarios, fileScenarios, s);
+    r.settings.raysPerProbe = a.rays;
+    r.settings.bounces = a.bounces;
+    r.settings.emitterSamples = a.emitterSamples;
+    r.settings.noiseTarget = a.noiseTarget;
+    r.settings.seed = a.seed;
+    r.settings.format = parseStorageFormat(a.format);
+    r.settings.relocate = !a.noRelocate;
+    r.settings.backfaceThreshold = a.backfaceThreshold;
+    r.threads = a.threads;
+    r.sparse = storesSparse(a);
 }
 
 BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo& placement) {
@@ -177,21 +252,11 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
     const bool sparse = placement.sparse = storesSparse(a);
     AutoMode mode;
     if (parseAutoMode(a.volumes, mode)) {
-        AutoPlacementRequest req;
-        req.mode = mode;
-        req.adaptive.spacing = a.spacing;
-        req.adaptive.levels = a.autoLevels;
-        req.adaptive.maxChildren = a.autoMaxChildren;
-        req.adaptive.threads = a.threads;
-        req.budgetBytes = a.budgetMib * 1024.0 * 1024.0;
-        req.format = format;
-        req.sparse = sparse;
-        // The lattice search bakes trials as this bake will be baked, under its first scenario.
-        req.latticeSearch = !a.noLatticeSearch;
-        req.lighting = resolveScenarios(a.scenarios, {}, s).front();
-        req.bounces = a.bounces;
+        AutoPlacementRequest req = autoPlacementRequest(a, s, mode);
+        req.progress = placementProgress;
         placement.mode = autoModeName(mode);
         placement.result = placeAutoVolumes(s, req);
+        endPlacementProgress();
         for (const std::string& note : placement.result.notes)
             std::cerr << "note: " << note << "\n";
         r.volumes = placement.result.volumes;
@@ -213,18 +278,33 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
                         " as " + formatName(format) + ", over --probe-budget-mib " +
                         std::to_string(a.budgetMib));
     }
-    r.scenarios = resolveScenarios(a.scenarios, fileScenarios, s);
-    r.settings.raysPerProbe = a.rays;
-    r.settings.bounces = a.bounces;
-    r.settings.emitterSamples = a.emitterSamples;
-    r.settings.noiseTarget = a.noiseTarget;
-    r.settings.seed = a.seed;
-    r.settings.format = format;
-    r.settings.relocate = !a.noRelocate;
-    r.settings.backfaceThreshold = a.backfaceThreshold;
-    r.threads = a.threads;
-    r.sparse = sparse;
+    setBakeSettings(a, s, fileScenarios, r);
     return r;
+}
+
+// The probe file is up to date without placing: the placement cache has this request's key,
+// and the file's volumes with the other options hash to the file's own input hash (the one the
+// cache recorded). Nothing when anything differs or fails to read: then bake places as ever.
+std::optional<std::pair<ProbeSet, nlohmann::json>> upToDateByPlacementCache(
+    const BakeArgs& a, const scene::Scene& s) {
+    AutoMode mode;
+    if (a.force || a.out.empty() || !a.writeVolumes.empty() || !parseAutoMode(a.volumes, mode))
+        return std::nullopt;
+    const std::optional<CachedPlacement> cached =
+        readPlacementCache(a.out, autoPlacementKey(s, autoPlacementRequest(a, s, mode)));
+    if (!cached) return std::nullopt;
+    std::optional<ProbeSet> set;
+    try {
+        set = readProbeFile(a.out);
+    } catch (const Error&) {
+        return std::nullopt; // damaged: the normal path re-bakes it and says why
+    }
+    BakeRequest r;
+    r.volumes = set->volumes;
+    setBakeSettings(a, s, {}, r);
+    if (set->inputHash != cached->inputHash || bakeInputHash(s, r) != set->inputHash)
+        return std::nullopt;
+    return std::make_pair(std::move(*set), cached->placement);
 }
 
 // A count, or null when the file cannot tell (ProbeCounts.h).
@@ -275,7 +355,7 @@ float scenarioScale(const ProbeSet& set, std::size_t s) {
                : 1.0f;
 }
 
-void printSummary(const BakeArgs& a, const PlacementInfo& placement, const ProbeSet& set,
+void printSummary(const BakeArgs& a, const PlacementSummary& placement, const ProbeSet& set,
                   const BakeStats* st, bool upToDate) {
     MemoryReport mem = memoryReport(set);
     const std::vector<ProbeCounts> counts =
@@ -283,7 +363,8 @@ void printSummary(const BakeArgs& a, const PlacementInfo& placement, const Probe
     const ProbeCounts total = totalProbeCounts(counts);
     if (a.json) {
         nlohmann::json j{{"file", a.out},
-                         {"placement", placementJson(placement, set.format())},
+                         {"placement", placement.json},
+                         {"placed_this_run", placement.placedThisRun},
                          {"up_to_date", upToDate},
                          {"input_hash", set.inputHash},
                          {"format", formatName(set.format())},
@@ -410,8 +491,22 @@ int run(const BakeArgs& a) {
             throw Error("--write-volumes " + a.writeVolumes + ": folder does not exist");
     }
     scene::Scene s = loadSceneWithOverrides(a.scene);
+    if (auto cached = upToDateByPlacementCache(a, s)) {
+        const PlacementSummary summary{cached->second, false};
+        if (!a.json) std::cout << placementText(summary) << "\n";
+        printSummary(a, summary, cached->first, nullptr, true);
+        return 0;
+    }
     PlacementInfo placement;
     BakeRequest req = buildRequest(a, s, placement);
+    const PlacementSummary summary{placementJson(placement, req.settings.format), true};
+    // Recorded once the probe file for this placement exists (baked, or found up to date).
+    const auto recordPlacement = [&](std::uint64_t inputHash) {
+        AutoMode mode;
+        if (parseAutoMode(a.volumes, mode))
+            writePlacementCache(a.out, {autoPlacementKey(s, autoPlacementRequest(a, s, mode)),
+                                        inputHash, summary.json});
+    };
     if (!a.writeVolumes.empty()) {
         writeVolumeFile(a.writeVolumes, req.volumes,
                         "probe volumes for scene '" + s.name +
@@ -426,7 +521,7 @@ int run(const BakeArgs& a) {
                                  .dump(2)
                           << "\n";
             else
-                std::cout << placementText(placement, req.settings.format) << "\nwrote "
+                std::cout << placementText(summary) << "\nwrote "
                           << a.writeVolumes << "\n";
             return 0;
         }
@@ -435,8 +530,9 @@ int run(const BakeArgs& a) {
     if (!a.force) {
         std::string why;
         if (std::optional<ProbeSet> cached = readCachedProbeFile(a.out, hash, &why)) {
-            if (!a.json) std::cout << placementText(placement, req.settings.format) << "\n";
-            printSummary(a, placement, *cached, nullptr, true);
+            if (!a.json) std::cout << placementText(summary) << "\n";
+            recordPlacement(hash);
+            printSummary(a, summary, *cached, nullptr, true);
             return 0;
         }
         if (why.rfind("unusable", 0) == 0)
@@ -445,7 +541,7 @@ int run(const BakeArgs& a) {
     long long probes = 0;
     for (const ProbeVolume& v : req.volumes)
         probes += v.probeCount();
-    if (!a.json) std::cout << placementText(placement, req.settings.format) << "\n";
+    if (!a.json) std::cout << placementText(summary) << "\n";
     if (!a.json)
         std::cout << "bake: scene '" << s.name << "', " << req.volumes.size() << " volume(s), "
                   << probes << " probes, " << req.settings.raysPerProbe << " rays, "
@@ -456,7 +552,8 @@ int run(const BakeArgs& a) {
     ProbeSet set = bakeProbes(s, req, &stats, [&](const BakeProgress& p) { progress(p); });
     progress.done();
     writeProbeFile(a.out, set);
-    printSummary(a, placement, set, &stats, false);
+    recordPlacement(set.inputHash);
+    printSummary(a, summary, set, &stats, false);
     return 0;
 }
 

@@ -1,6 +1,7 @@
 // The bake cache key: a hash of everything the probe data depends on. Thread count is not in
 // it (it never changes the result). Bump kBakeAlgorithmVersion whenever the bake's output
 // changes for the same inputs, so stale files are re-baked rather than reused.
+#include "probes/bake/BakeHash.h"
 #include "probes/bake/Baker.h"
 #include "probes/store/Hash.h"
 #include "probes/store/ProbeFile.h"
@@ -38,11 +39,15 @@ void hashScene(Hasher& h, const scene::Scene& s) {
 
 } // namespace
 
-std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& r) {
-    Hasher h;
+void hashBakeVersionsAndScene(Hasher& h, const scene::Scene& scene) {
     h.pod(kBakeAlgorithmVersion);
     h.pod(kProbeFileVersion);
     hashScene(h, scene);
+}
+
+std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& r) {
+    Hasher h;
+    hashBakeVersionsAndScene(h, scene);
     h.pod(std::uint64_t(r.volumes.size()));
     for (const ProbeVolume& v : r.volumes) {
         h.str(v.name);

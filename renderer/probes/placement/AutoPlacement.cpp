@@ -122,6 +122,7 @@ private:
     // levels 0 = one uniform volume.
     AutoPlacementResult place(float s, int levels) {
         ++placements_;
+        if (req_.progress) req_.progress("placement", placements_, 0);
         AutoPlacementResult r;
         if (levels > 0) {
             AdaptiveOptions o = req_.adaptive;
@@ -319,10 +320,15 @@ private:
         glm::vec3 finestCell(std::numeric_limits<float>::infinity());
         for (const ProbeVolume& v : best.volumes)
             finestCell = glm::min(finestCell, v.cellSize());
+        // The unshifted estimate + at most one trial per step and axis.
+        const int most = 1 + 3 * int(kLatticeShiftSteps.size());
+        int estimates = 0;
         best.latticeShift = searchLatticeShift(
             best.volumes, finestCell,
             [&](const std::vector<ProbeVolume>& v) {
-                return estimate.relativeError(v, req_.sparse);
+                const double e = estimate.relativeError(v, req_.sparse);
+                if (req_.progress) req_.progress("lattice search", ++estimates, most);
+                return e;
             },
             [&](const std::vector<ProbeVolume>& v) {
                 AutoPlacementResult r = best;

@@ -22,6 +22,7 @@
 #include "probes/StorageFormat.h"
 #include "scene/Scene.h"
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -48,6 +49,11 @@ struct AutoPlacementRequest {
     // sun and sky.
     std::optional<Scenario> lighting;
     int bounces = 2; // the bake's, which the search's trial bakes repeat
+    // Told of each step, so a long placement is not silent (`bake` prints it): stage
+    // "placement" with `done` = placements tried so far (total 0: not known ahead), or
+    // "lattice search" with `done` of at most `total` error estimates (the unshifted one + the
+    // trial bakes). Never changes the result.
+    std::function<void(const std::string& stage, int done, int total)> progress;
 };
 
 struct AutoPlacementResult {

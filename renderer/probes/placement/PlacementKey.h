@@ -1,0 +1,21 @@
+#pragma once
+// The cache key of an automatic placement: everything placeAutoVolumes' result depends on
+// (the scene as the bake hashes it, the request but its thread count, and the placement's
+// algorithm version). `bake` keeps it beside the probe file (apps/PlacementCache.h), so a
+// re-run with the same inputs finds the file up to date BEFORE placing and searching the
+// lattice, which cost seconds (issue 25, item 10).
+//
+// Bump kAutoPlacementVersion whenever placeAutoVolumes (or anything it calls: adaptive
+// placement, lattice choice and search, the error estimate) places differently for the same
+// request: a stale key would take an old placement's bake for up to date.
+#include "probes/placement/AutoPlacement.h"
+
+#include <cstdint>
+
+namespace pb::probes {
+
+inline constexpr std::uint32_t kAutoPlacementVersion = 1;
+
+std::uint64_t autoPlacementKey(const scene::Scene& scene, const AutoPlacementRequest& request);
+
+} // namespace pb::probes
