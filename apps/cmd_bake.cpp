@@ -1,5 +1,6 @@
 // probebench bake: probe volumes -> Embree bake -> probe data file (cached by input hash).
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "PlacementCache.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
@@ -43,7 +44,8 @@ struct BakeArgs {
     std::string format = "rgba16f";
     std::uint64_t seed = 1;
     std::string out;
-    bool json = false, force = false, noRelocate = false, sparse = false, dense = false;
+    JsonOption json;
+    bool force = false, noRelocate = false, sparse = false, dense = false;
     bool noLatticeSearch = false;
     float backfaceThreshold = 0.25f;
 };
@@ -413,7 +415,7 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
                              {"mean_relative_error", e.meanRelative}});
             j["quantisation"] = q;
         }
-        std::cout << j.dump(2) << "\n";
+        writeJson(a.json, j.dump(2) + "\n");
         return;
     }
     if (upToDate) std::cout << a.out << ": up to date (input hash matches; --force re-bakes)\n";
@@ -515,11 +517,10 @@ int run(const BakeArgs& a) {
                             "--volumes auto uses; renderer/probes/README.md)");
         if (a.out.empty()) {
             if (a.json)
-                std::cout << nlohmann::json{{"volumes_file", a.writeVolumes},
+                writeJson(a.json, nlohmann::json{{"volumes_file", a.writeVolumes},
                                             {"placement",
                                              placementJson(placement, req.settings.format)}}
-                                 .dump(2)
-                          << "\n";
+                                 .dump(2) + "\n");
             else
                 std::cout << placementText(summary) << "\nwrote "
                           << a.writeVolumes << "\n";
@@ -640,7 +641,7 @@ const RegisterCommand reg{{
                        "Probe file to write (reused when its inputs match); required unless "
                        "--write-volumes is given");
         cmd.add_flag("--force", a->force, "Bake even when --out is up to date");
-        cmd.add_flag("--json", a->json, "Print the summary as JSON on stdout");
+        a->json.add(cmd, "The summary");
         return [a] { return run(*a); };
     },
 }};

@@ -3,6 +3,7 @@
 // the GI irradiance), the GI pass's texture-fetch floor, and with --ablate what every switch
 // saves and costs. JSON for machines, a self-contained HTML report, a Markdown summary on stdout.
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "ProbeOptions.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
@@ -45,7 +46,8 @@ struct BenchArgs {
     std::string reference = "reference";
     bool ablate = false, strict = false, noFloor = false, noCacheModel = false;
     int frames = 3, rounds = 7, warmup = 2, width = 0, height = 0;
-    std::string view, camera, probes, volumes = "auto", cacheDir, json, html, heatmaps,
+    JsonOption json;
+    std::string view, camera, probes, volumes = "auto", cacheDir, html, heatmaps,
                                       timing = "auto";
     double ppd = 67.0;
     bool truth = false; // --truth: accuracy against the path-traced ground truth too
@@ -135,8 +137,8 @@ void writeOutputs(const BenchArgs& a, bench::BenchResult& r,
         if (s.profile().accuracy.measured)
             r.heatmapScale = std::max(r.heatmapScale, s.profile().accuracy.flipMax);
     std::string dir = a.heatmaps;
-    if (dir.empty() && (!a.html.empty() || !a.json.empty())) {
-        fs::path base(a.html.empty() ? a.json : a.html);
+    if (dir.empty() && (!a.html.empty() || !a.json.file().empty())) {
+        fs::path base(a.html.empty() ? a.json.file() : a.html);
         dir = (base.parent_path() / (base.stem().string() + "-heatmaps")).string();
     }
     if (!dir.empty()) {
@@ -152,10 +154,7 @@ void writeOutputs(const BenchArgs& a, bench::BenchResult& r,
         }
         if (!truthMaps.empty()) bench::writeTruthPictures(r.sessions, truthMaps, dir, r.truth);
     }
-    if (!a.json.empty()) {
-        std::string text = bench::benchJson(r).dump(2) + "\n";
-        writeFileAtomic(a.json, text.data(), text.size());
-    }
+    if (a.json) writeJson(a.json, bench::benchJson(r).dump(2) + "\n");
     if (!a.html.empty()) {
         std::string text = bench::htmlReport(r);
         writeFileAtomic(a.html, text.data(), text.size());
@@ -173,7 +172,7 @@ int run(const BenchArgs& a) {
     bench::BenchPlan plan =
         bench::makeBenchPlan(profiles, reference, {a.ablate, a.width, a.height});
     for (const char* opt : {"--json", "--html"}) {
-        const std::string& path = std::string(opt) == "--json" ? a.json : a.html;
+        const std::string path = std::string(opt) == "--json" ? a.json.file() : a.html;
         if (!path.empty()) ensureParent(path, opt);
     }
     scene::Scene s = loadSceneWithOverrides(a.scene);
@@ -256,8 +255,9 @@ int run(const BenchArgs& a) {
         }
     for (const auto& [why, ids] : reasons)
         std::fprintf(stderr, "warning: not run (%s): %s\n", why.c_str(), ids.c_str());
-    if (!a.json.empty()) std::cout << "\nwrote " << a.json << "\n";
-    if (!a.html.empty()) std::cout << (a.json.empty() ? "\n" : "") << "wrote " << a.html << "\n";
+    if (!a.json.file().empty()) std::cout << "\nwrote " << a.json.file() << "\n";
+    if (!a.html.empty())
+        std::cout << (a.json.file().empty() ? "\n" : "") << "wrote " << a.html << "\n";
     return 0;
 }
 
@@ -312,7 +312,7 @@ const RegisterCommand reg{
              ->capture_default_str();
          cmd.add_option("--cache-dir", a->cacheDir,
                         "Folder of the baked-probe cache (default: ~/.cache/probebench)");
-         cmd.add_option("--json", a->json, "Write the full result as JSON to this file");
+         a->json.add(cmd, "The full result");
          cmd.add_option("--html", a->html, "Write the self-contained HTML report to this file");
          cmd.add_option("--heatmaps", a->heatmaps,
                         "Folder for the FLIP heat-map PNGs (default: <json/html name>-heatmaps/)");
@@ -334,7 +334,10 @@ const RegisterCommand reg{
          cmd.add_flag("--strict", a->strict,
                       "Fail (writing nothing) when any variant cannot run, instead of reporting "
                       "it as not run");
-         return [a] { return run(*a); };
+         return [a] {
+             const StdoutToStderr textToStderr(a->json.toStdout());
+             return run(*a);
+         };
      }}};
 
 } // namespace

@@ -1,6 +1,7 @@
 // probebench compare: image-error metrics (PSNR, SSIM, LDR-FLIP) of a test PNG against a
 // reference PNG, optionally with a FLIP heat map. GL-free.
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "NumberChecks.h"
 #include "core/Error.h"
 #include "image/Image.h"
@@ -17,7 +18,7 @@ namespace {
 struct CompareArgs {
     std::string test, reference, heatmap;
     double ppd = 67.0;
-    bool json = false;
+    JsonOption json;
 };
 
 std::string size(const image::Image8& img) {
@@ -50,7 +51,7 @@ int run(const CompareArgs& a) {
                             {"flip_mean", flip.mean},
                             {"flip_max", flip.max}};
         if (!a.heatmap.empty()) j["heatmap"] = a.heatmap;
-        std::cout << j.dump(2) << "\n";
+        writeJson(a.json, j.dump(2) + "\n");
         return 0;
     }
     char line[128];
@@ -88,8 +89,7 @@ const RegisterCommand reg{{
         cmd.add_option("--heatmap", a->heatmap,
                        "Write the per-pixel FLIP error as a PNG heat map (black = no error, "
                        "pale yellow = 1)");
-        cmd.add_flag("--json", a->json,
-                     "Print JSON (psnr_db is null for identical images, see \"identical\")");
+        a->json.add(cmd, "The metrics (psnr_db is null for identical images, see \"identical\")");
         return [a] { return run(*a); };
     },
 }};

@@ -3,6 +3,7 @@
 // shader variant's texel stream through texture-cache models (hit rate, bytes missed per
 // pixel). Hardware-independent: what a testbed without the target GPU can say about it.
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "ProbeOptions.h"
 #include "ProfileOptions.h"
 #include "SceneOptions.h"
@@ -29,7 +30,8 @@ struct CostArgs {
     std::uint64_t cacheSize = 0;
     int line = 0, ways = 0, tile = 8, warp = 32, inFlight = 4;
     int width = 1280, height = 720;
-    bool worstCase = false, json = false;
+    JsonOption json;
+    bool worstCase = false;
 };
 
 std::string cameraSpec(const scene::View& v) {
@@ -102,7 +104,7 @@ int run(CostArgs& a) {
     r.view = view.name;
     r.camera = cameraSpec(view);
     if (a.json)
-        std::cout << costmodel::reportJson(r).dump(2) << "\n";
+        writeJson(a.json, costmodel::reportJson(r).dump(2) + "\n");
     else
         std::cout << costmodel::reportText(r) << "  --camera " << r.camera << "\n";
     return 0;
@@ -150,7 +152,7 @@ const RegisterCommand reg{
          a->heightOption = cmd.add_option("--height", a->height,
                                           "Frame (GBuffer) height (default: the --profile's, "
                                           "else 720)");
-         cmd.add_flag("--json", a->json, "Print JSON instead of tables");
+         a->json.add(cmd, "The counters and the cache model");
          return [a] { return run(*a); };
      }}};
 

@@ -5,6 +5,7 @@
 // another with --against), optionally callgrind instruction counts - prints a table and exits
 // non-zero on a regression. --update rewrites the baseline on purpose.
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "GateSuiteOptions.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
@@ -39,7 +40,8 @@ namespace {
 namespace fs = std::filesystem;
 
 struct GateArgs {
-    std::string baseline, against, json, cacheDir;
+    JsonOption json;
+    std::string baseline, against, cacheDir;
     bool quick = false, update = false, callgrind = false, noTiming = false;
     platform::PlatformOptions platform;
     GateSuiteArgs suite;
@@ -359,11 +361,10 @@ int run(GateArgs& a) {
     outcome.notes.push_back("ran " + std::to_string(int(seconds + 0.5)) + " s, load average " +
                             bench::loadAverage() + (a.quick ? ", --quick" : ""));
     std::cout << gate::gateTable(outcome);
-    if (!a.json.empty()) {
+    if (a.json) {
         nlohmann::json j = gate::gateJson(outcome);
         j["measured"] = gate::recordJson(now);
-        const std::string text = j.dump(2) + "\n";
-        writeFileAtomic(a.json, text.data(), text.size());
+        writeJson(a.json, j.dump(2) + "\n");
     }
     if (a.update) {
         updateBaseline(a, base, now, g.probes.file);
@@ -396,14 +397,17 @@ const RegisterCommand reg{
                       "compiler and valgrind, skipped otherwise)");
          cmd.add_flag("--no-timing", a->noTiming,
                       "Skip the timing gate (counters and accuracy only)");
-         cmd.add_option("--json", a->json, "Write the verdicts and the measurements as JSON here");
+         a->json.add(cmd, "The verdicts and the measurements");
          cmd.add_option("--cache-dir", a->cacheDir,
                         "Folder of the baked-probe cache (default: ~/.cache/probebench)");
          addPlatformOptions(cmd, a->platform);
          addGateSuiteOptions(cmd, a->suite);
          cmd.footer("Exit codes: 0 pass (or --update done), 1 error, 3 a counter, accuracy, "
                     "instruction-count or model-vs-GL failure, 4 timing regressions only.");
-         return [a] { return run(*a); };
+         return [a] {
+             const StdoutToStderr textToStderr(a->json.toStdout());
+             return run(*a);
+         };
      }}};
 
 } // namespace

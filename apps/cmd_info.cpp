@@ -1,5 +1,6 @@
 // probebench info: which GL context the platform gives and what it can do (or the EGL devices).
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "PlatformOptions.h"
 #include "gl/Capabilities.h"
 #include "platforms/Platform.h"
@@ -12,11 +13,11 @@ namespace {
 
 struct InfoOptions {
     platform::PlatformOptions platform;
-    bool json = false;
+    JsonOption json;
     bool devices = false;
 };
 
-int printDevices(bool json) {
+int printDevices(const JsonOption& json) {
     const auto devices = platform::listEglDevices();
     if (json) {
         nlohmann::json list = nlohmann::json::array();
@@ -25,7 +26,7 @@ int printDevices(bool json) {
                             {"name", d.name},
                             {"software", d.software},
                             {"extensions", d.extensions}});
-        std::cout << list.dump(2) << "\n";
+        writeJson(json, list.dump(2) + "\n");
         return 0;
     }
     if (devices.empty()) {
@@ -47,7 +48,7 @@ int runInfo(const InfoOptions& o) {
         nlohmann::json j = gl::toJson(caps);
         j["platform"] = {{"name", p->name()}, {"description", p->description()}};
         j["gltf_extensions"] = scene::supportedGltfExtensions();
-        std::cout << j.dump(2) << "\n";
+        writeJson(o.json, j.dump(2) + "\n");
         return 0;
     }
     std::cout << "platform                             " << p->name() << ": " << p->description()
@@ -66,7 +67,7 @@ const RegisterCommand registration{{
     10,
     [](CLI::App& cmd) -> std::function<int()> {
         auto o = std::make_shared<InfoOptions>();
-        cmd.add_flag("--json", o->json, "Print JSON instead of text");
+        o->json.add(cmd, "The platform, GL strings and capabilities");
         cmd.add_flag("--devices", o->devices,
                      "List the EGL devices (index, name, software/hardware) and exit; "
                      "no context is created");

@@ -1,5 +1,6 @@
 // probebench memory: GPU memory of probe data, from a probe file or for a grid size.
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "core/Error.h"
 #include "probes/store/MemoryReport.h"
 #include "probes/store/ProbeFile.h"
@@ -14,7 +15,7 @@ using namespace pb::probes;
 
 struct MemoryArgs {
     std::string probes, grid;
-    bool json = false;
+    JsonOption json;
 };
 
 int run(const MemoryArgs& a) {
@@ -33,7 +34,7 @@ int run(const MemoryArgs& a) {
     if (a.json) {
         nlohmann::json j = memoryReportJson(r);
         j["source"] = a.grid.empty() ? a.probes : "grid " + a.grid;
-        std::cout << j.dump(2) << "\n";
+        writeJson(a.json, j.dump(2) + "\n");
     } else {
         std::cout << formatMemoryReport(r);
     }
@@ -48,7 +49,7 @@ const RegisterCommand reg{{
         auto a = std::make_shared<MemoryArgs>();
         cmd.add_option("--probes", a->probes, "Probe file written by `probebench bake`");
         cmd.add_option("--grid", a->grid, "A volume's probe counts, e.g. 32x8x32 (no bake needed)");
-        cmd.add_flag("--json", a->json, "Print JSON");
+        a->json.add(cmd, "The memory report");
         return [a] { return run(*a); };
     },
 }};

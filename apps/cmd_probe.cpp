@@ -1,5 +1,6 @@
 // probebench probe: the CPU reference sampler at one point of a baked probe file.
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "core/Error.h"
 #include "probes/store/ProbeFile.h"
 #include "probes/ProbeSampler.h"
@@ -17,7 +18,7 @@ using namespace pb::probes;
 
 struct ProbeArgs {
     std::string probes, at, normal, eyeDir, scenario;
-    bool json = false;
+    JsonOption json;
 };
 
 glm::vec3 parseVec3(const std::string& text, const std::string& option, bool nonZero) {
@@ -65,7 +66,7 @@ int run(const ProbeArgs& a) {
                          {"weight", r.weight},
                          {"volume", r.volume >= 0 ? nlohmann::json(volume) : nlohmann::json()},
                          {"probes_used", r.probes}};
-        std::cout << j.dump(2) << "\n";
+        writeJson(a.json, j.dump(2) + "\n");
         return 0;
     }
     std::printf("E = %.6g %.6g %.6g  (irradiance, linear; a uniform sky L gives pi*L)\n",
@@ -93,7 +94,7 @@ const RegisterCommand reg{{
                        "Direction from the point towards the viewer X,Y,Z "
                        "(default: the normal)");
         cmd.add_option("--scenario", a->scenario, "Lighting scenario (default: the first)");
-        cmd.add_flag("--json", a->json, "Print JSON");
+        a->json.add(cmd, "The sample");
         return [a] { return run(*a); };
     },
 }};

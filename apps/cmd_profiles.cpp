@@ -1,6 +1,7 @@
 // probebench profiles: the platform profiles (profiles/*.toml and $PROBEBENCH_PROFILES), one
 // line each; --show prints one profile fully resolved (inheritance applied) as TOML.
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "ProfileOptions.h"
 #include "core/Error.h"
 #include "profile/ProfileLoader.h"
@@ -13,7 +14,7 @@ namespace pb::app {
 namespace {
 
 struct ProfilesArgs {
-    bool json = false;
+    JsonOption json;
     std::string show;
 };
 
@@ -22,7 +23,7 @@ int run(const ProfilesArgs& a) {
     if (!a.show.empty()) {
         profile::PlatformProfile p = profile::loadProfile(a.show, search);
         if (a.json)
-            std::cout << p.toJson().dump(2) << "\n";
+            writeJson(a.json, p.toJson().dump(2) + "\n");
         else
             std::cout << profile::profileToml(p);
         return 0;
@@ -61,7 +62,7 @@ int run(const ProfilesArgs& a) {
         }
     }
     if (a.json)
-        std::cout << out.dump(2) << "\n";
+        writeJson(a.json, out.dump(2) + "\n");
     else
         std::printf("(`probebench profiles --show NAME` prints every setting; --profile NAME|FILE "
                     "on render, views, costmodel, bench)\n");
@@ -73,7 +74,7 @@ const RegisterCommand reg{
     {"profiles", "List the platform profiles (profiles/*.toml) with a one-line summary", 15,
      [](CLI::App& cmd) {
          auto a = std::make_shared<ProfilesArgs>();
-         cmd.add_flag("--json", a->json, "Print JSON (every setting of every profile)");
+         a->json.add(cmd, "Every setting of every profile");
          cmd.add_option("--show", a->show,
                         "Print one profile (NAME or .toml file) with inheritance applied, as a "
                         "complete TOML file");

@@ -3,6 +3,7 @@
 // probes, shaped by the profile switches (--set key=value, renderer/profile/SwitchTable.cpp);
 // --debug NAME shows a GI debug view, --verbose / --json report the GI pass per volume.
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "OutputPaths.h"
 #include "ProbeOptions.h"
 #include "FlyCamera.h"
@@ -43,7 +44,8 @@ struct RenderArgs {
     const CLI::Option *widthOption = nullptr, *heightOption = nullptr;
     bool listSwitches = false;
     std::string debug; // --debug NAME
-    bool verbose = false, json = false;
+    JsonOption json;
+    bool verbose = false;
     std::string path, outDir, compareTo; // camera path mode (RenderPath.h)
 };
 
@@ -306,7 +308,7 @@ int run(RenderArgs& a) {
     const RenderedFrame frame = renderFrame(a, renderer, s, view, debug, glMark, coverage);
     writeFrame(a, renderer, frame);
     printFrameReport(info, a, renderer, frame.ms, coverage);
-    if (a.json) std::cout << renderJson(a, s, view, *platform, renderer, frame.ms).dump(2) << "\n";
+    if (a.json) writeJson(a.json, renderJson(a, s, view, *platform, renderer, frame.ms).dump(2) + "\n");
     if (platform->isWindowed()) return runInteractive(*platform, renderer, s, view, a.frames);
     return 0;
 }
@@ -358,9 +360,8 @@ const RegisterCommand reg{
                       "Report the GI pass per volume: how it was drawn, "
                       "pixels evaluated (counting reads back per volume); and one line per "
                       "pass or resource the frame skipped, with why");
-         cmd.add_flag("--json", a->json,
-                      "Print the frame's report as JSON on stdout (human "
-                      "lines go to stderr); counts pixels like --verbose");
+         a->json.add(cmd, "The frame's report (counts pixels like --verbose; the human lines go to "
+                            "stderr)");
          return [a] { return run(*a); };
      }}};
 

@@ -4,6 +4,7 @@
 // fp32 reference: NaN/Inf pixels, relative error, the switch that broke a case and the guard
 // that fixes it (renderer/stress/). Built-in scenes and small bakes: minutes on 2 cores.
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
 #include "core/Error.h"
@@ -24,7 +25,8 @@ namespace {
 struct StressArgs {
     platform::PlatformOptions platform;
     std::vector<std::string> variants, profiles, sets, cases;
-    std::string guards = "both", json, images;
+    JsonOption json;
+    std::string guards = "both", images;
     double threshold = 0.05;
     int width = 64, height = 48, maxResolution = 4096, rays = 64;
     bool listCases = false, noAnalysis = false;
@@ -130,10 +132,7 @@ int run(const StressArgs& a) {
     nlohmann::json j = stress::sweepJson(r);
     j["platform"] = platform->description();
     j["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (!a.json.empty()) {
-        const std::string text = j.dump(2) + "\n";
-        writeFileAtomic(a.json, text.data(), text.size());
-    }
+    if (a.json) writeJson(a.json, j.dump(2) + "\n");
     std::cout << stress::sweepText(r);
     const auto& s = j["summary"];
     std::cout << "\n"
@@ -141,7 +140,7 @@ int run(const StressArgs& a) {
               << " with the guards as given; NaN/Inf pixels with guards: "
               << s["nonfinite_with_guards"] << "), " << s["frames"] << " frames in "
               << int(j["seconds"].get<double>()) << " s"
-              << (a.json.empty() ? "" : "; wrote " + a.json) << "\n";
+              << (a.json.file().empty() ? "" : "; wrote " + a.json.file()) << "\n";
     return 0;
 }
 
@@ -184,10 +183,13 @@ const RegisterCommand reg{
              ->capture_default_str();
          cmd.add_option("--rays", a->rays, "Rays per probe of the cases' bakes")
              ->capture_default_str();
-         cmd.add_option("--json", a->json, "Write the full result as JSON to this file");
+         a->json.add(cmd, "The full result");
          cmd.add_option("--images", a->images,
                         "Folder for the tonemapped frames: each case's reference and runs");
-         return [a] { return run(*a); };
+         return [a] {
+             const StdoutToStderr textToStderr(a->json.toStdout());
+             return run(*a);
+         };
      }}};
 
 } // namespace

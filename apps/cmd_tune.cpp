@@ -5,6 +5,7 @@
 // memory, FLIP), writes the winner as a profile inheriting the base, loads it back and
 // re-measures it. The search itself is bench/tune (GL-free); this file wires it to GL.
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "ProbeOptions.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
@@ -42,7 +43,8 @@ struct TuneArgs {
     bool force = false; // --probes baked for another scene
     SceneArgs scene;
     platform::PlatformOptions platform;
-    std::string base = "reference", reference = "reference", out, json, probes, volumes = "auto",
+    JsonOption json;
+    std::string base = "reference", reference = "reference", out, probes, volumes = "auto",
                 cacheDir, view, camera, timing = "auto";
     std::vector<std::string> search, sets;
     double budgetMs = 0, budgetMiB = 0, ppd = 67.0;
@@ -346,7 +348,7 @@ int run(const TuneArgs& a) {
     fs::rename(staged, a.out);
     stagedFile.keep = true;
     std::printf("wrote %s\n", a.out.c_str());
-    if (!a.json.empty()) {
+    if (a.json) {
         nlohmann::json j = bench::tuneJson(r, o);
         j["context"] = measurer.context();
         j["scene"] = s.name;
@@ -364,9 +366,8 @@ int run(const TuneArgs& a) {
         j["remeasure"] = {{"frame_ms", again.frameMs},
                           {"flip", again.flip},
                           {"memory_mib", memory(loaded.switches)}};
-        const std::string out = j.dump(2) + "\n";
-        writeFileAtomic(a.json, out.data(), out.size());
-        std::printf("wrote %s\n", a.json.c_str());
+        writeJson(a.json, j.dump(2) + "\n");
+        if (!a.json.toStdout()) std::printf("wrote %s\n", a.json.file().c_str());
     }
     return 0;
 }
@@ -438,8 +439,11 @@ const RegisterCommand reg{
              ->capture_default_str();
          cmd.add_option("--ppd", a->ppd, "FLIP viewing condition, pixels per degree")
              ->capture_default_str();
-         cmd.add_option("--json", a->json, "Write the whole search as JSON to this file");
-         return [a] { return run(*a); };
+         a->json.add(cmd, "The whole search");
+         return [a] {
+             const StdoutToStderr textToStderr(a->json.toStdout());
+             return run(*a);
+         };
      }}};
 
 } // namespace

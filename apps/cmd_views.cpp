@@ -2,6 +2,7 @@
 // probe volume), for the scene's named views, a given camera, or the worst-case view the
 // benchmark uses (--worst-case: every pixel needs GI, no sky, no early-out).
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "ProbeOptions.h"
 #include "ProfileOptions.h"
 #include "SceneOptions.h"
@@ -28,7 +29,8 @@ struct ViewsArgs {
     int width = 1280, height = 720;
     const CLI::Option *widthOption = nullptr, *heightOption = nullptr;
     float fov = 60.0f;
-    bool worstCase = false, json = false;
+    JsonOption json;
+    bool worstCase = false;
     double minCoverage = -1.0; // < 0: no requirement
 };
 
@@ -129,7 +131,7 @@ int run(ViewsArgs& a) {
             if (!a.json) printRow(v.name, c);
         }
     }
-    if (a.json) std::cout << out.dump(2) << "\n";
+    if (a.json) writeJson(a.json, out.dump(2) + "\n");
     std::fflush(stdout);
     if (a.minCoverage >= 0 && worst < a.minCoverage) {
         std::fprintf(stderr, "error: coverage %.4f is below --min-coverage %.4f\n", worst,
@@ -162,7 +164,7 @@ const RegisterCommand reg{
          addProfileOptions(cmd, a->profileArgs, "gi.volume_lod decides which volumes count.");
          cmd.add_option("--min-coverage", a->minCoverage,
                         "Exit 1 when a reported coverage is below this fraction (e.g. 1.0)");
-         cmd.add_flag("--json", a->json, "Print JSON instead of a table");
+         a->json.add(cmd, "The views");
          return [a] { return run(*a); };
      }}};
 

@@ -3,6 +3,7 @@
 // against its GPU memory and GI lookups (costmodel/VolumeRanking.h). --write-ranks stores the
 // ranking next to the probe file for gi.volume_lod=rank_budget_mib:MIB.
 #include "CommandRegistry.h"
+#include "JsonOption.h"
 #include "ProbeOptions.h"
 #include "probes/bake/SceneMatch.h"
 #include "SceneOptions.h"
@@ -25,7 +26,8 @@ struct VolumesArgs {
     SceneArgs scene;
     std::string probes, scenario, views = "worst-case";
     int width = 320, height = 180;
-    bool rank = false, json = false, writeRanks = false;
+    JsonOption json;
+    bool rank = false, writeRanks = false;
 };
 
 double mib(std::uint64_t bytes) {
@@ -122,7 +124,7 @@ int run(const VolumesArgs& a) {
                                         {"bytes", profile::gpuVolumeBytes(set, i)}});
             }
             j["ranks"] = set.ranks ? probes::volumeRanksJson(*set.ranks) : nlohmann::json(nullptr);
-            std::cout << j.dump(2) << "\n";
+            writeJson(a.json, j.dump(2) + "\n");
         } else {
             printList(set, a.probes);
         }
@@ -152,7 +154,7 @@ int run(const VolumesArgs& a) {
         for (const profile::RankDropStep& d : drops)
             j["drop_order"].push_back(
                 {{"volume", set.volumes[size_t(d.volume)].name}, {"kept_bytes", d.keptBytes}});
-        std::cout << j.dump(2) << "\n";
+        writeJson(a.json, j.dump(2) + "\n");
     } else {
         printRanking(set, *set.ranks, drops);
     }
@@ -189,7 +191,7 @@ const RegisterCommand reg{
          cmd.add_flag("--write-ranks", a->writeRanks,
                       "--rank: store the ranking as FILE.ranks.json next to the probe file, for "
                       "gi.volume_lod=rank_budget_mib:MIB");
-         cmd.add_flag("--json", a->json, "Print JSON instead of a table");
+         a->json.add(cmd, "The volumes (and ranks)");
          return [a] { return run(*a); };
      }}};
 
