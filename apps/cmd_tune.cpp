@@ -9,6 +9,7 @@
 #include "ProbeOptions.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
+#include "profile/PlatformProfile.h"
 #include "SceneOptions.h"
 #include "bench/runner/BenchContext.h"
 #include "bench/runner/BenchTruth.h"
@@ -299,8 +300,7 @@ int run(const TuneArgs& a) {
             std::to_string(r.variantsMeasured) + " candidate measurement(s) in " +
             std::to_string(r.sessions) + " session(s)",
         measured,
-        "[budget] gi_memory_mib is the tune budget: probe textures AND GI targets (stricter than "
-        "the probe-only meaning elsewhere)."};
+        std::string("[budget] gi_memory_mib: ") + profile::kGiMemoryDefinition + "."};
     const std::string text = bench::tunedProfileToml(base.switches, best.switches, info);
     // Staged beside --out, re-measured from that file, renamed to --out only when it holds its
     // budget (or --accept-over-budget): a failed tune leaves no profile behind.
@@ -365,7 +365,7 @@ int run(const TuneArgs& a) {
         j["frames_rendered"] = (r.variantsMeasured + r.sessions) * measurer.rendersPerVariant();
         j["remeasure"] = {{"frame_ms", again.frameMs},
                           {"flip", again.flip},
-                          {"memory_mib", memory(loaded.switches)}};
+                          {"gi_memory_mib", memory(loaded.switches)}};
         writeJson(a.json, j.dump(2) + "\n");
         if (!a.json.toStdout()) std::printf("wrote %s\n", a.json.file().c_str());
     }
@@ -387,8 +387,8 @@ const RegisterCommand reg{
                       "Write the profile even when its re-measure (loaded back from the file) "
                       "is over --budget-ms (else: an error, exit 1, nothing written)");
          cmd.add_option("--budget-mib", a->budgetMiB,
-                        "GI memory budget, MiB: probe textures under gi.volume_lod + GI targets "
-                        "(evaluation, upsample/history, SH)")
+                        std::string("GI memory budget, MiB (") + profile::kGiMemoryDefinition +
+                            "; bench's GI MiB counts the same)")
              ->required();
          cmd.add_option("--out", a->out, "Profile to write (.toml; inherits --base)")->required();
          cmd.add_option("--base", a->base,

@@ -62,7 +62,8 @@ struct VariantResult {
     AccuracyResult accuracy;
     TruthAccuracy vsTruth;
     CoverageResult coverage;
-    double giMemoryMiB = 0; // probe data on the GPU
+    double giMemoryMiB = 0;      // GI memory (profile::kGiMemoryDefinition): probes + targets
+    double giProbeMemoryMiB = 0; // of it, the probe textures
     int volumesKept = 0;
     bool ok() const { return status == "ok"; }
     const SectionTiming* section(const std::string& name) const;

@@ -208,6 +208,8 @@ std::string htmlReport(const BenchResult& r) {
         h << "<p class=\"note bad\" id=\"ci-warning\">Warning: " << htmlEscape(w) << ".</p>\n";
     h << "<h2>Profiles</h2>\n";
     profileTable(h, r);
+    h << "<p class=\"note\">GI MiB: " << htmlEscape(profile::kGiMemoryDefinition)
+      << "; the budget is the profile's [budget] gi_memory_mib, which tune budgets the same way.</p>\n";
     charts(h, r);
     ablation(h, r);
     h << cacheModelHtml(r.cacheModel);

@@ -73,7 +73,9 @@ void profileTable(std::ostringstream& out, const BenchResult& r) {
             << ") |\n";
     }
     out << "\nGI ms: median per frame of " << kGiSectionsText
-        << " (every pass that exists for GI; absent passes count 0).\n";
+        << " (every pass that exists for GI; absent passes count 0).\n"
+        << "GI MiB: " << profile::kGiMemoryDefinition
+        << " (what tune's --budget-mib budgets); the budget is the profile's.\n";
     spreadTable(out, r);
 }
 

@@ -94,6 +94,7 @@ nlohmann::json variantJson(const VariantResult& v, const Session& s) {
                      {"max_overlap", v.coverage.maxOverlap},
                      {"mean_overlap", v.coverage.meanOverlap}};
     j["gi_memory_mib"] = v.giMemoryMiB;
+    j["gi_probe_memory_mib"] = v.giProbeMemoryMiB;
     j["volumes_kept"] = v.volumesKept;
     j["round_medians_ms"] = v.roundMedians;
     j["frame_samples_ms"] = v.frameSamples;
@@ -134,6 +135,7 @@ nlohmann::json profileJson(const SessionResult& s) {
         j["frame_ms"] = summaryJson(p.frameMs);
         j["coverage"] = variantJson(p, s.session)["coverage"];
         j["gi_memory_mib"] = p.giMemoryMiB;
+        j["gi_probe_memory_mib"] = p.giProbeMemoryMiB;
         j["budget"] = {{"frame_ms", s.session.profile.frameBudgetMs},
                        {"frame_within", p.frameMs.median <= s.session.profile.frameBudgetMs},
                        {"gi_memory_mib", s.session.profile.giMemoryBudgetMiB},

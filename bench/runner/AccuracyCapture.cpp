@@ -53,10 +53,12 @@ void captureAccuracy(SessionResult& s, const std::vector<render::FrameRenderer*>
         if (!v.ok() || !renderers[i]) continue;
         ldr[i] = renderers[i]->readOutput();
         irr[i] = giIrradiance(white, in, v.variant.switches);
-        if (const render::GpuProbes* gp = renderers[i]->gpuProbes()) {
-            v.giMemoryMiB = double(gp->bytes()) / (1024.0 * 1024.0);
+        // The frame's own allocations: the figure tune estimates for its budget.
+        const render::GiMemory memory = renderers[i]->giMemory();
+        v.giMemoryMiB = memory.totalMiB();
+        v.giProbeMemoryMiB = double(memory.probes) / (1024.0 * 1024.0);
+        if (const render::GpuProbes* gp = renderers[i]->gpuProbes())
             v.volumesKept = int(gp->volumes().size());
-        }
         v.coverage = coverageOf(in, v.variant.switches.gi.volumeLod, coverage);
     }
     const size_t ref = size_t(s.session.referenceVariant);

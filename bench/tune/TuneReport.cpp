@@ -1,5 +1,7 @@
 #include "TuneReport.h"
 
+#include "profile/PlatformProfile.h"
+
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
@@ -24,8 +26,8 @@ std::string paretoTable(const TuneResult& r, const TuneOptions& o) {
     std::ostringstream out;
     char line[400];
     out << "Pareto front of " << r.pareto.size() << " out of " << r.variantsMeasured
-        << " measured candidate(s) (frame ms on this device, GI MiB = probes + GI targets, FLIP "
-           "vs the reference; * = chosen):\n";
+        << " measured candidate(s) (frame ms on this device; FLIP vs the reference; * = chosen;\n"
+        << "  " << profile::kGiMemoryDefinition << "):\n";
     std::snprintf(line, sizeof line, "  %1s %9s %9s %8s %11s %5s  %s\n", "", "frame ms", "GI MiB",
                   "FLIP", "relMSE GI", "fits", "switches vs the base");
     out << line;
@@ -45,7 +47,7 @@ nlohmann::json tuneJson(const TuneResult& r, const TuneOptions& o) {
         const TuneCandidate& c = r.candidates[i];
         nlohmann::json j{{"label", c.label},
                          {"switches", c.switches.valuesJson()},
-                         {"memory_mib", c.memoryMiB},
+                         {"gi_memory_mib", c.memoryMiB},
                          {"measured", c.measured},
                          {"fits", c.fits(o)},
                          {"on_pareto_front",

@@ -12,6 +12,15 @@
 
 namespace pb::profile {
 
+// What "GI memory" counts wherever it is reported or budgeted ([budget] gi_memory_mib, the
+// bench's GI MiB column and JSON, tune's --budget-mib and candidates): one definition, so a
+// profile that fits in one fits in the other (issue 25, item 5). The bytes are
+// render::GiMemory (renderer/frame/GiMemory.h): counted from a rendered frame's allocations
+// (bench) or estimated without GL (tune), cross-checked by tests/gl/FrameSkipTest.cpp.
+inline constexpr char kGiMemoryDefinition[] =
+    "GI memory = probe textures kept by gi.volume_lod (one scenario) + GI targets (evaluation, "
+    "upsample/history, dynamic SH)";
+
 struct PlatformProfile {
     std::string name;                  // file stem ("handheld")
     std::string file;                  // the TOML it came from ("" when built in code)
@@ -20,7 +29,7 @@ struct PlatformProfile {
     Profile switches;                  // every GI switch (table defaults where unset)
     int width = 1280, height = 720;    // output resolution
     double frameBudgetMs = 16.7;       // whole frame on the target hardware
-    double giMemoryBudgetMiB = 8.0;    // probe data resident on the GPU (one scenario)
+    double giMemoryBudgetMiB = 8.0;    // GI memory (kGiMemoryDefinition), MiB
     std::string cachePreset;           // costmodel::cachePresetFor name
 
     // {name, file, description, inherits, output, budget, costmodel, switches}

@@ -10,7 +10,6 @@
 #include <functional>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 namespace fs = std::filesystem;
 using namespace pb::test;
@@ -22,16 +21,9 @@ struct SplitResult {
     std::string out;   // stdout
 };
 
-// probebench with stdout captured apart from stderr.
 SplitResult runSplit(const std::vector<std::string>& args, const fs::path& stdoutFile) {
-    std::vector<std::string> sh{"/bin/sh", "-c", "out=\"$1\"; shift; exec \"$@\" > \"$out\"",
-                                "sh", stdoutFile.string(), binaryPath().string()};
-    sh.insert(sh.end(), args.begin(), args.end());
-    SplitResult r{runCommand(sh), {}};
-    std::ifstream in(stdoutFile, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    r.out = s.str();
+    SplitResult r;
+    r.run = runProbebenchSplit(args, stdoutFile.string(), r.out);
     return r;
 }
 

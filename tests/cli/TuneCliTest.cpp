@@ -84,17 +84,17 @@ TEST(TuneCli, RespectsItsBudgetsAndWritesAProfileThatLoads) {
     int measured = 0, overMemory = 0;
     for (const auto& c : j["candidates"]) {
         const bool rgba32f = c["switches"]["gi.target_format"] == "rgba32f";
-        EXPECT_EQ(c["memory_mib"].get<double>() > budget, rgba32f) << c["label"];
+        EXPECT_EQ(c["gi_memory_mib"].get<double>() > budget, rgba32f) << c["label"];
         if (rgba32f) {
             ++overMemory;
             EXPECT_FALSE(c["measured"].get<bool>()) << "over the memory budget: never rendered";
         }
         if (c["label"] == j["chosen"]) {
             EXPECT_TRUE(c["fits"].get<bool>());
-            EXPECT_LE(c["memory_mib"].get<double>(), budget);
+            EXPECT_LE(c["gi_memory_mib"].get<double>(), budget);
             EXPECT_LE(c["frame_ms"].get<double>(), 1000.0);
             EXPECT_EQ(c["flip"].get<double>(), j["remeasure"]["flip"].get<double>());
-            EXPECT_EQ(c["memory_mib"].get<double>(), j["remeasure"]["memory_mib"].get<double>());
+            EXPECT_EQ(c["gi_memory_mib"].get<double>(), j["remeasure"]["gi_memory_mib"].get<double>());
         }
         measured += c["measured"].get<bool>();
     }

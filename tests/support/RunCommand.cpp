@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <sys/wait.h>
 
 namespace pb::test {
@@ -41,6 +43,19 @@ CommandResult runProbebench(const std::vector<std::string>& args) {
     std::vector<std::string> full{binaryPath().string()};
     full.insert(full.end(), args.begin(), args.end());
     return runCommand(full);
+}
+
+CommandResult runProbebenchSplit(const std::vector<std::string>& args,
+                                 const std::string& stdoutFile, std::string& stdoutText) {
+    std::vector<std::string> sh{"/bin/sh", "-c", "out=\"$1\"; shift; exec \"$@\" > \"$out\"",
+                                "sh", stdoutFile, binaryPath().string()};
+    sh.insert(sh.end(), args.begin(), args.end());
+    CommandResult r = runCommand(sh);
+    std::ifstream in(stdoutFile, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    stdoutText = s.str();
+    return r;
 }
 
 } // namespace pb::test

@@ -16,4 +16,9 @@ CommandResult runCommand(const std::vector<std::string>& args);
 // Shorthand: the probebench binary with these arguments.
 CommandResult runProbebench(const std::vector<std::string>& args);
 
+// probebench with stdout kept apart (through `stdoutFile`): `output` is stderr only, `stdoutText`
+// what went to stdout - for `--json` to stdout, which must be one JSON document.
+CommandResult runProbebenchSplit(const std::vector<std::string>& args,
+                                 const std::string& stdoutFile, std::string& stdoutText);
+
 } // namespace pb::test
