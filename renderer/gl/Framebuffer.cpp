@@ -1,6 +1,7 @@
 #include "gl/Framebuffer.h"
 
 #include "core/Error.h"
+#include "gl/DebugLabels.h"
 
 #include <cstdio>
 
@@ -34,6 +35,7 @@ Framebuffer::Framebuffer(const std::string& label, const std::vector<const Textu
     }
     GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    labelObject(GL_FRAMEBUFFER, id_.id(), label);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         char buf[32];
         std::snprintf(buf, sizeof buf, "0x%04X", status);

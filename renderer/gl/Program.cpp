@@ -1,5 +1,6 @@
 #include "gl/Program.h"
 
+#include "gl/DebugLabels.h"
 #include "core/Error.h"
 
 #include <glm/gtc/type_ptr.hpp>
@@ -53,6 +54,7 @@ Program::Program(const std::string& vertexName, const std::string& fragmentName,
         glGetProgramInfoLog(id_.id(), len, nullptr, log.data());
         throw Error("program " + label_ + " failed to link:\n" + log.c_str());
     }
+    labelObject(GL_PROGRAM, id_.id(), label_);
 }
 
 GLint Program::location(const std::string& uniform) const {

@@ -1,5 +1,7 @@
 #include "gl/Texture.h"
 
+#include "gl/DebugLabels.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -130,5 +132,7 @@ Texture nearestTexture(TextureFormat format, int width, int height) {
     d.filter = Filter::Nearest;
     return Texture(d);
 }
+
+void Texture::label(const std::string& name) const { labelObject(GL_TEXTURE, id(), name); }
 
 } // namespace pb::gl

@@ -3,6 +3,8 @@
 #include "gl/GlObject.h"
 #include "gl/TextureFormat.h"
 
+#include <string>
+
 namespace pb::gl {
 
 enum class Filter { Nearest, Linear, LinearMipmap };
@@ -29,6 +31,8 @@ public:
     void uploadLayer(int layer, const void* data, int level = 0);
     void generateMipmaps();
     void bind(int unit) const;
+    // A name a GL capture shows (gl/DebugLabels.h).
+    void label(const std::string& name) const;
 
     GLenum target() const { return desc_.layers > 0 ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D; }
     const TextureDesc& desc() const { return desc_; }

@@ -9,7 +9,10 @@ FrameTargets::FrameTargets(int width, int height)
       radiance(gl::nearestTexture(gl::TextureFormat::RGBA16F, width, height)),
       radianceFbo("radiance", {&radiance}, nullptr),
       output(gl::nearestTexture(gl::TextureFormat::RGBA8, width, height)),
-      outputFbo("output", {&output}, nullptr), emptyVao(gl::genVertexArray()) {}
+      outputFbo("output", {&output}, nullptr), emptyVao(gl::genVertexArray()) {
+    radiance.label("radiance");
+    output.label("output");
+}
 
 float preExposureScale(float exposure) {
     if (!(exposure > 0.0f) || !std::isfinite(exposure)) return 1.0f;

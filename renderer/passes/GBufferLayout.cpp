@@ -31,7 +31,11 @@ std::vector<const gl::Texture*> pointers(const std::vector<gl::Texture>& v) {
 GBuffer::GBuffer(int width, int height)
     : width_(width), height_(height), channels_(makeChannels(width, height)),
       depth_(gl::nearestTexture(kGBufferDepthFormat, width, height)),
-      fbo_("gbuffer", pointers(channels_), &depth_) {}
+      fbo_("gbuffer", pointers(channels_), &depth_) {
+    for (size_t i = 0; i < channels_.size(); ++i)
+        channels_[i].label(std::string("gbuffer ") + kGBufferChannels[i].name);
+    depth_.label("gbuffer depth");
+}
 
 void GBuffer::bindForReading(const gl::Program& program, int firstUnit) const {
     for (size_t i = 0; i < channels_.size(); ++i) {

@@ -23,6 +23,9 @@ void GiTargets::ensure(const GiTargetSpec& spec) {
                                       : nullptr;
     evaluated_ = spec.evaluated ? makeTexture(gl::TextureFormat::R8, spec.width, spec.height, false)
                                 : nullptr;
+    target_->label("gi evaluation");
+    if (depthStencil_) depthStencil_->label("gi evaluation depth-stencil");
+    if (evaluated_) evaluated_->label("gi evaluated pixels");
     std::vector<const gl::Texture*> colour{target_.get()};
     if (evaluated_) colour.push_back(evaluated_.get());
     fbo_ = std::make_unique<gl::Framebuffer>("gi evaluation", colour, depthStencil_.get());

@@ -28,7 +28,10 @@ struct GiUpsamplePass::Target {
           fbo("gi upsample",
               withDistance ? std::vector<const gl::Texture*>{&gi, &distance}
                            : std::vector<const gl::Texture*>{&gi},
-              nullptr) {}
+              nullptr) {
+        gi.label("gi upsample");
+        if (withDistance) distance.label("gi upsample surfaces");
+    }
     gl::Texture gi;
     gl::Texture distance;
     gl::Framebuffer fbo;

@@ -52,6 +52,7 @@ gl::Texture uploadProbeTexture(const probes::ProbeTexture& t, gl::TextureFormat 
     } else {
         tex.upload(t.stored.data());
     }
+    tex.label(what);
     return tex;
 }
 
@@ -173,6 +174,7 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
             uploadProbeTexture(packed(set.visibility[size_t(vi)], probes::kVisibilityTile),
                                visibilityFormat(format_), format_, what + " visibility");
         g.state = uploadStates(v, set.states[size_t(vi)], tiles);
+        g.state.label(what + " states");
         fillParameters(g, v);
         volumes_.push_back(std::move(g));
     }

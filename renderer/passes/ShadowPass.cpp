@@ -18,6 +18,7 @@ void ShadowPass::execute(FrameContext& frame) {
         d.filter = gl::Filter::Linear;
         d.depthCompare = true;
         map_ = std::make_unique<gl::Texture>(d);
+        map_->label("shadow map");
         fbo_ = std::make_unique<gl::Framebuffer>("shadow", std::vector<const gl::Texture*>{},
                                                  map_.get());
     }
