@@ -463,7 +463,7 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
               << set.scenarios.size() << " scenario(s) as " << formatName(set.format()) << "\n";
     if (set.storedCount() < set.probeCount())
         std::cout << "sparse storage: " << set.storedCount() << " of " << set.probeCount()
-                  << " probes stored, " << formatBytes(mem.total.storedTotal()) << " as "
+                  << " grid probes stored, " << formatBytes(mem.total.storedTotal()) << " as "
                   << formatName(set.format()) << " with the indirection\n";
     else
         std::cout << "sparse-storage candidates: " << mem.total.sparse.far

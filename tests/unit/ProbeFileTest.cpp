@@ -9,6 +9,7 @@
 #include "support/TestEnv.h"
 
 #include <gtest/gtest.h>
+#include <sstream>
 #include <nlohmann/json.hpp>
 
 using namespace pb::probes;
@@ -157,4 +158,40 @@ TEST(ProbeFile, CacheReusesOnlyAnIntactFileWithTheSameInputs) {
     pb::writeFileAtomic(path, bytes.data(), bytes.size());
     EXPECT_FALSE(readCachedProbeFile(path, set.inputHash, &why));
     EXPECT_NE(why.find("checksum"), std::string::npos) << why;
+}
+
+// The memory table names its counts as bake does (issue 25, item 10): "grid probes" (every
+// probe of the grid) and "stored" (those with a tile), per volume and in total; the bytes and
+// B/probe are of the stored ones. Before, one "probes" column showed the grid count beside
+// bytes of the stored probes.
+TEST(ProbeMemory, TableSaysGridAndStoredProbes) {
+    ProbeVolume a, b;
+    a.name = "outer";
+    a.counts = parseGrid("8x4x8"); // 256 grid probes
+    b.name = "inner";
+    b.counts = parseGrid("4x4x4"); // 64
+    const std::vector<std::size_t> stored{100, 64};
+    const MemoryReport r = memoryReport({a, b}, StorageFormat::Rgba16f, &stored);
+    const std::string text = formatMemoryReport(r);
+    std::istringstream lines(text);
+    std::string line, header, outer, total;
+    while (std::getline(lines, line)) {
+        if (line.rfind("volume", 0) == 0) header = line;
+        if (line.rfind("outer", 0) == 0) outer = line;
+        if (line.rfind("total", 0) == 0) total = line;
+    }
+    EXPECT_NE(header.find("grid probes"), std::string::npos) << text;
+    EXPECT_NE(header.find("stored"), std::string::npos) << text;
+    std::istringstream o(outer);
+    std::string name, grid;
+    std::size_t gridProbes = 0, storedProbes = 0;
+    o >> name >> grid >> gridProbes >> storedProbes;
+    EXPECT_EQ(gridProbes, 256u) << outer;
+    EXPECT_EQ(storedProbes, 100u) << outer;
+    std::istringstream t(total);
+    t >> name >> gridProbes >> storedProbes;
+    EXPECT_EQ(gridProbes, 320u) << total;
+    EXPECT_EQ(storedProbes, 164u) << total;
+    EXPECT_NE(text.find("sparse storage: 164 of 320 grid probes stored"), std::string::npos)
+        << text;
 }

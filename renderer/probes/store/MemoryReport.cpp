@@ -126,29 +126,34 @@ std::string formatMemoryReport(const MemoryReport& r) {
         char buf[512];
         // Per stored probe: a sparse volume's tiles (packing padding included) over its stored
         // probes, not over the grid.
-        std::size_t p = std::max<std::size_t>(v.storedProbes ? v.storedProbes : v.probes, 1);
+        const std::size_t stored = v.storedProbes ? v.storedProbes : v.probes;
+        const std::size_t p = std::max<std::size_t>(stored, 1);
         std::snprintf(
-            buf, sizeof buf, "%-16s %-12s %8zu  %10s (%zu+%zu B/probe)  %10s (%zu+%zu B/probe)\n",
+            buf, sizeof buf, "%-16s %-12s %11zu %8zu  %10s (%zu+%zu B/probe)  %10s (%zu+%zu B/probe)\n",
             v.name.c_str(),
             v.counts.x ? (std::to_string(v.counts.x) + "x" + std::to_string(v.counts.y) + "x" +
                           std::to_string(v.counts.z))
                              .c_str()
                        : "",
-            v.probes, formatBytes(v.uncompressed.total()).c_str(), v.uncompressed.irradiance / p,
+            v.probes, stored, formatBytes(v.uncompressed.total()).c_str(), v.uncompressed.irradiance / p,
             v.uncompressed.visibility / p, formatBytes(v.bc6h.total()).c_str(),
             v.bc6h.irradiance / p, v.bc6h.visibility / p);
         s << buf;
     };
+    // "grid probes" and "stored" as `bake` says them (probes/ProbeCounts.h): every probe of
+    // the grid, and those that own a tile; bytes and B/probe are of the stored ones.
     s << "probe memory, one scenario resident (irradiance + visibility)\n";
     char head[256];
-    std::snprintf(head, sizeof head, "%-16s %-12s %8s  %-36s %s\n", "volume", "grid", "probes",
-                  "uncompressed (rgba16f + rg16f)", "bc6h");
+    std::snprintf(head, sizeof head, "%-16s %-12s %11s %8s  %-36s %s\n", "volume", "grid",
+                  "grid probes", "stored", "uncompressed (rgba16f + rg16f)", "bc6h");
     s << head;
     for (const VolumeMemory& v : r.volumes)
         line(v);
     VolumeMemory t = r.total;
     t.counts = glm::ivec3(0);
     line(t);
+    s << "  grid probes: every probe of the grids; stored: those with a tile (sparse storage "
+         "leaves the rest out); the bytes and B/probe are the stored probes'\n";
     s << "  irradiance " << formatBytes(r.total.uncompressed.irradiance) << " + visibility "
       << formatBytes(r.total.uncompressed.visibility) << " uncompressed; "
       << formatBytes(r.total.bc6h.irradiance) << " + " << formatBytes(r.total.bc6h.visibility)
@@ -158,14 +163,14 @@ std::string formatMemoryReport(const MemoryReport& r) {
           << "\n";
     if (r.total.storedProbes < r.total.probes)
         s << "sparse storage: " << r.total.storedProbes << " of " << r.total.probes
-          << " probes stored (packed tiles above) + " << formatBytes(r.total.indirection)
+          << " grid probes stored (packed tiles above) + " << formatBytes(r.total.indirection)
           << " indirection (probe state, 16 B per grid probe) = "
           << formatBytes(r.total.storedTotal()) << " as " << formatName(r.format) << "\n";
     if (r.hasSparse && r.total.storedProbes == r.total.probes) {
         const VolumeMemory& t = r.total;
         const std::size_t needed = t.probes - t.sparse.total();
         s << "sparse-storage candidates (all stored now): " << t.sparse.far << " of " << t.probes
-          << " probes far from every surface, " << t.sparse.invalid
+          << " grid probes far from every surface, " << t.sparse.invalid
           << " inside geometry; storing only the other " << needed << " would take "
           << formatBytes(scaled(t.stored.total(), needed, t.probes)) << " as "
           << formatName(r.format) << " (an estimate from the visibility; `bake --sparse` keeps "
