@@ -3,6 +3,7 @@
 // probes, shaped by the profile switches (--set key=value, renderer/profile/SwitchTable.cpp);
 // --debug NAME shows a GI debug view, --verbose / --json report the GI pass per volume.
 #include "CommandRegistry.h"
+#include "WindowFrameTimes.h"
 #include "JsonOption.h"
 #include "OutputPaths.h"
 #include "ProbeOptions.h"
@@ -88,6 +89,7 @@ int runInteractive(platform::Platform& p, render::FrameRenderer& r, const scene:
     FlyCamera cam(start, s.worldBounds());
     platform::InputState input;
     auto last = std::chrono::steady_clock::now();
+    WindowFrameTimes times;
     std::cout << "window open: WASD move, Q/E down/up, Shift faster, drag to look, ESC quits\n";
     for (int frame = 0; maxFrames <= 0 || frame < maxFrames; ++frame) {
         input = {};
@@ -102,7 +104,9 @@ int runInteractive(platform::Platform& p, render::FrameRenderer& r, const scene:
         r.render(render::makeRenderView(cam.view(), s.worldBounds(), w, h));
         r.presentToWindow(w, h);
         p.swapBuffers();
+        times.framePresented();
     }
+    std::cout << times.summary() << "\n";
     return 0;
 }
 
