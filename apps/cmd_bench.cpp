@@ -130,7 +130,7 @@ nlohmann::json chooseBenchView(const BenchArgs& a, const scene::Scene& s,
 // Heat maps share one scale (the largest FLIP of any profile, at least 0.05) so they compare;
 // FLIP errors of GI switches are small, and a 0..1 ramp would show them black.
 void writeOutputs(const BenchArgs& a, bench::BenchResult& r,
-                  const std::vector<image::ImageF>& flipMaps,
+                  const std::vector<bench::AccuracyPictures>& pictures,
                   const std::vector<bench::TruthMaps>& truthMaps) {
     r.heatmapScale = 0.05;
     for (const auto& s : r.sessions)
@@ -146,11 +146,20 @@ void writeOutputs(const BenchArgs& a, bench::BenchResult& r,
         fs::create_directories(dir, ec);
         if (ec) throw Error("--heatmaps " + dir + ": cannot create the folder");
         for (size_t s = 0; s < r.sessions.size(); ++s) {
-            if (flipMaps[s].pixels.empty()) continue;
+            const bench::AccuracyPictures& p = pictures[s];
+            if (p.flip.pixels.empty()) continue;
             std::string png =
                 (fs::path(dir) / (r.sessions[s].session.profile.name + ".png")).string();
-            image::writePng(png, metrics::errorHeatMap(flipMaps[s], float(r.heatmapScale)));
-            r.sessions[s].variants[0].accuracy.heatmapFile = png;
+            image::writePng(png, metrics::errorHeatMap(p.flip, float(r.heatmapScale)));
+            bench::AccuracyResult& acc = r.sessions[s].variants[0].accuracy;
+            acc.heatmapFile = png;
+            // Beside it the frames it compares ("-frame"/"-reference" are the truth's names).
+            const std::string stem =
+                (fs::path(dir) / r.sessions[s].session.profile.name).string();
+            acc.frameFile = stem + "-output.png";
+            acc.referenceFrameFile = stem + "-reference-output.png";
+            image::writePng(acc.frameFile, p.frame);
+            image::writePng(acc.referenceFrameFile, p.reference);
         }
         if (!truthMaps.empty()) bench::writeTruthPictures(r.sessions, truthMaps, dir, r.truth);
     }
@@ -225,9 +234,9 @@ int run(const BenchArgs& a) {
         truths = bench::computeBenchTruth(s, view, plan, {a.truthSpp, 32, cacheDir, progress}, &result.truth);
         in.truth = &truths;
     }
-    std::vector<image::ImageF> flipMaps;
+    std::vector<bench::AccuracyPictures> pictures;
     std::vector<bench::TruthMaps> truthMaps;
-    result.sessions = bench::runBenchPlan(plan, in, o, &flipMaps, a.truth ? &truthMaps : nullptr);
+    result.sessions = bench::runBenchPlan(plan, in, o, &pictures, a.truth ? &truthMaps : nullptr);
     if (!a.noCacheModel) result.cacheModel = bench::cacheModelEntries(plan, s, set, view, progress);
     result.context["load_average_end"] = bench::loadAverage();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -239,7 +248,7 @@ int run(const BenchArgs& a) {
     if (a.strict && !skipped.empty())
         throw Error("--strict: " + std::to_string(skipped.size()) +
                     " variant(s) could not run, nothing written; first: " + skipped.front());
-    writeOutputs(a, result, flipMaps, truthMaps);
+    writeOutputs(a, result, pictures, truthMaps);
     std::cout << bench::markdownSummary(result);
     // One warning per distinct reason, naming the variants it hit.
     std::vector<std::pair<std::string, std::string>> reasons; // reason, variant ids

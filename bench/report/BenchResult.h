@@ -32,6 +32,8 @@ struct AccuracyResult {
     double ssim = 1;
     double relativeMseGi = 0; // linear GI irradiance (the lighting's indirect input)
     std::string heatmapFile;  // FLIP heat-map PNG ("" when none written)
+    // The two frames FLIP compared, as PNGs beside the heat map ("" when none written).
+    std::string frameFile, referenceFrameFile;
 };
 
 // The same frame against the path-traced ground truth of the view (`bench --truth`,

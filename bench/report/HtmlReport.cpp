@@ -164,14 +164,24 @@ void heatmaps(std::ostringstream& h, const BenchResult& r) {
         const AccuracyResult& a = s.profile().accuracy;
         if (a.heatmapFile.empty()) continue;
         if (!any)
-            h << "<h2>FLIP error vs reference</h2>\n<p class=\"note\">Per-pixel LDR-FLIP of each "
-                 "profile against the reference frame, one scale for all: black 0, pale yellow "
+            h << "<h2>FLIP error vs reference</h2>\n<p class=\"note\">Per profile: the "
+                 "reference's frame, the profile's frame (both as rendered and tonemapped, the "
+                 "images FLIP compares) and the per-pixel LDR-FLIP between them, one scale for "
+                 "all heat maps: black 0, pale yellow "
               << fixed(r.heatmapScale, 3) << " or more.</p>\n";
         any = true;
-        h << "<figure><img alt=\"FLIP heat map " << htmlEscape(s.session.profile.name)
-          << "\" src=\"" << pngDataUri(a.heatmapFile) << "\"><figcaption>"
-          << htmlEscape(s.session.profile.name) << ": mean " << fixed(a.flipMean, 4)
-          << "</figcaption></figure>\n";
+        const std::string name = htmlEscape(s.session.profile.name);
+        h << "<div class=\"frames\">\n";
+        if (!a.referenceFrameFile.empty())
+            h << "<figure><img alt=\"reference frame for " << name << "\" src=\""
+              << pngDataUri(a.referenceFrameFile)
+              << "\"><figcaption>reference frame</figcaption></figure>\n";
+        if (!a.frameFile.empty())
+            h << "<figure><img alt=\"frame " << name << "\" src=\"" << pngDataUri(a.frameFile)
+              << "\"><figcaption>" << name << " frame</figcaption></figure>\n";
+        h << "<figure><img alt=\"FLIP heat map " << name << "\" src=\""
+          << pngDataUri(a.heatmapFile) << "\"><figcaption>FLIP " << name << " vs reference: mean "
+          << fixed(a.flipMean, 4) << "</figcaption></figure>\n</div>\n";
     }
 }
 

@@ -43,7 +43,11 @@ nlohmann::json accuracyJson(const AccuracyResult& a) {
             {"ssim", a.ssim},
             {"relative_mse_gi", a.relativeMseGi},
             {"heatmap",
-             a.heatmapFile.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.heatmapFile)}};
+             a.heatmapFile.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.heatmapFile)},
+            {"frame", a.frameFile.empty() ? nlohmann::json(nullptr) : nlohmann::json(a.frameFile)},
+            {"reference_frame", a.referenceFrameFile.empty()
+                                    ? nlohmann::json(nullptr)
+                                    : nlohmann::json(a.referenceFrameFile)}};
 }
 
 // Null without `bench --truth` (or when the variant did not run).

@@ -42,7 +42,7 @@ CoverageResult coverageOf(const AccuracyInputs& in, const std::string& volumeLod
 } // namespace
 
 void captureAccuracy(SessionResult& s, const std::vector<render::FrameRenderer*>& renderers,
-                     const AccuracyInputs& in, image::ImageF* flipMap) {
+                     const AccuracyInputs& in, AccuracyPictures* pictures) {
     const size_t n = s.variants.size();
     const scene::Scene white = irradianceOnlyScene(*in.scene);
     std::vector<image::Image8> ldr(n);
@@ -73,7 +73,11 @@ void captureAccuracy(SessionResult& s, const std::vector<render::FrameRenderer*>
         v.accuracy.psnr = metrics::psnr(ldr[i], ldr[ref]);
         v.accuracy.ssim = metrics::ssim(ldr[i], ldr[ref]);
         v.accuracy.relativeMseGi = metrics::relativeMse(irr[i], irr[ref]);
-        if (flipMap && i == 0) *flipMap = std::move(flip.map);
+        if (pictures && i == 0) {
+            pictures->flip = std::move(flip.map);
+            pictures->frame = ldr[i];
+            pictures->reference = ldr[ref];
+        }
     }
 }
 

@@ -26,10 +26,17 @@ struct AccuracyInputs {
     double pixelsPerDegree = 67.0;
 };
 
+// What the report shows of a session's accuracy: the profile variant's per-pixel FLIP map
+// against the reference and the two frames it compares (tonemapped LDR, as FLIP reads them).
+// Empty when not measured.
+struct AccuracyPictures {
+    image::ImageF flip;
+    image::Image8 frame, reference;
+};
+
 // renderers[i]: the timed renderer of variant i, its last frame still in its targets (null
-// when the variant did not run). `flipMap` (optional) receives the profile variant's per-pixel
-// FLIP map.
+// when the variant did not run). `pictures` (optional) receives the profile variant's.
 void captureAccuracy(SessionResult& s, const std::vector<render::FrameRenderer*>& renderers,
-                     const AccuracyInputs& in, image::ImageF* flipMap);
+                     const AccuracyInputs& in, AccuracyPictures* pictures);
 
 } // namespace pb::bench

@@ -107,7 +107,7 @@ void measureDeltas(SessionResult& s) {
 }
 
 SessionResult runSession(const Session& session, const RunnerInputs& in, const RunnerOptions& o,
-                         const std::string& tag, image::ImageF* flipMap, TruthMaps* truthMaps) {
+                         const std::string& tag, AccuracyPictures* pictures, TruthMaps* truthMaps) {
     auto say = [&](const std::string& line) {
         if (o.progress) o.progress(tag + " " + line);
     };
@@ -185,7 +185,7 @@ SessionResult runSession(const Session& session, const RunnerInputs& in, const R
                       session.height,
                       1, // the irradiance renderer's first frame: also right after a cut
                       o.pixelsPerDegree};
-    captureAccuracy(out, renderers, ai, flipMap);
+    captureAccuracy(out, renderers, ai, pictures);
     if (in.truth) {
         auto it = in.truth->find({session.width, session.height});
         if (it == in.truth->end())
@@ -202,20 +202,20 @@ SessionResult runSession(const Session& session, const RunnerInputs& in, const R
 
 std::vector<SessionResult> runBenchPlan(const BenchPlan& plan, const RunnerInputs& in,
                                         const RunnerOptions& o,
-                                        std::vector<image::ImageF>* flipMaps,
+                                        std::vector<AccuracyPictures>* pictures,
                                         std::vector<TruthMaps>* truthMaps) {
     if (o.frames < 1 || o.rounds < 1 || o.warmup < 1)
         throw Error("--frames, --rounds and --warmup must be at least 1 (the first frame "
                     "compiles shaders and is never counted)");
     std::vector<SessionResult> out;
-    if (flipMaps) flipMaps->assign(plan.sessions.size(), {});
+    if (pictures) pictures->assign(plan.sessions.size(), {});
     if (truthMaps) truthMaps->assign(plan.sessions.size(), {});
     for (size_t s = 0; s < plan.sessions.size(); ++s) {
         const Session& session = plan.sessions[s];
         std::string tag = "[" + std::to_string(s + 1) + "/" + std::to_string(plan.sessions.size()) +
                           "] " + session.profile.name + " " + std::to_string(session.width) + "x" +
                           std::to_string(session.height) + ":";
-        out.push_back(runSession(session, in, o, tag, flipMaps ? &(*flipMaps)[s] : nullptr,
+        out.push_back(runSession(session, in, o, tag, pictures ? &(*pictures)[s] : nullptr,
                                  truthMaps ? &(*truthMaps)[s] : nullptr));
     }
     return out;

@@ -6,6 +6,7 @@
 // every variant, the order rotated by r, so every paired delta sees the same load. The GI
 // fetch floor follows each profile/reference variant's frames. Accuracy, coverage and GI memory
 // are taken after the timing (AccuracyCapture.h).
+#include "AccuracyCapture.h"
 #include "SectionTimer.h"
 #include "TruthAccuracyCapture.h"
 #include "bench/report/AblationPlan.h"
@@ -40,12 +41,12 @@ struct RunnerInputs {
     const TruthBySize* truth = nullptr;
 };
 
-// `flipMaps` (optional) receives, parallel to the sessions, the profile variant's per-pixel
-// FLIP map against the reference (empty when not measured), for heat maps; `truthMaps`
+// `pictures` (optional) receives, parallel to the sessions, the profile variant's per-pixel
+// FLIP map against the reference and both frames (empty when not measured), for the report; `truthMaps`
 // (optional, with in.truth) the pictures against the truth (TruthAccuracyCapture.h).
 std::vector<SessionResult> runBenchPlan(const BenchPlan& plan, const RunnerInputs& in,
                                         const RunnerOptions& o,
-                                        std::vector<image::ImageF>* flipMaps = nullptr,
+                                        std::vector<AccuracyPictures>* pictures = nullptr,
                                         std::vector<TruthMaps>* truthMaps = nullptr);
 
 } // namespace pb::bench

@@ -188,6 +188,12 @@ TEST(BenchCli, TinyRunWritesTheJsonShapeTheReportAndHeatMaps) {
     EXPECT_TRUE(hh["vs_reference"]["delta_ms"].contains("ci_low"));
     EXPECT_GT(hh["accuracy"]["relative_mse_gi"].get<double>(), 0.0) << "half res is not exact";
     EXPECT_TRUE(fs::exists(hh["accuracy"]["heatmap"].get<std::string>()));
+    // The two frames FLIP compared, written beside the heat map (issue 25, item 10).
+    for (const char* frame : {"frame", "reference_frame"}) {
+        ASSERT_TRUE(hh["accuracy"][frame].is_string()) << frame << hh["accuracy"].dump();
+        const auto png = pb::image::readPng(hh["accuracy"][frame].get<std::string>());
+        EXPECT_EQ(png.width, 64) << frame;
+    }
     // Ablation: every switch where handheld-today differs from reference, both ways.
     std::set<std::string> ablated;
     for (const auto& a : hh["ablation"]) {
@@ -229,6 +235,14 @@ TEST(BenchCli, TinyRunWritesTheJsonShapeTheReportAndHeatMaps) {
     std::string html = readText(dir / "report.html");
     EXPECT_NE(html.find("handheld-today"), std::string::npos);
     EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos) << "heat maps inline";
+    // Beside each profile's heat map: the reference's frame and the profile's, inline.
+    EXPECT_NE(html.find("<img alt=\"reference frame for handheld-today\" src=\"data:image/png;base64,"),
+              std::string::npos);
+    EXPECT_NE(html.find("<img alt=\"frame handheld-today\" src=\"data:image/png;base64,"),
+              std::string::npos);
+    EXPECT_LT(html.find("<img alt=\"frame handheld-today\""),
+              html.find("<img alt=\"FLIP heat map handheld-today\""))
+        << "the frames sit before their heat map";
 }
 
 TEST(BenchCli, ErrorsAreOneLineAndWriteNothing) {

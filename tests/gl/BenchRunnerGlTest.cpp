@@ -150,8 +150,8 @@ TEST_F(BenchRunnerTest, TinyPlanRunsAndReportsUnsupportedVariants) {
     o.warmup = 1;
     o.timing = bench::chooseTiming("cpu", caps(), gl::detectDriverQuirks());
     o.es = caps().es;
-    std::vector<image::ImageF> flipMaps;
-    auto sessions = bench::runBenchPlan(plan, in, o, &flipMaps);
+    std::vector<bench::AccuracyPictures> pictures;
+    auto sessions = bench::runBenchPlan(plan, in, o, &pictures);
     ASSERT_EQ(sessions.size(), 2u);
     const auto& refVariant = sessions[0].profile();
     ASSERT_TRUE(refVariant.ok()) << refVariant.error;
@@ -183,7 +183,9 @@ TEST_F(BenchRunnerTest, TinyPlanRunsAndReportsUnsupportedVariants) {
     for (const auto& d : sessions[1].deltas)
         EXPECT_TRUE(d.measured) << bench::deltaKindName(d.planned.kind) << " "
                                 << d.planned.switchKey;
-    EXPECT_EQ(flipMaps[1].width, 64);
+    EXPECT_EQ(pictures[1].flip.width, 64);
+    EXPECT_EQ(pictures[1].frame.width, 64);
+    EXPECT_EQ(pictures[1].reference.height, pictures[1].frame.height);
 
     // A variant the renderer rejects (here: a volume the probe file does not have; likewise a
     // switch value not implemented or a format the driver lacks) is reported, not thrown: the
