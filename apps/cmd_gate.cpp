@@ -138,8 +138,7 @@ std::vector<gate::GateRow> againstTiming(const GateArgs& a, const gate::GateSuit
     gate::WorkerProcess basew(workerArgs(a.against, s, probesFile, a), {},
                               "baseline worker (" + a.against + ")");
     for (gate::WorkerProcess* w : {&cand, &basew})
-        if (w->readLine() != gate::kWorkerHello)
-            throw Error(w->label() + ": not a probebench gate worker");
+        gate::checkWorkerHello(w->readLine(), w->label());
     std::vector<gate::GateRow> rows;
     for (const std::string& name : s.profiles) {
         auto say = [&](const std::string& l) { progress("timing " + name + " against: " + l); };

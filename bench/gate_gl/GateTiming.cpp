@@ -1,9 +1,17 @@
 #include "GateTiming.h"
 
+#include "bench/report/GiSections.h"
 #include "core/Error.h"
 #include "metrics/Statistics.h"
 
 namespace pb::gate {
+
+double giSectionsMs(const std::vector<std::pair<std::string, double>>& sections) {
+    double g = 0;
+    for (const auto& [name, ms] : sections)
+        if (bench::isGiSection(name)) g += ms;
+    return g;
+}
 
 RoundTimes timeRound(GateRenderer& r, bench::SectionTimer& timer, int frames) {
     std::vector<double> frame, gi;
@@ -15,11 +23,8 @@ RoundTimes timeRound(GateRenderer& r, bench::SectionTimer& timer, int frames) {
             ok = timer.endFrame();
         }
         if (!ok) throw Error("timer queries reported disjoint GPU time 3 times in a row");
-        double g = 0;
-        for (const auto& [name, ms] : timer.sections())
-            if (name.rfind("gi-", 0) == 0) g += ms;
         frame.push_back(timer.frameMs());
-        gi.push_back(g);
+        gi.push_back(giSectionsMs(timer.sections()));
     }
     return {stats::summarize(frame).median, stats::summarize(gi).median};
 }

@@ -21,8 +21,12 @@ namespace pb::gate {
 
 struct RoundTimes {
     double frameMs = 0; // median over the round's frames
-    double giMs = 0;    // the GI sections (gi-*) of the same frames, median
+    double giMs = 0;    // the GI sections (bench/report/GiSections.h) of the same frames, median
 };
+
+// The GI share of one frame's sections: those bench::isGiSection names (the bench's "GI ms",
+// upsample included), so the gate and the bench call the same passes GI.
+double giSectionsMs(const std::vector<std::pair<std::string, double>>& sections);
 
 // K timed frames of one renderer.
 RoundTimes timeRound(GateRenderer& r, bench::SectionTimer& timer, int frames);

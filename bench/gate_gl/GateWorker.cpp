@@ -51,6 +51,18 @@ int serveGateWorker(const WorkerOptions& o, std::istream& in, std::ostream& out)
     }
 }
 
+void checkWorkerHello(const std::string& hello, const std::string& label) {
+    if (hello == kWorkerHello) return;
+    const std::string prefix = "ready probebench-gate-worker/";
+    if (hello.rfind(prefix, 0) != 0) throw Error(label + ": not a probebench gate worker");
+    const std::string mine = std::string(kWorkerHello).substr(prefix.size());
+    throw Error(label + ": speaks gate-worker protocol " + hello.substr(prefix.size()) +
+                ", this gate " + mine +
+                " (protocol 1 timed only the gi-* passes as GI; 2 the passes of "
+                "bench/report/GiSections.h, upsample included): build both binaries from "
+                "commits with the same protocol");
+}
+
 namespace {
 
 RoundTimes askRound(WorkerProcess& w, const std::string& profile, int frames) {

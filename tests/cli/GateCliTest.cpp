@@ -312,4 +312,16 @@ TEST(GateCli, ErrorsAreOneLine) {
     EXPECT_TRUE(std::regex_search(
         r.output, std::regex(R"(\nprobebench: error: baseline worker \(/bin/true\): [^\n]*\n$)")))
         << r.output;
+
+    // A worker of protocol 1 (GI ms of the gi-* passes only) is refused, saying so, before
+    // any timing: its GI times do not compare with this gate's.
+    const fs::path old = dir / "old-worker.sh";
+    std::ofstream(old) << "#!/bin/sh\necho 'ready probebench-gate-worker/1'\nexit 0\n";
+    fs::permissions(old, fs::perms::owner_exec, fs::perm_options::add);
+    r = runProbebench(gate(b, {"--quick", "--against", old.string()}));
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_TRUE(std::regex_search(
+        r.output, std::regex(R"(\nprobebench: error: baseline worker \([^)]*\): speaks )"
+                             R"(gate-worker protocol 1, this gate 2 [^\n]*\n$)")))
+        << r.output;
 }

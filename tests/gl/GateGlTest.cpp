@@ -7,6 +7,7 @@
 #include "gl/GlTestFixture.h"
 
 #include "bench/gate_gl/GateMeasure.h"
+#include "bench/gate_gl/GateTiming.h"
 #include "bench/gate_gl/GlCallCounter.h"
 #include "core/Error.h"
 #include "costmodel/CostModel.h"
@@ -169,6 +170,15 @@ TEST_F(GateGlTest, ProfileCountersAreIdenticalFromTwoRenderers) {
     EXPECT_GT(counter("model.gi_pixels"), 0);
     EXPECT_GT(counter("cache.xyz/fused.lines"), counter("cache.xyz/fused.hits"));
     EXPECT_EQ(counter("cache.preset.size_bytes"), 16 * 1024);
+}
+
+// The gate's "GI passes ms" (--against) sums what the bench's "GI ms" sums
+// (bench/report/GiSections.h): the temporal upsample is GI's cost, not only the gi-* passes.
+TEST(GateGiSections, GiMsSumsTheBenchGiSectionsUpsampleIncluded) {
+    const std::vector<std::pair<std::string, double>> sections{
+        {"shadow", 1.0}, {"gbuffer", 2.0}, {"gi-dynamic-sh", 0.5}, {"gi-apply", 4.0},
+        {"gi-fill", 0.25}, {"upsample", 8.0}, {"direct", 16.0}, {"composite", 32.0}};
+    EXPECT_DOUBLE_EQ(gate::giSectionsMs(sections), 0.5 + 4.0 + 0.25 + 8.0);
 }
 
 } // namespace
