@@ -3,8 +3,11 @@
 // density is the one a ray hit looks up (what MIS needs), and it integrates to the lit area;
 // a probe above a small sunlit square, baked with lit-surface samples against its rays,
 // matches the square's reflected light integrated by quadrature, without bias, and far closer
-// than its rays alone; a scene without sun or punctual lights has nothing to sample.
+// than its rays alone; a scene without sun or punctual lights has nothing to sample and bakes
+// the same bytes as without samples; any thread count bakes the same bytes.
 #include "ProbeTestScenes.h"
+#include "core/Error.h"
+#include "probes/bake/Baker.h"
 #include "probes/ProbeLayout.h"
 #include "probes/bake/AliasTable.h"
 #include "probes/bake/LitSurfaces.h"
@@ -203,4 +206,55 @@ TEST(LitSurfaces, AProbeAboveASmallSunlitSquareConvergesWithoutBias) {
     }
     std::vector<float> meanF(mean.begin(), mean.end());
     EXPECT_LT(meanRelativeError(meanF, 2.0f), 0.12 / 16.0 * 1.5);
+}
+
+namespace {
+// One 3x2x3 volume over the square, one round of 64 rays.
+BakeRequest squareBake(const scene::Scene& s, const Scenario& sc, int litSamples) {
+    BakeRequest req;
+    ProbeVolume v;
+    v.name = "v";
+    v.center = {0, -0.4f, 0};
+    v.halfExtents = {0.6f, 0.5f, 0.6f};
+    v.counts = {3, 2, 3};
+    req.volumes = {v};
+    req.scenarios = {sc};
+    req.settings.raysPerProbe = 64;
+    req.settings.noiseTarget = 0.0f;
+    req.settings.litSamples = litSamples;
+    return req;
+}
+} // namespace
+
+TEST(LitSurfaces, BakesTheSameBytesOnAnyThreadCountAndChangeNothingWithoutLight) {
+    const scene::Scene s = squareScene(true);
+    BakeRequest req = squareBake(s, sunFromAbove(1.0f), 128);
+    req.threads = 1;
+    const ProbeSet one = bakeProbes(s, req);
+    req.threads = 2;
+    const ProbeSet two = bakeProbes(s, req);
+    EXPECT_EQ(one.irradiance[0][0].texels, two.irradiance[0][0].texels);
+    // The samples change a sunlit bake ...
+    const ProbeSet without = bakeProbes(s, squareBake(s, sunFromAbove(1.0f), 0));
+    EXPECT_NE(one.irradiance[0][0].texels, without.irradiance[0][0].texels);
+    // ... and nothing where neither sun nor punctual lights shine (an emissive room).
+    const scene::Scene glow = emissiveRoom(1.0f, 0.5f);
+    Scenario dark;
+    dark.sun.enabled = false;
+    dark.sky.radiance = glm::vec3(0.0f);
+    const ProbeSet a = bakeProbes(glow, squareBake(glow, dark, 0));
+    const ProbeSet b = bakeProbes(glow, squareBake(glow, dark, 128));
+    EXPECT_EQ(a.irradiance[0][0].texels, b.irradiance[0][0].texels);
+}
+
+TEST(LitSurfaces, SampleCountsOutsideTheRangeAreRefused) {
+    const scene::Scene s = squareScene(false);
+    for (int bad : {-1, 65537}) {
+        try {
+            bakeProbes(s, squareBake(s, sunFromAbove(1.0f), bad));
+            ADD_FAILURE() << bad << " was accepted";
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("--lit-samples"), std::string::npos) << e.what();
+        }
+    }
 }
