@@ -39,6 +39,7 @@ struct BakeArgs {
     const CLI::Option *levelsOption = nullptr, *childrenOption = nullptr; // given or not
     int rays = 256, bounces = 2, threads = 0;
     int emitterSamples = probes::BakeSettings().emitterSamples;
+    int litSamples = probes::BakeSettings().litSamples;
     float noiseTarget = probes::BakeSettings().noiseTarget;
     std::vector<std::string> scenarios;
     std::string format = "rgba16f";
@@ -238,6 +239,7 @@ void setBakeSettings(const BakeArgs& a, const scene::Scene& s,
     r.settings.raysPerProbe = a.rays;
     r.settings.bounces = a.bounces;
     r.settings.emitterSamples = a.emitterSamples;
+    r.settings.litSamples = a.litSamples;
     r.settings.noiseTarget = a.noiseTarget;
     r.settings.seed = a.seed;
     r.settings.format = parseStorageFormat(a.format);
@@ -401,6 +403,7 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
             j["triangles"] = st->triangles;
             j["noise"] = {{"target", set.settings.noiseTarget},
                           {"emitter_samples", set.settings.emitterSamples},
+                          {"lit_samples", set.settings.litSamples},
                           {"mean_relative_se", st->noiseMean},
                           {"p95_relative_se", st->noiseP95},
                           {"probe_passes", st->tracedProbePasses},
@@ -613,6 +616,11 @@ const RegisterCommand reg{{
         cmd.add_option("--emitter-samples", a->emitterSamples,
                        "Points sampled on the emissive triangles per probe and pass, weighted "
                        "against the rays by MIS (0: emitters found by the rays alone)")
+            ->capture_default_str();
+        cmd.add_option("--lit-samples", a->litSamples,
+                       "Points sampled on the surfaces the sun and punctual lights light "
+                       "directly, per probe and pass, weighted against the rays by MIS (light "
+                       "seen through a doorway; 0: found by the rays alone)")
             ->capture_default_str();
         cmd.add_option("--threads", a->threads,
                        "Worker threads (0 = all cores; never changes "

@@ -4,7 +4,8 @@
 // dimmest quarter of the points and the rest. bench/bake_noise.sh bakes the pairs and runs
 // this on them (bench/README.md "Bake noise").
 //
-// Usage: bench_bake_noise SCENE A.probes B.probes [POINTS]   (SCENE: built-in name or glTF)
+// Usage: bench_bake_noise SCENE A.probes B.probes [POINTS] [--region X0,Y0,Z0,X1,Y1,Z1]
+// (SCENE: built-in name or glTF; --region: only the points inside that box, e.g. one room)
 #include "core/Error.h"
 #include "probes/bake/SeedDifference.h"
 #include "probes/store/ProbeFile.h"
@@ -12,19 +13,40 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <optional>
 
 using namespace pb;
 
 int main(int argc, char** argv) {
+    const char* usage =
+        "usage: bench_bake_noise SCENE A.probes B.probes [POINTS] [--region X0,Y0,Z0,X1,Y1,Z1]\n";
     if (argc < 4) {
-        std::fprintf(stderr, "usage: bench_bake_noise SCENE A.probes B.probes [POINTS]\n");
+        std::fprintf(stderr, "%s", usage);
         return 2;
+    }
+    int points = 2000;
+    std::optional<scene::Bounds> region;
+    for (int i = 4; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--region") == 0 && i + 1 < argc) {
+            scene::Bounds b;
+            if (std::sscanf(argv[++i], "%f,%f,%f,%f,%f,%f", &b.min.x, &b.min.y, &b.min.z, &b.max.x,
+                            &b.max.y, &b.max.z) != 6 || b.empty()) {
+                std::fprintf(stderr, "bench_bake_noise: error: --region: expected X0,Y0,Z0,X1,Y1,Z1 "
+                                     "with X0 <= X1 (got '%s')\n", argv[i]);
+                return 2;
+            }
+            region = b;
+        } else if ((points = std::atoi(argv[i])) <= 0) {
+            std::fprintf(stderr, "%s", usage);
+            return 2;
+        }
     }
     try {
         const scene::Scene s = scene::loadScene(argv[1]);
-        const probes::SeedDifference d =
-            probes::seedDifference(s, probes::readProbeFile(argv[2]),
-                                   probes::readProbeFile(argv[3]), argc > 4 ? std::atoi(argv[4]) : 2000);
+        const probes::SeedDifference d = probes::seedDifference(
+            s, probes::readProbeFile(argv[2]), probes::readProbeFile(argv[3]), points,
+            region ? &*region : nullptr);
         std::printf("%s: %zu points compared, relative difference of the irradiance between the "
                     "seeds: mean %.2f%%, median %.2f%%, p90 %.2f%%\n",
                     argv[1], d.points, 100 * d.mean, 100 * d.median, 100 * d.p90);

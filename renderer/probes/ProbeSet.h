@@ -28,6 +28,10 @@ struct BakeSettings {
     // the rays by MIS (probes/bake/RadiancePass.h EmitterSampling); 0: the rays alone. A bake
     // input (hashed), not stored in the probe file.
     int emitterSamples = 512;
+    // Points sampled on the directly lit surfaces per probe, pass and round (light that the
+    // sun and the punctual lights put on a surface, reflected: probes/bake/LitSurfaces.h),
+    // weighted against the rays by MIS; 0: the rays alone. A bake input (hashed, stored).
+    int litSamples = 128;
     // The converged bake: a probe whose estimated irradiance noise (relative standard error of
     // its texels, NoiseRounds.h) is above this after a pass's first round of
     // rays gets more rounds - a fresh ray rotation and fresh emitter samples each, averaged -

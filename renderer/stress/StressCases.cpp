@@ -34,6 +34,7 @@ ProbeSet bake(const StressScene& s, int rays) {
     // here, and its cost would multiply by every case).
     r.settings.noiseTarget = 0.0f;
     r.settings.emitterSamples = 0;
+    r.settings.litSamples = 0;
     return probes::bakeProbes(s.scene, r);
 }
 

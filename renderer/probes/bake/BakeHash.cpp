@@ -11,7 +11,8 @@
 namespace pb::probes {
 namespace {
 
-constexpr std::uint32_t kBakeAlgorithmVersion = 3; // 2: far scenes bake in a moved frame;
+constexpr std::uint32_t kBakeAlgorithmVersion = 4; // 4: lit-surface samples;
+                                                   // 3: // 2: far scenes bake in a moved frame;
                                                    // 3: emitter sampling (MIS) at the probe
 
 void hashScene(Hasher& h, const scene::Scene& s) {
@@ -72,6 +73,7 @@ std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& r) {
     h.pod(std::uint8_t(b.relocate));
     h.pod(b.backfaceThreshold);
     h.pod(std::int32_t(b.emitterSamples));
+    h.pod(std::int32_t(b.litSamples));
     h.pod(b.noiseTarget);
     h.pod(std::int32_t(kMaxNoiseRounds));
     h.pod(std::uint8_t(r.sparse));

@@ -5,6 +5,7 @@
 #include "probes/bake/BakePhaseClock.h"
 #include "probes/bake/GeometryPass.h"
 #include "probes/bake/NestingBlend.h"
+#include "probes/bake/LitSurfaces.h"
 #include "probes/bake/NoiseRounds.h"
 #include "core/ParallelFor.h"
 #include "probes/bake/RadiancePass.h"
@@ -15,6 +16,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cmath>
 #include <numeric>
 #include <optional>
@@ -83,6 +85,9 @@ void checkRequest(const BakeRequest& r) {
     if (r.settings.emitterSamples < 0 || r.settings.emitterSamples > 65536)
         throw Error("--emitter-samples: must be in [0, 65536] (got " +
                     std::to_string(r.settings.emitterSamples) + ")");
+    if (r.settings.litSamples < 0 || r.settings.litSamples > 65536)
+        throw Error("--lit-samples: must be in [0, 65536] (got " +
+                    std::to_string(r.settings.litSamples) + ")");
 }
 
 // What every stage of one bake shares: the set being filled, the flat probe numbering, the
@@ -103,11 +108,22 @@ struct BakeRun {
     BakePhaseClock phases{}; // the tracing time is the sum of its phases
     RadianceSlab slab{};     // reused by every pass (keeps its buffers)
     NoiseRounds noise{0.0f}; // the converged bake's bookkeeping (NoiseRounds.h)
+    // Per scenario, built by its first pass when the settings ask for lit-surface samples.
+    std::vector<std::unique_ptr<LitSurfaces>> lit{};
 
     void report(const std::string& stage, std::size_t done) const {
         if (progress) progress({stage, doneBefore + done, stages * index.total()});
     }
     std::pair<int, int> locate(std::size_t flat) const { return index.locate(flat); }
+    // The light samples of scenario s's passes, from the pass's stream.
+    EmitterSampling lightSampling(std::size_t s, std::uint64_t stream) {
+        if (lit.size() <= s) lit.resize(s + 1);
+        if (cfg.litSamples > 0 && !lit[s])
+            lit[s] = std::make_unique<LitSurfaces>(rs, req.scenarios[s], scene.lights, threads,
+                                                   counters[0].shadow);
+        return {cfg.emitterSamples, stream ^ 0x656d6974ull, // "emit"
+                cfg.litSamples, lit[s].get()};
+    }
 };
 
 ProbeSet emptySet(const scene::Scene& scene, const BakeRequest& req) {
@@ -201,7 +217,7 @@ void traceMoreRounds(BakeRun& run, const Scenario& sc, size_t s, int pass,
         const std::uint64_t stream = roundStream(cfg.seed, int(s), pass, round);
         const auto dirs = passDirections(cfg.raysPerProbe, stream);
         const ProbeConvolution conv(dirs);
-        const EmitterSampling nee{cfg.emitterSamples, stream ^ 0x656d6974ull}; // "emit"
+        const EmitterSampling nee = run.lightSampling(s, stream);
         run.slab.reset(todo.size(), cfg.raysPerProbe);
         parallelFor(todo.size(), run.threads, [&](std::size_t j, int t) {
             auto [v, p] = run.locate(first + todo[j]);
@@ -264,9 +280,8 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     const ProbeSampler* previous = prev.empty() ? nullptr : &prevSampler;
     const auto dirs = passDirections(cfg.raysPerProbe, radianceStream(cfg.seed, int(s), pass));
     const ProbeConvolution conv(dirs);
-    // Emitter samples draw from their own stream ("emit"), each probe by its index.
-    const EmitterSampling nee{cfg.emitterSamples,
-                              radianceStream(cfg.seed, int(s), pass) ^ 0x656d6974ull};
+    // Light samples draw from their own streams, each probe by its index.
+    const EmitterSampling nee = run.lightSampling(s, radianceStream(cfg.seed, int(s), pass));
     std::vector<std::vector<float>> irr(
         size_t(run.threads), std::vector<float>(kIrradianceInterior * kIrradianceInterior * 3));
     const std::string stage =

@@ -19,38 +19,10 @@ EmitterTable::EmitterTable(std::vector<EmissiveTriangle> all) {
     }
     const std::size_t n = triangles_.size();
     if (n == 0) return;
-    double total = 0.0;
-    for (double p : power)
-        total += p;
+    alias_ = AliasTable(power);
     pdfArea_.resize(n);
     for (std::size_t k = 0; k < n; ++k)
-        pdfArea_[k] = float(power[k] / total / double(triangles_[k].area));
-
-    // Vose: scaled probabilities n * P(k); small ones are topped up by a large one.
-    aliasProbability_.assign(n, 1.0f);
-    alias_.assign(n, 0);
-    std::vector<double> scaled(n);
-    std::vector<int> small, large;
-    for (std::size_t k = 0; k < n; ++k) {
-        scaled[k] = power[k] / total * double(n);
-        (scaled[k] < 1.0 ? small : large).push_back(int(k));
-    }
-    while (!small.empty() && !large.empty()) {
-        const int s = small.back(), l = large.back();
-        small.pop_back();
-        aliasProbability_[std::size_t(s)] = float(scaled[std::size_t(s)]);
-        alias_[std::size_t(s)] = l;
-        scaled[std::size_t(l)] -= 1.0 - scaled[std::size_t(s)];
-        if (scaled[std::size_t(l)] < 1.0) {
-            large.pop_back();
-            small.push_back(l);
-        }
-    }
-    // What is left has probability 1 up to rounding.
-    for (int k : small)
-        aliasProbability_[std::size_t(k)] = 1.0f;
-    for (int k : large)
-        aliasProbability_[std::size_t(k)] = 1.0f;
+        pdfArea_[k] = float(alias_.probability(k) / double(triangles_[k].area));
 
     for (std::size_t k = 0; k < n; ++k) {
         const EmissiveTriangle& t = triangles_[k];
@@ -70,10 +42,7 @@ int EmitterTable::find(unsigned geomID, unsigned primID) const {
 EmitterSample EmitterTable::sample(float u0, float u1, float u2) const {
     EmitterSample s;
     if (triangles_.empty()) return s;
-    const float scaled = u0 * float(triangles_.size());
-    std::size_t k = std::min(std::size_t(scaled), triangles_.size() - 1);
-    const float frac = scaled - float(k);
-    if (frac >= aliasProbability_[k]) k = std::size_t(alias_[k]);
+    const std::size_t k = alias_.pick(u0);
     const EmissiveTriangle& t = triangles_[k];
     // Uniform on the triangle: the square-root warp of two uniforms.
     const float r = std::sqrt(u1);

@@ -14,6 +14,8 @@
 //     pdf(omega) = pdfArea(k) * d^2 / |cos_l|.
 // Deterministic: the same scene gives the same table; sampling is a pure function of its
 // three uniforms.
+#include "probes/bake/AliasTable.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -56,8 +58,7 @@ public:
 private:
     std::vector<EmissiveTriangle> triangles_;
     std::vector<float> pdfArea_;
-    std::vector<float> aliasProbability_; // Vose's alias method
-    std::vector<int> alias_;
+    AliasTable alias_; // by power
     std::vector<std::vector<int>> indexOfPrim_; // [geomID][primID] -> table index or -1
 };
 

@@ -55,6 +55,9 @@ void RadianceSlab::reset(std::size_t probes, int rays) {
     lightRgb_.assign(probes * kTexels * 3, 0.0f);
     lightY_.assign(probes * kTexels, 0.0f);
     lightY2_.assign(probes * kTexels, 0.0f);
+    slotLitSamples_.assign(probes, 0);
+    litY_.assign(probes * kTexels, 0.0f);
+    litY2_.assign(probes * kTexels, 0.0f);
 }
 
 void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& sc,
@@ -90,6 +93,8 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
         if (4 * emitterHits < n) m = nee.samples;
     }
     slotSamples_[slot] = m;
+    const int ml = nee.lit && !nee.lit->empty() ? nee.litSamples : 0;
+    slotLitSamples_[slot] = ml;
     for (std::size_t i = 0; i < n; ++i) {
         const glm::vec3 d = rot * dirs[i];
         const RayHit& h = hits[i];
@@ -112,6 +117,16 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
                 if (surf.albedo != glm::vec3(0.0f)) {
                     const glm::vec3 x = origin + d * h.t;
                     glm::vec3 e = directIrradiance(rs, sc, lights, x, nrm, counters.shadow);
+                    float weight = 1.0f; // the balance heuristic's, against lit-surface samples
+                    if (ml > 0) {
+                        const float pdfA = nee.lit->pdfArea(h.geomID, h.primID, back, x);
+                        const float cosL = std::fabs(glm::dot(nrm, d));
+                        if (pdfA > 0.0f)
+                            weight = cosL > 1e-6f
+                                         ? nPu / (nPu + float(ml) * pdfA * h.t * h.t / cosL)
+                                         : 0.0f;
+                    }
+                    e *= weight;
                     if (previous) { // finished in convolve(), once lookUp() has E_indirect
                         pending.push_back(
                             {{x, nrm, -d}, e, surf.albedo * invPi, std::uint32_t(first + i)});
@@ -123,6 +138,7 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
         }
         radiance_[first + i] = glm::vec4(L, 0.0f);
     }
+    if (ml > 0) traceLitSamples(slot, rs, sc, lights, rot, origin, nee, probeKey, counters);
     if (m == 0) return;
 
     // The emitter samples: M points on the emitters, each visible one added to every texel
@@ -150,6 +166,51 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
         const float eps = rs.epsilon();
         if (rs.occluded(origin, w, 0.0f, std::max(dist - 2.0f * eps, 0.0f))) continue;
         const glm::vec3 c = tri.radiance / (nPu + float(m) * pdf);
+        const glm::vec3 local = toLocal * w;
+        for (int t = 0; t < kTexels; ++t) {
+            const float cosT = glm::dot(texels[size_t(t)], local);
+            if (!(cosT > 0.0f)) continue;
+            const glm::vec3 x = c * cosT;
+            rgb[3 * t] += x.r;
+            rgb[3 * t + 1] += x.g;
+            rgb[3 * t + 2] += x.b;
+            const float y = luminance(x);
+            y1[t] += y;
+            y2[t] += y * y;
+        }
+    }
+}
+
+void RadianceSlab::traceLitSamples(std::size_t slot, const RayScene& rs, const Scenario& sc,
+                                   const std::vector<scene::Light>& lights, const glm::mat3& rot,
+                                   const glm::vec3& origin, const EmitterSampling& nee,
+                                   std::uint64_t probeKey, RayCounters& counters) {
+    const int ml = slotLitSamples_[slot];
+    const float nPu = float(rays_) * kUniformSpherePdf;
+    // A stream of their own ("lit "), each probe by its key.
+    std::uint64_t state = nee.stream ^ 0x6c697420ull ^ (probeKey * 0xbf58476d1ce4e5b9ull);
+    splitmix64(state);
+    const glm::mat3 toLocal = glm::transpose(rot);
+    const std::vector<glm::vec3>& texels = texelDirections();
+    float* rgb = lightRgb_.data() + slot * kTexels * 3;
+    float* y1 = litY_.data() + slot * kTexels;
+    float* y2 = litY2_.data() + slot * kTexels;
+    const float eps = rs.epsilon();
+    for (int j = 0; j < ml; ++j) {
+        const float u0 = uniformFloat(state), u1 = uniformFloat(state), u2 = uniformFloat(state);
+        const LitPatchSample s = nee.lit->sample(u0, u1, u2);
+        glm::vec3 w = s.point - origin;
+        const float dist = glm::length(w);
+        if (!(dist > 0.0f)) continue;
+        w /= dist;
+        const float cosL = glm::dot(s.normal, -w);
+        if (!(cosL > 1e-6f)) continue; // the probe sees the other side (another entry, or black)
+        ++counters.shadow;
+        if (rs.occluded(origin, w, 0.0f, std::max(dist - 2.0f * eps, 0.0f))) continue;
+        const glm::vec3 e = directIrradiance(rs, sc, lights, s.point, s.normal, counters.shadow);
+        if (e == glm::vec3(0.0f)) continue;
+        const float pdf = s.pdfArea * dist * dist / cosL;
+        const glm::vec3 c = s.albedoOverPi * e / (nPu + float(ml) * pdf);
         const glm::vec3 local = toLocal * w;
         for (int t = 0; t < kTexels; ++t) {
             const float cosT = glm::dot(texels[size_t(t)], local);
@@ -219,7 +280,7 @@ const glm::vec4* RadianceSlab::finish(std::size_t slot) {
 
 void RadianceSlab::convolve(std::size_t slot, const ProbeConvolution& conv, float* outRgb) {
     conv.irradiance(&finish(slot)->x, outRgb);
-    if (slotSamples_[slot] == 0) return;
+    if (slotSamples_[slot] == 0 && slotLitSamples_[slot] == 0) return;
     const float* rgb = lightRgb_.data() + slot * kTexels * 3;
     for (int i = 0; i < kTexels * 3; ++i)
         outRgb[i] += rgb[i];
@@ -228,15 +289,18 @@ void RadianceSlab::convolve(std::size_t slot, const ProbeConvolution& conv, floa
 void RadianceSlab::texelVariance(std::size_t slot, const ProbeConvolution& conv,
                                  float* outVar) const {
     conv.irradianceLumaVariance(&radiance_[slot * std::size_t(rays_)].x, outVar);
-    const int m = slotSamples_[slot];
-    if (m < 2) return;
-    // The light part is a sum of M samples: its variance is M times their sample variance.
-    const float* y1 = lightY_.data() + slot * kTexels;
-    const float* y2 = lightY2_.data() + slot * kTexels;
-    for (int t = 0; t < kTexels; ++t) {
-        const float s2 = std::max(0.0f, (y2[t] - y1[t] * y1[t] / float(m)) / float(m - 1));
-        outVar[t] += float(m) * s2;
-    }
+    // Each light part is a sum of M samples: its variance is M times their sample variance.
+    auto addSumVariance = [&](int m, const float* y1, const float* y2) {
+        if (m < 2) return;
+        for (int t = 0; t < kTexels; ++t) {
+            const float s2 = std::max(0.0f, (y2[t] - y1[t] * y1[t] / float(m)) / float(m - 1));
+            outVar[t] += float(m) * s2;
+        }
+    };
+    addSumVariance(slotSamples_[slot], lightY_.data() + slot * kTexels,
+                   lightY2_.data() + slot * kTexels);
+    addSumVariance(slotLitSamples_[slot], litY_.data() + slot * kTexels,
+                   litY2_.data() + slot * kTexels);
 }
 
 } // namespace pb::probes

@@ -18,6 +18,7 @@
 // cache), then every probe's radiance is finished and convolved (convolve). Each lookup is
 // the same pure function of its hit as in a per-ray loop, so the result is bit for bit the
 // same, for any slab size and thread count.
+#include "probes/bake/LitSurfaces.h"
 #include "probes/bake/ProbeConvolution.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/RayScene.h"
@@ -48,9 +49,21 @@ struct RayCounters {
 // convolution is exact for a uniform radiance (RadiancePass.cpp).
 // samples = 0: the rays alone (what SurfaceGather uses). The stream seeds the pass; each
 // probe draws from it by its probe key, so results do not depend on the thread count.
+//
+// Lit-surface samples (LitSurfaces.h) do the same for light that a surface reflects straight
+// from the sun or a punctual light: with L > 0 of them, a hit on a lit patch keeps its direct
+// part  albedo/pi E_direct  weighted  N p_u / (N p_u + L p_s(omega))  (p_s: the patch's
+// solid-angle density), and each visible sample adds  albedo/pi E_direct(y) max(0, n_t.omega)
+// / (N p_u + L p_s(omega))  to texel t. E_direct(y) is traced at the sampled point, so both
+// strategies see the same function. (Sampling the reflected indirect light too, through the
+// previous pass's probes, was tried on rooms and did no better: bench/README.md.) Every traced probe takes them: unlike emitters, lit
+// surfaces are rarely a uniform quarter of the sphere, and where they are the balance
+// heuristic leans on the rays.
 struct EmitterSampling {
     int samples = 0;
     std::uint64_t stream = 0;
+    int litSamples = 0;
+    const LitSurfaces* lit = nullptr; // required when litSamples > 0
 };
 
 class RadianceSlab {
@@ -83,6 +96,11 @@ public:
     void texelVariance(std::size_t slot, const ProbeConvolution& conv, float* outVar) const;
 
 private:
+    // trace()'s lit-surface samples (EmitterSampling::litSamples).
+    void traceLitSamples(std::size_t slot, const RayScene& rs, const Scenario& sc,
+                         const std::vector<scene::Light>& lights, const glm::mat3& rot,
+                         const glm::vec3& origin, const EmitterSampling& nee,
+                         std::uint64_t probeKey, RayCounters& counters);
     struct Pending { // a hit waiting for E_indirect
         SampleQuery query;
         glm::vec3 direct, albedoOverPi;
@@ -97,6 +115,10 @@ private:
     // Emitter samples per slot and interior texel: RGB sum, luminance sum and sum of squares.
     std::vector<int> slotSamples_; // emitter samples each slot's probe took (0: rays alone)
     std::vector<float> lightRgb_, lightY_, lightY2_;
+    // Lit-surface samples per slot (RGB into lightRgb_), luminance sums kept apart for the
+    // variance.
+    std::vector<int> slotLitSamples_;
+    std::vector<float> litY_, litY2_;
 };
 
 } // namespace pb::probes

@@ -117,6 +117,8 @@ RayScene::RayScene(const scene::Scene& s) : recorder_(std::make_unique<Recorder>
         if (surfaces_.size() <= id) {
             surfaces_.resize(id + 1);
             normals_.resize(id + 1);
+            vertices_.resize(id + 1);
+            indices_.resize(id + 1);
         }
         surfaces_[id] = si;
         if (si.emissive != glm::vec3(0.0f))
@@ -126,6 +128,8 @@ RayScene::RayScene(const scene::Scene& s) : recorder_(std::make_unique<Recorder>
                                     si.doubleSided, 0.0f, id, unsigned(t)});
             }
         normals_[id] = std::move(normals);
+        indices_[id].assign(idx, idx + 3 * nt);
+        vertices_[id] = std::move(world);
         triangles_ += nt;
     }
     rtcCommitScene(scene_);
@@ -137,6 +141,15 @@ RayScene::RayScene(const scene::Scene& s) : recorder_(std::make_unique<Recorder>
     float far =
         bounds_.empty() ? 0.0f : std::max(glm::length(bounds_.min), glm::length(bounds_.max));
     epsilon_ = std::max(1e-5f * extent + 1e-6f * far, 1e-6f);
+}
+
+void RayScene::triangleCorners(unsigned geomID, unsigned primID, glm::vec3& a, glm::vec3& b,
+                               glm::vec3& c) const {
+    const std::uint32_t* i = &indices_[geomID][3 * std::size_t(primID)];
+    const std::vector<glm::vec3>& v = vertices_[geomID];
+    a = v[i[0]];
+    b = v[i[1]];
+    c = v[i[2]];
 }
 
 struct RayScene::Recorder {

@@ -12,6 +12,7 @@
 #include "scene/Scene.h"
 
 #include <embree3/rtcore.h>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -69,6 +70,12 @@ public:
     const glm::vec3& faceNormal(unsigned geomID, unsigned primID) const {
         return normals_[geomID][primID];
     }
+    // Geometries (ids 0 .. geometryCount()-1; an id without triangles has none) and their
+    // triangles' world-space corners, as traced (LitSurfaces.h samples points on them).
+    unsigned geometryCount() const { return unsigned(surfaces_.size()); }
+    std::size_t triangleCount(unsigned geomID) const { return normals_[geomID].size(); }
+    void triangleCorners(unsigned geomID, unsigned primID, glm::vec3& a, glm::vec3& b,
+                         glm::vec3& c) const;
     const scene::Bounds& bounds() const { return bounds_; }
     // The emissive triangles, for sampling them directly (EmitterTable.h).
     const EmitterTable& emitters() const { return emitters_; }
@@ -94,6 +101,8 @@ private:
     RTCScene scene_ = nullptr;
     std::vector<SurfaceInfo> surfaces_;
     std::vector<std::vector<glm::vec3>> normals_;
+    std::vector<std::vector<glm::vec3>> vertices_;      // [geomID]: world space
+    std::vector<std::vector<std::uint32_t>> indices_;   // [geomID]: 3 per triangle
     EmitterTable emitters_;
     scene::Bounds bounds_;
     std::size_t triangles_ = 0;

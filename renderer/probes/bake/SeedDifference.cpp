@@ -31,7 +31,7 @@ double meanOf(const std::vector<double>& v) {
 } // namespace
 
 SeedDifference seedDifference(const scene::Scene& scene, const ProbeSet& a, const ProbeSet& b,
-                              int count) {
+                              int count, const scene::Bounds* region) {
     const RayScene rs(scene);
     const float diag = glm::length(rs.bounds().size());
     const std::vector<GatherPoint> points =
@@ -39,6 +39,9 @@ SeedDifference seedDifference(const scene::Scene& scene, const ProbeSet& a, cons
     const ProbeSampler sa(a, 0), sb(b, 0);
     std::vector<double> rel, lum;
     for (const GatherPoint& p : points) {
+        if (region && (glm::any(glm::lessThan(p.pos, region->min)) ||
+                       glm::any(glm::greaterThan(p.pos, region->max))))
+            continue;
         const IrradianceSample ea = sa.sample(p.pos, p.normal, p.normal);
         const IrradianceSample eb = sb.sample(p.pos, p.normal, p.normal);
         if (ea.weight <= 0.0f || eb.weight <= 0.0f) continue; // no stored probe reaches it

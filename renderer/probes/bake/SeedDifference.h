@@ -21,7 +21,8 @@ struct SeedDifference {
     double dimMean = 0.0, brightMean = 0.0;
 };
 
+// region (optional): only the points inside it count (one room of a scene, say).
 SeedDifference seedDifference(const scene::Scene& scene, const ProbeSet& a, const ProbeSet& b,
-                              int points);
+                              int points, const scene::Bounds* region = nullptr);
 
 } // namespace pb::probes

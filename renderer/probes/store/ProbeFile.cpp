@@ -30,7 +30,8 @@ bool finiteNonNegative(const glm::vec3& v) {
 void checkSettings(const BakeSettings& b, const std::string& path) {
     if (b.raysPerProbe < 1 || b.raysPerProbe > 65536 || b.bounces < 1 || b.bounces > 64 ||
         !(b.backfaceThreshold >= 0.0f && b.backfaceThreshold <= 1.0f) ||
-        b.emitterSamples < 0 || b.emitterSamples > 65536 ||
+        b.emitterSamples < 0 || b.emitterSamples > 65536 || b.litSamples < 0 ||
+        b.litSamples > 65536 ||
         !(b.noiseTarget >= 0.0f && b.noiseTarget < 1.0f))
         throw fileError(path, "corrupt bake settings (rays " + std::to_string(b.raysPerProbe) +
                                   ", bounces " + std::to_string(b.bounces) + ")");
@@ -223,6 +224,7 @@ std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
     w.pod(b.backfaceThreshold);
     w.pod(std::int32_t(b.emitterSamples));
     w.pod(b.noiseTarget);
+    w.pod(std::int32_t(b.litSamples));
     w.pod(std::uint32_t(kIrradianceTile));
     w.pod(std::uint32_t(kVisibilityTile));
 
@@ -309,6 +311,8 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
     // Before version 4 the bake had neither emitter samples nor a noise target.
     b.emitterSamples = version >= 4 ? body.pod<std::int32_t>("emitter samples") : 0;
     b.noiseTarget = version >= 4 ? body.pod<float>("noise target") : 0.0f;
+    // Before version 5 the bake did not sample lit surfaces.
+    b.litSamples = version >= 5 ? body.pod<std::int32_t>("lit samples") : 0;
     checkSettings(b, path);
     if (body.pod<std::uint32_t>("tile") != std::uint32_t(kIrradianceTile) ||
         body.pod<std::uint32_t>("tile") != std::uint32_t(kVisibilityTile))

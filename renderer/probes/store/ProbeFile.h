@@ -23,7 +23,8 @@ namespace pb::probes {
 inline constexpr char kProbeFileMagic[8] = {'P', 'B', 'P', 'R', 'O', 'B', 'E', 'S'};
 // 3: per-scenario storage scales (StorageScale.h) and the sparse storage record.
 // 4: the converged bake's settings (emitter samples, noise target) after the backface threshold.
-inline constexpr std::uint32_t kProbeFileVersion = 4;
+// 5: the lit-surface samples after the noise target.
+inline constexpr std::uint32_t kProbeFileVersion = 5;
 inline constexpr std::uint32_t kProbeFileFirstVersion = 1; // oldest version still read
 
 std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set);

@@ -1,0 +1,170 @@
+#include "probes/bake/LitSurfaces.h"
+
+#include "core/ParallelFor.h"
+#include "probes/bake/AliasTable.h"
+#include "probes/bake/DirectLight.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pb::probes {
+
+namespace {
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+// A patch side waiting for its power estimate.
+struct Candidate {
+    glm::vec3 a, b, c, normal, albedoOverPi;
+    float area;
+    unsigned geomID, primID;
+    int slot; // within its triangle's slots
+};
+
+// Corner k (0..2) of sub-triangle `sub` of an n-split triangle, in barycentrics (u, v) of the
+// triangle's corners b and c, scaled by n. Lower (i, j): (i, j), (i+1, j), (i, j+1); upper:
+// (i+1, j), (i+1, j+1), (i, j+1).
+glm::vec2 subCorner(int i, int j, bool upper, int k) {
+    static const int lower[3][2] = {{0, 0}, {1, 0}, {0, 1}}, up[3][2] = {{1, 0}, {1, 1}, {0, 1}};
+    const int(*c)[2] = upper ? up : lower;
+    return {float(i + c[k][0]), float(j + c[k][1])};
+}
+
+} // namespace
+
+int LitSurfaces::subTriangle(float u, float v, int n) {
+    const float su = u * float(n), sv = v * float(n);
+    int i = std::clamp(int(std::floor(su)), 0, n - 1);
+    int j = std::clamp(int(std::floor(sv)), 0, n - 1);
+    if (i + j > n - 1) j = n - 1 - i; // rounding put the point past the far edge
+    const bool upper = (su - float(i)) + (sv - float(j)) > 1.0f && i + j <= n - 2;
+    return (i * n + j) * 2 + int(upper);
+}
+
+LitSurfaces::LitSurfaces(const RayScene& rs, const Scenario& sc,
+                         const std::vector<scene::Light>& lights, int threads,
+                         std::uint64_t& shadowRays)
+    : rs_(&rs) {
+    const glm::vec3 size = rs.bounds().size();
+    const float extent = std::max(size.x, std::max(size.y, size.z));
+    const float patchEdge = extent > 0.0f ? extent / kPatchesPerExtent : 1.0f;
+    const bool anyLight = (sc.sun.enabled && sc.sun.intensity > 0.0f) || !lights.empty();
+    if (!anyLight) return;
+
+    // 1. Every side of every patch of every reflecting triangle.
+    std::vector<Candidate> candidates;
+    triangles_.resize(rs.geometryCount());
+    std::size_t slotCount = 0;
+    for (unsigned g = 0; g < rs.geometryCount(); ++g) {
+        const SurfaceInfo& surf = rs.surface(g);
+        triangles_[g].resize(rs.triangleCount(g));
+        if (surf.albedo == glm::vec3(0.0f)) continue;
+        const glm::vec3 albedoOverPi = surf.albedo * float(1.0 / M_PI);
+        for (unsigned p = 0; p < rs.triangleCount(g); ++p) {
+            glm::vec3 a, b, c;
+            rs.triangleCorners(g, p, a, b, c);
+            const float area = 0.5f * glm::length(glm::cross(b - a, c - a));
+            if (!(area > 0.0f)) continue;
+            const float edge = std::max(glm::length(b - a),
+                                        std::max(glm::length(c - b), glm::length(a - c)));
+            const int n = std::clamp(int(std::ceil(edge / patchEdge)), 1, kMaxSplit);
+            TriangleSlots& t = triangles_[g][p];
+            t.first = std::int32_t(slotCount);
+            t.split = n;
+            slotCount += std::size_t(n * n * 4);
+            const glm::vec3 nrm = rs.faceNormal(g, p);
+            const float subArea = area / float(n * n);
+            for (int i = 0; i < n; ++i)
+                for (int j = 0; i + j < n; ++j)
+                    for (int upper = 0; upper < 2; ++upper) {
+                        if (upper && i + j > n - 2) continue;
+                        glm::vec3 corner[3];
+                        for (int k = 0; k < 3; ++k) {
+                            const glm::vec2 uv = subCorner(i, j, upper != 0, k) / float(n);
+                            corner[k] = a + uv.x * (b - a) + uv.y * (c - a);
+                        }
+                        for (int side = 0; side < (surf.doubleSided ? 2 : 1); ++side)
+                            candidates.push_back({corner[0], corner[1], corner[2],
+                                                  side ? -nrm : nrm, albedoOverPi, subArea, g, p,
+                                                  ((i * n + j) * 2 + upper) * 2 + side});
+                    }
+        }
+    }
+    patches_ = candidates.size();
+
+    // 2. Their power, from the direct light at the patch centre (shadow rays: all threads).
+    std::vector<double> power(candidates.size());
+    std::vector<std::uint64_t> rays(std::size_t(std::max(threads, 1)), 0);
+    parallelFor(candidates.size(), threads, [&](std::size_t k, int t) {
+        const Candidate& cd = candidates[k];
+        const glm::vec3 centre = (cd.a + cd.b + cd.c) / 3.0f;
+        const glm::vec3 e = directIrradiance(rs, sc, lights, centre, cd.normal, rays[size_t(t)]);
+        power[k] = double(luminance(cd.albedoOverPi * e)) * double(cd.area);
+    });
+    for (std::uint64_t r : rays)
+        shadowRays += r;
+
+    // 3. The lit ones become entries, in candidate order (deterministic).
+    slots_.assign(slotCount, -1);
+    std::vector<double> weights;
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        if (!(power[k] > 0.0) || !std::isfinite(power[k])) continue;
+        const Candidate& cd = candidates[k];
+        slots_[std::size_t(triangles_[cd.geomID][cd.primID].first + cd.slot)] =
+            std::int32_t(entries_.size());
+        entries_.push_back({cd.a, cd.b, cd.c, cd.normal, cd.albedoOverPi, 0.0f, cd.geomID,
+                            cd.primID, (cd.slot & 1) != 0});
+        weights.push_back(power[k]);
+    }
+    const AliasTable table(weights);
+    if (table.empty()) {
+        entries_.clear();
+        return;
+    }
+    for (std::size_t e = 0; e < entries_.size(); ++e) {
+        const Entry& en = entries_[e];
+        const float area = 0.5f * glm::length(glm::cross(en.b - en.a, en.c - en.a));
+        entries_[e].pdfArea = float(table.probability(e) / double(area));
+    }
+    pick_ = table;
+}
+
+float LitSurfaces::pdfArea(unsigned geomID, unsigned primID, bool back,
+                           const glm::vec3& x) const {
+    if (entries_.empty() || geomID >= triangles_.size() || primID >= triangles_[geomID].size())
+        return 0.0f;
+    const TriangleSlots& t = triangles_[geomID][primID];
+    if (t.first < 0) return 0.0f;
+    glm::vec3 a, b, c;
+    rs_->triangleCorners(geomID, primID, a, b, c);
+    // Barycentrics of x: u for corner b, v for corner c.
+    const glm::vec3 e0 = b - a, e1 = c - a, d = x - a;
+    const float d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
+    const float d20 = glm::dot(d, e0), d21 = glm::dot(d, e1);
+    const float denom = d00 * d11 - d01 * d01;
+    if (!(denom > 0.0f)) return 0.0f;
+    const float u = std::clamp((d11 * d20 - d01 * d21) / denom, 0.0f, 1.0f);
+    const float v = std::clamp((d00 * d21 - d01 * d20) / denom, 0.0f, 1.0f);
+    const int slot = subTriangle(u, v, t.split) * 2 + int(back);
+    const std::int32_t e = slots_[std::size_t(t.first + slot)];
+    return e < 0 ? 0.0f : entries_[std::size_t(e)].pdfArea;
+}
+
+LitPatchSample LitSurfaces::sample(float u0, float u1, float u2) const {
+    LitPatchSample s;
+    if (entries_.empty()) return s;
+    const std::size_t k = pick_.pick(u0);
+    const Entry& e = entries_[k];
+    const float r = std::sqrt(u1); // uniform on the triangle: the square-root warp
+    s.point = e.a * (1.0f - r) + e.b * (r * (1.0f - u2)) + e.c * (r * u2);
+    s.normal = e.normal;
+    s.albedoOverPi = e.albedoOverPi;
+    s.pdfArea = e.pdfArea;
+    s.entry = int(k);
+    s.geomID = e.geomID;
+    s.primID = e.primID;
+    s.back = e.back;
+    return s;
+}
+
+} // namespace pb::probes

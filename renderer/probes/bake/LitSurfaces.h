@@ -1,0 +1,89 @@
+#pragma once
+// Directly lit surfaces as secondary lights the bake can sample (next-event estimation toward
+// what the sun and the punctual lights light up), picked in proportion to an estimate of their
+// reflected power with an alias table.
+//
+// Why: a probe in a room lit only through a doorway sees its light as a small bright patch -
+// the sunlit floor beyond the door - that a few hundred rays find as rarely as they find a
+// small emissive panel (EmitterTable.h). The built-in rooms scene baked with tens of percent
+// of seed noise in its dark room for that reason. Sampling points on the lit surfaces
+// themselves, weighted against the probe's rays by multiple importance sampling
+// (RadiancePass.h), removes most of it.
+//
+// What is sampled is only the directly lit part of a surface's radiance,
+//     L_d(x) = albedo / pi * E_direct(x, n_side)        (DirectLight.h)
+// evaluated exactly at the sampled point with its shadow rays, so the sampled function is the
+// one the rays see at their hits; the rest (emission, E_indirect) stays with the rays.
+//
+// Patches: each traced triangle is cut into n x n equal sub-triangles (n up to kMaxSplit, so
+// no edge is much longer than the scene's extent / kPatchesPerExtent), and each side a patch
+// reflects from (the front; the back too when double-sided) is one entry, whose power is
+//     area x luminance(albedo / pi x E_direct at the patch centre, that side).
+// The estimate only steers the sampling: a patch whose centre is in shadow gets no samples
+// but is still found by the rays, whose MIS weight there is 1, so the result stays unbiased.
+// Deterministic: the same scene and scenario give the same table, independent of the seed.
+#include "probes/Scenario.h"
+#include "probes/bake/AliasTable.h"
+#include "probes/bake/RayScene.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace pb::probes {
+
+struct LitPatchSample {
+    glm::vec3 point;
+    glm::vec3 normal;         // of the side that reflects toward the sampler (unit)
+    glm::vec3 albedoOverPi;
+    float pdfArea = 0.0f;     // P(entry) / area(patch)
+    int entry = -1;
+    unsigned geomID = 0, primID = 0; // the RayScene triangle it lies on
+    bool back = false;               // reflecting from the triangle's back face
+};
+
+class LitSurfaces {
+public:
+    static constexpr int kMaxSplit = 16;
+    static constexpr float kPatchesPerExtent = 64.0f;
+
+    LitSurfaces() = default;
+    // Builds the table for one scenario's sun and the scene's punctual lights (shadow rays
+    // counted into shadowRays); threads as parallelFor's.
+    LitSurfaces(const RayScene& rs, const Scenario& sc, const std::vector<scene::Light>& lights,
+                int threads, std::uint64_t& shadowRays);
+
+    bool empty() const { return entries_.empty(); }
+    std::size_t size() const { return entries_.size(); }
+    std::size_t patchCount() const { return patches_; }
+
+    // The area density P(entry) / area of the patch holding hit point x of triangle
+    // (geomID, primID) on side `back` (false: the front); 0 where nothing is sampled.
+    float pdfArea(unsigned geomID, unsigned primID, bool back, const glm::vec3& x) const;
+    // u0 picks the entry (alias table), u1, u2 the point (uniform on its patch).
+    LitPatchSample sample(float u0, float u1, float u2) const;
+
+private:
+    struct Entry {
+        glm::vec3 a, b, c; // the patch's corners
+        glm::vec3 normal;  // of the reflecting side
+        glm::vec3 albedoOverPi;
+        float pdfArea;
+        unsigned geomID, primID;
+        bool back;
+    };
+    struct TriangleSlots {
+        std::int32_t first = -1; // into slots_: n * n * 2 (sub-triangle) * 2 (side), or -1
+        std::int32_t split = 0;  // n
+    };
+    // Sub-triangle slot of barycentrics (u, v) in an n-split triangle.
+    static int subTriangle(float u, float v, int n);
+
+    const RayScene* rs_ = nullptr;
+    std::vector<Entry> entries_;
+    std::vector<std::vector<TriangleSlots>> triangles_; // [geomID][primID]
+    std::vector<std::int32_t> slots_;                   // entry index or -1
+    AliasTable pick_; // entries by power
+    std::size_t patches_ = 0;
+};
+
+} // namespace pb::probes
