@@ -1,0 +1,226 @@
+// bench_lattice: does the DDGI lookup print the probe lattice on floors? (issue 24) A benchmark,
+// not a test (bench/README.md "Lattice on floors"): it prints a table (and JSON with --json),
+// asserts nothing.
+//
+// Per scene, lines on flat upward surfaces (probes/placement/LatticeScore.h: --lines lines of
+// 64 points, an eighth of the default uniform spacing apart, along X and Z) are looked up in
+// each placement and compared with a direct gather at the same points:
+//   uniform   `--volumes auto-uniform`, stored dense (probe planes where the bounds put them);
+//   auto      the default `bake` (`--volumes auto`: adaptive, sparse, lattice search);
+//   FILE      hand-drawn volumes (--volumes FILE.toml, repeatable), stored dense.
+// Each is baked with the bake's defaults but for --rays (default 128) and --noise-target 0
+// (one round: the pattern is the lookup's, not the bake's noise). The truth at a point is the
+// last bounce gathered there (SurfaceGather.h, --gather-rays, default 512) with the first
+// read from a 1-bounce bake of the uniform grid at the hits: the same truth for every
+// placement; the hemisphere average of those lookups leaves little of that grid's pattern.
+// Per placement: the relative RMS error over all line points (luminance, over the mean truth)
+// and the lattice score of each line at the spacing of the volume that holds its midpoint
+// (median, p90, and the share of lines above 2).
+//
+// Usage: bench_lattice [--lines N] [--rays R] [--gather-rays G] [--volumes FILE]...
+//                      [--json FILE] [SCENE...]   (default: the five shared scenes)
+#include "core/Error.h"
+#include "probes/ProbeSampler.h"
+#include "probes/bake/Baker.h"
+#include "probes/bake/RayScene.h"
+#include "probes/bake/SurfaceGather.h"
+#include "probes/placement/AutoPlacement.h"
+#include "probes/placement/LatticeScore.h"
+#include "probes/store/VolumeFile.h"
+#include "scene/SceneLoader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+using namespace pb;
+using namespace pb::probes;
+
+namespace {
+
+constexpr int kSamplesPerLine = 64, kSamplesPerCell = 8;
+
+struct Options {
+    int lines = 40, rays = 128, gatherRays = 512;
+    std::vector<std::string> volumeFiles, scenes;
+    std::string json;
+};
+
+float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+double percentile(std::vector<double> v, double q) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v[std::min(v.size() - 1, std::size_t(q * double(v.size())))];
+}
+
+ProbeSet bake(const scene::Scene& s, const std::vector<ProbeVolume>& volumes, bool sparse,
+              int rays, int bounces) {
+    BakeRequest req;
+    req.volumes = volumes;
+    req.scenarios = resolveScenarios({}, {}, s);
+    req.settings.raysPerProbe = rays;
+    req.settings.bounces = bounces;
+    req.settings.noiseTarget = 0.0f;
+    req.sparse = sparse;
+    return bakeProbes(s, req);
+}
+
+nlohmann::json scorePlacement(const std::string& name, const ProbeSet& set,
+                              const std::vector<FloorLine>& lines,
+                              const std::vector<glm::vec3>& truth) {
+    const ProbeSampler sampler(set, 0);
+    std::vector<double> scores;
+    double squared = 0.0, truthSum = 0.0;
+    std::size_t points = 0, unlit = 0;
+    for (std::size_t l = 0; l < lines.size(); ++l) {
+        const FloorLine& line = lines[l];
+        std::vector<double> residual(std::size_t(line.samples));
+        double lineTruth = 0.0;
+        for (int i = 0; i < line.samples; ++i)
+            lineTruth += luminance(truth[l * kSamplesPerLine + std::size_t(i)]) / line.samples;
+        if (!(lineTruth > 0.0)) continue;
+        for (int i = 0; i < line.samples; ++i) {
+            const glm::vec3 p = line.point(i);
+            const IrradianceSample e = sampler.sample(p, {0, 1, 0}, {0, 1, 0});
+            unlit += e.weight <= 0.0f;
+            const double t = luminance(truth[l * kSamplesPerLine + std::size_t(i)]);
+            const double d = luminance(e.irradiance) - t;
+            residual[std::size_t(i)] = d / lineTruth;
+            squared += d * d;
+            truthSum += t;
+            ++points;
+        }
+        const glm::vec3 mid = line.point(line.samples / 2);
+        const int v = sampler.selectVolume(mid);
+        if (v < 0) continue;
+        const glm::vec3 cell = set.volumes[std::size_t(v)].cellSize();
+        const float spacing = line.axis.x != 0.0f ? cell.x : cell.z;
+        scores.push_back(latticeScore(residual, line.step, 1.0f / spacing));
+    }
+    const double meanTruth = points ? truthSum / double(points) : 0.0;
+    const double above2 =
+        scores.empty() ? 0.0
+                       : double(std::count_if(scores.begin(), scores.end(),
+                                              [](double s) { return s > 2.0; })) /
+                             double(scores.size());
+    return {{"placement", name},
+            {"probes", set.probeCount()},
+            {"stored_probes", set.storedCount()},
+            {"lines_scored", scores.size()},
+            {"relative_rms_error", meanTruth > 0 ? std::sqrt(squared / double(points)) / meanTruth : 0.0},
+            {"lattice_score_median", percentile(scores, 0.5)},
+            {"lattice_score_p90", percentile(scores, 0.9)},
+            {"lines_above_2", above2},
+            {"unlit_points", unlit}};
+}
+
+nlohmann::json runScene(const std::string& path, const Options& o) {
+    const scene::Scene s = scene::loadScene(path);
+    const RayScene rs(s);
+    AutoPlacementRequest uniformReq;
+    uniformReq.mode = AutoMode::Uniform;
+    const std::vector<ProbeVolume> uniform = placeAutoVolumes(s, uniformReq).volumes;
+    const float spacing = uniform[0].cellSize().x;
+    const float step = spacing / float(kSamplesPerCell);
+    const std::vector<FloorLine> lines = findFloorLines(rs, o.lines, kSamplesPerLine, step);
+    nlohmann::json out = {{"scene", path}, {"lines", lines.size()}, {"step", step}};
+    if (lines.empty()) {
+        out["placements"] = nlohmann::json::array();
+        return out;
+    }
+    std::vector<GatherPoint> points;
+    for (const FloorLine& l : lines)
+        for (int i = 0; i < l.samples; ++i)
+            points.push_back({l.point(i), {0, 1, 0}});
+    const ProbeSet firstBounce = bake(s, uniform, false, o.rays, 1);
+    const ProbeSampler indirect(firstBounce, 0);
+    GatherSettings gs;
+    gs.rays = o.gatherRays;
+    const std::vector<glm::vec3> truth = gatherIrradiance(
+        rs, resolveScenarios({}, {}, s)[0], s.lights, points, &indirect, gs);
+
+    nlohmann::json rows = nlohmann::json::array();
+    rows.push_back(scorePlacement("uniform", bake(s, uniform, false, o.rays, 2), lines, truth));
+    AutoPlacementRequest autoReq;
+    autoReq.sparse = true;
+    rows.push_back(scorePlacement("auto", bake(s, placeAutoVolumes(s, autoReq).volumes, true,
+                                               o.rays, 2),
+                                  lines, truth));
+    for (const std::string& f : o.volumeFiles)
+        rows.push_back(scorePlacement(std::filesystem::path(f).filename().string(),
+                                      bake(s, loadVolumeFile(f).volumes, false, o.rays, 2),
+                                      lines, truth));
+    out["placements"] = rows;
+    return out;
+}
+
+std::vector<std::string> defaultScenes() {
+    std::filesystem::path dir = "../shared/scenes"; // run from the repository root
+    if (const char* d = std::getenv("PB_SCENES_DIR")) dir = d;
+    return {(dir / "sponza_decimated/sponza_s_lod4.glb").string(),
+            (dir / "cornell_box/CornellBox-Original.gltf").string(),
+            (dir / "space_ship_hallway/space_ship_hallway.glb").string(),
+            (dir / "japanese_bridge_garden/japanese_bridge_garden.gltf").string(),
+            (dir / "dream_apartment/dream_apartment.gltf").string()};
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        const bool hasValue = i + 1 < argc;
+        if (a == "--lines" && hasValue) o.lines = std::atoi(argv[++i]);
+        else if (a == "--rays" && hasValue) o.rays = std::atoi(argv[++i]);
+        else if (a == "--gather-rays" && hasValue) o.gatherRays = std::atoi(argv[++i]);
+        else if (a == "--volumes" && hasValue) o.volumeFiles.push_back(argv[++i]);
+        else if (a == "--json" && hasValue) o.json = argv[++i];
+        else if (a.rfind("--", 0) == 0) {
+            std::fprintf(stderr, "bench_lattice: error: %s: unknown option or missing value\n",
+                         a.c_str());
+            return 2;
+        } else
+            o.scenes.push_back(a);
+    }
+    if (o.lines < 1 || o.rays < 1 || o.gatherRays < 1) {
+        std::fprintf(stderr, "bench_lattice: error: --lines, --rays and --gather-rays must be >= 1\n");
+        return 2;
+    }
+    if (o.scenes.empty()) o.scenes = defaultScenes();
+    nlohmann::json all = nlohmann::json::array();
+    std::printf("%-28s %-22s %7s %8s %9s %10s %9s %9s\n", "scene", "placement", "lines",
+                "stored", "rel RMS", "score med", "p90", ">2");
+    try {
+        for (const std::string& path : o.scenes) {
+            const nlohmann::json r = runScene(path, o);
+            const std::string name = std::filesystem::path(path).stem().string();
+            for (const auto& p : r["placements"])
+                std::printf("%-28s %-22s %7zu %8zu %9.4f %10.2f %9.2f %8.0f%%\n", name.c_str(),
+                            p["placement"].get<std::string>().c_str(),
+                            p["lines_scored"].get<std::size_t>(),
+                            p["stored_probes"].get<std::size_t>(),
+                            p["relative_rms_error"].get<double>(),
+                            p["lattice_score_median"].get<double>(),
+                            p["lattice_score_p90"].get<double>(),
+                            100.0 * p["lines_above_2"].get<double>());
+            if (r["placements"].empty())
+                std::printf("%-28s (no flat upward surface found)\n", name.c_str());
+            std::fflush(stdout);
+            all.push_back(r);
+        }
+    } catch (const Error& e) {
+        std::fprintf(stderr, "bench_lattice: error: %s\n", e.what());
+        return 1;
+    }
+    if (!o.json.empty()) std::ofstream(o.json) << all.dump(2) << "\n";
+    return 0;
+}

@@ -1,0 +1,94 @@
+#include "probes/placement/LatticeScore.h"
+
+#include "probes/bake/RayDirections.h"
+
+#include <cmath>
+
+namespace pb::probes {
+
+namespace {
+
+// The surface right below p (a ray down from `above` over p), or a miss.
+RayHit surfaceBelow(const RayScene& rs, const glm::vec3& p, float above) {
+    return rs.intersect(p + glm::vec3(0, above, 0), glm::vec3(0, -1, 0));
+}
+
+// Power of the windowed series at `frequency` (a DFT at an arbitrary frequency).
+double powerAt(const std::vector<double>& x, float step, double frequency) {
+    double re = 0.0, im = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        const double phase = 2.0 * M_PI * frequency * double(step) * double(i);
+        re += x[i] * std::cos(phase);
+        im -= x[i] * std::sin(phase);
+    }
+    return re * re + im * im;
+}
+
+} // namespace
+
+std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples, float step,
+                                      std::uint64_t seed) {
+    std::vector<FloorLine> lines;
+    const scene::Bounds b = rs.bounds();
+    if (b.empty() || count <= 0 || samples < 2 || !(step > 0.0f)) return lines;
+    const float clearance = 4.0f * step, flat = step / 8.0f;
+    const float lift = std::max(rs.epsilon() * 4.0f, 1e-4f * glm::length(b.size()));
+    std::uint64_t state = seed;
+    for (int attempt = 0; attempt < 500 * count && int(lines.size()) < count; ++attempt) {
+        const glm::vec3 axis = lines.size() % 2 == 0 ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
+        glm::vec3 p(b.min.x + uniformFloat(state) * (b.max.x - b.min.x), b.max.y,
+                    b.min.z + uniformFloat(state) * (b.max.z - b.min.z));
+        // From the top of the bounds down to the first upward surface: a floor, a roof, a
+        // table top; the line must then stay on it.
+        const float above = b.max.y - b.min.y + 1.0f;
+        const RayHit first = surfaceBelow(rs, glm::vec3(p.x, b.min.y, p.z), above);
+        if (!first.hit()) continue;
+        const float height = b.max.y + 1.0f - first.t;
+        bool ok = true;
+        for (int i = 0; i < samples && ok; ++i) {
+            const glm::vec3 q = glm::vec3(p.x, height, p.z) + axis * (step * float(i));
+            const RayHit h = surfaceBelow(rs, q, clearance);
+            ok = h.hit() && std::fabs(h.t - clearance) <= flat &&
+                 rs.faceNormal(h.geomID, h.primID).y > 0.99f;
+            // Open above: the first thing straight up is a ceiling's front (or nothing), at
+            // least the clearance away; its back would mean the point is inside a solid (a
+            // floor running under a box).
+            const RayHit up = rs.intersect(q + glm::vec3(0, lift, 0), glm::vec3(0, 1, 0));
+            ok = ok && (!up.hit() ||
+                        (up.t > clearance && rs.faceNormal(up.geomID, up.primID).y < 0.0f));
+        }
+        if (!ok) continue;
+        lines.push_back({glm::vec3(p.x, height + lift, p.z), axis, step, samples});
+    }
+    return lines;
+}
+
+double latticeScore(const std::vector<double>& residual, float step, float frequency) {
+    const std::size_t n = residual.size();
+    if (n < 8 || !(step > 0.0f) || !(frequency > 0.0f)) return 0.0;
+    // Least-squares line through the series, removed; then the Hann window.
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double x = double(i), y = residual[i];
+        sx += x;
+        sy += y;
+        sxx += x * x;
+        sxy += x * y;
+    }
+    const double dn = double(n), denom = dn * sxx - sx * sx;
+    const double slope = denom != 0.0 ? (dn * sxy - sx * sy) / denom : 0.0;
+    const double offset = (sy - slope * sx) / dn;
+    std::vector<double> w(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double hann = 0.5 - 0.5 * std::cos(2.0 * M_PI * double(i) / double(n - 1));
+        w[i] = (residual[i] - offset - slope * double(i)) * hann;
+    }
+    const double bin = 1.0 / (dn * double(step));
+    double neighbours = 0.0;
+    for (int k : {-3, -2, 2, 3})
+        neighbours += powerAt(w, step, double(frequency) + k * bin) / 4.0;
+    const double peak = powerAt(w, step, double(frequency));
+    return neighbours > 0.0 ? peak / neighbours : 0.0;
+}
+
+} // namespace pb::probes
