@@ -34,16 +34,16 @@ std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples
     const float clearance = 4.0f * step, flat = step / 8.0f;
     const float lift = std::max(rs.epsilon() * 4.0f, 1e-4f * glm::length(b.size()));
     std::uint64_t state = seed;
-    for (int attempt = 0; attempt < 500 * count && int(lines.size()) < count; ++attempt) {
+    for (int attempt = 0; attempt < 4000 * count && int(lines.size()) < count; ++attempt) {
         const glm::vec3 axis = lines.size() % 2 == 0 ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
-        glm::vec3 p(b.min.x + uniformFloat(state) * (b.max.x - b.min.x), b.max.y,
-                    b.min.z + uniformFloat(state) * (b.max.z - b.min.z));
-        // From the top of the bounds down to the first upward surface: a floor, a roof, a
-        // table top; the line must then stay on it.
-        const float above = b.max.y - b.min.y + 1.0f;
-        const RayHit first = surfaceBelow(rs, glm::vec3(p.x, b.min.y, p.z), above);
+        const glm::vec3 p(b.min.x + uniformFloat(state) * (b.max.x - b.min.x),
+                          b.min.y + uniformFloat(state) * (b.max.y - b.min.y),
+                          b.min.z + uniformFloat(state) * (b.max.z - b.min.z));
+        // From a random height down to the first upward surface: a floor of any storey, a
+        // roof, a table top; the line must then stay on it.
+        const RayHit first = rs.intersect(p, glm::vec3(0, -1, 0));
         if (!first.hit()) continue;
-        const float height = b.max.y + 1.0f - first.t;
+        const float height = p.y - first.t;
         bool ok = true;
         for (int i = 0; i < samples && ok; ++i) {
             const glm::vec3 q = glm::vec3(p.x, height, p.z) + axis * (step * float(i));

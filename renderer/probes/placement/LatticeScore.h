@@ -29,8 +29,8 @@ struct FloorLine {
 // upward-facing surfaces (normal within ~2.5 degrees of +Y) that stay flat (every point's
 // surface at the first point's height, within step / 8) and open above over their whole
 // length (nothing within 4 steps, and the first thing above is a ceiling seen from below, not
-// the inside of a solid). Starts are random over the scene's bounds (seeded:
-// the same lines for the same scene); 500 * count tries at most.
+// the inside of a solid). Starts are random in the scene's bounds, dropped to the first
+// surface below (seeded: the same lines for the same scene); 4000 * count tries at most.
 std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples, float step,
                                       std::uint64_t seed = 0x11A77ECEu);
 
