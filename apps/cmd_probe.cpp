@@ -36,6 +36,50 @@ nlohmann::json vecJson(const glm::vec3& v) {
     return {v.x, v.y, v.z};
 }
 
+// Whether a lookup found light to report, and if not, why (issue 18: a point between sparse
+// storage's surface probes used to print E = 0 as if it had been measured).
+struct LookupFound {
+    bool found = true;
+    std::string reason;
+    int notStored = 0, invalid = 0, outsideGrid = 0; // of the 8 corners, when not found
+};
+
+LookupFound lookupFound(const ProbeSet& set, const ProbeSampler& sampler,
+                        const IrradianceSample& r, const glm::vec3& at, const glm::vec3& normal,
+                        const glm::vec3& view) {
+    LookupFound f;
+    if (r.volume < 0) {
+        f.found = false;
+        f.reason = "outside every volume (the renderer falls back to its ambient)";
+        return f;
+    }
+    if (r.probes > 0 && r.weight > 0.0f) return f;
+    f.found = false;
+    if (r.probes > 0) {
+        f.reason = "volume '" + set.volumes[size_t(r.volume)].name +
+                   "' faded out at its edge (weight 0)";
+        return f;
+    }
+    SampleTrace trace;
+    sampler.sampleVolume(r.volume, at, normal, view, {}, &trace);
+    const ProbeVolume& v = set.volumes[size_t(r.volume)];
+    for (const CornerFetch& c : trace.corners) {
+        if (!c.inGrid) {
+            ++f.outsideGrid;
+            continue;
+        }
+        const ProbeState& st = set.states[size_t(r.volume)][size_t(v.probeIndex(c.probe))];
+        if (!st.stored) ++f.notStored;
+        else if (!st.valid) ++f.invalid;
+    }
+    f.reason = "none of the 8 probes around the point in volume '" + v.name + "' holds light (" +
+               std::to_string(f.notStored) + " not stored: sparse storage keeps the probes at "
+               "surface cells; " + std::to_string(f.invalid) + " invalid: inside geometry; " +
+               std::to_string(f.outsideGrid) + " outside the grid); re-bake with --dense to "
+               "store them all";
+    return f;
+}
+
 int run(const ProbeArgs& a) {
     glm::vec3 at = parseVec3(a.at, "--at", false);
     glm::vec3 normal = glm::normalize(parseVec3(a.normal, "--normal", true));
@@ -56,24 +100,33 @@ int run(const ProbeArgs& a) {
     ProbeSampler sampler(set, scenario);
     IrradianceSample r = sampler.sample(at, normal, view);
     std::string volume = r.volume >= 0 ? set.volumes[size_t(r.volume)].name : "";
+    const LookupFound found = lookupFound(set, sampler, r, at, normal, view);
     if (a.json) {
         nlohmann::json j{{"probes_file", a.probes},
                          {"scenario", set.scenarios[size_t(scenario)].name},
                          {"at", vecJson(at)},
                          {"normal", vecJson(normal)},
                          {"eye_dir", vecJson(view)},
-                         {"irradiance", vecJson(r.irradiance)},
+                         {"found", found.found},
+                         {"irradiance", found.found ? vecJson(r.irradiance) : nlohmann::json()},
                          {"weight", r.weight},
                          {"volume", r.volume >= 0 ? nlohmann::json(volume) : nlohmann::json()},
                          {"probes_used", r.probes}};
+        if (!found.found)
+            j["not_found"] = {{"reason", found.reason},
+                              {"corners_not_stored", found.notStored},
+                              {"corners_invalid", found.invalid},
+                              {"corners_outside_grid", found.outsideGrid}};
         writeJson(a.json, j.dump(2) + "\n");
+        return 0;
+    }
+    if (!found.found) {
+        std::printf("E: none - no probe found: %s\n", found.reason.c_str());
         return 0;
     }
     std::printf("E = %.6g %.6g %.6g  (irradiance, linear; a uniform sky L gives pi*L)\n",
                 r.irradiance.x, r.irradiance.y, r.irradiance.z);
-    if (r.volume < 0)
-        std::printf("outside every volume: weight 0 (the renderer falls back to its ambient)\n");
-    else
+    if (r.volume >= 0)
         std::printf("volume '%s', weight %.4g, %d probe(s), scenario '%s'\n", volume.c_str(),
                     r.weight, r.probes, set.scenarios[size_t(scenario)].name.c_str());
     return 0;
