@@ -19,6 +19,7 @@
 //
 // Usage: bench_lattice [--lines N] [--rays R] [--gather-rays G] [--volumes FILE]...
 //                      [--json FILE] [SCENE...]   (default: the five shared scenes)
+#include "SharedScenes.h"
 #include "core/Error.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/Baker.h"
@@ -162,15 +163,6 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
     return out;
 }
 
-std::vector<std::string> defaultScenes() {
-    std::filesystem::path dir = "../shared/scenes"; // run from the repository root
-    if (const char* d = std::getenv("PB_SCENES_DIR")) dir = d;
-    return {(dir / "sponza_decimated/sponza_s_lod4.glb").string(),
-            (dir / "cornell_box/CornellBox-Original.gltf").string(),
-            (dir / "space_ship_hallway/space_ship_hallway.glb").string(),
-            (dir / "japanese_bridge_garden/japanese_bridge_garden.gltf").string(),
-            (dir / "dream_apartment/dream_apartment.gltf").string()};
-}
 
 } // namespace
 
@@ -195,7 +187,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_lattice: error: --lines, --rays and --gather-rays must be >= 1\n");
         return 2;
     }
-    if (o.scenes.empty()) o.scenes = defaultScenes();
+    if (o.scenes.empty()) o.scenes = pb::bench::sharedScenes();
     nlohmann::json all = nlohmann::json::array();
     std::printf("%-28s %-22s %7s %8s %9s %10s %9s %9s\n", "scene", "placement", "lines",
                 "stored", "rel RMS", "score med", "p90", ">2");

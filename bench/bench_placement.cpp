@@ -36,6 +36,7 @@
 //
 // Scenes: arguments (paths or built-in names), else the five shared scenes under
 // $PB_SCENES_DIR (default ../shared/scenes: run it from the repository root).
+#include "SharedScenes.h"
 #include "core/Error.h"
 #include "probes/placement/AutoPlacement.h"
 #include "probes/bake/Baker.h"
@@ -107,15 +108,6 @@ void sampleAll(Candidate& c, const std::vector<GatherPoint>& pts) {
     }
 }
 
-std::vector<std::string> defaultScenes() {
-    std::filesystem::path dir = "../shared/scenes"; // run from the repository root
-    if (const char* d = std::getenv("PB_SCENES_DIR")) dir = d;
-    return {(dir / "sponza_decimated/sponza_s_lod4.glb").string(),
-            (dir / "cornell_box/CornellBox-Original.gltf").string(),
-            (dir / "space_ship_hallway/space_ship_hallway.glb").string(),
-            (dir / "japanese_bridge_garden/japanese_bridge_garden.gltf").string(),
-            (dir / "dream_apartment/dream_apartment.gltf").string()};
-}
 
 nlohmann::json runScene(const std::string& path, const Options& o) {
     pb::scene::Scene s = pb::scene::loadScene(path);
@@ -327,7 +319,7 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    if (o.scenes.empty()) o.scenes = defaultScenes();
+    if (o.scenes.empty()) o.scenes = pb::bench::sharedScenes();
     nlohmann::json all = nlohmann::json::array();
     for (const std::string& scene : o.scenes) {
         try {

@@ -2,7 +2,7 @@
 
 #include "core/Error.h"
 #include "core/ParallelFor.h"
-#include "truth/AliasTable.h"
+#include "probes/bake/AliasTable.h"
 #include "truth/CameraRays.h"
 #include "truth/TruthScene.h"
 
@@ -67,7 +67,7 @@ float powerHeuristic(float a, float b) {
 struct Integrator {
     const scene::Scene& scene;
     const TruthScene& ts;
-    const AliasTable& lights;
+    const probes::AliasTable& lights;
     int maxDepth;
 
     // Sun and punctual lights at x (delta lights: NEE only), as lighting_direct.frag weighs
@@ -115,7 +115,7 @@ struct Integrator {
     glm::vec3 emissiveLight(const glm::vec3& x, const glm::vec3& ng, const glm::vec3& ns, Rng& rng) const {
         if (lights.empty()) return glm::vec3(0.0f);
         float u0 = rng.next(), u1 = rng.next(), u2 = rng.next();
-        std::size_t i = lights.sample(u0);
+        std::size_t i = lights.pick(u0);
         const EmissiveTriangle& tri = ts.emissiveTriangles()[i];
         float su = std::sqrt(u1);
         float b1 = u2 * su, b2 = 1.0f - su; // Embree's (u, v): p = (1-u-v) a + u b + v c
@@ -130,7 +130,7 @@ struct Integrator {
         float cosL = -glm::dot(tri.normal, wi);
         if (tri.twoSided) cosL = std::abs(cosL);
         if (cosL <= 0.0f) return glm::vec3(0.0f);
-        float pdfLight = lights.pdf(i) / tri.area * dist2 / cosL;
+        float pdfLight = float(lights.probability(i)) / tri.area * dist2 / cosL;
         if (!(pdfLight > 0.0f) || !std::isfinite(pdfLight)) return glm::vec3(0.0f);
         const float eps = ts.epsilon();
         if (ts.occluded(x + ng * eps, wi, 0.0f, dist - 2.0f * eps)) return glm::vec3(0.0f);
@@ -146,7 +146,7 @@ struct Integrator {
         const EmissiveTriangle& tri = ts.emissiveTriangles()[size_t(i)];
         float cosL = std::abs(glm::dot(h.geometricNormal, dir));
         if (!(cosL > 0.0f)) return 0.0f;
-        return lights.pdf(size_t(i)) / tri.area * h.t * h.t / cosL;
+        return float(lights.probability(size_t(i))) / tri.area * h.t * h.t / cosL;
     }
 
     glm::vec3 radiance(glm::vec3 o, glm::vec3 d, Rng& rng) const {
@@ -241,7 +241,7 @@ TruthResult renderTruth(const scene::Scene& scene, const scene::View& view,
     std::vector<double> weights;
     for (const EmissiveTriangle& t : ts.emissiveTriangles())
         weights.push_back(double(t.area) * double(luminance(t.meanEmission)) * (t.twoSided ? 2.0 : 1.0));
-    const AliasTable lightTable(weights);
+    const probes::AliasTable lightTable(weights);
     const Integrator integrator{scene, ts, lightTable, settings.maxDepth};
 
     // Per pixel: the mean colour and the sample variance of its luminance.

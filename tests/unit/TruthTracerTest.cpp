@@ -3,7 +3,6 @@
 // the alias table's probabilities, the CPU tonemap, and the cache key and files.
 #include "scene/SceneBuilder.h"
 #include "core/Error.h"
-#include "truth/AliasTable.h"
 #include "truth/TruthCache.h"
 
 #include <cmath>
@@ -117,21 +116,6 @@ TEST(TruthTracer, SingleSidedBackFacesAreCulledForCameraRaysOnly) {
     // The small box in the middle is lit only by the sky that leaks through... nothing: the
     // enclosing box blocks every light ray.
     EXPECT_FLOAT_EQ(r.hdr.at(4, 4, 0), 0.0f);
-}
-
-TEST(TruthAliasTable, DrawsInProportionToTheWeights) {
-    const std::vector<double> w = {1.0, 0.0, 3.0, 6.0};
-    truth::AliasTable t(w);
-    ASSERT_EQ(t.size(), 4u);
-    std::vector<int> counts(4, 0);
-    const int n = 100000;
-    for (int i = 0; i < n; ++i)
-        ++counts[t.sample((float(i) + 0.5f) / float(n))];
-    for (std::size_t i = 0; i < 4; ++i) {
-        EXPECT_NEAR(t.pdf(i), w[i] / 10.0, 1e-6);
-        EXPECT_NEAR(double(counts[i]) / n, w[i] / 10.0, 1e-3) << i;
-    }
-    EXPECT_TRUE(truth::AliasTable(std::vector<double>{0.0, 0.0}).empty());
 }
 
 TEST(TruthTonemap, IsTheCompositePassOnTheCpu) {

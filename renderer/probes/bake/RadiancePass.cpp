@@ -30,6 +30,25 @@ const std::vector<glm::vec3>& texelDirections() {
     return dirs;
 }
 
+// One light sample's share c (radiance over the MIS denominator), arriving from the
+// volume-local direction `local`, added to every interior texel facing it as c max(0, n_t.w):
+// RGB into rgb, its luminance and square into y1, y2 (the texel variance's sums).
+void addToFacingTexels(const glm::vec3& c, const glm::vec3& local, float* rgb, float* y1,
+                       float* y2) {
+    const std::vector<glm::vec3>& texels = texelDirections();
+    for (int t = 0; t < kTexels; ++t) {
+        const float cosT = glm::dot(texels[size_t(t)], local);
+        if (!(cosT > 0.0f)) continue;
+        const glm::vec3 x = c * cosT;
+        rgb[3 * t] += x.r;
+        rgb[3 * t + 1] += x.g;
+        rgb[3 * t + 2] += x.b;
+        const float y = luminance(x);
+        y1[t] += y;
+        y2[t] += y * y;
+    }
+}
+
 // Solid-angle density of sampling direction `d` (unit) through emitter triangle k hit at
 // distance t: pdfArea * t^2 / |cos_l|; infinite at grazing angles.
 float emitterPdf(const EmitterTable& table, int k, const glm::vec3& d, float t) {
@@ -146,7 +165,6 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
     std::uint64_t state = nee.stream ^ (probeKey * 0x9e3779b97f4a7c15ull);
     splitmix64(state);
     const glm::mat3 toLocal = glm::transpose(rot);
-    const std::vector<glm::vec3>& texels = texelDirections();
     float* rgb = lightRgb_.data() + slot * kTexels * 3;
     float* y1 = lightY_.data() + slot * kTexels;
     float* y2 = lightY2_.data() + slot * kTexels;
@@ -165,19 +183,7 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
         ++counters.shadow;
         const float eps = rs.epsilon();
         if (rs.occluded(origin, w, 0.0f, std::max(dist - 2.0f * eps, 0.0f))) continue;
-        const glm::vec3 c = tri.radiance / (nPu + float(m) * pdf);
-        const glm::vec3 local = toLocal * w;
-        for (int t = 0; t < kTexels; ++t) {
-            const float cosT = glm::dot(texels[size_t(t)], local);
-            if (!(cosT > 0.0f)) continue;
-            const glm::vec3 x = c * cosT;
-            rgb[3 * t] += x.r;
-            rgb[3 * t + 1] += x.g;
-            rgb[3 * t + 2] += x.b;
-            const float y = luminance(x);
-            y1[t] += y;
-            y2[t] += y * y;
-        }
+        addToFacingTexels(tri.radiance / (nPu + float(m) * pdf), toLocal * w, rgb, y1, y2);
     }
 }
 
@@ -191,7 +197,6 @@ void RadianceSlab::traceLitSamples(std::size_t slot, const RayScene& rs, const S
     std::uint64_t state = nee.stream ^ 0x6c697420ull ^ (probeKey * 0xbf58476d1ce4e5b9ull);
     splitmix64(state);
     const glm::mat3 toLocal = glm::transpose(rot);
-    const std::vector<glm::vec3>& texels = texelDirections();
     float* rgb = lightRgb_.data() + slot * kTexels * 3;
     float* y1 = litY_.data() + slot * kTexels;
     float* y2 = litY2_.data() + slot * kTexels;
@@ -210,19 +215,8 @@ void RadianceSlab::traceLitSamples(std::size_t slot, const RayScene& rs, const S
         const glm::vec3 e = directIrradiance(rs, sc, lights, s.point, s.normal, counters.shadow);
         if (e == glm::vec3(0.0f)) continue;
         const float pdf = s.pdfArea * dist * dist / cosL;
-        const glm::vec3 c = s.albedoOverPi * e / (nPu + float(ml) * pdf);
-        const glm::vec3 local = toLocal * w;
-        for (int t = 0; t < kTexels; ++t) {
-            const float cosT = glm::dot(texels[size_t(t)], local);
-            if (!(cosT > 0.0f)) continue;
-            const glm::vec3 x = c * cosT;
-            rgb[3 * t] += x.r;
-            rgb[3 * t + 1] += x.g;
-            rgb[3 * t + 2] += x.b;
-            const float y = luminance(x);
-            y1[t] += y;
-            y2[t] += y * y;
-        }
+        addToFacingTexels(s.albedoOverPi * e / (nPu + float(ml) * pdf), toLocal * w, rgb, y1,
+                          y2);
     }
 }
 
