@@ -100,7 +100,9 @@ SchedulerType=sched/backfill
 SelectType=select/cons_tres
 SelectTypeParameters=CR_Core
 ReturnToService=2
-# The test looks at queues for seconds, not minutes.
+# The test looks at queues for seconds, not minutes: schedule (dependent jobs too) every
+# second rather than every minute, and forget finished jobs after a minute.
+SchedulerParameters=sched_interval=1,bf_interval=1
 MinJobAge=60
 $node NodeAddr=127.0.0.1 State=UNKNOWN
 PartitionName=local Nodes=ALL Default=YES MaxTime=INFINITE State=UP
