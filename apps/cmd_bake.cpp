@@ -10,6 +10,7 @@
 #include "probes/store/MemoryReport.h"
 #include "probes/ProbeCounts.h"
 #include "probes/store/ProbeFile.h"
+#include "probes/store/ProbeFileParts.h"
 #include "probes/bake/RayScene.h"
 #include "probes/store/SparseStorage.h"
 #include "probes/store/VolumeFile.h"
@@ -49,7 +50,36 @@ struct BakeArgs {
     bool force = false, noRelocate = false, sparse = false, dense = false;
     bool noLatticeSearch = false;
     float backfaceThreshold = 0.25f;
+    std::string split, part; // --split scenario --part I/N: one part of a split bake
 };
+
+// "I/N" of --part.
+std::pair<int, int> parsePart(const std::string& text) {
+    int part = -1, parts = 0;
+    char slash = 0, rest = 0;
+    if (std::sscanf(text.c_str(), "%d %c %d %c", &part, &slash, &parts, &rest) != 3 ||
+        slash != '/')
+        throw Error("--part: expected I/N, e.g. 0/2 (got '" + text + "')");
+    return {part, parts};
+}
+
+// --split: which scenarios of the request this part bakes; empty = not split.
+std::vector<std::size_t> splitScenarios(const BakeArgs& a, std::size_t scenarios) {
+    if (a.split.empty()) {
+        if (!a.part.empty()) throw Error("--part: needs --split scenario");
+        return {};
+    }
+    if (a.split == "volume")
+        throw Error("--split volume: not supported: a bounce pass looks up every volume's "
+                    "previous pass and nested rings blend across volumes, so one volume's probes "
+                    "cannot be baked apart from the others'; use --split scenario");
+    if (a.split != "scenario")
+        throw Error("--split: expected scenario (got '" + a.split + "')");
+    if (a.part.empty()) throw Error("--split: needs --part I/N (this machine's part)");
+    if (a.out.empty()) throw Error("--split: needs --out (the part file to write)");
+    auto [part, parts] = parsePart(a.part);
+    return scenarioSplit(scenarios, part, parts);
+}
 
 // Sparse storage (SparseStorage.h): `--volumes auto` stores sparse unless --dense (the issue's
 // automatic placement stores only the probes a surface reads); auto-uniform and volumes files
@@ -247,6 +277,14 @@ void setBakeSettings(const BakeArgs& a, const scene::Scene& s,
     r.settings.backfaceThreshold = a.backfaceThreshold;
     r.threads = a.threads;
     r.sparse = storesSparse(a);
+}
+
+// The number of scenarios the request will hold, without placing: a volumes file may add its
+// own scenarios, automatic placement adds none.
+std::size_t scenarioCountBeforePlacement(const BakeArgs& a, const scene::Scene& s) {
+    AutoMode mode;
+    if (parseAutoMode(a.volumes, mode)) return resolveScenarios(a.scenarios, {}, s).size();
+    return resolveScenarios(a.scenarios, loadVolumeFile(a.volumes).scenarios, s).size();
 }
 
 BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo& placement) {
@@ -496,7 +534,10 @@ int run(const BakeArgs& a) {
             throw Error("--write-volumes " + a.writeVolumes + ": folder does not exist");
     }
     scene::Scene s = loadSceneWithOverrides(a.scene);
-    if (auto cached = upToDateByPlacementCache(a, s)) {
+    // A wrong split is refused before the placement runs (seconds to minutes) and prints.
+    if (!a.split.empty() || !a.part.empty()) splitScenarios(a, scenarioCountBeforePlacement(a, s));
+    // A part file is never up to date: a split part is always baked.
+    if (auto cached = a.split.empty() ? upToDateByPlacementCache(a, s) : std::nullopt) {
         const PlacementSummary summary{cached->second, false};
         if (!a.json) std::cout << placementText(summary) << "\n";
         printSummary(a, summary, cached->first, nullptr, true);
@@ -530,8 +571,9 @@ int run(const BakeArgs& a) {
             return 0;
         }
     }
+    req.onlyScenarios = splitScenarios(a, req.scenarios.size());
     const std::uint64_t hash = bakeInputHash(s, req);
-    if (!a.force) {
+    if (!a.force && a.split.empty()) {
         std::string why;
         if (std::optional<ProbeSet> cached = readCachedProbeFile(a.out, hash, &why)) {
             if (!a.json) std::cout << placementText(summary) << "\n";
@@ -555,8 +597,21 @@ int run(const BakeArgs& a) {
     BakeStats stats;
     ProbeSet set = bakeProbes(s, req, &stats, [&](const BakeProgress& p) { progress(p); });
     progress.done();
-    writeProbeFile(a.out, set);
-    recordPlacement(set.inputHash);
+    if (!a.split.empty()) {
+        ProbeFilePart part;
+        const auto [index, parts] = parsePart(a.part);
+        part.part = std::uint32_t(index);
+        part.parts = std::uint32_t(parts);
+        part.totalScenarios = std::uint32_t(req.scenarios.size());
+        for (std::size_t i : req.onlyScenarios)
+            part.scenarios.push_back(std::uint32_t(i));
+        part.set = std::move(set);
+        writeProbeFilePart(a.out, part);
+        set = std::move(part.set);
+    } else {
+        writeProbeFile(a.out, set);
+        recordPlacement(set.inputHash);
+    }
     printSummary(a, summary, set, &stats, false);
     return 0;
 }
@@ -649,6 +704,12 @@ const RegisterCommand reg{{
                        "Probe file to write (reused when its inputs match); required unless "
                        "--write-volumes is given");
         cmd.add_flag("--force", a->force, "Bake even when --out is up to date");
+        cmd.add_option("--split", a->split,
+                       "Bake one part of a split bake: 'scenario' (each part bakes a block of "
+                       "the --scenario list; every part runs the whole geometry pass). --out is "
+                       "then a part file that 'probebench bake-merge' joins with the others into "
+                       "the file one bake writes, byte for byte (never a cache hit)");
+        cmd.add_option("--part", a->part, "With --split: this part, I/N (0 <= I < N)");
         a->json.add(cmd, "The summary");
         return [a] { return run(*a); };
     },

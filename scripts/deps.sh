@@ -11,6 +11,9 @@ PB_PACKAGES=(
     valgrind
     # The HTML report is opened by a real browser in the tests (BenchCli.ReportOpens...).
     chromium
+    # A real one-node Slurm cluster for `probebench sweep --engine slurm` and its test
+    # (scripts/slurm-local.sh, bench/README.md "Sweeps").
+    slurmctld slurmd slurm-client munge
 )
 
 pb_install_deps() {

@@ -70,6 +70,10 @@ QuantisationError measureQuantisation(const std::vector<float>& before, const Pr
 void checkRequest(const BakeRequest& r) {
     if (r.volumes.empty()) throw Error("bake: no probe volumes");
     if (r.scenarios.empty()) throw Error("bake: no lighting scenario");
+    for (std::size_t i = 0; i < r.onlyScenarios.size(); ++i)
+        if (r.onlyScenarios[i] >= r.scenarios.size() ||
+            (i > 0 && r.onlyScenarios[i] <= r.onlyScenarios[i - 1]))
+            throw Error("bake: the scenario split's indices must ascend within the scenarios");
     if (r.settings.raysPerProbe < 1 || r.settings.raysPerProbe > 65536)
         throw Error("--rays: must be in [1, 65536] (got " +
                     std::to_string(r.settings.raysPerProbe) + ")");
@@ -357,14 +361,26 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     return cur;
 }
 
-// 2. Radiance, per scenario and pass: each scenario's last bounce is its irradiance.
+// The indices of req.scenarios this bake bakes: all, or the scenario split's part.
+std::vector<std::size_t> bakedScenarios(const BakeRequest& req) {
+    if (!req.onlyScenarios.empty()) return req.onlyScenarios;
+    std::vector<std::size_t> all(req.scenarios.size());
+    std::iota(all.begin(), all.end(), std::size_t(0));
+    return all;
+}
+
+// 2. Radiance, per scenario and pass: each scenario's last bounce is its irradiance. `s` is
+// the scenario's index in the whole request (its seed stream), also under a scenario split.
 void bakeRadiance(BakeRun& run, const RadianceMask& mask) {
-    for (size_t s = 0; s < run.req.scenarios.size(); ++s) {
+    std::vector<Scenario> baked;
+    for (size_t s : bakedScenarios(run.req)) {
         std::vector<ProbeTexture> prev;
         for (int pass = 1; pass <= run.cfg.bounces; ++pass)
             prev = bakeRadiancePass(run, mask, s, pass, prev);
         run.set.irradiance.push_back(std::move(prev));
+        baked.push_back(run.req.scenarios[s]);
     }
+    run.set.scenarios = std::move(baked);
 }
 
 // 3. Storage format: every texture quantised to the format, with its error per texture.
@@ -448,7 +464,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
                 .set = emptySet(scene, req),
                 .parents = std::move(parents),
                 .index = ProbeIndex(req.volumes),
-                .stages = 1 + req.scenarios.size() * size_t(req.settings.bounces),
+                .stages = 1 + bakedScenarios(req).size() * size_t(req.settings.bounces),
                 .counters = std::vector<RayCounters>(static_cast<size_t>(threads))};
     run.noise = NoiseRounds(req.settings.noiseTarget);
     bakeGeometry(run);

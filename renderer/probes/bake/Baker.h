@@ -32,6 +32,12 @@ struct BakeRequest {
     // Not an input either: trace against this BVH of `scene` instead of building one (the
     // placement's trial bakes bake one scene many times). It must be built from the same scene.
     const RayScene* rayScene = nullptr;
+    // The scenario split (`bake --split scenario`): bake only these indices of `scenarios`
+    // (empty: all of them; ascending, no duplicates). A scenario's seed stream is its index in
+    // `scenarios`, not its place among these, so each scenario of a partial bake is
+    // byte-identical to the same scenario of the whole bake (ProbeFileMerge.h joins them). Not
+    // an input: a partial bake's input hash is the whole bake's.
+    std::vector<std::size_t> onlyScenarios;
 };
 
 struct BakeProgress {
