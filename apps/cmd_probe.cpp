@@ -55,26 +55,45 @@ int run(const ProbeArgs& a) {
     ProbeSampler sampler(set, scenario);
     IrradianceSample r = sampler.sample(at, normal, view);
     std::string volume = r.volume >= 0 ? set.volumes[size_t(r.volume)].name : "";
+    // A lookup that read no probe is no measurement: E = 0 would read as darkness. Say why
+    // instead (issue 18); the renderer blends its ambient there.
+    const bool found = r.weight > 0.0f;
+    std::string reason;
+    if (r.volume < 0)
+        reason = "outside every volume";
+    else if (r.probes == 0)
+        reason = "no valid probe around the point in volume '" + volume + "'";
+    else if (!found)
+        reason = "beyond the edge fade of volume '" + volume + "'";
     if (a.json) {
         nlohmann::json j{{"probes_file", a.probes},
                          {"scenario", set.scenarios[size_t(scenario)].name},
                          {"at", vecJson(at)},
                          {"normal", vecJson(normal)},
                          {"eye_dir", vecJson(view)},
-                         {"irradiance", vecJson(r.irradiance)},
+                         {"found", found},
+                         {"irradiance", found ? vecJson(r.irradiance) : nlohmann::json()},
                          {"weight", r.weight},
                          {"volume", r.volume >= 0 ? nlohmann::json(volume) : nlohmann::json()},
-                         {"probes_used", r.probes}};
+                         {"probes_used", r.probes},
+                         {"stand_ins", r.filled}};
+        if (!found) j["reason"] = reason;
         std::cout << j.dump(2) << "\n";
+        return 0;
+    }
+    if (!found) {
+        std::printf("no stored probe found: %s (no irradiance; the renderer falls back to its "
+                    "ambient)\n",
+                    reason.c_str());
         return 0;
     }
     std::printf("E = %.6g %.6g %.6g  (irradiance, linear; a uniform sky L gives pi*L)\n",
                 r.irradiance.x, r.irradiance.y, r.irradiance.z);
-    if (r.volume < 0)
-        std::printf("outside every volume: weight 0 (the renderer falls back to its ambient)\n");
-    else
-        std::printf("volume '%s', weight %.4g, %d probe(s), scenario '%s'\n", volume.c_str(),
-                    r.weight, r.probes, set.scenarios[size_t(scenario)].name.c_str());
+    std::printf("volume '%s', weight %.4g, %d probe(s)", volume.c_str(), r.weight, r.probes);
+    if (r.filled > 0)
+        std::printf(" (%d of them stand-ins for absent probes: their nearest stored probe)",
+                    r.filled);
+    std::printf(", scenario '%s'\n", set.scenarios[size_t(scenario)].name.c_str());
     return 0;
 }
 
