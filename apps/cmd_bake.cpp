@@ -275,9 +275,12 @@ float scenarioScale(const ProbeSet& set, std::size_t s) {
                : 1.0f;
 }
 
+// `freeSpace`: the stored probes only the free-space lattice keeps (freeSpaceOnlyProbes), the
+// cost of lighting the air between surfaces (issue 18).
 void printSummary(const BakeArgs& a, const PlacementInfo& placement, const ProbeSet& set,
-                  const BakeStats* st, bool upToDate) {
+                  const BakeStats* st, bool upToDate, std::size_t freeSpace) {
     MemoryReport mem = memoryReport(set);
+    const std::size_t freeSpaceBytes = freeSpace * bytesPerProbe(set.format()).total();
     const std::vector<ProbeCounts> counts =
         volumeProbeCounts(set, st ? &st->invalidPerVolume : nullptr);
     const ProbeCounts total = totalProbeCounts(counts);
@@ -296,6 +299,10 @@ void printSummary(const BakeArgs& a, const PlacementInfo& placement, const Probe
                          {"invalid_probes", countJson(total.invalid)},
                          {"volumes", volumesJson(set, counts)},
                          {"memory", memoryReportJson(mem)}};
+        if (set.storedCount() < set.probeCount())
+            j["free_space"] = {{"lattice_probes", freeSpace},
+                               {"lattice_bytes", freeSpaceBytes},
+                               {"lattice_step", kFreeSpaceLatticeStep}};
         nlohmann::json sc = nlohmann::json::array();
         nlohmann::json scales = nlohmann::json::object();
         for (std::size_t i = 0; i < set.scenarios.size(); ++i) {
@@ -381,7 +388,11 @@ void printSummary(const BakeArgs& a, const PlacementInfo& placement, const Probe
     if (set.storedCount() < set.probeCount())
         std::cout << "sparse storage: " << set.storedCount() << " of " << set.probeCount()
                   << " probes stored, " << formatBytes(mem.total.storedTotal()) << " as "
-                  << formatName(set.format()) << " with the indirection\n";
+                  << formatName(set.format()) << " with the indirection\n"
+                  << "free space: " << freeSpace << " of the stored probes ("
+                  << formatBytes(freeSpaceBytes) << ") are kept only as the free-space lattice "
+                  << "(every " << kFreeSpaceLatticeStep
+                  << "nd probe per axis); absent probes are read as their nearest stored one\n";
     else
         std::cout << "sparse-storage candidates: " << mem.total.sparse.far
                   << " probe(s) far from every surface, " << mem.total.sparse.invalid
@@ -436,7 +447,8 @@ int run(const BakeArgs& a) {
         std::string why;
         if (std::optional<ProbeSet> cached = readCachedProbeFile(a.out, hash, &why)) {
             if (!a.json) std::cout << placementText(placement, req.settings.format) << "\n";
-            printSummary(a, placement, *cached, nullptr, true);
+            printSummary(a, placement, *cached, nullptr, true,
+                         freeSpaceOnlyProbes(*cached, staticBakeTriangles(s)));
             return 0;
         }
         if (why.rfind("unusable", 0) == 0)
@@ -456,7 +468,8 @@ int run(const BakeArgs& a) {
     ProbeSet set = bakeProbes(s, req, &stats, [&](const BakeProgress& p) { progress(p); });
     progress.done();
     writeProbeFile(a.out, set);
-    printSummary(a, placement, set, &stats, false);
+    printSummary(a, placement, set, &stats, false,
+                 freeSpaceOnlyProbes(set, staticBakeTriangles(s)));
     return 0;
 }
 

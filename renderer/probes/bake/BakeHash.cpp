@@ -2,6 +2,7 @@
 // it (it never changes the result). Bump kBakeAlgorithmVersion whenever the bake's output
 // changes for the same inputs, so stale files are re-baked rather than reused.
 #include "probes/bake/Baker.h"
+#include "probes/store/SparseStorage.h"
 #include "probes/store/Hash.h"
 #include "probes/store/ProbeFile.h"
 #include "probes/store/SceneHash.h"
@@ -70,6 +71,10 @@ std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& r) {
     h.pod(b.noiseTarget);
     h.pod(std::int32_t(kMaxNoiseRounds));
     h.pod(std::uint8_t(r.sparse));
+    // What sparse storage keeps changed with the free-space lattice (issue 18): sparse files
+    // from before it lack the lattice and must be re-baked. Dense bakes (the gate's committed
+    // file among them) keep their hash.
+    if (r.sparse) h.pod(std::uint32_t(kFreeSpaceLatticeStep));
     return h.value();
 }
 
