@@ -66,7 +66,8 @@ MidAirError compareMidAir(const DenseAndSparse& b, int points) {
     std::vector<Pair> filled;
     MidAirError e;
     double total = 0.0;
-    for (const glm::vec3& p : midAirSamples(rs, b.dense.volumes, points))
+    for (const glm::vec3& p :
+         midAirSamples(rs, b.dense.volumes, points, b.dense.volumes[0].minCellSize()))
         for (const glm::vec3& n : kAxes) {
             const IrradianceSample d = dense.sample(p, n, n), s = sparse.sample(p, n, n);
             ++e.lookups;

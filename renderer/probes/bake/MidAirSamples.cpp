@@ -6,18 +6,20 @@
 
 namespace pb::probes {
 
-bool insideGeometry(const RayScene& rs, const glm::vec3& p) {
+bool insideGeometry(const RayScene& rs, const glm::vec3& p, float sealedBelow) {
     static const std::vector<glm::vec3> sphere = sphericalFibonacci(32);
+    bool open = false;
     for (const glm::vec3& d : sphere) {
         const RayHit h = rs.intersect(p, d);
+        open = open || !h.hit() || h.t > sealedBelow;
         if (!h.hit() || rs.surface(h.geomID).doubleSided) continue;
         if (glm::dot(rs.faceNormal(h.geomID, h.primID), d) > 0.0f) return true;
     }
-    return false;
+    return !open;
 }
 
 std::vector<glm::vec3> midAirSamples(const RayScene& rs, const std::vector<ProbeVolume>& volumes,
-                                     int count, std::uint64_t seed) {
+                                     int count, float sealedBelow, std::uint64_t seed) {
     std::vector<glm::vec3> out;
     std::vector<const ProbeVolume*> roots;
     std::vector<double> cdf;
@@ -37,7 +39,7 @@ std::vector<glm::vec3> midAirSamples(const RayScene& rs, const std::vector<Probe
         for (int a = 0; a < 3; ++a)
             local[a] = (2.0f * uniformFloat(state) - 1.0f) * v.halfExtents[a];
         const glm::vec3 p = v.toWorld(local);
-        if (!insideGeometry(rs, p)) out.push_back(p);
+        if (!insideGeometry(rs, p, sealedBelow)) out.push_back(p);
     }
     return out;
 }
