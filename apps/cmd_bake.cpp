@@ -545,8 +545,10 @@ const RegisterCommand reg{{
                      "(auto only)");
         cmd.add_flag("--sparse", a->sparse,
                      "Sparse storage: store only valid probes at the corners of grid cells that "
-                     "static surface passes through (no surface's lighting changes; dynamic "
-                     "objects in empty air get the fallback); --probe-budget-mib then counts "
+                     "static surface passes through, and a coarse lattice through free space "
+                     "(every 2nd probe per axis); absent probes read as their nearest stored "
+                     "one (no surface's lighting changes; dynamic objects in the air stay "
+                     "lit); --probe-budget-mib then counts "
                      "only what is stored, so auto placement fits a finer spacing. The default "
                      "for --volumes auto; for auto-uniform and volumes files add it");
         cmd.add_flag("--dense", a->dense,
