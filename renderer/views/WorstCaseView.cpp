@@ -233,9 +233,10 @@ Coverage CoverageTester::measureSerial(const scene::View& view, int width, int h
 double CoverageTester::score(const Coverage& c) const {
     // Depth counts until the view sees 10% of the scene's diagonal on average: deeper than
     // that is "a real view"; beyond it, the search prefers poses near the scene's own views.
-    // With dynamic objects, a view showing them (up to a quarter of the frame) ranks above
-    // more overlap: their pixels are the ones only free-space probes light (issue 18).
-    const double dynamic = dynamicRays_ ? 1e4 * std::min(c.dynamicFraction / 0.25, 1.0) : 0.0;
+    // With dynamic objects, a view showing them (up to 5% of the frame: more would favour a
+    // camera against one of them) ranks above more overlap: their pixels are the ones only
+    // free-space probes light (issue 18).
+    const double dynamic = dynamicRays_ ? 1e4 * std::min(c.dynamicFraction / 0.05, 1.0) : 0.0;
     return c.fraction * 1e6 + dynamic + c.meanOverlap * 1e3 +
            10.0 * std::min(c.meanDistance / double(sceneSize_), 0.1);
 }
@@ -255,11 +256,14 @@ bool CoverageTester::eyeIsClear(const glm::vec3& eye) const {
             d[i / 2] = (i % 2) ? -1.0f : 1.0f;
         else
             d = glm::normalize(glm::vec3((i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? 1 : -1));
-        const probes::RayHit hit = rays_->intersect(eye, d);
+        // Dynamic objects too: an eye inside one of them sees nothing else.
+        const PrimaryHit primary = PrimaryRays{*rays_, dynamicRays_.get()}.intersect(eye, d);
+        const probes::RayHit& hit = primary.hit;
         if (!hit.hit()) continue;
         if (hit.t < clearance) return false;
-        const bool singleSided = !rays_->surface(hit.geomID).doubleSided;
-        if (singleSided && glm::dot(rays_->faceNormal(hit.geomID, hit.primID), d) > 0.0f)
+        const probes::RayScene& rs = *primary.scene;
+        const bool singleSided = !rs.surface(hit.geomID).doubleSided;
+        if (singleSided && glm::dot(rs.faceNormal(hit.geomID, hit.primID), d) > 0.0f)
             ++backFaces;
     }
     return backFaces <= 3;

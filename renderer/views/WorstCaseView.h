@@ -8,7 +8,7 @@
 // down; row 0 at the top). A pixel "needs GI" when its ray hits static geometry at a point
 // inside the box of at least one kept volume. Dynamic instances are traced too, as the GBuffer
 // holds them (issue 18): their pixels need GI like any other, and where a scene has them the
-// search prefers a view that shows them (up to a quarter of the frame) - the pixels only
+// search prefers a view that shows them (up to 5% of the frame) - the pixels only
 // free-space probes light.
 #include "probes/ProbeSet.h"
 #include "scene/Scene.h"
