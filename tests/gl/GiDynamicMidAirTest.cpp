@@ -1,6 +1,7 @@
 // Dynamic objects in the air lit from a sparse bake (issue 18, item 3): `rooms_dynamic`'s three
-// boxes hang where no surface keeps a probe, so a sparse set lights them through its
-// free-space lattice and the stand-ins for its absent probes (probes/AbsentProbeFill.h). Both
+// boxes hang where no surface keeps a probe (its view `dynamic` shows two), so a sparse set
+// lights them through its free-space lattice and the stand-ins for its absent probes
+// (probes/AbsentProbeFill.h). Both
 // dynamic paths, gi.dynamic=per_pixel and sh, must light every pixel of them, within the
 // stated tolerance of the dense set of the same grid: 15% mean relative difference of the
 // indirect irradiance over the objects' pixels (the mid-air lookups' own figure,
