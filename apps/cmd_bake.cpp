@@ -397,9 +397,12 @@ float scenarioScale(const ProbeSet& set, std::size_t s) {
                : 1.0f;
 }
 
+// `freeSpace`: the stored probes only the free-space lattice keeps (freeSpaceOnlyProbes), the
+// cost of lighting the air between surfaces (issue 18).
 void printSummary(const BakeArgs& a, const PlacementSummary& placement, const ProbeSet& set,
-                  const BakeStats* st, bool upToDate) {
+                  const BakeStats* st, bool upToDate, std::size_t freeSpace) {
     MemoryReport mem = memoryReport(set);
+    const std::size_t freeSpaceBytes = freeSpace * bytesPerProbe(set.format()).total();
     const std::vector<ProbeCounts> counts =
         volumeProbeCounts(set, st ? &st->invalidPerVolume : nullptr);
     const ProbeCounts total = totalProbeCounts(counts);
@@ -419,6 +422,10 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
                          {"invalid_probes", countJson(total.invalid)},
                          {"volumes", volumesJson(set, counts)},
                          {"memory", memoryReportJson(mem)}};
+        if (set.storedCount() < set.probeCount())
+            j["free_space"] = {{"lattice_probes", freeSpace},
+                               {"lattice_bytes", freeSpaceBytes},
+                               {"lattice_step", kFreeSpaceLatticeStep}};
         nlohmann::json sc = nlohmann::json::array();
         nlohmann::json scales = nlohmann::json::object();
         for (std::size_t i = 0; i < set.scenarios.size(); ++i) {
@@ -505,7 +512,11 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
     if (set.storedCount() < set.probeCount())
         std::cout << "sparse storage: " << set.storedCount() << " of " << set.probeCount()
                   << " grid probes stored, " << formatBytes(mem.total.storedTotal()) << " as "
-                  << formatName(set.format()) << " with the indirection\n";
+                  << formatName(set.format()) << " with the indirection\n"
+                  << "free space: " << freeSpace << " of the stored probes ("
+                  << formatBytes(freeSpaceBytes) << ") are kept only as the free-space lattice "
+                  << "(every " << kFreeSpaceLatticeStep
+                  << "nd probe per axis); absent probes are read as their nearest stored one\n";
     else
         std::cout << "sparse-storage candidates: " << mem.total.sparse.far
                   << " probe(s) far from every surface, " << mem.total.sparse.invalid
@@ -540,7 +551,8 @@ int run(const BakeArgs& a) {
     if (auto cached = a.split.empty() ? upToDateByPlacementCache(a, s) : std::nullopt) {
         const PlacementSummary summary{cached->second, false};
         if (!a.json) std::cout << placementText(summary) << "\n";
-        printSummary(a, summary, cached->first, nullptr, true);
+        printSummary(a, summary, cached->first, nullptr, true,
+                     freeSpaceOnlyProbes(cached->first, staticBakeTriangles(s)));
         return 0;
     }
     PlacementInfo placement;
@@ -578,7 +590,8 @@ int run(const BakeArgs& a) {
         if (std::optional<ProbeSet> cached = readCachedProbeFile(a.out, hash, &why)) {
             if (!a.json) std::cout << placementText(summary) << "\n";
             recordPlacement(hash);
-            printSummary(a, summary, *cached, nullptr, true);
+            printSummary(a, summary, *cached, nullptr, true,
+                         freeSpaceOnlyProbes(*cached, staticBakeTriangles(s)));
             return 0;
         }
         if (why.rfind("unusable", 0) == 0)
@@ -612,7 +625,7 @@ int run(const BakeArgs& a) {
         writeProbeFile(a.out, set);
         recordPlacement(set.inputHash);
     }
-    printSummary(a, summary, set, &stats, false);
+    printSummary(a, summary, set, &stats, false, freeSpaceOnlyProbes(set, staticBakeTriangles(s)));
     return 0;
 }
 
@@ -693,8 +706,10 @@ const RegisterCommand reg{{
                      "(auto only)");
         cmd.add_flag("--sparse", a->sparse,
                      "Sparse storage: store only valid probes at the corners of grid cells that "
-                     "static surface passes through (no surface's lighting changes; dynamic "
-                     "objects in empty air get the fallback); --probe-budget-mib then counts "
+                     "static surface passes through, and a coarse lattice through free space "
+                     "(every 2nd probe per axis); absent probes read as their nearest stored "
+                     "one (no surface's lighting changes; dynamic objects in the air stay "
+                     "lit); --probe-budget-mib then counts "
                      "only what is stored, so auto placement fits a finer spacing. The default "
                      "for --volumes auto; for auto-uniform and volumes files add it");
         cmd.add_flag("--dense", a->dense,

@@ -73,10 +73,9 @@ LookupFound lookupFound(const ProbeSet& set, const ProbeSampler& sampler,
         else if (!st.valid) ++f.invalid;
     }
     f.reason = "none of the 8 probes around the point in volume '" + v.name + "' holds light (" +
-               std::to_string(f.notStored) + " not stored: sparse storage keeps the probes at "
-               "surface cells; " + std::to_string(f.invalid) + " invalid: inside geometry; " +
-               std::to_string(f.outsideGrid) + " outside the grid); re-bake with --dense to "
-               "store them all";
+               std::to_string(f.notStored) + " not stored and inside geometry, so no stand-in "
+               "fills them; " + std::to_string(f.invalid) + " invalid: inside geometry; " +
+               std::to_string(f.outsideGrid) + " outside the grid)";
     return f;
 }
 
@@ -111,7 +110,8 @@ int run(const ProbeArgs& a) {
                          {"irradiance", found.found ? vecJson(r.irradiance) : nlohmann::json()},
                          {"weight", r.weight},
                          {"volume", r.volume >= 0 ? nlohmann::json(volume) : nlohmann::json()},
-                         {"probes_used", r.probes}};
+                         {"probes_used", r.probes},
+                         {"stand_ins", r.filled}};
         if (!found.found)
             j["not_found"] = {{"reason", found.reason},
                               {"corners_not_stored", found.notStored},
@@ -126,9 +126,13 @@ int run(const ProbeArgs& a) {
     }
     std::printf("E = %.6g %.6g %.6g  (irradiance, linear; a uniform sky L gives pi*L)\n",
                 r.irradiance.x, r.irradiance.y, r.irradiance.z);
-    if (r.volume >= 0)
-        std::printf("volume '%s', weight %.4g, %d probe(s), scenario '%s'\n", volume.c_str(),
-                    r.weight, r.probes, set.scenarios[size_t(scenario)].name.c_str());
+    if (r.volume >= 0) {
+        std::printf("volume '%s', weight %.4g, %d probe(s)", volume.c_str(), r.weight, r.probes);
+        if (r.filled > 0)
+            std::printf(" (%d of them stand-ins for absent probes: their nearest stored probe)",
+                        r.filled);
+        std::printf(", scenario '%s'\n", set.scenarios[size_t(scenario)].name.c_str());
+    }
     return 0;
 }
 

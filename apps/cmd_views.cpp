@@ -50,6 +50,7 @@ nlohmann::json viewJson(const scene::View& v, const views::Coverage& c) {
               {"max_overlap", c.maxOverlap},
               {"mean_overlap", c.meanOverlap},
               {"mean_distance", c.meanDistance},
+              {"dynamic_fraction", c.dynamicFraction}, // pixels on dynamic objects (issue 18)
               {"width", c.width},
               {"height", c.height}}}};
 }

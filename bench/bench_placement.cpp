@@ -34,6 +34,14 @@
 // 16 hemisphere rays hit within one reference cell) and points outside the reference grid's
 // volumes are skipped.
 //
+// Mid-air (issue 18): --mid-air-points (default 2000) points in the free space of the
+// reference grid's volume (MidAirSamples.h: not inside geometry nor sealed within one
+// reference cell, as the surface points), each looked up with the six
+// axis normals and scored against a gather over the whole sphere at the point
+// (gatherIrradianceSphere, --gather-rays rays, the first bounce from the same 1-bounce
+// reference bake): "air err", the same relative error as "mean err", every lookup counted (an
+// unlit one as E = 0; "unlit" counts them).
+//
 // Scenes: arguments (paths or built-in names), else the five shared scenes under
 // $PB_SCENES_DIR (default ../shared/scenes: run it from the repository root).
 #include "SharedScenes.h"
@@ -48,6 +56,7 @@
 #include "probes/bake/RayScene.h"
 #include "probes/StaticTriangles.h"
 #include "probes/bake/SurfaceGather.h"
+#include "probes/bake/MidAirSamples.h"
 #include "probes/bake/SurfaceSamples.h"
 #include "scene/SceneLoader.h"
 
@@ -70,6 +79,8 @@ using Clock = std::chrono::steady_clock;
 struct Options {
     std::vector<std::string> scenes;
     int points = 20000, rays = 64, refRays = 128, gatherRays = 512, threads = 0;
+    int midAirPoints = 2000; // x 6 normals
+
     bool json = false, latticeSweep = false;
 };
 
@@ -82,7 +93,13 @@ struct Candidate {
     double bakeSeconds = 0.0;
     std::vector<glm::vec3> values; // per point
     std::vector<float> weights;
+    std::vector<glm::vec3> midAirValues; // per mid-air point and axis normal
+    std::vector<float> midAirWeights;
 };
+
+// A dynamic object's sides: the mid-air points are looked up (and gathered) with each.
+const std::vector<glm::vec3> kAxes = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
+                                      {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
 
 void bake(const pb::scene::Scene& s, Candidate& c, int threads) {
     BakeRequest req;
@@ -97,8 +114,17 @@ void bake(const pb::scene::Scene& s, Candidate& c, int threads) {
     c.bakeSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-void sampleAll(Candidate& c, const std::vector<GatherPoint>& pts) {
+void sampleAll(Candidate& c, const std::vector<GatherPoint>& pts,
+               const std::vector<glm::vec3>& midAir) {
     ProbeSampler sampler(c.set, 0);
+    c.midAirValues.clear();
+    c.midAirWeights.clear();
+    for (const glm::vec3& p : midAir)
+        for (const glm::vec3& n : kAxes) {
+            const IrradianceSample e = sampler.sample(p, n, n);
+            c.midAirValues.push_back(e.irradiance);
+            c.midAirWeights.push_back(e.weight);
+        }
     c.values.resize(pts.size());
     c.weights.resize(pts.size());
     for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -200,6 +226,15 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
     const std::vector<glm::vec3> truth =
         gatherIrradiance(rays, scenarios[0], s.lights, pts, &firstBounceProbes, gs);
     const double gatherSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    // Mid-air (issue 18): free-space points inside the reference grid's volume, not inside
+    // geometry (MidAirSamples.h), six normals each, against a sphere gather at the point.
+    const std::vector<glm::vec3> midAir = midAirSamples(
+        rays, ref.volumes, o.midAirPoints, std::min(refCell.x, std::min(refCell.y, refCell.z)));
+    t0 = Clock::now();
+    const std::vector<glm::vec3> midAirTruth =
+        gatherIrradianceSphere(rays, scenarios[0], s.lights, midAir, kAxes, &firstBounceProbes, gs);
+    const double midAirGatherSeconds =
+        std::chrono::duration<double>(Clock::now() - t0).count();
 
     nlohmann::json rows = nlohmann::json::array();
     std::vector<Candidate*> all{
@@ -208,13 +243,19 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
         all.push_back(&c);
     for (Candidate* c : all) {
         bake(s, *c, o.threads);
-        sampleAll(*c, pts);
+        sampleAll(*c, pts, midAir);
     }
     for (Candidate* c : all) {
         MemoryReport m = memoryReport(c->set);
         const IrradianceErrors err = irradianceErrors(c->values, truth, ref.weights);
         const IrradianceErrors grid =
             c == &ref ? IrradianceErrors{} : irradianceErrors(c->values, ref.values, ref.weights);
+        // Every mid-air point counts: one a candidate leaves unlit (weight 0) is E = 0 there,
+        // as the renderer's dynamic objects would see it (its ambient aside).
+        const IrradianceErrors air = irradianceErrors(c->midAirValues, midAirTruth);
+        std::size_t unlit = 0;
+        for (float w : c->midAirWeights)
+            unlit += w > 0.0f ? 0 : 1;
         glm::vec3 cell = c->volumes.back().cellSize();
         float onPlane = 0.0f;
         for (const ProbeVolume& v : c->volumes)
@@ -231,6 +272,8 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
                         {"mean_relative_error", err.relative},
                         {"nmae", err.nmae},
                         {"grid_relative_error", grid.relative},
+                        {"mid_air_relative_error", air.relative},
+                        {"mid_air_unlit", unlit},
                         {"points", err.points},
                         {"bake_s", c->bakeSeconds}});
     }
@@ -240,6 +283,8 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
             {"adaptive_dense_place_s", placeSeconds},
             {"gather_rays", o.gatherRays},
             {"gather_s", gatherSeconds},
+            {"mid_air_points", midAir.size()},
+            {"mid_air_gather_s", midAirGatherSeconds},
             {"reference_first_bounce_bake_s", firstBounce.bakeSeconds},
             {"adaptive_dense_notes", a.notes},
             {"adaptive_notes", as.notes},
@@ -266,18 +311,22 @@ void printTable(const nlohmann::json& r) {
                 ls["shift_cells"][2].get<double>(), ls["estimated_error_before"].get<double>(),
                 ls["estimated_error_after"].get<double>(), ls["trials"].get<int>(),
                 ls["seconds"].get<double>());
-    std::printf("  %-18s %7s %8s %8s %9s %8s %8s %5s %9s %7s %9s %8s %8s\n", "placement", "volumes",
-                "probes", "stored", "MiB", "finest", "far", "rays", "mean err", "nMAE", "grid err",
-                "bake s", "on-plane");
+    std::printf("  mid-air: %zu free-space points x 6 normals, sphere gather in %.2f s\n",
+                r["mid_air_points"].get<std::size_t>(), r["mid_air_gather_s"].get<double>());
+    std::printf("  %-18s %7s %8s %8s %9s %8s %8s %5s %9s %7s %9s %8s %8s %9s %6s\n", "placement",
+                "volumes", "probes", "stored", "MiB", "finest", "far", "rays", "mean err", "nMAE",
+                "grid err", "bake s", "on-plane", "air err", "unlit");
     for (const auto& row : r["rows"])
-        std::printf("  %-18s %7zu %8zu %8zu %9.2f %8.3f %8zu %5d %9.4f %7.4f %9.4f %8.2f %8.4f\n",
+        std::printf("  %-18s %7zu %8zu %8zu %9.2f %8.3f %8zu %5d %9.4f %7.4f %9.4f %8.2f %8.4f "
+                    "%9.4f %6zu\n",
                     row["placement"].get<std::string>().c_str(), row["volumes"].get<std::size_t>(),
                     row["probes"].get<std::size_t>(), row["stored_probes"].get<std::size_t>(),
                     row["mib"].get<double>(), row["finest_spacing"].get<double>(),
                     row["far_probes"].get<std::size_t>(), row["rays"].get<int>(),
                     row["mean_relative_error"].get<double>(), row["nmae"].get<double>(),
                     row["grid_relative_error"].get<double>(), row["bake_s"].get<double>(),
-                    row["on_plane"].get<double>());
+                    row["on_plane"].get<double>(), row["mid_air_relative_error"].get<double>(),
+                    row["mid_air_unlit"].get<std::size_t>());
 }
 
 } // namespace
@@ -299,6 +348,8 @@ int main(int argc, char** argv) {
                 o.refRays = std::stoi(next());
             else if (a == "--gather-rays")
                 o.gatherRays = std::stoi(next());
+            else if (a == "--mid-air-points")
+                o.midAirPoints = std::stoi(next());
             else if (a == "--threads")
                 o.threads = std::stoi(next());
             else if (a == "--json")
@@ -307,7 +358,7 @@ int main(int argc, char** argv) {
                 o.latticeSweep = true;
             else if (a.rfind("--", 0) == 0)
                 throw pb::Error(a + ": unknown option (--points N, "
-                                    "--rays N, --ref-rays N, --gather-rays N, "
+                                    "--rays N, --ref-rays N, --gather-rays N, --mid-air-points N, "
                                     "--threads N, --json, --lattice-sweep)");
             else
                 o.scenes.push_back(a);

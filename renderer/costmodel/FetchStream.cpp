@@ -1,5 +1,7 @@
 #include "costmodel/FetchStream.h"
 
+#include "probes/AbsentProbeFill.h"
+
 #include <algorithm>
 
 namespace pb::costmodel {
@@ -32,7 +34,9 @@ TextureTable makeTextureTable(int gbufferWidth, int gbufferHeight, const probes:
         const probes::ProbeVolume& volume = set.volumes[size_t(v)];
         const glm::ivec3 n = volume.counts;
         TextureTable::Volume vol;
-        vol.tiles = probes::tileLayout(volume, set.states[size_t(v)]);
+        vol.tiles = probes::tileLayout(
+            volume, set.states[size_t(v)],
+            probes::fillSources(volume, set.states[size_t(v)], set.settings.backfaceThreshold));
         const probes::TextureShape irr = probes::irradianceShape(vol.tiles.packedCounts);
         const probes::TextureShape vis = probes::visibilityShape(vol.tiles.packedCounts);
         vol.irradiance = add(irr.width, irr.height, irr.layers, fmt.blockDim, fmt.irradianceBytes);

@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "gl/Capabilities.h"
 #include "profile/GiVolumeLod.h"
+#include "probes/AbsentProbeFill.h"
 #include "probes/ProbeSampler.h"
 #include "probes/store/SparseLayout.h"
 
@@ -154,7 +155,11 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
             throw Error(what + ": probe state count does not match its grid");
         // Sparse volumes upload only their stored tiles, packed; dense ones as they are. The
         // cost model replays the same layout (costmodel/FetchStream.cpp).
-        const probes::TileLayout tiles = probes::tileLayout(v, set.states[size_t(vi)]);
+        // Absent probes outside geometry read their nearest stored probe's tile and position
+        // (probes/AbsentProbeFill.h), as the CPU sampler does.
+        const std::vector<int> fill =
+            probes::fillSources(v, set.states[size_t(vi)], set.settings.backfaceThreshold);
+        const probes::TileLayout tiles = probes::tileLayout(v, set.states[size_t(vi)], fill);
         g.sparse = tiles.sparse;
         g.packedCounts = tiles.packedCounts;
         g.tileBits = glm::ivec2(tiles.code.columnBits, tiles.code.rowBits);
@@ -173,7 +178,7 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
         g.visibility =
             uploadProbeTexture(packed(set.visibility[size_t(vi)], probes::kVisibilityTile),
                                visibilityFormat(format_), format_, what + " visibility");
-        g.state = uploadStates(v, set.states[size_t(vi)], tiles);
+        g.state = uploadStates(v, probes::lookupStates(v, set.states[size_t(vi)], fill), tiles);
         g.state.label(what + " states");
         fillParameters(g, v);
         volumes_.push_back(std::move(g));

@@ -1,6 +1,7 @@
 #include "probes/ProbeSampler.h"
 
 #include "core/Error.h"
+#include "probes/AbsentProbeFill.h"
 #include "probes/Octahedral.h"
 #include "core/ParallelFor.h"
 
@@ -77,14 +78,16 @@ inline void bilinear(const ProbeTexture& t, float x, float y, int layer, float* 
 // sampler per pass between its parallel loops (the visibility alone is 16 MiB for 32x8x32):
 // large volumes are copied on all cores, into memory that was not zeroed first.
 HugePageVector<float> copyTiles(const ProbeVolume& v, const ProbeTexture& t, int tile,
-                                int channels) {
+                                int channels, const std::vector<int>& source) {
     const std::size_t tileFloats = std::size_t(tile * tile * channels);
     HugePageVector<float> out(std::size_t(v.probeCount()) * tileFloats + kTilePadding);
     std::fill(out.end() - kTilePadding, out.end(), 0.0f);
     const std::size_t stride = std::size_t(t.shape.channels);
     const int threads = v.probeCount() >= 4096 ? resolveThreadCount(0) : 1;
     parallelFor(std::size_t(v.probeCount()), threads, [&](std::size_t p, int) {
-        const glm::ivec3 c = v.probeCoords(int(p));
+        // A filled probe's tile is a copy of its source's (AbsentProbeFill.h).
+        const int from = source.empty() || source[p] < 0 ? int(p) : source[p];
+        const glm::ivec3 c = v.probeCoords(from);
         float* dst = out.data() + p * tileFloats;
         for (int y = 0; y < tile; ++y) {
             const float* src =
@@ -147,7 +150,8 @@ ProbeSampler::ProbeSampler(const ProbeSet& set, int scenario) {
     std::vector<SamplerVolume> views;
     for (size_t v = 0; v < set.volumes.size(); ++v)
         views.push_back({&set.volumes[v], set.states[v].data(),
-                         &set.irradiance[size_t(scenario)][v], &set.visibility[v], parents[v] < 0});
+                         &set.irradiance[size_t(scenario)][v], &set.visibility[v], parents[v] < 0,
+                         set.settings.backfaceThreshold});
     init(views);
 }
 
@@ -175,11 +179,18 @@ void ProbeSampler::init(const std::vector<SamplerVolume>& volumes) {
         f.minCell = v.minCellSize();
         f.invMaxDistance = 1.0f / v.maxDistance();
         f.boxVolume = v.boxVolume();
-        f.irradianceTiles = copyTiles(v, *sv.irradiance, kIrradianceTile, 3);
-        f.visibilityTiles = copyTiles(v, *sv.visibility, kVisibilityTile, 2);
+        if (!std::isnan(sv.fillThreshold)) {
+            const std::vector<ProbeState> states(sv.states, sv.states + v.probeCount());
+            f.fillSource = fillSources(v, states, sv.fillThreshold);
+            if (!f.fillSource.empty()) f.lookupStates = lookupStates(v, states, f.fillSource);
+        }
+        f.irradianceTiles = copyTiles(v, *sv.irradiance, kIrradianceTile, 3, f.fillSource);
+        f.visibilityTiles = copyTiles(v, *sv.visibility, kVisibilityTile, 2, f.fillSource);
         f.firstKey = std::uint32_t(keyCount_);
         keyCount_ += std::size_t(v.probeCount());
         frames_.push_back(std::move(f));
+        Frame& added = frames_.back();
+        if (!added.lookupStates.empty()) added.src.states = added.lookupStates.data();
     }
 }
 
@@ -261,6 +272,7 @@ struct ProbeSampler::Lookup {
     const float* visTile[8];
     const float* irrTile[8];
     bool live[8];
+    bool filled[8]; // live and a stand-in for an absent probe
 };
 
 IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const glm::vec3& normal,
@@ -365,6 +377,8 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
     for (int corner = 0; corner < 8; ++corner) {
         const ProbeState& state = st[index[corner]];
         k.live[corner] = inside[corner] != 0 && state.valid;
+        k.filled[corner] = k.live[corner] && !f.fillSource.empty() &&
+                           f.fillSource[std::size_t(index[corner])] != index[corner];
         if (trace && inside[corner]) {
             trace->corners[corner].probe = {cx[corner], cy[corner], cz[corner]};
             trace->corners[corner].inGrid = true;
@@ -499,12 +513,14 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
         sum4 += splat(w) * irr[i];
         sumW += w;
         ++out.probes;
+        out.filled += k.filled[i] ? 1 : 0;
     }
     const glm::vec3 sumE(sum4[0], sum4[1], sum4[2]);
 
     // 5. Normalise, then apply the fade.
     if (!(sumW > 0.0f)) {
         out.probes = 0;
+        out.filled = 0;
         return out;
     }
     out.irradiance = sumE / sumW * k.fade;

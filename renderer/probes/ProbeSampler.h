@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace pb::probes {
@@ -41,6 +42,10 @@ struct SamplerVolume {
     const ProbeTexture* irradiance = nullptr; // RGBA, irradianceShape(counts)
     const ProbeTexture* visibility = nullptr; // RG, visibilityShape(counts)
     bool root = true;
+    // Absent probes outside geometry read as their nearest stored probe (AbsentProbeFill.h),
+    // judged by this back-face threshold; NaN: no fill (the bake's working sets, where
+    // nothing is absent yet).
+    float fillThreshold = std::numeric_limits<float>::quiet_NaN();
 };
 
 struct IrradianceSample {
@@ -48,6 +53,7 @@ struct IrradianceSample {
     float weight = 0.0f;        // edge fade in [0,1]; 0 when nothing contributed
     int volume = -1;            // the volume used, -1 outside all
     int probes = 0;             // probes that contributed (valid, inside the grid)
+    int filled = 0;             // of those, stand-ins for absent probes (AbsentProbeFill.h)
 };
 
 // What one lookup reads, for the texture-cache model (renderer/costmodel): sampleVolume fills
@@ -128,6 +134,10 @@ private:
         glm::vec3 gridOrigin, gridStep;        // probe (i,j,k) at gridOrigin + (i,j,k) * gridStep
         HugePageVector<float> irradianceTiles; // per probe: 8x8 texels, RGB
         HugePageVector<float> visibilityTiles; // per probe: 16x16 texels, mean + meanSq
+        // Sparse sets: the states as lookups see them and, per probe, whose tile it reads
+        // (AbsentProbeFill.h); both empty when nothing is filled.
+        std::vector<ProbeState> lookupStates;
+        std::vector<int> fillSource;
         glm::ivec3 counts;
         float minCell, invMaxDistance, boxVolume;
         std::uint32_t firstKey; // localityKey of the volume's probe 0

@@ -60,4 +60,25 @@ Scene makeRoomsScene() {
     return s;
 }
 
+// Issue 18: `rooms` with three boxes hanging in the air, marked dynamic (not baked, lit from
+// the probes at run time - gi.dynamic): one in the sunlit room's air by the window, one under
+// its ceiling, one in the dark room. None touches a surface, so their light comes
+// from probes a sparse bake does not keep for any surface: the free-space lattice and its
+// stand-ins (renderer/probes/AbsentProbeFill.h). The view `dynamic` sees the two in the sunlit
+// room.
+Scene makeRoomsDynamicScene() {
+    Scene s = makeRoomsScene();
+    s.name = "rooms_dynamic";
+    SceneBuilder b(s);
+    const int red = b.material("red_plastic", {0.7f, 0.15f, 0.12f});
+    const int green = b.material("green_plastic", {0.2f, 0.6f, 0.25f});
+    const int white = b.material("white_plastic", {0.8f, 0.8f, 0.8f});
+    b.box("dynamic_sunlit", {-2.9f, 1.0f, 0.3f}, {-2.5f, 1.4f, 0.7f}, red, 30.0f, true);
+    b.box("dynamic_high", {-1.7f, 1.8f, -1.0f}, {-1.3f, 2.2f, -0.6f}, white, 0.0f, true);
+    b.box("dynamic_dark", {2.3f, 1.2f, 0.6f}, {2.7f, 1.6f, 1.0f}, green, 45.0f, true);
+    // From the sunlit room's south-east corner, at the two sunlit-room boxes.
+    b.view("dynamic", {-0.4f, 1.5f, -2.2f}, {-1.6f, 1.3f, 0.6f}, 75.0f);
+    return s;
+}
+
 } // namespace pb::scene

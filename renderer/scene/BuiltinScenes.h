@@ -7,6 +7,8 @@ namespace pb::scene {
 
 Scene makeCornellScene();
 Scene makeRoomsScene();
+// `rooms` with three dynamic boxes in free space (issue 18).
+Scene makeRoomsDynamicScene();
 Scene makeCourtyardScene();
 
 } // namespace pb::scene

@@ -32,7 +32,8 @@ bool hasGltfExtension(const std::string& path) {
 } // namespace
 
 const std::vector<std::string>& builtinSceneNames() {
-    static const std::vector<std::string> names = {"cornell", "rooms", "courtyard", "empty"};
+    static const std::vector<std::string> names = {"cornell", "rooms", "courtyard", "empty",
+                                                   "rooms_dynamic"};
     return names;
 }
 
@@ -49,6 +50,8 @@ Scene makeBuiltinScene(const std::string& name) {
         s = makeRoomsScene();
     else if (name == "courtyard")
         s = makeCourtyardScene();
+    else if (name == "rooms_dynamic")
+        s = makeRoomsDynamicScene();
     else if (name == "empty")
         s.name = "empty"; // no geometry; sun and sky keep their defaults (furnace tests set them)
     else

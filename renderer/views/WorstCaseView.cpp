@@ -14,11 +14,12 @@ namespace {
 // Sums over some pixels of one view; combined in a fixed order, so results do not depend on
 // the thread count.
 struct Tally {
-    long long covered = 0, overlap = 0;
+    long long covered = 0, overlap = 0, dynamic = 0;
     double distance = 0;
     int maxOverlap = 0;
     void add(const Tally& o) {
         covered += o.covered;
+        dynamic += o.dynamic;
         overlap += o.overlap;
         distance += o.distance;
         maxOverlap = std::max(maxOverlap, o.maxOverlap);
@@ -57,6 +58,7 @@ Coverage finish(const Tally& t, int width, int height) {
     c.height = height;
     c.fraction = double(t.covered) / (double(width) * double(height));
     c.maxOverlap = t.maxOverlap;
+    c.dynamicFraction = double(t.dynamic) / (double(width) * double(height));
     if (t.covered > 0) {
         c.meanOverlap = double(t.overlap) / double(t.covered);
         c.meanDistance = t.distance / double(t.covered);
@@ -103,6 +105,18 @@ CoverageTester::CoverageTester(const scene::Scene& scene, const probes::ProbeSet
                                std::vector<bool> keptVolumes)
     : probes_(probes), kept_(std::move(keptVolumes)), views_(scene.views),
       rays_(std::make_unique<probes::RayScene>(scene)) {
+    // Dynamic objects are in the GBuffer and lit per pixel like any surface (gi.dynamic): the
+    // primary rays see them too, through a scene of them alone (the bake's RayScene leaves
+    // them out). Without any, nothing changes.
+    scene::Scene dynamicOnly = scene;
+    dynamicOnly.instances.clear();
+    for (const scene::Instance& inst : scene.instances)
+        if (inst.dynamic) {
+            dynamicOnly.instances.push_back(inst);
+            dynamicOnly.instances.back().dynamic = false;
+        }
+    if (!dynamicOnly.instances.empty())
+        dynamicRays_ = std::make_unique<probes::RayScene>(dynamicOnly);
     if (!kept_.empty() && kept_.size() != probes.volumes.size())
         throw Error("coverage: " + std::to_string(kept_.size()) + " kept flags for " +
                     std::to_string(probes.volumes.size()) + " volumes");
@@ -113,13 +127,33 @@ CoverageTester::CoverageTester(const scene::Scene& scene, const probes::ProbeSet
 CoverageTester::~CoverageTester() = default;
 
 namespace {
+// The first hit of a primary ray among the static scene and the dynamic objects.
+struct PrimaryHit {
+    probes::RayHit hit;
+    const probes::RayScene* scene = nullptr; // whose geomID the hit names
+    bool dynamic = false;
+};
+struct PrimaryRays {
+    const probes::RayScene& statics;
+    const probes::RayScene* dynamics; // null: the scene has none
+    PrimaryHit intersect(const glm::vec3& eye, const glm::vec3& d) const {
+        PrimaryHit h{statics.intersect(eye, d), &statics, false};
+        if (dynamics) {
+            const probes::RayHit dh = dynamics->intersect(eye, d);
+            if (dh.hit() && (!h.hit.hit() || dh.t < h.hit.t)) h = {dh, dynamics, true};
+        }
+        return h;
+    }
+};
+
 // overlapRow (optional): volumes containing each pixel's surface point, 0 = needs no GI.
-Tally tallyRow(const probes::RayScene& rays, const probes::ProbeSet& set,
+Tally tallyRow(const PrimaryRays& rays, const probes::ProbeSet& set,
                const std::vector<bool>& kept, const Camera& cam, int y, int* overlapRow = nullptr) {
     Tally t;
     for (int x = 0; x < cam.width; ++x) {
         const glm::vec3 d = cam.ray(x, y);
-        const probes::RayHit hit = rays.intersect(cam.eye, d);
+        const PrimaryHit primary = rays.intersect(cam.eye, d);
+        const probes::RayHit& hit = primary.hit;
         if (overlapRow) overlapRow[x] = 0;
         if (!hit.hit()) continue; // sky: no GI
         const glm::vec3 p = cam.eye + d * hit.t;
@@ -129,6 +163,7 @@ Tally tallyRow(const probes::RayScene& rays, const probes::ProbeSet& set,
         if (overlapRow) overlapRow[x] = inside;
         if (inside == 0) continue; // outside every volume: the ambient fallback, no GI
         ++t.covered;
+        t.dynamic += primary.dynamic ? 1 : 0;
         t.overlap += inside;
         t.distance += hit.t;
         t.maxOverlap = std::max(t.maxOverlap, inside);
@@ -142,7 +177,7 @@ Coverage CoverageTester::measure(const scene::View& view, int width, int height)
     const Camera cam(view, width, height);
     std::vector<Tally> rows(static_cast<size_t>(height));
     pb::parallelFor(size_t(height), 0, [&](size_t y, int) {
-        rows[y] = tallyRow(*rays_, probes_, kept_, cam, int(y));
+        rows[y] = tallyRow(PrimaryRays{*rays_, dynamicRays_.get()}, probes_, kept_, cam, int(y));
     });
     Tally total;
     for (const Tally& r : rows)
@@ -156,7 +191,7 @@ std::vector<int> CoverageTester::overlapImage(const scene::View& view, int width
     const Camera cam(view, width, height);
     std::vector<int> image(size_t(width) * size_t(height), 0);
     pb::parallelFor(size_t(height), 0, [&](size_t y, int) {
-        tallyRow(*rays_, probes_, kept_, cam, int(y), &image[y * size_t(width)]);
+        tallyRow(PrimaryRays{*rays_, dynamicRays_.get()}, probes_, kept_, cam, int(y), &image[y * size_t(width)]);
     });
     return image;
 }
@@ -172,14 +207,15 @@ CoverageTester::surfacePoints(const scene::View& view, int width, int height,
         const size_t end = std::min(pixels.size(), (chunk + 1) * kChunk);
         for (size_t i = chunk * kChunk; i < end; ++i) {
             const glm::vec3 d = cam.ray(pixels[i].x, pixels[i].y);
-            const probes::RayHit hit = rays_->intersect(cam.eye, d);
+            const PrimaryHit primary = PrimaryRays{*rays_, dynamicRays_.get()}.intersect(cam.eye, d);
+            const probes::RayHit& hit = primary.hit;
             if (!hit.hit()) continue;
             SurfacePoint& s = out[i];
             s.hit = true;
             s.position = cam.eye + d * hit.t;
-            s.normal = rays_->faceNormal(hit.geomID, hit.primID);
+            s.normal = primary.scene->faceNormal(hit.geomID, hit.primID);
             // The GBuffer turns double-sided surfaces towards the viewer (gl_FrontFacing).
-            if (rays_->surface(hit.geomID).doubleSided && glm::dot(s.normal, d) > 0.0f)
+            if (primary.scene->surface(hit.geomID).doubleSided && glm::dot(s.normal, d) > 0.0f)
                 s.normal = -s.normal;
         }
     });
@@ -190,14 +226,18 @@ Coverage CoverageTester::measureSerial(const scene::View& view, int width, int h
     const Camera cam(view, width, height);
     Tally total;
     for (int y = 0; y < height; ++y)
-        total.add(tallyRow(*rays_, probes_, kept_, cam, y));
+        total.add(tallyRow(PrimaryRays{*rays_, dynamicRays_.get()}, probes_, kept_, cam, y));
     return finish(total, width, height);
 }
 
 double CoverageTester::score(const Coverage& c) const {
     // Depth counts until the view sees 10% of the scene's diagonal on average: deeper than
     // that is "a real view"; beyond it, the search prefers poses near the scene's own views.
-    return c.fraction * 1e6 + c.meanOverlap * 1e3 +
+    // With dynamic objects, a view showing them (up to 5% of the frame: more would favour a
+    // camera against one of them) ranks above more overlap: their pixels are the ones only
+    // free-space probes light (issue 18).
+    const double dynamic = dynamicRays_ ? 1e4 * std::min(c.dynamicFraction / 0.05, 1.0) : 0.0;
+    return c.fraction * 1e6 + dynamic + c.meanOverlap * 1e3 +
            10.0 * std::min(c.meanDistance / double(sceneSize_), 0.1);
 }
 
@@ -216,11 +256,14 @@ bool CoverageTester::eyeIsClear(const glm::vec3& eye) const {
             d[i / 2] = (i % 2) ? -1.0f : 1.0f;
         else
             d = glm::normalize(glm::vec3((i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? 1 : -1));
-        const probes::RayHit hit = rays_->intersect(eye, d);
+        // Dynamic objects too: an eye inside one of them sees nothing else.
+        const PrimaryHit primary = PrimaryRays{*rays_, dynamicRays_.get()}.intersect(eye, d);
+        const probes::RayHit& hit = primary.hit;
         if (!hit.hit()) continue;
         if (hit.t < clearance) return false;
-        const bool singleSided = !rays_->surface(hit.geomID).doubleSided;
-        if (singleSided && glm::dot(rays_->faceNormal(hit.geomID, hit.primID), d) > 0.0f)
+        const probes::RayScene& rs = *primary.scene;
+        const bool singleSided = !rs.surface(hit.geomID).doubleSided;
+        if (singleSided && glm::dot(rs.faceNormal(hit.geomID, hit.primID), d) > 0.0f)
             ++backFaces;
     }
     return backFaces <= 3;

@@ -6,8 +6,10 @@
 // GL-free: primary rays through the pixel centres with Embree (the bake's RayScene), using
 // the renderer's camera conventions (RenderView: up = +Y, or +Z when looking straight up or
 // down; row 0 at the top). A pixel "needs GI" when its ray hits static geometry at a point
-// inside the box of at least one kept volume. Dynamic instances are not traced (the bake's
-// scene leaves them out): they are small movers and would only hide what is behind them.
+// inside the box of at least one kept volume. Dynamic instances are traced too, as the GBuffer
+// holds them (issue 18): their pixels need GI like any other, and where a scene has them the
+// search prefers a view that shows them (up to 5% of the frame) - the pixels only
+// free-space probes light.
 #include "probes/ProbeSet.h"
 #include "scene/Scene.h"
 
@@ -26,6 +28,7 @@ struct Coverage {
     int maxOverlap = 0;      // most volumes containing one pixel's surface point
     double meanOverlap = 0;  // volumes per covered pixel, on average
     double meanDistance = 0; // mean hit distance of covered pixels (world units)
+    double dynamicFraction = 0; // covered pixels on dynamic objects / all pixels
 };
 
 // What the GBuffer holds at one pixel, from the CPU primary ray (for the cost model).
@@ -65,6 +68,7 @@ private:
     std::vector<bool> kept_;
     std::vector<scene::View> views_;
     std::unique_ptr<probes::RayScene> rays_;
+    std::unique_ptr<probes::RayScene> dynamicRays_; // the dynamic objects alone; null: none
     float sceneSize_ = 1.0f;
 };
 

@@ -40,10 +40,14 @@ inline const probes::ProbeSet& giTestProbes(probes::StorageFormat format) {
         r.settings.format = format;
         slot = std::make_unique<probes::ProbeSet>(probes::bakeProbes(s, r));
         // rooms has no single-sided solids, so nothing bakes invalid: mark every 7th probe
-        // invalid (both samplers must then skip it) to exercise the exclusion.
+        // invalid (both samplers must then skip it) to exercise the exclusion - as the bake
+        // would, with a back-face ratio over the threshold (sparse storage then never fills
+        // it in: probes/AbsentProbeFill.h).
         for (auto& states : slot->states)
-            for (size_t p = 0; p < states.size(); p += 7)
+            for (size_t p = 0; p < states.size(); p += 7) {
                 states[p].valid = false;
+                states[p].backfaceRatio = 1.0f;
+            }
     }
     return *slot;
 }

@@ -64,7 +64,8 @@ INSTANTIATE_TEST_SUITE_P(Builtin, Golden,
                                            GoldenCase{"rooms", "sunlit_room"},
                                            GoldenCase{"rooms", "doorway"},
                                            GoldenCase{"courtyard", "default"},
-                                           GoldenCase{"courtyard", "interior"}),
+                                           GoldenCase{"courtyard", "interior"},
+                                           GoldenCase{"rooms_dynamic", "dynamic"}),
                          [](const auto& info) {
                              return std::string(info.param.scene) + "_" + info.param.view;
                          });

@@ -10,6 +10,7 @@
 #include "profile/GiVolumeLod.h"
 #include "probes/placement/AutoVolume.h"
 #include "probes/bake/Baker.h"
+#include "probes/AbsentProbeFill.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/RayScene.h"
 #include "probes/store/SparseLayout.h"
@@ -31,13 +32,17 @@ namespace {
 
 // A 5x3x4 grid over [0,5]x[0,2]x[0,4] with open visibility; the probes `absent` picks are not
 // stored (and so invalid, as SparseStorage leaves them), or with `onlyInvalid` only invalid.
-template <typename Pick> probes::ProbeSet gridSet(Pick absent, bool onlyInvalid = false) {
+// They lie inside geometry (back-face ratio 1), so no stand-in replaces them
+// (probes/AbsentProbeFill.h) unless `outside`: then absent ones are read as stand-ins.
+template <typename Pick>
+probes::ProbeSet gridSet(Pick absent, bool onlyInvalid = false, bool outside = false) {
     const probes::ProbeVolume v = test::gridVolume("grid", {2.5f, 1, 2}, {2.5f, 1, 2}, {5, 3, 4});
     probes::ProbeSet set = test::openProbeSet({v});
     for (int i = 0; i < v.probeCount(); ++i)
         if (absent(v.probeCoords(i))) {
             set.states[0][size_t(i)].valid = false;
             set.states[0][size_t(i)].stored = onlyInvalid;
+            set.states[0][size_t(i)].backfaceRatio = outside ? 0.0f : 1.0f;
         }
     return set;
 }
@@ -145,6 +150,46 @@ TEST(CostModelSparse, EveryProbeFetchLandsInItsStoredCornersPackedTile) {
         EXPECT_EQ(states, l.trace.probesRead ? 8 : 0); // no extra fetch for the indirection
     }
     EXPECT_GT(tileFetches, 1000);
+}
+
+// Issue 18: an absent probe outside geometry is read as its nearest stored probe. The cost
+// model replays that: its state, then its stand-in's packed tile, as for a stored corner.
+TEST(CostModelSparse, AStandInsFetchesLandInItsSourcesTile) {
+    const probes::ProbeSet set = gridSet(everyThird, false, true);
+    const probes::ProbeVolume& v = set.volumes[0];
+    const TextureTable table = makeTextureTable(64, 64, set, {0}, MemoryLayout::Linear);
+    const TextureTable::Volume& tex = table.volumes[0];
+    const std::vector<int> slots = probes::packedSlots(set.states[0]);
+    const std::vector<int> source =
+        probes::fillSources(v, set.states[0], set.settings.backfaceThreshold);
+    ASSERT_EQ(source.size(), set.states[0].size());
+    int standInFetches = 0;
+    for (const Lookup& l : lookups(set, table)) {
+        int expected = 0;
+        for (const probes::CornerFetch& c : l.trace.corners)
+            expected += c.inGrid && c.valid ? 2 : 0; // every in-grid corner reads a tile now
+        int tiles = 0;
+        for (const Fetch& f : l.fetches) {
+            if (f.kind == FetchKind::ProbeState) continue;
+            ++tiles;
+            const int size = f.kind == FetchKind::Visibility ? probes::kVisibilityTile
+                                                             : probes::kIrradianceTile;
+            const glm::ivec3 tile(f.x / size, f.y / size, f.layer);
+            // The tile belongs to a corner's own stored tile or its stand-in's.
+            bool owner = false;
+            for (const probes::CornerFetch& c : l.trace.corners) {
+                if (!c.inGrid) continue;
+                const int i = v.probeIndex(c.probe), s = source[size_t(i)];
+                owner = owner || (s >= 0 && slots[size_t(s)] >= 0 &&
+                                  probes::packedTile(slots[size_t(s)], tex.tiles.packedCounts) ==
+                                      tile);
+                standInFetches += s != i && tex.tiles.tileOf(c.probe) == tile ? 1 : 0;
+            }
+            EXPECT_TRUE(owner) << "fetch at tile " << tile.x << "," << tile.y << "," << tile.z;
+        }
+        if (l.trace.probesRead) EXPECT_EQ(tiles, expected);
+    }
+    EXPECT_GT(standInFetches, 100);
 }
 
 TEST(CostModelSparse, AbsentProbesCostWhatInvalidOnesCost) {

@@ -11,6 +11,7 @@
 #include "probes/store/Hash.h"
 #include "probes/store/MemoryReport.h"
 #include "probes/store/ProbeFile.h"
+#include "probes/AbsentProbeFill.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/RayScene.h"
 #include "probes/store/SparseLayout.h"
@@ -234,7 +235,8 @@ TEST(SparseStorage, ParentVolumesKeepTheRadianceTheirChildRingsRead) {
     r.settings.relocate = false;
     ProbeSet dense = bakeProbes(s, r);
     applySparseStorage(dense, staticBakeTriangles(s));
-    ASSERT_FALSE(dense.states[0][size_t(parent.probeIndex({2, 2, 2}))].stored); // y = 2.75
+    // x = -2, y = 2.75 (off the free-space lattice: x is odd)
+    ASSERT_FALSE(dense.states[0][size_t(parent.probeIndex({1, 2, 2}))].stored);
     ASSERT_TRUE(dense.states[1][size_t(child.probeIndex({1, 1, 1}))].stored);   // y = 1.0
     r.sparse = true;
     const ProbeSet sparse = bakeProbes(s, r);
@@ -242,27 +244,64 @@ TEST(SparseStorage, ParentVolumesKeepTheRadianceTheirChildRingsRead) {
     EXPECT_EQ(sparse.irradiance[0][0].stored, dense.irradiance[0][0].stored);
 }
 
-TEST(SparseStorage, AbsentProbesSampleLikeInvalidOnes) {
+// Issue 18: an absent probe outside geometry is read as its nearest stored probe, so every
+// point of the box that the dense set lights gets a lookup; an absent probe inside geometry
+// stays invalid (the dense set skips it too).
+TEST(SparseStorage, AbsentProbesReadTheirNearestStoredProbe) {
     const ProbeSet& dense = courtyardDense();
     ProbeSet sparse = dense;
     applySparseStorage(sparse, staticBakeTriangles(pb::scene::makeBuiltinScene("courtyard")));
-    ProbeSet invalid = dense; // the same probes only marked invalid, texels kept
-    for (std::size_t i = 0; i < invalid.states[0].size(); ++i)
-        invalid.states[0][i].valid = sparse.states[0][i].stored;
-    ProbeSampler a(invalid, 0), b(sparse, 0);
     const ProbeVolume& v = dense.volumes[0];
+    const std::vector<int> source =
+        fillSources(v, sparse.states[0], sparse.settings.backfaceThreshold);
+    ASSERT_EQ(source.size(), sparse.states[0].size()) << "nothing to fill: vacuous";
+    int filled = 0;
+    for (std::size_t i = 0; i < source.size(); ++i) {
+        const ProbeState& s = sparse.states[0][i];
+        if (s.stored || !dense.states[0][i].valid) {
+            EXPECT_EQ(source[i], int(i)) << "stored or inside geometry, yet filled: " << i;
+            continue;
+        }
+        ++filled;
+        ASSERT_GE(source[i], 0);
+        const ProbeState& from = sparse.states[0][size_t(source[i])];
+        EXPECT_TRUE(from.stored && from.valid) << i;
+        // Nearest: no stored probe is closer to the absent probe's grid point.
+        const glm::vec3 at = v.gridLocal(v.probeCoords(int(i)));
+        const float d = glm::length(v.gridLocal(v.probeCoords(source[i])) - at);
+        for (std::size_t j = 0; j < source.size(); ++j)
+            if (sparse.states[0][j].stored && sparse.states[0][j].valid)
+                ASSERT_GE(glm::length(v.gridLocal(v.probeCoords(int(j))) - at), d - 1e-4f)
+                    << "probe " << i << ": " << j << " is nearer than " << source[i];
+    }
+    EXPECT_GT(filled, 0);
+
+    ProbeSampler a(dense, 0), b(sparse, 0);
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
-    int zero = 0;
+    int standIns = 0;
     for (int i = 0; i < 3000; ++i) { // anywhere in the box: surfaces and empty air
         const glm::vec3 p = v.toWorld(glm::vec3(u(rng), u(rng), u(rng)) * v.halfExtents);
         const glm::vec3 n = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) + 1e-3f);
         const IrradianceSample x = a.sample(p, n, n), y = b.sample(p, n, n);
-        ASSERT_EQ(x.weight, y.weight);
-        ASSERT_EQ(x.irradiance, y.irradiance);
-        zero += y.weight == 0.0f ? 1 : 0;
+        ASSERT_EQ(x.weight > 0.0f, y.weight > 0.0f) << "at " << p.x << "," << p.y << "," << p.z;
+        standIns += y.filled > 0 ? 1 : 0;
     }
-    EXPECT_GT(zero, 0) << "no lookup met only absent probes";
+    EXPECT_GT(standIns, 0) << "no lookup read a stand-in";
+}
+
+// The coarse free-space lattice is kept whatever the surfaces: every probe whose coordinates
+// are all even, and no other probe of an empty volume.
+TEST(SparseStorage, KeepsTheFreeSpaceLatticeEverywhere) {
+    ProbeVolume v;
+    v.name = "v";
+    v.halfExtents = glm::vec3(2.0f, 1.0f, 3.0f);
+    v.counts = glm::ivec3(5, 4, 7);
+    const std::vector<std::uint8_t> kept = sparseKeptProbes(v, true, {});
+    for (int i = 0; i < v.probeCount(); ++i) {
+        const glm::ivec3 q = v.probeCoords(i);
+        EXPECT_EQ(kept[size_t(i)] != 0, q.x % 2 == 0 && q.y % 2 == 0 && q.z % 2 == 0) << i;
+    }
 }
 
 TEST(SparseStorage, FileRoundTripStoresOnlyTheKeptTiles) {
@@ -290,7 +329,7 @@ TEST(SparseStorage, FileRoundTripStoresOnlyTheKeptTiles) {
     EXPECT_EQ(mem.total.indirection, sparse.probeCount() * kStateBytesPerProbe);
     EXPECT_LT(mem.total.storedTotal(), memoryReport(allStored).total.storedTotal());
     // The bake keeps exactly the valid probes among those placement's budget counts.
-    const std::vector<std::uint8_t> corners = surfaceCornerProbes(
+    const std::vector<std::uint8_t> corners = sparseKeptProbes(
         sparse.volumes[0], true, staticBakeTriangles(pb::scene::makeBuiltinScene("courtyard")));
     const ProbeSet& dense = courtyardDense(); // the same bake, stored dense
     for (std::size_t i = 0; i < corners.size(); ++i)

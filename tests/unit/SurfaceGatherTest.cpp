@@ -123,3 +123,34 @@ TEST(SurfaceGather, ZeroRaysIsAnError) {
         gatherIrradiance(rs, scenarioOf(s), s.lights, {{{0, 1, 0}, {0, 1, 0}}}, nullptr, g),
         pb::Error);
 }
+
+// The sphere gather (mid-air truth, issue 18): in the emissive room every direction sees Le,
+// so every normal gets pi Le; above the sunlit floor, the downward normal sees the floor as
+// the hemisphere gather does, the upward one the sky, from the same rays.
+TEST(SurfaceGather, SphereGatherMatchesTheHemisphereGatherPerNormal) {
+    const float le = 1.0f;
+    pb::scene::Scene room = emissiveRoom(le, 0.5f);
+    RayScene roomRays(room);
+    GatherSettings g;
+    g.rays = 1024;
+    const std::vector<glm::vec3> axes = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
+                                         {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    const std::vector<glm::vec3> e = gatherIrradianceSphere(
+        roomRays, scenarioOf(room), room.lights, {{0.1f, 0.2f, -0.3f}}, axes, nullptr, g);
+    ASSERT_EQ(e.size(), axes.size());
+    for (const glm::vec3& v : e)
+        EXPECT_NEAR(v.g, float(M_PI) * le, 1e-3f);
+
+    pb::scene::Scene s = sunlitFloor();
+    RayScene rs(s);
+    g.rays = 4096;
+    const glm::vec3 p(0.0f, 0.5f, 0.0f);
+    const std::vector<glm::vec3> sphere = gatherIrradianceSphere(
+        rs, scenarioOf(s), s.lights, {p}, {{0, -1, 0}, {0, 1, 0}}, nullptr, g);
+    const glm::vec3 down = gatherIrradiance(rs, scenarioOf(s), s.lights, {{p, {0, -1, 0}}},
+                                            nullptr, g)[0];
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(sphere[0][c], down[c], 0.02f * down[c]) << "channel " << c;
+        EXPECT_NEAR(sphere[1][c], float(M_PI) * s.sky.radiance[c], 1e-3f) << "channel " << c;
+    }
+}

@@ -131,6 +131,35 @@ TEST(WorstCaseView, ReachesFullCoverageOnEveryBuiltinScene) {
     }
 }
 
+// Issue 18: dynamic objects are in the GBuffer and need GI like any pixel, so the primary rays
+// see them (a box hiding part of the floor: its pixels count as dynamic, the floor behind it
+// does not), and on a scene with dynamic objects the search picks a full view that shows them.
+TEST(Coverage, DynamicObjectsAreSeenAndCounted) {
+    scene::Scene s = floorScene();
+    const int m = addMaterial(s, glm::vec3(0.5f));
+    addInstance(s, boxPrimitive({-0.5f, 0.5f, -0.5f}, {0.5f, 1.0f, 0.5f}, false, m));
+    probes::ProbeSet set;
+    set.volumes.push_back(box("all", {-10, -1, -10}, {10, 3, 10}));
+    const views::Coverage still = views::measureCoverage(s, set, downView(), 64, 36);
+    EXPECT_DOUBLE_EQ(still.dynamicFraction, 0.0);
+    s.instances.back().dynamic = true;
+    const views::Coverage moving = views::measureCoverage(s, set, downView(), 64, 36);
+    EXPECT_GT(moving.dynamicFraction, 0.05);
+    EXPECT_DOUBLE_EQ(moving.fraction, 1.0);
+    // The box is nearer than the floor: the mean distance drops when it is seen.
+    EXPECT_LT(moving.meanDistance, views::measureCoverage(floorScene(), set, downView(), 64, 36)
+                                       .meanDistance);
+}
+
+TEST(WorstCaseView, ShowsTheDynamicObjectsOfASceneThatHasThem) {
+    const scene::Scene s = scene::loadScene("rooms_dynamic", {});
+    probes::ProbeSet set;
+    set.volumes.push_back(probes::fitAutoVolume(s.staticWorldBounds(), 0.0f).volume);
+    const views::WorstCase wc = views::findWorstCaseView(s, set, 320, 180);
+    EXPECT_DOUBLE_EQ(wc.coverage.fraction, 1.0);
+    EXPECT_GT(wc.coverage.dynamicFraction, 0.01) << "the worst-case view shows no dynamic object";
+}
+
 TEST(WorstCaseView, NoVolumeIsAnError) {
     const scene::Scene s = floorScene();
     probes::ProbeSet set;

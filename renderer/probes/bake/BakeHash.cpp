@@ -3,6 +3,7 @@
 // changes for the same inputs, so stale files are re-baked rather than reused.
 #include "probes/bake/BakeHash.h"
 #include "probes/bake/Baker.h"
+#include "probes/store/SparseStorage.h"
 #include "probes/store/Hash.h"
 #include "probes/store/ProbeFile.h"
 #include "probes/store/SceneHash.h"
@@ -11,9 +12,9 @@
 namespace pb::probes {
 namespace {
 
-constexpr std::uint32_t kBakeAlgorithmVersion = 4; // 4: lit-surface samples;
-                                                   // 3: // 2: far scenes bake in a moved frame;
-                                                   // 3: emitter sampling (MIS) at the probe
+// 5: sparse storage also keeps a free-space lattice; 4: lit-surface samples; 3: emitter
+// sampling (MIS) at the probe; 2: far scenes bake in a moved frame.
+constexpr std::uint32_t kBakeAlgorithmVersion = 5;
 
 void hashScene(Hasher& h, const scene::Scene& s) {
     const auto mats = summariseMaterials(s);
@@ -77,6 +78,10 @@ std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& r) {
     h.pod(b.noiseTarget);
     h.pod(std::int32_t(kMaxNoiseRounds));
     h.pod(std::uint8_t(r.sparse));
+    // What sparse storage keeps changed with the free-space lattice (issue 18): sparse files
+    // from before it lack the lattice and must be re-baked. Dense bakes (the gate's committed
+    // file among them) keep their hash.
+    if (r.sparse) h.pod(std::uint32_t(kFreeSpaceLatticeStep));
     return h.value();
 }
 

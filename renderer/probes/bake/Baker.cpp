@@ -182,8 +182,9 @@ void bakeGeometry(BakeRun& run) {
     run.phases.mark("geometry");
 }
 
-// Which probes the radiance passes trace. Sparse storage keeps only the surface corners
-// (SparseStorage.h), and the radiance of a kept probe reads only kept probes: a later pass
+// Which probes the radiance passes trace. Sparse storage keeps only the surface corners and
+// the free-space lattice (SparseStorage.h), and the radiance of a kept probe reads only kept
+// probes: a later pass
 // looks up the previous one at surface hits, i.e. at surface cells' corners. So the others'
 // radiance is not traced. Except in a parent volume: its children's rings are blended
 // towards it at ring positions, which need not lie on a surface. Their geometry pass still
@@ -197,7 +198,7 @@ struct RadianceMask {
             const std::vector<WorldTriangle> triangles = staticBakeTriangles(run.scene);
             for (size_t v = 0; v < run.set.volumes.size(); ++v)
                 keep.push_back(
-                    surfaceCornerProbes(run.set.volumes[v], run.parents[v] < 0, triangles));
+                    sparseKeptProbes(run.set.volumes[v], run.parents[v] < 0, triangles));
         }
         for (int p : run.parents)
             if (p >= 0) isParent[size_t(p)] = true;

@@ -74,4 +74,51 @@ std::vector<glm::vec3> gatherIrradiance(const RayScene& rs, const Scenario& sc,
     return out;
 }
 
+std::vector<glm::vec3> gatherIrradianceSphere(const RayScene& rs, const Scenario& sc,
+                                              const std::vector<scene::Light>& lights,
+                                              const std::vector<glm::vec3>& points,
+                                              const std::vector<glm::vec3>& normals,
+                                              const ProbeSampler* indirect,
+                                              const GatherSettings& g) {
+    if (g.rays < 1) throw Error("gather: rays must be at least 1, got " + std::to_string(g.rays));
+    const std::vector<glm::vec3> dirs = sphericalFibonacci(g.rays);
+    const int threads = resolveThreadCount(g.threads);
+    // Point i's rotation comes from its own stream: the same for any batch or thread count.
+    auto rotation = [&](std::size_t i) {
+        std::uint64_t state = g.seed ^ (0x9E3779B97F4A7C15ull * (std::uint64_t(i) + 1));
+        return randomRotation(state);
+    };
+    const std::size_t nn = normals.size();
+    std::vector<glm::vec3> out(points.size() * nn);
+    std::vector<RayCounters> counters(static_cast<std::size_t>(threads));
+    RadianceSlab slab;
+    const std::size_t batch = std::max<std::size_t>(64, (1u << 18) / std::size_t(g.rays));
+    for (std::size_t lo = 0; lo < points.size(); lo += batch) {
+        const std::size_t count = std::min(batch, points.size() - lo);
+        slab.reset(count, g.rays);
+        parallelFor(count, threads, [&](std::size_t i, int t) {
+            slab.trace(i, rs, sc, lights, rotation(lo + i), points[lo + i], dirs, indirect,
+                       counters[std::size_t(t)]);
+        });
+        if (indirect) slab.lookUp(*indirect, threads);
+        parallelFor(count, threads, [&](std::size_t i, int) {
+            const glm::vec4* L = slab.finish(i);
+            const glm::mat3 rot = rotation(lo + i);
+            for (std::size_t k = 0; k < nn; ++k) {
+                glm::dvec3 sum(0.0);
+                double weights = 0.0;
+                for (int r = 0; r < g.rays; ++r) {
+                    const double w =
+                        std::max(0.0f, glm::dot(normals[k], rot * dirs[std::size_t(r)]));
+                    sum += w * glm::dvec3(L[r]);
+                    weights += w;
+                }
+                out[(lo + i) * nn + k] =
+                    weights > 0.0 ? glm::vec3(sum * (M_PI / weights)) : glm::vec3(0.0f);
+            }
+        });
+    }
+    return out;
+}
+
 } // namespace pb::probes

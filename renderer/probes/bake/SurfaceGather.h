@@ -38,6 +38,19 @@ std::vector<glm::vec3> gatherIrradiance(const RayScene& rs, const Scenario& sc,
                                         const std::vector<GatherPoint>& points,
                                         const ProbeSampler* indirect, const GatherSettings& g);
 
+// Irradiance in the air (issue 18: where dynamic objects stand, bench_placement's mid-air
+// column): `rays` directions over the whole sphere (spherical Fibonacci, turned by a per-point
+// random rotation) traced from each point and shaded as above; then per normal n of `normals`
+// E(n) = pi * sum_r max(0, n.d_r) L_r / sum_r max(0, n.d_r) (the bake's own convolution: exact
+// for uniform radiance). Result [point * normals.size() + k]; deterministic for any thread
+// count.
+std::vector<glm::vec3> gatherIrradianceSphere(const RayScene& rs, const Scenario& sc,
+                                              const std::vector<scene::Light>& lights,
+                                              const std::vector<glm::vec3>& points,
+                                              const std::vector<glm::vec3>& normals,
+                                              const ProbeSampler* indirect,
+                                              const GatherSettings& g);
+
 // The local directions (z = the normal) of a gather with `rays` rays, cosine-distributed.
 std::vector<glm::vec3> cosineHemisphereSpiral(int rays);
 

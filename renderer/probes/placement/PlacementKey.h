@@ -14,7 +14,8 @@
 
 namespace pb::probes {
 
-inline constexpr std::uint32_t kAutoPlacementVersion = 1;
+// 2: sparse storage keeps a free-space lattice, so the budget counts more stored probes.
+inline constexpr std::uint32_t kAutoPlacementVersion = 2;
 
 std::uint64_t autoPlacementKey(const scene::Scene& scene, const AutoPlacementRequest& request);
 

@@ -118,7 +118,8 @@ glm::ivec3 TileCode::decode(float w) const {
     return {code & f.x, (code >> f.y) & f.z, code >> f.w};
 }
 
-TileLayout tileLayout(const ProbeVolume& v, const std::vector<ProbeState>& states) {
+TileLayout tileLayout(const ProbeVolume& v, const std::vector<ProbeState>& states,
+                      const std::vector<int>& fillSource) {
     const std::string what = "probe volume '" + v.name + "'";
     if (states.size() != std::size_t(v.probeCount()))
         throw Error(what + ": probe state count does not match its grid");
@@ -128,18 +129,26 @@ TileLayout tileLayout(const ProbeVolume& v, const std::vector<ProbeState>& state
     t.sparse = isSparse(states);
     if (t.sparse) t.packedCounts = packedCounts(storedCount(states), v.counts);
     t.code = tileCode(t.packedCounts, what);
+    if (fillSource.size() == states.size()) t.fillSource = fillSource;
     return t;
 }
 
 glm::ivec3 TileLayout::tileOf(const glm::ivec3& q) const {
     if (!sparse) return {q.x, q.z, q.y};
-    const int slot = slots[std::size_t((q.y * counts.z + q.z) * counts.x + q.x)]; // probeIndex
+    const int slot = slotRead(std::size_t((q.y * counts.z + q.z) * counts.x + q.x)); // probeIndex
     return slot < 0 ? glm::ivec3(-1) : packedTile(slot, packedCounts);
+}
+
+int TileLayout::slotRead(std::size_t index) const {
+    if (fillSource.empty()) return slots[index];
+    const int s = fillSource[index];
+    return s < 0 ? -1 : slots[std::size_t(s)];
 }
 
 float TileLayout::stateW(std::size_t index, bool valid) const {
     // Dense: slot = index and packedCounts = counts, so this is tile (i, k, layer j) too.
-    return slots[index] < 0 ? 0.0f : code.encode(packedTile(slots[index], packedCounts), valid);
+    const int slot = slotRead(index);
+    return slot < 0 ? 0.0f : code.encode(packedTile(slot, packedCounts), valid);
 }
 
 ProbeTexture packTiles(const ProbeTexture& dense, const std::vector<int>& slots,

@@ -68,16 +68,24 @@ struct TileLayout {
     glm::ivec3 counts{1};       // the probe grid
     glm::ivec3 packedCounts{1}; // the tile grid of the textures (= counts unless sparse)
     std::vector<int> slots;     // per probe: its slot (dense: its index), -1 = absent
+    // Per probe: the probe whose tile a lookup reads (AbsentProbeFill.h: an absent probe
+    // outside geometry reads its nearest stored one); empty: each its own.
+    std::vector<int> fillSource;
     TileCode code;              // of packedCounts
-    // The tile (column, row, layer) of grid probe `q`; (-1, -1, -1) when it owns none.
+    // The tile (column, row, layer) grid probe `q` reads (its own, or its fill source's);
+    // (-1, -1, -1) when it reads none.
     glm::ivec3 tileOf(const glm::ivec3& q) const;
-    // The state texel's w of probe `index` (probe index order): its tile's code, signed by
-    // `valid`; 0 when it owns no tile (absent).
+    // The state texel's w of probe `index` (probe index order): the code of the tile it reads,
+    // signed by `valid`; 0 when it reads none (absent, not filled).
     float stateW(std::size_t index, bool valid) const;
+    // The packed slot probe `index` reads (through fillSource); -1 none.
+    int slotRead(std::size_t index) const;
 };
 // Throws pb::Error when `states` does not hold one state per probe of `v`, or when the tile
-// grid exceeds the code's range (TileCode).
-TileLayout tileLayout(const ProbeVolume& v, const std::vector<ProbeState>& states);
+// grid exceeds the code's range (TileCode). `fillSource`: as fillSources (AbsentProbeFill.h),
+// empty for none.
+TileLayout tileLayout(const ProbeVolume& v, const std::vector<ProbeState>& states,
+                      const std::vector<int>& fillSource = {});
 
 // The stored bytes of `dense` (a volume texture in format `f`, tiles of `tile` texels) with
 // only the slotted tiles, packed into `packed` counts. Works on the stored bytes (BC6H: whole

@@ -91,12 +91,46 @@ std::vector<std::uint8_t> surfaceCornerProbes(const ProbeVolume& v, bool root,
     return needed;
 }
 
+std::vector<std::uint8_t> freeSpaceLatticeProbes(const ProbeVolume& v) {
+    std::vector<std::uint8_t> out(std::size_t(v.probeCount()), 0);
+    for (int i = 0; i < v.probeCount(); ++i) {
+        const glm::ivec3 q = v.probeCoords(i);
+        out[std::size_t(i)] = q.x % kFreeSpaceLatticeStep == 0 &&
+                              q.y % kFreeSpaceLatticeStep == 0 &&
+                              q.z % kFreeSpaceLatticeStep == 0;
+    }
+    return out;
+}
+
+std::vector<std::uint8_t> sparseKeptProbes(const ProbeVolume& v, bool root,
+                                           const std::vector<WorldTriangle>& triangles) {
+    std::vector<std::uint8_t> keep = surfaceCornerProbes(v, root, triangles);
+    const std::vector<std::uint8_t> lattice = freeSpaceLatticeProbes(v);
+    for (std::size_t i = 0; i < keep.size(); ++i)
+        keep[i] |= lattice[i];
+    return keep;
+}
+
+std::size_t freeSpaceOnlyProbes(const ProbeSet& set,
+                                const std::vector<WorldTriangle>& triangles) {
+    const std::vector<int> parents = validateVolumes(set.volumes, "sparse storage");
+    std::size_t n = 0;
+    for (std::size_t v = 0; v < set.volumes.size(); ++v) {
+        const std::vector<std::uint8_t> surface =
+            surfaceCornerProbes(set.volumes[v], parents[v] < 0, triangles);
+        const std::vector<std::uint8_t> lattice = freeSpaceLatticeProbes(set.volumes[v]);
+        for (std::size_t i = 0; i < surface.size() && i < set.states[v].size(); ++i)
+            n += set.states[v][i].stored && lattice[i] && !surface[i] ? 1 : 0;
+    }
+    return n;
+}
+
 std::vector<std::size_t> sparseProbeCounts(const std::vector<ProbeVolume>& volumes,
                                            const std::vector<WorldTriangle>& triangles) {
     const std::vector<int> parents = validateVolumes(volumes, "sparse storage");
     std::vector<std::size_t> out;
     for (std::size_t i = 0; i < volumes.size(); ++i) {
-        std::vector<std::uint8_t> m = surfaceCornerProbes(volumes[i], parents[i] < 0, triangles);
+        std::vector<std::uint8_t> m = sparseKeptProbes(volumes[i], parents[i] < 0, triangles);
         out.push_back(std::size_t(std::count(m.begin(), m.end(), std::uint8_t(1))));
     }
     return out;
@@ -106,7 +140,7 @@ void applySparseStorage(ProbeSet& set, const std::vector<WorldTriangle>& triangl
     const std::vector<int> parents = validateVolumes(set.volumes, "sparse storage");
     std::vector<std::vector<std::uint8_t>> keep;
     for (std::size_t vi = 0; vi < set.volumes.size(); ++vi)
-        keep.push_back(surfaceCornerProbes(set.volumes[vi], parents[vi] < 0, triangles));
+        keep.push_back(sparseKeptProbes(set.volumes[vi], parents[vi] < 0, triangles));
     storeOnly(set, keep);
 }
 

