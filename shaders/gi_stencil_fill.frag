@@ -1,7 +1,7 @@
-// gi.multi_volume=stencil, the cheap fill pass of one volume: no lookup, no colour; a pixel
-// whose surface lies in the volume's influence survives and the stencil test marks it
-// 'current' (where no smaller volume took it: 'any' clear). The apply shader's test, on the
-// same position (common_gi_pixel.glsl), so the full pass finds exactly these pixels.
+// gi.multi_volume=stencil, the cheap mark draw of one volume, after its apply: no lookup, no
+// colour; a pixel whose surface lies in the volume's influence survives and the stencil marks
+// it 'taken', so no larger volume shades it again. The apply shader's test, on the same
+// position (common_gi_pixel.glsl), so it marks exactly the pixels the apply could shade.
 #include "common_gi_pixel.glsl"
 #include "common_ddgi.glsl"
 uniform highp sampler2D u_gbuffer_depth;

@@ -30,9 +30,9 @@ int targetBytes(profile::GiTargetFormat f) {
     return 8;
 }
 
-// What one pixel of one volume's draw did. Skipped: no fragment of the apply draw (stencil:
-// the pixel is sky, outside the influence or taken by a smaller volume - the fill pass and the
-// stencil test, not modelled fragment by fragment, kept it out).
+// What one pixel of one volume's draw did. Skipped: no lookup of the apply draw counted
+// (stencil: the pixel is sky, outside the influence or taken by a smaller volume; the depth
+// reads of the fragments the influence test discards are not modelled, README.md).
 struct Lookup {
     enum Stage : std::uint8_t { Skipped, Sky, Outside, Evaluated } stage = Sky;
     probes::SampleTrace trace;

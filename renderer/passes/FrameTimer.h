@@ -1,7 +1,7 @@
 #pragma once
 // The seam through which a benchmark measures named sections of a frame. FrameRenderer opens
 // one section per pass (named by Pass::name()); a pass may open sub-sections inside its own
-// (e.g. "gi-fill" inside "gi-apply" for the stencil fill of each volume). A timer attributes
+// (e.g. "gi-fill" inside "gi-apply" for the stencil mark of each volume). A timer attributes
 // time to the innermost open section (exclusive time), so sections nest but never overlap.
 // Rendering without a timer (null) costs nothing. How time is taken (CPU clock around
 // glFinish, timer queries, ...) is the timer's business, not the renderer's.

@@ -4,9 +4,10 @@
 // FrameContext::gi. Shader: gi_ddgi_apply.frag + common_ddgi.glsl. Volumes outside the view
 // frustum are culled; the rest are drawn per gi.multi_volume:
 //   naive:   largest first, full-screen, each overwriting (the last draw = smallest volume);
-//   stencil: smallest first, two stencil bits ('any', 'current') on a depth-stencil of the GI
-//            target's size, so each pixel is evaluated once, by the smallest volume
-//            containing it (renderer/README.md "gi.multi_volume=stencil").
+//   stencil: smallest first, one stencil bit ('taken') on a depth-stencil of the GI target's
+//            size, so each pixel is evaluated once, by the smallest volume containing it;
+//            per volume an apply that writes no stencil (so the test runs before the
+//            shader), then a cheap mark draw (renderer/README.md "gi.multi_volume=stencil").
 #include "passes/FrameContext.h"
 #include "passes/GiPassStats.h"
 #include "passes/GiTargets.h"
@@ -25,7 +26,7 @@ gl::TextureFormat giTargetFormat(profile::GiTargetFormat f);
 class GiApplyPass : public Pass {
 public:
     static constexpr int kFirstProbeUnit = 5; // after the GBuffer's channels and depth
-    static constexpr unsigned kStencilAny = 1u, kStencilCurrent = 2u;
+    static constexpr unsigned kStencilTaken = 1u; // stencil: a smaller volume shaded the pixel
 
     GiApplyPass(const GpuProbes& probes, const profile::Profile& profile);
     const char* name() const override { return "gi-apply"; }
@@ -40,7 +41,7 @@ public:
 private:
     struct Draw; // one frame's shared state (GiApplyPass.cpp)
     void drawNaive(Draw& d, int v);
-    void drawStencil(Draw& d, int v, const GiVolumeRaster& r);
+    void drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last);
     void countEvaluated(int statsIndex);
 
     const GpuProbes& probes_;

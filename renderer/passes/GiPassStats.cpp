@@ -20,9 +20,11 @@ std::int64_t GiPassStats::coveredPixels() const {
 
 std::string giVolumeDrawing(const GiVolumeStats& v) {
     if (v.culled) return "culled";
-    if (v.fillPass) return "fill + box";
-    if (v.fullScreen) return v.cameraInside ? "full-screen (inside)" : "full-screen";
-    return "box (inside)";
+    if (!v.cameraInside && v.fullScreen) return "full-screen"; // naive
+    const std::string drawn = v.fullScreen     ? "full-screen (inside)"
+                              : v.cameraInside ? "back faces (inside)"
+                                               : "box";
+    return v.fillPass ? drawn + " + mark" : drawn;
 }
 
 nlohmann::json giPassStatsJson(const GiPassStats& s) {

@@ -15,8 +15,8 @@ struct GiVolumeStats {
     std::string name;
     int fileIndex = 0;         // in the probe set
     bool culled = false;       // outside the view frustum: nothing drawn
-    bool cameraInside = false; // stencil: the fill pass was skipped ('any' tested directly)
-    bool fillPass = false;     // stencil: the cheap fill pass was drawn
+    bool cameraInside = false; // stencil: drawn with the box's back faces or full-screen
+    bool fillPass = false;     // stencil: the mark draw ran after the apply (all but the last)
     // Drawn as a full-screen triangle (naive; stencil when the camera is inside a box that
     // reaches past the far plane) rather than as the volume's box.
     bool fullScreen = false;
@@ -36,7 +36,8 @@ struct GiPassStats {
     std::int64_t coveredPixels() const; // texels evaluated at least once
 };
 
-// How a volume was drawn, in words: "culled", "full-screen", "fill + box", "box (inside)".
+// How a volume was drawn, in words: "culled", "full-screen" (naive); stencil: "box", "back
+// faces (inside)" or "full-screen (inside)", with " + mark" for all but the last volume.
 std::string giVolumeDrawing(const GiVolumeStats& v);
 // The stats without the per-texel maps: multi_volume, target size, per volume name,
 // file_index, drawn, culled, camera_inside, fill_pass, full_screen, evaluated_pixels (null when
