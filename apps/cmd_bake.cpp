@@ -15,6 +15,7 @@
 #include "probes/store/SparseStorage.h"
 #include "probes/store/VolumeFile.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -51,6 +52,17 @@ struct BakeArgs {
     bool noLatticeSearch = false;
     float backfaceThreshold = 0.25f;
     std::string split, part; // --split scenario --part I/N: one part of a split bake
+};
+
+// Wall seconds of the whole command, by phase (issue 17: the summary's time once covered only
+// the tracing, 1.17 s of a 16.8 s bake). `bake` is BakeStats::seconds (BVH, tracing, encoding).
+struct CommandTimes {
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point start = Clock::now();
+    double load = 0.0, placement = 0.0, write = 0.0;
+    static double since(Clock::time_point t) {
+        return std::chrono::duration<double>(Clock::now() - t).count();
+    }
 };
 
 // "I/N" of --part.
@@ -400,7 +412,13 @@ float scenarioScale(const ProbeSet& set, std::size_t s) {
 // `freeSpace`: the stored probes only the free-space lattice keeps (freeSpaceOnlyProbes), the
 // cost of lighting the air between surfaces (issue 18).
 void printSummary(const BakeArgs& a, const PlacementSummary& placement, const ProbeSet& set,
-                  const BakeStats* st, bool upToDate, std::size_t freeSpace) {
+                  const BakeStats* st, bool upToDate, std::size_t freeSpace,
+                  const CommandTimes& times) {
+    const double commandSeconds = CommandTimes::since(times.start);
+    const double searchSeconds =
+        placement.placedThisRun ? placement.json.value("lattice_search", nlohmann::json::object())
+                                      .value("seconds", 0.0)
+                                : 0.0;
     MemoryReport mem = memoryReport(set);
     const std::size_t freeSpaceBytes = freeSpace * bytesPerProbe(set.format()).total();
     const std::vector<ProbeCounts> counts =
@@ -440,6 +458,11 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
             j["rays"] = st->primaryRays;
             j["shadow_rays"] = st->shadowRays;
             j["seconds"] = st->seconds;
+            j["command_seconds"] = commandSeconds;
+            j["load_seconds"] = times.load;
+            j["placement_seconds"] = times.placement;
+            j["lattice_search_seconds"] = searchSeconds;
+            j["write_seconds"] = times.write;
             j["bvh_seconds"] = st->buildSeconds;
             j["trace_seconds"] = st->traceSeconds;
             j["encode_seconds"] = st->quantiseSeconds;
@@ -486,10 +509,14 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
                         st->tracedProbePasses, (unsigned long long)st->extraRoundRays,
                         st->probePassesAboveTarget, probes::kMaxNoiseRounds);
         std::printf("\n");
-        std::printf("time: %.2f s (BVH %.2f s, tracing %.2f s, %s encoding %.2f s), %.2f M "
-                    "rays/s\n",
+        std::printf("time: %.2f s in all: scene %.2f s, placement %.2f s", commandSeconds,
+                    times.load, times.placement);
+        if (searchSeconds > 0) std::printf(" (lattice search %.2f s)", searchSeconds);
+        std::printf(", bake %.2f s (BVH %.2f s, tracing %.2f s, %s encoding %.2f s), write "
+                    "%.2f s; %.2f M rays/s in the bake\n",
                     st->seconds, st->buildSeconds, st->traceSeconds, formatName(set.format()),
-                    st->quantiseSeconds, st->seconds > 0 ? rays / st->seconds * 1e-6 : 0.0);
+                    st->quantiseSeconds, times.write,
+                    st->seconds > 0 ? rays / st->seconds * 1e-6 : 0.0);
         double worst = 0.0;
         for (const auto& e : st->quantisation)
             worst = std::max(worst, e.maxRelative);
@@ -525,6 +552,7 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
 }
 
 int run(const BakeArgs& a) {
+    CommandTimes times;
     if (a.out.empty() && a.writeVolumes.empty())
         throw Error("--out is required (the probe file to write), or --write-volumes alone to "
                     "only place volumes");
@@ -545,6 +573,7 @@ int run(const BakeArgs& a) {
             throw Error("--write-volumes " + a.writeVolumes + ": folder does not exist");
     }
     scene::Scene s = loadSceneWithOverrides(a.scene);
+    times.load = CommandTimes::since(times.start);
     // A wrong split is refused before the placement runs (seconds to minutes) and prints.
     if (!a.split.empty() || !a.part.empty()) splitScenarios(a, scenarioCountBeforePlacement(a, s));
     // A part file is never up to date: a split part is always baked.
@@ -552,11 +581,13 @@ int run(const BakeArgs& a) {
         const PlacementSummary summary{cached->second, false};
         if (!a.json) std::cout << placementText(summary) << "\n";
         printSummary(a, summary, cached->first, nullptr, true,
-                     freeSpaceOnlyProbes(cached->first, staticBakeTriangles(s)));
+                     freeSpaceOnlyProbes(cached->first, staticBakeTriangles(s)), times);
         return 0;
     }
     PlacementInfo placement;
+    const auto placementStart = CommandTimes::Clock::now();
     BakeRequest req = buildRequest(a, s, placement);
+    times.placement = CommandTimes::since(placementStart);
     const PlacementSummary summary{placementJson(placement, req.settings.format), true};
     // Recorded once the probe file for this placement exists (baked, or found up to date).
     const auto recordPlacement = [&](std::uint64_t inputHash) {
@@ -591,7 +622,7 @@ int run(const BakeArgs& a) {
             if (!a.json) std::cout << placementText(summary) << "\n";
             recordPlacement(hash);
             printSummary(a, summary, *cached, nullptr, true,
-                         freeSpaceOnlyProbes(*cached, staticBakeTriangles(s)));
+                         freeSpaceOnlyProbes(*cached, staticBakeTriangles(s)), times);
             return 0;
         }
         if (why.rfind("unusable", 0) == 0)
@@ -610,6 +641,7 @@ int run(const BakeArgs& a) {
     BakeStats stats;
     ProbeSet set = bakeProbes(s, req, &stats, [&](const BakeProgress& p) { progress(p); });
     progress.done();
+    const auto writeStart = CommandTimes::Clock::now();
     if (!a.split.empty()) {
         ProbeFilePart part;
         const auto [index, parts] = parsePart(a.part);
@@ -625,7 +657,9 @@ int run(const BakeArgs& a) {
         writeProbeFile(a.out, set);
         recordPlacement(set.inputHash);
     }
-    printSummary(a, summary, set, &stats, false, freeSpaceOnlyProbes(set, staticBakeTriangles(s)));
+    times.write = CommandTimes::since(writeStart);
+    printSummary(a, summary, set, &stats, false, freeSpaceOnlyProbes(set, staticBakeTriangles(s)),
+                 times);
     return 0;
 }
 
