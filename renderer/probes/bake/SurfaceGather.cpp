@@ -34,6 +34,24 @@ glm::mat3 normalFrame(const glm::vec3& n, float twist) {
     return glm::mat3(t, glm::cross(n, t), n);
 }
 
+// The gathers' common loop: points in batches that bound the slab's memory (rays per point *
+// 100 B or so per ray); `trace(slab, slot, point, thread)` shoots the point's rays into its
+// slot of the batch, the indirect light is looked up, and `finish(L, point)` reads the slot's
+// radiance per ray.
+template <class Trace, class Finish>
+void gatherInBatches(std::size_t points, int rays, int threads, const ProbeSampler* indirect,
+                     Trace trace, Finish finish) {
+    RadianceSlab slab;
+    const std::size_t batch = std::max<std::size_t>(64, (1u << 18) / std::size_t(rays));
+    for (std::size_t lo = 0; lo < points; lo += batch) {
+        const std::size_t count = std::min(batch, points - lo);
+        slab.reset(count, rays);
+        parallelFor(count, threads, [&](std::size_t i, int t) { trace(slab, i, lo + i, t); });
+        if (indirect) slab.lookUp(*indirect, threads);
+        parallelFor(count, threads, [&](std::size_t i, int) { finish(slab.finish(i), lo + i); });
+    }
+}
+
 } // namespace
 
 std::vector<glm::vec3> gatherIrradiance(const RayScene& rs, const Scenario& sc,
@@ -50,27 +68,20 @@ std::vector<glm::vec3> gatherIrradiance(const RayScene& rs, const Scenario& sc,
     };
     std::vector<glm::vec3> out(points.size());
     std::vector<RayCounters> counters(static_cast<std::size_t>(threads));
-    RadianceSlab slab;
-    // A batch bounds the slab's memory (rays per point * 100 B or so per ray).
-    const std::size_t batch = std::max<std::size_t>(64, (1u << 18) / std::size_t(g.rays));
-    for (std::size_t lo = 0; lo < points.size(); lo += batch) {
-        const std::size_t count = std::min(batch, points.size() - lo);
-        slab.reset(count, g.rays);
-        parallelFor(count, threads, [&](std::size_t i, int t) {
-            const GatherPoint& p = points[lo + i];
+    gatherInBatches(
+        points.size(), g.rays, threads, indirect,
+        [&](RadianceSlab& slab, std::size_t slot, std::size_t i, int t) {
+            const GatherPoint& p = points[i];
             // Leave the surface by the scene's ray epsilon, as bake hits do for shadow rays.
-            slab.trace(i, rs, sc, lights, normalFrame(p.normal, twist(lo + i)),
+            slab.trace(slot, rs, sc, lights, normalFrame(p.normal, twist(i)),
                        p.pos + p.normal * rs.epsilon(), dirs, indirect, counters[std::size_t(t)]);
-        });
-        if (indirect) slab.lookUp(*indirect, threads);
-        parallelFor(count, threads, [&](std::size_t i, int) {
-            const glm::vec4* L = slab.finish(i);
+        },
+        [&](const glm::vec4* L, std::size_t i) {
             glm::dvec3 sum(0.0);
             for (int r = 0; r < g.rays; ++r)
                 sum += glm::dvec3(L[r]);
-            out[lo + i] = glm::vec3(sum * (M_PI / double(g.rays)));
+            out[i] = glm::vec3(sum * (M_PI / double(g.rays)));
         });
-    }
     return out;
 }
 
@@ -91,19 +102,14 @@ std::vector<glm::vec3> gatherIrradianceSphere(const RayScene& rs, const Scenario
     const std::size_t nn = normals.size();
     std::vector<glm::vec3> out(points.size() * nn);
     std::vector<RayCounters> counters(static_cast<std::size_t>(threads));
-    RadianceSlab slab;
-    const std::size_t batch = std::max<std::size_t>(64, (1u << 18) / std::size_t(g.rays));
-    for (std::size_t lo = 0; lo < points.size(); lo += batch) {
-        const std::size_t count = std::min(batch, points.size() - lo);
-        slab.reset(count, g.rays);
-        parallelFor(count, threads, [&](std::size_t i, int t) {
-            slab.trace(i, rs, sc, lights, rotation(lo + i), points[lo + i], dirs, indirect,
+    gatherInBatches(
+        points.size(), g.rays, threads, indirect,
+        [&](RadianceSlab& slab, std::size_t slot, std::size_t i, int t) {
+            slab.trace(slot, rs, sc, lights, rotation(i), points[i], dirs, indirect,
                        counters[std::size_t(t)]);
-        });
-        if (indirect) slab.lookUp(*indirect, threads);
-        parallelFor(count, threads, [&](std::size_t i, int) {
-            const glm::vec4* L = slab.finish(i);
-            const glm::mat3 rot = rotation(lo + i);
+        },
+        [&](const glm::vec4* L, std::size_t i) {
+            const glm::mat3 rot = rotation(i);
             for (std::size_t k = 0; k < nn; ++k) {
                 glm::dvec3 sum(0.0);
                 double weights = 0.0;
@@ -113,11 +119,10 @@ std::vector<glm::vec3> gatherIrradianceSphere(const RayScene& rs, const Scenario
                     sum += w * glm::dvec3(L[r]);
                     weights += w;
                 }
-                out[(lo + i) * nn + k] =
+                out[i * nn + k] =
                     weights > 0.0 ? glm::vec3(sum * (M_PI / weights)) : glm::vec3(0.0f);
             }
         });
-    }
     return out;
 }
 
