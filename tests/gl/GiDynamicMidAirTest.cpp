@@ -11,6 +11,7 @@
 //   is 0.18-0.23 on the built-in scenes (MidAirLookupTest's printout), measured here 0.18.
 // Plus a golden image of the scene lit by the sparse bake.
 #include "gl/GlTestFixture.h"
+#include "gl/LambertIrradiance.h"
 
 #include "frame/FrameRenderer.h"
 #include "frame/Readback.h"
@@ -60,11 +61,6 @@ const Bakes& bakes() {
     return b;
 }
 
-double srgbToLinear(std::uint8_t v) {
-    const double c = v / 255.0;
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
 // The indirect irradiance of every dynamic pixel (GBuffer flag bit 0): the lighting's
 // indirect-only output x pi / albedo; and how many of them the probes lit at all.
 struct DynamicPixels {
@@ -88,10 +84,7 @@ DynamicPixels renderDynamic(const probes::ProbeSet& set, const std::string& mode
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {
             if (!(flags.at(x, y, 0) & 1u)) continue;
-            glm::vec3 e;
-            for (int c = 0; c < 3; ++c)
-                e[c] = float(M_PI * radiance.at(x, y, c) /
-                             std::max(srgbToLinear(albedo.at(x, y, c)), 1e-3));
+            const glm::vec3 e = lambertIrradiance(radiance, albedo, x, y);
             d.irradiance.push_back(e);
             d.unlit += e.x + e.y + e.z > 0.0f ? 0 : 1;
         }

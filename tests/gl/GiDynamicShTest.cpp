@@ -5,6 +5,7 @@
 #include "gl/GiSyntheticProbes.h"
 #include "gl/GiTestProbes.h"
 #include "gl/GlTestFixture.h"
+#include "gl/LambertIrradiance.h"
 
 #include "frame/FrameRenderer.h"
 #include "frame/Readback.h"
@@ -35,11 +36,6 @@ probes::ProbeSet buildingProbes(const SyntheticIrradiance& f) {
     return syntheticProbes(
         {syntheticVolume("building", {0.0f, 1.3f, 0.0f}, {4.3f, 1.6f, 2.8f}, {9, 4, 6})}, f,
         probes::StorageFormat::Rgba32f);
-}
-
-double srgbToLinear(std::uint8_t v) {
-    const double c = v / 255.0;
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
 }
 
 // The GBuffer's octahedral normal decode (shaders/common_octahedral.glsl).
@@ -80,10 +76,7 @@ ShFrame renderDynamic(const probes::ProbeSet& set, const std::string& dynamic) {
     ShFrame f;
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {
-            glm::vec3 e;
-            for (int c = 0; c < 3; ++c)
-                e[c] = float(M_PI * radiance.at(x, y, c) /
-                             std::max(srgbToLinear(albedo.at(x, y, c)), 1e-3));
+            const glm::vec3 e = lambertIrradiance(radiance, albedo, x, y);
             f.irradiance.push_back(e);
             f.normal.push_back(gbufferNormal(normal.at(x, y, 0), normal.at(x, y, 1)));
             f.flags.push_back(flags.at(x, y, 0));
