@@ -12,9 +12,10 @@
 namespace pb::probes {
 namespace {
 
-// 5: sparse storage also keeps a free-space lattice; 4: lit-surface samples; 3: emitter
-// sampling (MIS) at the probe; 2: far scenes bake in a moved frame.
-constexpr std::uint32_t kBakeAlgorithmVersion = 5;
+// 4: lit-surface samples; 3: emitter sampling (MIS) at the probe; 2: far scenes bake in a moved
+// frame. (Sparse storage's free-space lattice changed only sparse files: bakeInputHash hashes
+// its step for sparse requests, so dense files kept their hash.)
+constexpr std::uint32_t kBakeAlgorithmVersion = 4;
 
 void hashScene(Hasher& h, const scene::Scene& s) {
     const auto mats = summariseMaterials(s);
