@@ -409,6 +409,13 @@ float scenarioScale(const ProbeSet& set, std::size_t s) {
                : 1.0f;
 }
 
+// The stored probes only the free-space lattice keeps, for the summary; a dense set has none,
+// and is not classified against the scene's triangles (an up-to-date run stays quick).
+std::size_t freeSpaceProbes(const ProbeSet& set, const scene::Scene& s) {
+    if (set.storedCount() == set.probeCount()) return 0;
+    return freeSpaceOnlyProbes(set, staticBakeTriangles(s));
+}
+
 // `freeSpace`: the stored probes only the free-space lattice keeps (freeSpaceOnlyProbes), the
 // cost of lighting the air between surfaces (issue 18).
 void printSummary(const BakeArgs& a, const PlacementSummary& placement, const ProbeSet& set,
@@ -581,7 +588,7 @@ int run(const BakeArgs& a) {
         const PlacementSummary summary{cached->second, false};
         if (!a.json) std::cout << placementText(summary) << "\n";
         printSummary(a, summary, cached->first, nullptr, true,
-                     freeSpaceOnlyProbes(cached->first, staticBakeTriangles(s)), times);
+                     freeSpaceProbes(cached->first, s), times);
         return 0;
     }
     PlacementInfo placement;
@@ -622,7 +629,7 @@ int run(const BakeArgs& a) {
             if (!a.json) std::cout << placementText(summary) << "\n";
             recordPlacement(hash);
             printSummary(a, summary, *cached, nullptr, true,
-                         freeSpaceOnlyProbes(*cached, staticBakeTriangles(s)), times);
+                         freeSpaceProbes(*cached, s), times);
             return 0;
         }
         if (why.rfind("unusable", 0) == 0)
@@ -658,7 +665,7 @@ int run(const BakeArgs& a) {
         recordPlacement(set.inputHash);
     }
     times.write = CommandTimes::since(writeStart);
-    printSummary(a, summary, set, &stats, false, freeSpaceOnlyProbes(set, staticBakeTriangles(s)),
+    printSummary(a, summary, set, &stats, false, freeSpaceProbes(set, s),
                  times);
     return 0;
 }
