@@ -91,6 +91,12 @@ inline TileFootprint tileFootprint(float lx, float ly, int tile) {
 
 struct SampleOptions {
     bool edgeFade = true; // the bake turns it off: hits near a root's face keep full weight
+    // The surface bias ((0.2 n + 0.8 v) * 0.25 * minCell) keeps a SURFACE point from reading
+    // its own wall's shadow. A query at a probe's position (the nesting blend) is no surface:
+    // there it moved the point up to a quarter of the parent's cell - 25 cm in the rooms'
+    // house volume - towards the texel's direction, through the 5 cm partition beside the
+    // probe, and the dark room's ring probes took the lit room's light (issue 24).
+    bool surfaceBias = true;
 };
 
 // One lookup of a batch (ProbeSampler::sampleBatch).

@@ -148,6 +148,30 @@ TEST(BakeClassification, RelocationMovesProbesOutOfThinGeometry) {
     EXPECT_EQ(stats.invalidProbes, 0u);
 }
 
+TEST(BakeClassification, RelocationNeverLeavesTheVolumesBox) {
+    // A room volume ending in the middle of a thin wall (the rooms' partition, issue 24): its
+    // probes on that face sit inside the wall, equally near both sides. Moved to the far side
+    // they would light this room with the next one's light; they must step inwards.
+    pb::scene::Scene s = emptyScene(glm::vec3(0.5f));
+    int m = addMaterial(s, glm::vec3(0.5f));
+    addInstance(s, boxPrimitive({-0.025f, -2, -2}, {0.025f, 2, 2}, false, m));
+    const ProbeVolume v = volume("room", {1, 0, 0}, {1, 0.5f, 0.5f}, {3, 2, 2});
+    ProbeSet set = bakeProbes(s, request({v}, s));
+    int onFace = 0;
+    for (int p = 0; p < v.probeCount(); ++p) {
+        const glm::ivec3 c = v.probeCoords(p);
+        const ProbeState& st = set.states[0][size_t(p)];
+        const glm::vec3 local = v.gridLocal(c) + st.offset;
+        for (int a = 0; a < 3; ++a)
+            EXPECT_LE(std::abs(local[a]), v.halfExtents[a] + 1e-6f) << "probe " << p;
+        if (c.x != 0) continue;
+        ++onFace;
+        EXPECT_TRUE(st.valid) << "probe " << p;
+        EXPECT_GT(st.offset.x, 0.025f) << "probe " << p << ": out of the wall, into the room";
+    }
+    EXPECT_EQ(onFace, 4);
+}
+
 TEST(BakeStatsPhases, SplitTheTracingTimeWithoutGapsOrOverlap) {
     // bench_bake reports where the tracing went: each part named once, none negative, and
     // together they are the tracing time.
@@ -214,8 +238,9 @@ TEST(BakeNesting, ChildRingTakesTheParentsIrradiance) {
     child.parent = "world";
     ProbeSet set = bakeProbes(s, request({parent, child}, s, 2, 96));
     ProbeSampler sampler(set, 0);
-    SampleOptions noFade;
-    noFade.edgeFade = false;
+    SampleOptions atProbe; // as NestingBlend looks the parent up: no fade, no surface bias
+    atProbe.edgeFade = false;
+    atProbe.surfaceBias = false;
     int ring = 0, inner = 0;
     for (int p = 0; p < child.probeCount(); ++p) {
         glm::ivec3 c = child.probeCoords(p);
@@ -224,7 +249,8 @@ TEST(BakeNesting, ChildRingTakesTheParentsIrradiance) {
         glm::vec3 dir = octTexelDirection(2, 3, kIrradianceInterior);
         float mine =
             set.irradiance[0][1].at(c.x * kIrradianceTile + 3, c.z * kIrradianceTile + 4, c.y)[0];
-        float parents = sampler.sampleVolume(0, pos, dir, dir, noFade).irradiance.x;
+        float parents = sampler.sampleVolume(0, pos, dir, dir, atProbe).irradiance.x;
+        ASSERT_EQ(set.states[1][size_t(p)].offset, glm::vec3(0.0f)) << "no probe near the floor";
         if (onRing) {
             EXPECT_NEAR(mine, parents, 1e-4f * parents + 1e-6f) << "ring probe " << p;
             ++ring;

@@ -13,8 +13,36 @@ struct TraceSummary {
     int closestBackRay = -1, closestFrontRay = -1;
 };
 
+// The offsets a probe may take: +-kMaxRelocation cell per local axis, but never out of its
+// volume's box. A probe on the box's face belongs to the inside: moved outwards it would light
+// the inside with what lies beyond the face. The case that showed it (issue 24): a room volume
+// ending in the middle of a 5 cm partition; its probes there sit inside the wall, and "through
+// the nearest back face" is a coin toss between the two sides, so half of them went to the
+// lit room next door and leaked its light along the dark room's corner.
+struct OffsetBounds {
+    glm::vec3 lo, hi;
+    // Whether a step along local direction d can move the probe at all (not straight out).
+    bool allows(const glm::vec3& d) const {
+        for (int a = 0; a < 3; ++a)
+            if ((d[a] < 0.0f && lo[a] == 0.0f) || (d[a] > 0.0f && hi[a] == 0.0f)) return false;
+        return true;
+    }
+};
+
+OffsetBounds offsetBounds(const ProbeVolume& vol, const glm::ivec3& c) {
+    const glm::vec3 limit = kMaxRelocation * vol.cellSize();
+    OffsetBounds b{-limit, limit};
+    for (int a = 0; a < 3; ++a) {
+        if (vol.counts[a] < 2) continue; // a single probe on an axis sits mid-box, on no face
+        if (c[a] == 0) b.lo[a] = 0.0f;
+        if (c[a] == vol.counts[a] - 1) b.hi[a] = 0.0f;
+    }
+    return b;
+}
+
 TraceSummary trace(const RayScene& rs, const glm::vec3& origin, const glm::mat3& rot,
-                   const std::vector<glm::vec3>& dirs, GeometryScratch& s, std::uint64_t& rays) {
+                   const std::vector<glm::vec3>& dirs, const OffsetBounds& bounds,
+                   GeometryScratch& s, std::uint64_t& rays) {
     TraceSummary sum;
     const int n = int(dirs.size());
     // All rays first, then the classification: the face normal of each hit is prefetched
@@ -36,7 +64,9 @@ TraceSummary trace(const RayScene& rs, const glm::vec3& origin, const glm::mat3&
         if (back) {
             s.backface[size_t(r)] = 1;
             ++sum.backfaces;
-            if (h.t < sum.closestBack) sum.closestBack = h.t, sum.closestBackRay = r;
+            // The way out is the nearest back face the probe may step through (OffsetBounds).
+            if (h.t < sum.closestBack && bounds.allows(dirs[size_t(r)]))
+                sum.closestBack = h.t, sum.closestBackRay = r;
         } else if (h.t < sum.closestFront) {
             sum.closestFront = h.t, sum.closestFrontRay = r;
         }
@@ -58,22 +88,22 @@ void bakeProbeGeometry(const RayScene& rs, const ProbeVolume& vol, const glm::iv
     s.dist01.resize(size_t(n));
     const glm::mat3 rot = vol.localToWorldRotation();
     const glm::vec3 grid = vol.gridLocal(c);
-    const glm::vec3 limit = kMaxRelocation * vol.cellSize();
+    const OffsetBounds bounds = offsetBounds(vol, c);
     const float clearance = kRelocationClearance * vol.minCellSize();
     const float threshold = settings.backfaceThreshold * float(n);
 
     glm::vec3 offset(0.0f);
-    TraceSummary sum = trace(rs, vol.toWorld(grid), rot, dirs, s, rays);
+    TraceSummary sum = trace(rs, vol.toWorld(grid), rot, dirs, bounds, s, rays);
     for (int it = 0; settings.relocate && it < kMaxRelocationIterations; ++it) {
         glm::vec3 move(0.0f);
         if (float(sum.backfaces) > threshold && sum.closestBackRay >= 0)
             move = dirs[size_t(sum.closestBackRay)] * (sum.closestBack + clearance);
         else if (sum.closestFront < clearance && sum.closestFrontRay >= 0)
             move = -dirs[size_t(sum.closestFrontRay)] * (clearance - sum.closestFront);
-        glm::vec3 next = glm::clamp(offset + move, -limit, limit);
+        glm::vec3 next = glm::clamp(offset + move, bounds.lo, bounds.hi);
         if (next == offset) break;
         offset = next;
-        sum = trace(rs, vol.toWorld(grid + offset), rot, dirs, s, rays);
+        sum = trace(rs, vol.toWorld(grid + offset), rot, dirs, bounds, s, rays);
     }
 
     state.offset = offset;

@@ -12,8 +12,10 @@ void blendNestedRings(const std::vector<ProbeVolume>& volumes, const std::vector
     // One sampler per parent, built once that parent's own ring is final (parent-first order):
     // the sampler copies the textures it reads.
     std::vector<std::unique_ptr<ProbeSampler>> parentSampler(volumes.size());
-    SampleOptions noFade;
-    noFade.edgeFade = false;
+    // A probe's position is no surface: no edge fade and no surface bias (SampleOptions).
+    SampleOptions atProbe;
+    atProbe.edgeFade = false;
+    atProbe.surfaceBias = false;
     for (int v : parentFirstOrder(parents)) {
         const int parent = parents[size_t(v)];
         const ProbeVolume& vol = volumes[size_t(v)];
@@ -30,13 +32,17 @@ void blendNestedRings(const std::vector<ProbeVolume>& volumes, const std::vector
             bool ring = false;
             for (int a = 0; a < 3; ++a)
                 ring = ring || c[a] == 0 || c[a] == vol.counts[a] - 1;
-            if (!ring || !states[i].valid) continue;
+            // A relocated ring probe started in or against geometry: its box face lies in a
+            // wall, where no camera sees a seam, and the parent's coarser probes straddle that
+            // wall - blending would carry the next room's light in (issue 24: the rooms'
+            // partition, the dark room's corner). It keeps its own irradiance.
+            if (!ring || !states[i].valid || states[i].offset != glm::vec3(0.0f)) continue;
             glm::vec3 pos = vol.toWorld(vol.gridLocal(c) + states[i].offset);
             float* tile = tileOrigin(tex, c, kIrradianceTile);
             for (int y = 0; y < kIrradianceInterior; ++y)
                 for (int x = 0; x < kIrradianceInterior; ++x) {
                     glm::vec3 dir = rot * octTexelDirection(x, y, kIrradianceInterior);
-                    IrradianceSample s = sampler.sampleVolume(0, pos, dir, dir, noFade);
+                    IrradianceSample s = sampler.sampleVolume(0, pos, dir, dir, atProbe);
                     if (!(s.weight > 0.0f)) continue;
                     float* t = tile + (size_t(y + 1) * tex.shape.width + size_t(x + 1)) *
                                           size_t(tex.shape.channels);

@@ -4,9 +4,11 @@
 // places, so the lighting has no seam where the smaller volume takes over:
 //     texel = mix(texel, E_parent, child.edgeBlend)
 // E_parent = the CPU sampler on the parent volume alone at the (relocated) probe position,
-// normal = view = the texel's direction, no edge fade. Where the parent has nothing (weight
-// 0: all its probes there invalid) the child's own value stays. Invalid child probes are
-// left alone. Parents are blended before their children, so a chain of nesting cascades.
+// normal = view = the texel's direction, no edge fade and no surface bias (a probe is no
+// surface). Where the parent has nothing (weight 0: all its probes there invalid) the child's
+// own value stays. Invalid child probes are left alone, and so are relocated ones: their face
+// of the box lies in or against a wall, where there is no seam to hide and the parent's
+// coarser probes straddle the wall (issue 24). Parents are blended before their children, so a chain of nesting cascades.
 #include "probes/ProbeSampler.h"
 
 #include <vector>
