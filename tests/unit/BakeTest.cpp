@@ -148,19 +148,21 @@ TEST(BakeClassification, RelocationMovesProbesOutOfThinGeometry) {
     EXPECT_EQ(stats.invalidProbes, 0u);
 }
 
-TEST(BakeClassification, RelocationNeverLeavesTheVolumesBox) {
+TEST(BakeClassification, RelocationNeverLeavesAChildVolumesBox) {
     // A room volume ending in the middle of a thin wall (the rooms' partition, issue 24): its
     // probes on that face sit inside the wall, equally near both sides. Moved to the far side
     // they would light this room with the next one's light; they must step inwards.
     pb::scene::Scene s = emptyScene(glm::vec3(0.5f));
     int m = addMaterial(s, glm::vec3(0.5f));
     addInstance(s, boxPrimitive({-0.025f, -2, -2}, {0.025f, 2, 2}, false, m));
-    const ProbeVolume v = volume("room", {1, 0, 0}, {1, 0.5f, 0.5f}, {3, 2, 2});
-    ProbeSet set = bakeProbes(s, request({v}, s));
+    const ProbeVolume house = volume("house", {0, 0, 0}, {2.5f, 1, 1}, {3, 2, 2});
+    ProbeVolume v = volume("room", {1, 0, 0}, {1, 0.5f, 0.5f}, {3, 2, 2});
+    v.parent = "house";
+    ProbeSet set = bakeProbes(s, request({house, v}, s));
     int onFace = 0;
     for (int p = 0; p < v.probeCount(); ++p) {
         const glm::ivec3 c = v.probeCoords(p);
-        const ProbeState& st = set.states[0][size_t(p)];
+        const ProbeState& st = set.states[1][size_t(p)];
         const glm::vec3 local = v.gridLocal(c) + st.offset;
         for (int a = 0; a < 3; ++a)
             EXPECT_LE(std::abs(local[a]), v.halfExtents[a] + 1e-6f) << "probe " << p;

@@ -13,12 +13,15 @@ struct TraceSummary {
     int closestBackRay = -1, closestFrontRay = -1;
 };
 
-// The offsets a probe may take: +-kMaxRelocation cell per local axis, but never out of its
-// volume's box. A probe on the box's face belongs to the inside: moved outwards it would light
-// the inside with what lies beyond the face. The case that showed it (issue 24): a room volume
-// ending in the middle of a 5 cm partition; its probes there sit inside the wall, and "through
-// the nearest back face" is a coin toss between the two sides, so half of them went to the
-// lit room next door and leaked its light along the dark room's corner.
+// The offsets a probe may take: +-kMaxRelocation cell per local axis, and for a child volume
+// never out of its box. A child's probe on the box's face belongs to the inside: moved
+// outwards it would light the inside with what lies beyond the face. The case that showed it
+// (issue 24): a room volume ending in the middle of a 5 cm partition; its probes there sit
+// inside the wall, and "through the nearest back face" is a coin toss between the two sides,
+// so half of them went to the lit room next door and leaked its light along the dark room's
+// corner. Roots keep the plain clamp: their faces lie on or beyond the scene's bounds, and
+// bounding them too made the default placement's mean error on the Cornell box 3.3% worse
+// (bench_placement; bench/README.md "Lattice on floors").
 struct OffsetBounds {
     glm::vec3 lo, hi;
     // Whether a step along local direction d can move the probe at all (not straight out).
@@ -32,6 +35,7 @@ struct OffsetBounds {
 OffsetBounds offsetBounds(const ProbeVolume& vol, const glm::ivec3& c) {
     const glm::vec3 limit = kMaxRelocation * vol.cellSize();
     OffsetBounds b{-limit, limit};
+    if (vol.parent.empty()) return b;
     for (int a = 0; a < 3; ++a) {
         if (vol.counts[a] < 2) continue; // a single probe on an axis sits mid-box, on no face
         if (c[a] == 0) b.lo[a] = 0.0f;

@@ -10,9 +10,9 @@
 //     (its distance + kRelocationClearance * minCell);
 //   - else, closest front face nearer than kRelocationClearance * minCell: step away from it
 //     to that clearance;
-//   - else stop. The offset is clamped to +-kMaxRelocation cell per local axis and to the
-//     volume's box (a probe on a face moves only inwards, and steps only through back faces
-//     that lead inwards); the probe is classified where it ends.
+//   - else stop. The offset is clamped to +-kMaxRelocation cell per local axis and, in a
+//     child volume, to the box (a probe on a face moves only inwards, and steps only through
+//     back faces that lead inwards); the probe is classified where it ends.
 // Visibility: the final position's rays; distance min(t, maxDistance) / maxDistance, a miss
 // counts as 1 (see ProbeConvolution.h).
 #include "probes/bake/ProbeConvolution.h"
