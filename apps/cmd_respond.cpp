@@ -10,6 +10,7 @@
 #include "ProfileOptions.h"
 #include "RespondReport.h"
 #include "SceneOptions.h"
+#include "bench/runner/ProbeCache.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "frame/FrameRenderer.h"
@@ -44,7 +45,7 @@ struct RespondArgs {
     int width = 160, height = 90;
     float radius = 1.5f;
     bool force = false;
-    std::string outDir, cacheDir = ".probebench-cache/respond";
+    std::string outDir, cacheDir; // empty: the probe cache's default folder
     JsonOption json;
 };
 
@@ -174,7 +175,9 @@ void Run::prepare() {
     }
     std::string note;
     progress("converged reference: full re-bake of the changed scene");
-    reference_ = convergedBake(steps_.back().world, set_, a_.cacheDir, &note);
+    reference_ =
+        convergedBake(steps_.back().world, set_,
+                      a_.cacheDir.empty() ? bench::defaultProbeCacheDir() : a_.cacheDir, &note);
     progress("converged reference " + note);
     if (!samples_.empty() && a_.raysPerFrame > 0)
         budget_ = std::max(1, int(double(a_.raysPerFrame) / samples_.back()->raysPerUpdate()));
@@ -424,9 +427,9 @@ const RegisterCommand reg{
          cmd.add_option("--width", a->width, "Image width (default 160)");
          cmd.add_option("--height", a->height, "Image height (default 90)");
          cmd.add_option("--out-dir", a->outDir, "Folder for frames/*.png and report.html");
-         cmd.add_option(
-             "--cache-dir", a->cacheDir,
-             "Where the converged re-bake is cached (default .probebench-cache/respond)");
+         cmd.add_option("--cache-dir", a->cacheDir,
+                        "Where the converged re-bake is cached (default: the probe cache folder, "
+                        "as bench and truth use)");
          a->json.add(cmd, "schedules[] with t95_frames, t99_frames, overshoot, flicker, far_drift, "
                           "rays_per_frame, cpu_ms_per_frame, bytes_uploaded, error_curve");
          return [a] {

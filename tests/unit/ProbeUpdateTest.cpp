@@ -13,6 +13,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 
 using namespace pb;
 using namespace pb::respond;
@@ -224,4 +226,28 @@ TEST(ResponseMetrics, SettleFrameOvershootFlickerAndDrift) {
     EXPECT_EQ(d.pixels, 1u);
     EXPECT_NEAR(d.drift, 0.1, 1e-6);
     EXPECT_EQ(farDrift({{3.0f}, {1.0f}}, {false}).pixels, 0u);
+}
+
+TEST(ResponseEvent, ReadsATomlTimeline) {
+    const std::filesystem::path dir =
+        std::filesystem::path(PB_TEST_OUTPUT_DIR) / "respond_timeline";
+    std::filesystem::create_directories(dir);
+    const auto good = dir / "good.toml";
+    std::ofstream(good)
+        << "[[event]]\nspec = \"sun:off@3\"\n[[event]]\nspec = \"node:table:remove@7\"\n";
+    const std::vector<ResponseEvent> events = readTimeline(good.string());
+    ASSERT_EQ(events.size(), 2u);
+    EXPECT_EQ(events[0].kind, EventKind::SunOff);
+    EXPECT_EQ(events[1].frame, 7);
+    const auto bad = dir / "bad.toml";
+    std::ofstream(bad) << "[[event]]\nwhen = 3\n";
+    try {
+        readTimeline(bad.string());
+        FAIL() << "a timeline event without spec must fail";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.toml"), std::string::npos) << e.what();
+    }
+    const auto wrong = dir / "wrong.toml";
+    std::ofstream(wrong) << "[[event]]\nspec = \"sun:dim@1\"\n";
+    EXPECT_THROW(readTimeline(wrong.string()), Error);
 }
