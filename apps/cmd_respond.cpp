@@ -17,6 +17,7 @@
 #include "gl/DebugOutput.h"
 #include "image/Image.h"
 #include "passes/ProbeTileUpload.h"
+#include "probes/ProbeLayout.h"
 #include "probes/StorageFormat.h"
 #include "respond/ProbeUpdate.h"
 #include "respond/ResponseMetrics.h"
@@ -42,6 +43,7 @@ struct RespondArgs {
     std::string probes, scenario, timeline, schedules = "hysteresis,rtxgi,hastened";
     std::vector<std::string> events;
     int frames = 150, raysPerFrame = 0, raysPerUpdate = 256, sampleBakes = 16;
+    long long uploadBytesPerFrame = 0; // 0: no limit
     int width = 160, height = 90;
     float radius = 1.5f;
     bool force = false;
@@ -122,6 +124,7 @@ void Run::prepare() {
     if (a_.sampleBakes < 1) throw Error("--sample-bakes: must be at least 1");
     if (!(a_.radius > 0.0f)) throw Error("--radius: must be positive");
     if (a_.raysPerFrame < 0) throw Error("--rays-per-frame: must not be negative");
+    if (a_.uploadBytesPerFrame < 0) throw Error("--upload-bytes-per-frame: must not be negative");
     std::vector<Schedule> schedules = parseSchedules(a_.schedules, "--schedule");
     (void)schedules;
     std::vector<ResponseEvent> events;
@@ -179,8 +182,16 @@ void Run::prepare() {
         convergedBake(steps_.back().world, set_,
                       a_.cacheDir.empty() ? bench::defaultProbeCacheDir() : a_.cacheDir, &note);
     progress("converged reference " + note);
+    // The budget in probe updates: what the rays buy and what the upload allows (one 8x8
+    // tile per update), the smaller; at least one update per frame.
     if (!samples_.empty() && a_.raysPerFrame > 0)
         budget_ = std::max(1, int(double(a_.raysPerFrame) / samples_.back()->raysPerUpdate()));
+    if (a_.uploadBytesPerFrame > 0) {
+        const long long tileBytes = probes::kIrradianceTile * probes::kIrradianceTile *
+                                    (set_.format() == probes::StorageFormat::Rgba16f ? 8 : 16);
+        const int byBytes = int(std::max(1LL, a_.uploadBytesPerFrame / tileBytes));
+        budget_ = budget_ > 0 ? std::min(budget_, byBytes) : byBytes;
+    }
     settings_ = render::defaultFrameSettings(initial_.scene);
     profile_ = resolveProfile(ProfileArgs{}).switches;
 }
@@ -418,6 +429,9 @@ const RegisterCommand reg{
                         "Comma-separated: hysteresis, rtxgi, hastened (default: all three)");
          cmd.add_option("--rays-per-frame", a->raysPerFrame,
                         "Ray budget per frame (0 = update every marked probe every frame)");
+         cmd.add_option("--upload-bytes-per-frame", a->uploadBytesPerFrame,
+                        "Upload budget per frame in bytes (0 = no limit); each update uploads "
+                        "one 8x8 irradiance tile (512 bytes in rgba16f)");
          cmd.add_option("--rays-per-update", a->raysPerUpdate,
                         "Rays per probe and bounce pass of one update's sample (default 256)");
          cmd.add_option("--sample-bakes", a->sampleBakes,

@@ -137,3 +137,19 @@ TEST(RespondCli, BadEventsAndForeignProbesFailInOneLineBeforeRendering) {
     EXPECT_NE(r.output.find("another scene"), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("searching the worst-case view"), std::string::npos) << r.output;
 }
+
+TEST(RespondCli, BudgetsCapTheUpdatesAndTheUploadedBytes) {
+    const fs::path dir = outputDir();
+    // 100 tiles of 512 bytes; the ray budget (64 rays x 1 bounce per update) allows 200.
+    auto r = runProbebench(
+        respond(dir, {"--event", "sun:off@1", "--frames", "6", "--schedule", "hastened",
+                      "--upload-bytes-per-frame", "51200", "--rays-per-frame", "12800", "--json",
+                      (dir / "b.json").string()}));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto j = nlohmann::json::parse(readText(dir / "b.json"));
+    EXPECT_EQ(j["probe_updates_per_frame_budget"].get<int>(), 100);
+    const auto& s = j["schedules"][0];
+    EXPECT_DOUBLE_EQ(s["probe_updates_per_frame"].get<double>(), 100.0);
+    EXPECT_DOUBLE_EQ(s["upload_bytes_per_frame"].get<double>(), 51200.0);
+    EXPECT_LE(s["rays_per_frame"].get<double>(), 12800.0);
+}
