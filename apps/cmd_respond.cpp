@@ -44,6 +44,8 @@ struct RespondArgs {
     std::vector<std::string> events;
     int frames = 150, raysPerFrame = 0, raysPerUpdate = 256, sampleBakes = 16;
     long long uploadBytesPerFrame = 0; // 0: no limit
+    ProfileArgs profileArgs;           // --profile: switches and its [update] budget
+    const CLI::Option *raysOption = nullptr, *bytesOption = nullptr;
     int width = 160, height = 90;
     float radius = 1.5f;
     bool force = false;
@@ -112,6 +114,7 @@ private:
     scene::View view_;
     render::FrameSettings settings_;
     profile::Profile profile_;
+    std::string profileName_;
     std::unique_ptr<gl::DebugOutput> debug_;
     std::uint64_t glMark_ = 0;
     int lastEventFrame_ = 0;
@@ -123,6 +126,13 @@ void Run::prepare() {
     if (a_.width < 8 || a_.height < 8) throw Error("--width/--height: at least 8 pixels");
     if (a_.sampleBakes < 1) throw Error("--sample-bakes: must be at least 1");
     if (!(a_.radius > 0.0f)) throw Error("--radius: must be positive");
+    // A profile's update budget applies unless the command line gives one.
+    const profile::PlatformProfile platformProfile = resolveProfile(a_.profileArgs);
+    profileName_ = platformProfile.name;
+    profile_ = platformProfile.switches;
+    if (!a_.raysOption->count()) a_.raysPerFrame = platformProfile.updateRaysPerFrame;
+    if (!a_.bytesOption->count())
+        a_.uploadBytesPerFrame = platformProfile.updateUploadBytesPerFrame;
     if (a_.raysPerFrame < 0) throw Error("--rays-per-frame: must not be negative");
     if (a_.uploadBytesPerFrame < 0) throw Error("--upload-bytes-per-frame: must not be negative");
     std::vector<Schedule> schedules = parseSchedules(a_.schedules, "--schedule");
@@ -193,7 +203,6 @@ void Run::prepare() {
         budget_ = budget_ > 0 ? std::min(budget_, byBytes) : byBytes;
     }
     settings_ = render::defaultFrameSettings(initial_.scene);
-    profile_ = resolveProfile(ProfileArgs{}).switches;
 }
 
 std::unique_ptr<render::FrameRenderer> Run::makeRenderer(const World& w,
@@ -331,7 +340,10 @@ int Run::go() {
                              {"rays_per_update_requested", a_.raysPerUpdate},
                              {"probe_updates_per_frame_budget", budget_},
                              {"sample_bakes", a_.sampleBakes},
-                             {"reference_mean_luminance", refMean}};
+                             {"reference_mean_luminance", refMean},
+                             {"profile", profileName_},
+                             {"rays_per_frame_budget", a_.raysPerFrame},
+                             {"upload_bytes_per_frame_budget", a_.uploadBytesPerFrame}};
     result["events"] = nlohmann::json::array();
     for (const Step& s : steps_)
         result["events"].push_back(s.event.spec + (s.effective ? "" : " (no effect)"));
@@ -427,11 +439,16 @@ const RegisterCommand reg{
          cmd.add_option("--frames", a->frames, "Frames to run (default 150)");
          cmd.add_option("--schedule", a->schedules,
                         "Comma-separated: hysteresis, rtxgi, hastened (default: all three)");
-         cmd.add_option("--rays-per-frame", a->raysPerFrame,
-                        "Ray budget per frame (0 = update every marked probe every frame)");
-         cmd.add_option("--upload-bytes-per-frame", a->uploadBytesPerFrame,
-                        "Upload budget per frame in bytes (0 = no limit); each update uploads "
-                        "one 8x8 irradiance tile (512 bytes in rgba16f)");
+         addProfileOptions(cmd, a->profileArgs,
+                           "The profile's [update] rays_per_frame / upload_bytes_per_frame are "
+                           "the budget unless --rays-per-frame / --upload-bytes-per-frame say.");
+         a->raysOption =
+             cmd.add_option("--rays-per-frame", a->raysPerFrame,
+                            "Ray budget per frame (0 = update every marked probe every frame)");
+         a->bytesOption =
+             cmd.add_option("--upload-bytes-per-frame", a->uploadBytesPerFrame,
+                            "Upload budget per frame in bytes (0 = no limit); each update uploads "
+                            "one 8x8 irradiance tile (512 bytes in rgba16f)");
          cmd.add_option("--rays-per-update", a->raysPerUpdate,
                         "Rays per probe and bounce pass of one update's sample (default 256)");
          cmd.add_option("--sample-bakes", a->sampleBakes,

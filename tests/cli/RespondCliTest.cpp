@@ -153,3 +153,26 @@ TEST(RespondCli, BudgetsCapTheUpdatesAndTheUploadedBytes) {
     EXPECT_DOUBLE_EQ(s["upload_bytes_per_frame"].get<double>(), 51200.0);
     EXPECT_LE(s["rays_per_frame"].get<double>(), 12800.0);
 }
+
+TEST(RespondCli, AProfileCarriesTheUpdateBudget) {
+    const fs::path dir = outputDir();
+    const fs::path profile = dir / "budgeted.toml";
+    std::ofstream(profile) << "inherit = \"handheld\"\n[update]\nrays_per_frame = 12800\n"
+                              "upload_bytes_per_frame = 51200\n";
+    auto r = runProbebench(
+        respond(dir, {"--event", "sun:off@1", "--frames", "4", "--schedule", "hastened",
+                      "--profile", profile.string(), "--json", (dir / "p.json").string()}));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const auto j = nlohmann::json::parse(readText(dir / "p.json"));
+    EXPECT_EQ(j["rays_per_frame_budget"].get<int>(), 12800);
+    EXPECT_EQ(j["probe_updates_per_frame_budget"].get<int>(), 100);
+    // The command line wins over the profile.
+    auto cli = runProbebench(
+        respond(dir, {"--event", "sun:off@1", "--frames", "4", "--schedule", "hastened",
+                      "--profile", profile.string(), "--upload-bytes-per-frame", "5120", "--json",
+                      (dir / "q.json").string()}));
+    ASSERT_EQ(cli.exitCode, 0) << cli.output;
+    EXPECT_EQ(nlohmann::json::parse(readText(dir / "q.json"))["probe_updates_per_frame_budget"]
+                  .get<int>(),
+              10);
+}
