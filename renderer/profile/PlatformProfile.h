@@ -31,6 +31,10 @@ struct PlatformProfile {
     double frameBudgetMs = 16.7;       // whole frame on the target hardware
     double giMemoryBudgetMiB = 8.0;    // GI memory (kGiMemoryDefinition), MiB
     std::string cachePreset;           // costmodel::cachePresetFor name
+    // Incremental probe updates after a scene change (`probebench respond --profile`): the
+    // rays and the probe-texture upload bytes one frame may spend; 0 = no limit.
+    int updateRaysPerFrame = 0;
+    int updateUploadBytesPerFrame = 0;
 
     // {name, file, description, inherits, output, budget, costmodel, switches}
     nlohmann::json toJson() const;

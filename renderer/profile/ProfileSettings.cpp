@@ -48,6 +48,12 @@ ProfileSetting text(const char* key, bool required, const char* doc,
     return s;
 }
 
+// A setting a root profile may leave out: it then keeps the PlatformProfile default.
+ProfileSetting optional(ProfileSetting s) {
+    s.requiredAtRoot = false;
+    return s;
+}
+
 std::vector<ProfileSetting> buildSettings() {
     return {
         text("description", false, "one line shown by `probebench profiles`",
@@ -61,6 +67,14 @@ std::vector<ProfileSetting> buildSettings() {
         number("budget.gi_memory_mib", Kind::Number, 0.0, 65536.0, true,
                "GPU memory for the probe data of one scenario (MiB)",
                &PlatformProfile::giMemoryBudgetMiB),
+        optional(integer("update.rays_per_frame", 0, 1 << 30,
+                         "probe update budget: rays per frame after a scene change (probebench "
+                         "respond; 0 = no limit)",
+                         &PlatformProfile::updateRaysPerFrame)),
+        optional(integer("update.upload_bytes_per_frame", 0, 1 << 30,
+                         "probe update budget: probe texture bytes uploaded per frame (0 = no "
+                         "limit)",
+                         &PlatformProfile::updateUploadBytesPerFrame)),
         text("costmodel.cache_preset", true,
              "texture-cache preset of the cost model (probebench costmodel --cache)",
              &PlatformProfile::cachePreset),

@@ -150,7 +150,8 @@ void bakeGeometry(BakeRun& run) {
     // which are valid must not change when a scene is re-baked with another seed, only the
     // radiance's sampling noise may (the seed's job). kGeometrySeed keeps the rotation the
     // default seed always had.
-    const auto dirs = passDirections(run.cfg.raysPerProbe, geometryStream(kGeometrySeed));
+    const int rays = run.req.geometryRays > 0 ? run.req.geometryRays : run.cfg.raysPerProbe;
+    const auto dirs = passDirections(rays, geometryStream(kGeometrySeed));
     const ProbeConvolution conv(dirs);
     std::vector<GeometryScratch> scratch(static_cast<size_t>(run.threads));
     std::vector<std::vector<float>> vis(

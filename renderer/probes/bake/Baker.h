@@ -38,6 +38,11 @@ struct BakeRequest {
     // byte-identical to the same scenario of the whole bake (ProbeFileMerge.h joins them). Not
     // an input: a partial bake's input hash is the whole bake's.
     std::vector<std::size_t> onlyScenarios;
+    // Rays per probe of the geometry pass (relocation, validity, visibility); 0: the
+    // settings' raysPerProbe. The update engine (renderer/respond) traces low-ray radiance
+    // samples of probes that must sit where the file's full bake put them. An input (hashed
+    // when set).
+    int geometryRays = 0;
 };
 
 struct BakeProgress {
