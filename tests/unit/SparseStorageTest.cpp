@@ -6,14 +6,14 @@
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "fuzz/FuzzInputs.h"
-#include "probes/placement/AutoVolume.h"
+#include "probes/AbsentProbeFill.h"
+#include "probes/ProbeSampler.h"
 #include "probes/bake/Baker.h"
+#include "probes/bake/RayScene.h"
+#include "probes/placement/AutoVolume.h"
 #include "probes/store/Hash.h"
 #include "probes/store/MemoryReport.h"
 #include "probes/store/ProbeFile.h"
-#include "probes/AbsentProbeFill.h"
-#include "probes/ProbeSampler.h"
-#include "probes/bake/RayScene.h"
 #include "probes/store/SparseLayout.h"
 #include "scene/SceneLoader.h"
 #include "support/TestEnv.h"
@@ -137,6 +137,62 @@ TEST(SparseStorage, KeepsExactlyTheCornersOfSurfaceCells) {
     EXPECT_EQ(std::count(kept.begin(), kept.end(), 1), 0);
 }
 
+// Many triangles (several work items, so several threads on a multi-core machine): the mask
+// is the union of what each triangle marks alone, whichever thread saw it. The volume is
+// rotated, so the general transform runs; the next test covers the axis-aligned one.
+TEST(SparseStorage, ManyTrianglesMarkTheUnionOfTheirOwnCells) {
+    ProbeVolume v;
+    v.name = "v";
+    v.halfExtents = glm::vec3(4.0f, 3.0f, 5.0f);
+    v.counts = glm::ivec3(9, 7, 11);
+    v.rotation = rotationFromEulerDegrees(glm::vec3(10.0f, 35.0f, 0.0f));
+    std::mt19937 rng(17);
+    // Only the world's -x half holds triangles, so part of the volume stays empty.
+    std::uniform_real_distribution<float> pos(-6.0f, 6.0f), half(-6.0f, -1.0f), edge(-0.6f, 0.6f);
+    std::vector<WorldTriangle> tris;
+    for (int i = 0; i < 20000; ++i) {
+        const glm::vec3 a(half(rng), pos(rng), pos(rng));
+        tris.push_back({a, a + glm::vec3(edge(rng), edge(rng), edge(rng)),
+                        a + glm::vec3(edge(rng), edge(rng), edge(rng)), glm::vec3(0, 1, 0)});
+    }
+    const std::vector<std::uint8_t> all = surfaceCornerProbes(v, true, tris);
+    std::vector<std::uint8_t> expected(all.size(), 0);
+    for (const WorldTriangle& t : tris) {
+        const std::vector<std::uint8_t> one = surfaceCornerProbes(v, true, {t});
+        for (std::size_t i = 0; i < one.size(); ++i)
+            expected[i] |= one[i];
+    }
+    EXPECT_EQ(all, expected);
+    const auto kept = std::count(all.begin(), all.end(), std::uint8_t(1));
+    EXPECT_GT(kept, 0);
+    EXPECT_LT(kept, v.probeCount());
+}
+
+// An axis-aligned volume skips the rotation (SparseStorage.cpp): the quaternion -1, the same
+// rotation written the other way, takes the general transform and must mark the same probes.
+TEST(SparseStorage, AxisAlignedShortcutMarksWhatTheRotationMarks) {
+    ProbeVolume v;
+    v.name = "v";
+    v.center = glm::vec3(0.3f, -0.2f, 0.1f);
+    v.halfExtents = glm::vec3(4.0f, 3.0f, 5.0f);
+    v.counts = glm::ivec3(17, 13, 21);
+    std::mt19937 rng(29);
+    std::uniform_real_distribution<float> pos(-5.5f, 5.5f), edge(-0.4f, 0.4f);
+    std::vector<WorldTriangle> tris;
+    for (int i = 0; i < 3000; ++i) {
+        const glm::vec3 a(pos(rng), pos(rng), pos(rng));
+        tris.push_back({a, a + glm::vec3(edge(rng), edge(rng), edge(rng)),
+                        a + glm::vec3(edge(rng), edge(rng), edge(rng)), glm::vec3(0, 1, 0)});
+    }
+    ProbeVolume flipped = v;
+    flipped.rotation = glm::quat(-1.0f, 0.0f, 0.0f, 0.0f);
+    for (bool root : {true, false}) {
+        const std::vector<std::uint8_t> aligned = surfaceCornerProbes(v, root, tris);
+        EXPECT_EQ(aligned, surfaceCornerProbes(flipped, root, tris)) << "root " << root;
+        EXPECT_GT(std::count(aligned.begin(), aligned.end(), std::uint8_t(1)), 0);
+    }
+}
+
 // What the guarantee rests on: a surface point reads only the corners of its cell, and those
 // are kept, so dropping the rest changes no surface's irradiance - bit for bit.
 TEST(SparseStorage, DroppingFarProbesChangesNoSurfaceIrradiance) {
@@ -237,7 +293,7 @@ TEST(SparseStorage, ParentVolumesKeepTheRadianceTheirChildRingsRead) {
     applySparseStorage(dense, staticBakeTriangles(s));
     // x = -2, y = 2.75 (off the free-space lattice: x is odd)
     ASSERT_FALSE(dense.states[0][size_t(parent.probeIndex({1, 2, 2}))].stored);
-    ASSERT_TRUE(dense.states[1][size_t(child.probeIndex({1, 1, 1}))].stored);   // y = 1.0
+    ASSERT_TRUE(dense.states[1][size_t(child.probeIndex({1, 1, 1}))].stored); // y = 1.0
     r.sparse = true;
     const ProbeSet sparse = bakeProbes(s, r);
     EXPECT_EQ(sparse.irradiance[0][1].stored, dense.irradiance[0][1].stored);

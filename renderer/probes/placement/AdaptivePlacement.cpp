@@ -1,10 +1,10 @@
 #include "probes/placement/AdaptivePlacement.h"
 
 #include "core/Error.h"
-#include "probes/placement/AutoVolume.h"
-#include "probes/placement/BoxMerge.h"
 #include "core/ParallelFor.h"
 #include "probes/bake/RayDirections.h"
+#include "probes/placement/AutoVolume.h"
+#include "probes/placement/BoxMerge.h"
 
 #include <algorithm>
 #include <cmath>
@@ -77,14 +77,33 @@ std::vector<std::vector<std::uint64_t>> occupiedCells(const Lattice& L,
             add(w.a + u * (w.b - w.a) + v * (w.c - w.a));
         }
     }
+    // The finest level first; the coarser ones from its distinct cells only (the samples
+    // repeat each cell many times, and sorting them once is the costly part).
     std::vector<std::vector<std::uint64_t>> out(size_t(L.levels) + 1);
-    for (int l = 0; l <= L.levels; ++l) {
-        auto& keys = out[size_t(l)];
-        keys.reserve(finest.size());
-        for (const Cell& f : finest)
-            keys.push_back(L.cellKey(f / (1 << (L.levels - l)), l));
+    auto sortedUnique = [](std::vector<std::uint64_t>& keys) {
         std::sort(keys.begin(), keys.end());
         keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    };
+    std::vector<std::uint64_t>& fine = out[size_t(L.levels)];
+    fine.reserve(finest.size());
+    for (const Cell& f : finest)
+        fine.push_back(L.cellKey(f, L.levels));
+    sortedUnique(fine);
+    std::vector<Cell> distinct;
+    distinct.reserve(fine.size());
+    for (std::uint64_t key : fine) { // key = (y * n.z + z) * n.x + x (Lattice::cellKey)
+        Cell c;
+        c.x = int(key % std::uint64_t(nf.x));
+        c.z = int((key / std::uint64_t(nf.x)) % std::uint64_t(nf.z));
+        c.y = int(key / std::uint64_t(nf.x) / std::uint64_t(nf.z));
+        distinct.push_back(c);
+    }
+    for (int l = 0; l < L.levels; ++l) {
+        auto& keys = out[size_t(l)];
+        keys.reserve(distinct.size());
+        for (const Cell& f : distinct)
+            keys.push_back(L.cellKey(f / (1 << (L.levels - l)), l));
+        sortedUnique(keys);
     }
     return out;
 }

@@ -1,6 +1,7 @@
 #include "probes/store/SparseStorage.h"
 
 #include "core/Error.h"
+#include "core/ParallelFor.h"
 #include "probes/ProbeSampler.h"
 #include "probes/store/SparseLayout.h"
 
@@ -37,57 +38,111 @@ bool triangleOverlapsBox(const glm::vec3 t[3], const glm::vec3& c, const glm::ve
 
 } // namespace
 
+namespace {
+
+// Marks the corners of the cells of `v` that the triangles [first, last) pass through.
+class SurfaceCells {
+public:
+    SurfaceCells(const ProbeVolume& v, bool root)
+        : v_(v), cell_(v.cellSize()), h_(v.halfExtents),
+          fade_(root ? kEdgeFadeCells * cell_ : glm::vec3(0.0f)),
+          // Cells grow by kSurfaceCellMargin so a surface on or near a cell face keeps the
+          // cells on both sides: shading positions sit a little off their surface (GBuffer
+          // depth precision, the placement benchmark's 1e-4 scene offset) and the sampler's
+          // rounding decides the cell.
+          eps_(kSurfaceCellMargin * cell_), cells_(glm::max(v.counts - 1, glm::ivec3(1))) {}
+
+    void mark(const WorldTriangle* first, const WorldTriangle* last,
+              std::vector<std::uint8_t>& needed) const {
+        for (const WorldTriangle* wt = first; wt != last; ++wt) {
+            const glm::vec3 t[3] = {local(wt->a), local(wt->b), local(wt->c)};
+            const glm::vec3 tLo = glm::min(t[0], glm::min(t[1], t[2]));
+            const glm::vec3 tHi = glm::max(t[0], glm::max(t[1], t[2]));
+            const glm::vec3 lo = tLo - eps_, hi = tHi + eps_;
+            if (glm::any(glm::greaterThan(lo, h_ + fade_)) ||
+                glm::any(glm::lessThan(hi, -h_ - fade_)))
+                continue;
+            glm::ivec3 b0, b1;
+            for (int a = 0; a < 3; ++a) {
+                b0[a] = cellIndex(a, lo[a]);
+                b1[a] = cellIndex(a, hi[a]);
+            }
+            glm::ivec3 b;
+            for (b.y = b0.y; b.y <= b1.y; ++b.y)
+                for (b.z = b0.z; b.z <= b1.z; ++b.z)
+                    for (b.x = b0.x; b.x <= b1.x; ++b.x) {
+                        glm::vec3 boxLo, boxHi;
+                        for (int a = 0; a < 3; ++a) {
+                            boxLo[a] = cellLo(a, b[a]) - eps_[a];
+                            boxHi[a] = cellHi(a, b[a]) + eps_[a];
+                        }
+                        // A triangle inside the box overlaps it: most triangles are small
+                        // against a cell, and the separating-axis test is the costly part.
+                        const bool inside = glm::all(glm::greaterThanEqual(tLo, boxLo)) &&
+                                            glm::all(glm::lessThanEqual(tHi, boxHi));
+                        if (!inside &&
+                            !triangleOverlapsBox(t, 0.5f * (boxLo + boxHi), 0.5f * (boxHi - boxLo)))
+                            continue;
+                        for (int o = 0; o < 8; ++o) {
+                            const glm::ivec3 q = b + glm::ivec3(o & 1, (o >> 1) & 1, (o >> 2) & 1);
+                            if (glm::all(glm::lessThan(q, v_.counts)))
+                                needed[std::size_t(v_.probeIndex(q))] = 1;
+                        }
+                    }
+        }
+    }
+
+private:
+    // v.toLocal, without the rotation for an axis-aligned volume (every auto volume): glm's
+    // quaternion rotation adds exact zeros then, so the result is the same float for float.
+    glm::vec3 local(const glm::vec3& world) const {
+        return aligned_ ? world - v_.center : v_.toLocal(world);
+    }
+    // Extent of cell `b` along axis a, widened into the fade margin at the volume's faces.
+    float cellLo(int a, int b) const {
+        return v_.counts[a] == 1 || b == 0 ? -h_[a] - fade_[a] : -h_[a] + float(b) * cell_[a];
+    }
+    float cellHi(int a, int b) const {
+        return v_.counts[a] == 1 || b == cells_[a] - 1 ? h_[a] + fade_[a]
+                                                       : -h_[a] + float(b + 1) * cell_[a];
+    }
+    int cellIndex(int a, float x) const {
+        if (v_.counts[a] == 1) return 0;
+        return int(std::floor(std::clamp((x + h_[a]) / cell_[a], 0.0f, float(v_.counts[a] - 2))));
+    }
+
+    const ProbeVolume& v_;
+    const glm::vec3 cell_, h_, fade_, eps_;
+    const glm::ivec3 cells_;
+    const bool aligned_ = v_.rotation == glm::quat(1.0f, 0.0f, 0.0f, 0.0f);
+};
+
+// Triangles per work item: large enough that merging the per-thread masks stays cheap.
+constexpr std::size_t kTrianglesPerItem = 8192;
+
+} // namespace
+
 std::vector<std::uint8_t> surfaceCornerProbes(const ProbeVolume& v, bool root,
                                               const std::vector<WorldTriangle>& triangles) {
-    std::vector<std::uint8_t> needed(std::size_t(v.probeCount()), 0);
-    const glm::vec3 cell = v.cellSize(), h = v.halfExtents;
-    const glm::vec3 fade = root ? kEdgeFadeCells * cell : glm::vec3(0.0f);
-    // Cells grow by kSurfaceCellMargin so a surface on or near a cell face keeps the cells on
-    // both sides: shading positions sit a little off their surface (GBuffer depth precision,
-    // the placement benchmark's 1e-4 scene offset) and the sampler's rounding decides the cell.
-    const glm::vec3 eps = kSurfaceCellMargin * cell;
-    const glm::ivec3 cells = glm::max(v.counts - 1, glm::ivec3(1));
-    // Extent of cell `b` along axis a, widened into the fade margin at the volume's faces.
-    auto cellLo = [&](int a, int b) {
-        return v.counts[a] == 1 || b == 0 ? -h[a] - fade[a] : -h[a] + float(b) * cell[a];
-    };
-    auto cellHi = [&](int a, int b) {
-        return v.counts[a] == 1 || b == cells[a] - 1 ? h[a] + fade[a]
-                                                     : -h[a] + float(b + 1) * cell[a];
-    };
-    auto cellIndex = [&](int a, float x) {
-        if (v.counts[a] == 1) return 0;
-        return int(std::floor(std::clamp((x + h[a]) / cell[a], 0.0f, float(v.counts[a] - 2))));
-    };
-    for (const WorldTriangle& wt : triangles) {
-        const glm::vec3 t[3] = {v.toLocal(wt.a), v.toLocal(wt.b), v.toLocal(wt.c)};
-        const glm::vec3 lo = glm::min(t[0], glm::min(t[1], t[2])) - eps;
-        const glm::vec3 hi = glm::max(t[0], glm::max(t[1], t[2])) + eps;
-        if (glm::any(glm::greaterThan(lo, h + fade)) || glm::any(glm::lessThan(hi, -h - fade)))
-            continue;
-        glm::ivec3 b0, b1;
-        for (int a = 0; a < 3; ++a) {
-            b0[a] = cellIndex(a, lo[a]);
-            b1[a] = cellIndex(a, hi[a]);
-        }
-        glm::ivec3 b;
-        for (b.y = b0.y; b.y <= b1.y; ++b.y)
-            for (b.z = b0.z; b.z <= b1.z; ++b.z)
-                for (b.x = b0.x; b.x <= b1.x; ++b.x) {
-                    glm::vec3 boxLo, boxHi;
-                    for (int a = 0; a < 3; ++a) {
-                        boxLo[a] = cellLo(a, b[a]) - eps[a];
-                        boxHi[a] = cellHi(a, b[a]) + eps[a];
-                    }
-                    if (!triangleOverlapsBox(t, 0.5f * (boxLo + boxHi), 0.5f * (boxHi - boxLo)))
-                        continue;
-                    for (int o = 0; o < 8; ++o) {
-                        const glm::ivec3 q = b + glm::ivec3(o & 1, (o >> 1) & 1, (o >> 2) & 1);
-                        if (glm::all(glm::lessThan(q, v.counts)))
-                            needed[std::size_t(v.probeIndex(q))] = 1;
-                    }
-                }
-    }
+    const std::size_t probes = std::size_t(v.probeCount());
+    const SurfaceCells cells(v, root);
+    const std::size_t items = (triangles.size() + kTrianglesPerItem - 1) / kTrianglesPerItem;
+    const int threads = int(
+        std::min<std::size_t>(std::size_t(resolveThreadCount(0)), std::max<std::size_t>(items, 1)));
+    // One mask per thread, OR-ed at the end: marking only ever sets, so the result does not
+    // depend on which thread saw which triangle (the placement calls this for every candidate
+    // and every trial bake, so it runs on all cores).
+    std::vector<std::vector<std::uint8_t>> masks(std::size_t(threads),
+                                                 std::vector<std::uint8_t>(probes, 0));
+    parallelFor(items, threads, [&](std::size_t item, int t) {
+        const std::size_t first = item * kTrianglesPerItem;
+        const std::size_t last = std::min(triangles.size(), first + kTrianglesPerItem);
+        cells.mark(triangles.data() + first, triangles.data() + last, masks[std::size_t(t)]);
+    });
+    std::vector<std::uint8_t> needed = std::move(masks[0]);
+    for (std::size_t t = 1; t < masks.size(); ++t)
+        for (std::size_t i = 0; i < probes; ++i)
+            needed[i] |= masks[t][i];
     return needed;
 }
 
@@ -96,8 +151,7 @@ std::vector<std::uint8_t> freeSpaceLatticeProbes(const ProbeVolume& v) {
     for (int i = 0; i < v.probeCount(); ++i) {
         const glm::ivec3 q = v.probeCoords(i);
         out[std::size_t(i)] = q.x % kFreeSpaceLatticeStep == 0 &&
-                              q.y % kFreeSpaceLatticeStep == 0 &&
-                              q.z % kFreeSpaceLatticeStep == 0;
+                              q.y % kFreeSpaceLatticeStep == 0 && q.z % kFreeSpaceLatticeStep == 0;
     }
     return out;
 }
@@ -111,8 +165,7 @@ std::vector<std::uint8_t> sparseKeptProbes(const ProbeVolume& v, bool root,
     return keep;
 }
 
-std::size_t freeSpaceOnlyProbes(const ProbeSet& set,
-                                const std::vector<WorldTriangle>& triangles) {
+std::size_t freeSpaceOnlyProbes(const ProbeSet& set, const std::vector<WorldTriangle>& triangles) {
     const std::vector<int> parents = validateVolumes(set.volumes, "sparse storage");
     std::size_t n = 0;
     for (std::size_t v = 0; v < set.volumes.size(); ++v) {
