@@ -66,7 +66,12 @@ std::string responseMarkdown(const BenchResult& r) {
         << "|---|---|---|---|---|---|---|---|\n";
     for (const auto& p : r.response["profiles"]) {
         const std::string name = p.value("profile", std::string("?"));
-        for (const auto& s : p["schedules"])
+        if (p.contains("not_run")) {
+            out << "| " << name << " | n/a | - | not run: " << p["not_run"].get<std::string>()
+                << " | - | - | - | - |\n";
+            continue;
+        }
+        for (const auto& s : p.value("schedules", nlohmann::json::array()))
             out << "| " << name << " | " << frameMs(r, name) << " | " << budget(p) << " | "
                 << s.value("schedule", std::string("?")) << " | " << frames(s["t95_frames"])
                 << " | " << frames(s["t99_frames"]) << " | "
@@ -89,7 +94,12 @@ std::string responseHtml(const BenchResult& r) {
     };
     for (const auto& p : r.response["profiles"]) {
         const std::string name = p.value("profile", std::string("?"));
-        for (const auto& s : p["schedules"])
+        if (p.contains("not_run")) {
+            h << "<tr>" << cell(name, "l") << "<td class=\"l bad\" colspan=\"7\">not run: "
+              << htmlEscape(p["not_run"].get<std::string>()) << "</td></tr>\n";
+            continue;
+        }
+        for (const auto& s : p.value("schedules", nlohmann::json::array()))
             h << "<tr>" << cell(name, "l") << cell(frameMs(r, name)) << cell(budget(p))
               << cell(s.value("schedule", std::string("?")), "l") << cell(frames(s["t95_frames"]))
               << cell(frames(s["t99_frames"])) << cell(fixed(s.value("rays_per_frame", 0.0), 0))
