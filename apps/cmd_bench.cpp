@@ -2,16 +2,19 @@
 // by default): per-pass times in interleaved rounds, accuracy (FLIP, PSNR, SSIM, relative MSE of
 // the GI irradiance), the GI pass's texture-fetch floor, and with --ablate what every switch
 // saves and costs. JSON for machines, a self-contained HTML report, a Markdown summary on stdout.
+// With --respond, after the timed sessions, each profile's response to a scene change
+// (respond's measurement, RespondRun.h) with its switches and [update] budget.
 #include "CommandRegistry.h"
 #include "JsonOption.h"
-#include "ProbeOptions.h"
 #include "PlatformOptions.h"
+#include "ProbeOptions.h"
 #include "ProfileOptions.h"
+#include "RespondRun.h"
 #include "SceneOptions.h"
+#include "bench/report/CiLevels.h"
 #include "bench/report/HtmlReport.h"
 #include "bench/report/MarkdownSummary.h"
 #include "bench/report/ResultJson.h"
-#include "bench/report/CiLevels.h"
 #include "bench/runner/BenchContext.h"
 #include "bench/runner/BenchTruth.h"
 #include "bench/runner/CacheModelRun.h"
@@ -52,6 +55,8 @@ struct BenchArgs {
     double ppd = 67.0;
     bool truth = false; // --truth: accuracy against the path-traced ground truth too
     int truthSpp = 64;
+    std::vector<std::string> respond; // --respond EVENT (respond's --event); empty: no response
+    int respondFrames = 150;
 };
 
 void progress(const std::string& line) {
@@ -86,6 +91,68 @@ void validate(const BenchArgs& a) {
     if (!a.view.empty() && !a.camera.empty()) throw Error("give --view or --camera, not both");
     if (!(a.ppd > 0)) throw Error("--ppd must be positive");
     if (a.truthSpp < 1) throw Error("--truth-spp must be at least 1");
+    if (a.respondFrames < 2 || a.respondFrames > 10000)
+        throw Error("--respond-frames must be in 2..10000");
+    // Said before bench's own bake (minutes), which stores sparse probes respond cannot update.
+    if (!a.respond.empty() && a.probes.empty())
+        throw Error("--respond: needs --probes FILE, a dense probe file (bake --dense)");
+}
+
+// `bench --respond`: respond's measurement at the bench's --width/--height (respond's 160x90
+// without), every check done here, before anything is timed. Null without --respond.
+std::unique_ptr<RespondRun> prepareResponse(const BenchArgs& a, const scene::Scene& s,
+                                            const probes::ProbeSet& set,
+                                            const std::string& probesPath) {
+    if (a.respond.empty()) return nullptr;
+    RespondSettings rs;
+    rs.probesName = probesPath;
+    rs.events = a.respond;
+    rs.frames = a.respondFrames;
+    if (a.width > 0) {
+        rs.width = a.width;
+        rs.height = a.height;
+    }
+    rs.cacheDir = a.cacheDir;
+    try {
+        return std::make_unique<RespondRun>(
+            s, set, rs, [](const std::string& line) { progress("respond: " + line); });
+    } catch (const Error& e) {
+        throw Error(std::string("--respond: ") + e.what());
+    }
+}
+
+// Per profile (its variant 0: the profile with the run's --set), respond's figures without the
+// error curves; profiles that could not run are listed with why.
+nlohmann::json measureResponse(RespondRun& run, const BenchArgs& a,
+                               const std::vector<bench::SessionResult>& sessions,
+                               gl::DebugOutput& debug) {
+    nlohmann::json out = {{"events", a.respond}, {"frames", a.respondFrames}};
+    nlohmann::json profiles = nlohmann::json::array();
+    for (const bench::SessionResult& s : sessions) {
+        const profile::PlatformProfile& p = s.session.profile;
+        if (!s.profile().ok()) {
+            profiles.push_back({{"profile", p.name}, {"not_run", s.profile().error}});
+            continue;
+        }
+        progress("respond: profile " + p.name);
+        nlohmann::json j = run.measure(
+            {p.name, p.switches, p.updateRaysPerFrame, p.updateUploadBytesPerFrame}, debug);
+        // What every profile shares goes to the top once; the rest stays per profile.
+        const char* shared[] = {"scene", "probes", "frames", "width",        "height",
+                                "view",  "events", "radius", "sample_bakes", "rays_per_update"};
+        for (const char* k : shared)
+            if (j.contains(k)) {
+                out[k] = j[k];
+                j.erase(k);
+            }
+        j.erase("closed_form_hysteresis");
+        j.erase("closed_form_max_deviation");
+        for (auto& sched : j["schedules"])
+            sched.erase("error_curve");
+        profiles.push_back(std::move(j));
+    }
+    out["profiles"] = std::move(profiles);
+    return out;
 }
 
 std::vector<profile::PlatformProfile> loadProfiles(const BenchArgs& a,
@@ -192,6 +259,7 @@ int run(const BenchArgs& a) {
                                  a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir,
                                  &probesPath, progress)
             : readProbesForScene(a.probes, s, a.force);
+    const std::unique_ptr<RespondRun> respond = prepareResponse(a, s, set, probesPath);
 
     bench::BenchResult result;
     scene::View view;
@@ -238,6 +306,7 @@ int run(const BenchArgs& a) {
     std::vector<bench::TruthMaps> truthMaps;
     result.sessions = bench::runBenchPlan(plan, in, o, &pictures, a.truth ? &truthMaps : nullptr);
     if (!a.noCacheModel) result.cacheModel = bench::cacheModelEntries(plan, s, set, view, progress);
+    if (respond) result.response = measureResponse(*respond, a, result.sessions, debug);
     result.context["load_average_end"] = bench::loadAverage();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -339,6 +408,14 @@ const RegisterCommand reg{
                       "Also measure every profile and ablation row (and the reference) against the "
                       "path-traced ground truth of the view (probebench truth; cached)");
          cmd.add_option("--truth-spp", a->truthSpp, "Samples per pixel of that truth")
+             ->capture_default_str();
+         cmd.add_option("--respond", a->respond,
+                        "After the timed sessions, per profile: how many frames the GI takes to "
+                        "follow this scene change (respond's --event syntax, e.g. sun:off@10; "
+                        "repeatable), with the profile's switches and [update] budget, at "
+                        "--width/--height or 160x90; needs a dense --probes file");
+         cmd.add_option("--respond-frames", a->respondFrames,
+                        "Frames of that response run (as respond's --frames)")
              ->capture_default_str();
          cmd.add_flag("--strict", a->strict,
                       "Fail (writing nothing) when any variant cannot run, instead of reporting "

@@ -107,6 +107,10 @@ struct BenchResult {
     std::vector<CacheModelEntry> cacheModel; // per profile (empty: not modelled)
     // `bench --truth`: spp, depth, per image size its noise, time and cache file; null without.
     nlohmann::json truth;
+    // `bench --respond`: the event, size and frames, and per profile respond's figures
+    // (profiles[]: profile, budgets, schedules[] with t95_frames, t99_frames, rays_per_frame,
+    // upload_bytes_per_frame; no error curves); null without.
+    nlohmann::json response;
 };
 
 } // namespace pb::bench

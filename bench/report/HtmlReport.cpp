@@ -4,6 +4,7 @@
 #include "Format.h"
 #include "GiSections.h"
 #include "Html.h"
+#include "ResponseSection.h"
 #include "ResultJson.h"
 #include "SvgCharts.h"
 #include "TruthSection.h"
@@ -220,6 +221,7 @@ std::string htmlReport(const BenchResult& r) {
     profileTable(h, r);
     h << "<p class=\"note\">GI MiB: " << htmlEscape(profile::kGiMemoryDefinition)
       << "; the budget is the profile's [budget] gi_memory_mib, which tune budgets the same way.</p>\n";
+    h << responseHtml(r); // beside the frame times it is the price of
     charts(h, r);
     ablation(h, r);
     h << cacheModelHtml(r.cacheModel);

@@ -3,8 +3,9 @@
 #include "CiLevels.h"
 #include "Format.h"
 #include "GiSections.h"
-#include "Spread.h"
+#include "ResponseSection.h"
 #include "ResultJson.h"
+#include "Spread.h"
 #include "TruthSection.h"
 
 #include <sstream>
@@ -151,6 +152,7 @@ std::string markdownSummary(const BenchResult& r) {
         out << " **Warning: " << w << ".**";
     out << "\n\n";
     profileTable(out, r);
+    out << responseMarkdown(r); // beside the frame times it is the price of
     passTable(out, r);
     ablationTables(out, r);
     out << cacheModelMarkdown(r.cacheModel);

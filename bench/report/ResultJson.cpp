@@ -202,6 +202,7 @@ nlohmann::json benchJson(const BenchResult& r) {
     j["variants"] = variants;
     j["cache_model"] = cacheModelJson(r.cacheModel);
     j["truth"] = r.truth; // null without --truth
+    if (!r.response.is_null()) j["response"] = r.response; // only with --respond
     return j;
 }
 
