@@ -207,6 +207,50 @@ void writeVolumeTexture(ByteWriter& w, const ProbeTexture& t, const ProbeVolume&
                               irradiance ? kIrradianceTile : kVisibilityTile, f));
 }
 
+// --- SH record (version 6): u8 present; then per volume and probe u8 insideAtLattice; then
+// per scenario, per volume probeCount() x 9 RGB f32, all probes (sparse or not: 108 bytes a probe in the file, the GPU stores half floats).
+void writeShRecord(ByteWriter& w, const ProbeSet& set) {
+    w.pod(std::uint8_t(set.hasSh()));
+    if (!set.hasSh()) return;
+    for (const auto& states : set.states)
+        for (const ProbeState& p : states) w.pod(std::uint8_t(p.insideAtLattice));
+    if (set.sh.size() != set.irradiance.size())
+        throw Error("probe set: SH for " + std::to_string(set.sh.size()) + " scenarios, " +
+                    std::to_string(set.irradiance.size()) + " baked");
+    for (const auto& sc : set.sh)
+        for (std::size_t v = 0; v < set.volumes.size(); ++v) {
+            if (sc.at(v).size() != std::size_t(set.volumes[v].probeCount()) * 9)
+                throw Error("probe set: SH of volume '" + set.volumes[v].name + "' has " +
+                            std::to_string(sc[v].size()) + " coefficients");
+            for (const glm::vec3& c : sc[v]) w.pod(c);
+        }
+}
+
+void readShRecord(ByteReader& body, ProbeSet& set, const std::string& path) {
+    if (body.pod<std::uint8_t>("SH present") == 0) return;
+    for (auto& states : set.states) {
+        if (states.size() > body.remaining())
+            throw fileError(path, "file is truncated or corrupt (SH lattice validity)");
+        for (ProbeState& p : states) p.insideAtLattice = body.pod<std::uint8_t>("SH lattice") != 0;
+    }
+    set.sh.resize(set.irradiance.size());
+    for (auto& sc : set.sh)
+        for (const ProbeVolume& v : set.volumes) {
+            const std::size_t n = std::size_t(v.probeCount()) * 9;
+            if (n > body.remaining() / sizeof(glm::vec3))
+                throw fileError(path, "file is truncated or corrupt (SH of volume '" + v.name +
+                                          "')");
+            std::vector<glm::vec3> c(n);
+            for (glm::vec3& x : c) {
+                x = body.pod<glm::vec3>("SH coefficient");
+                if (!finite(x))
+                    throw fileError(path, "corrupt SH coefficient in volume '" + v.name +
+                                              "' (not finite)");
+            }
+            sc.push_back(std::move(c));
+        }
+}
+
 } // namespace
 
 std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
@@ -264,6 +308,8 @@ std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
     for (const auto& sc : set.irradiance)
         for (std::size_t v = 0; v < sc.size(); ++v)
             writeVolumeTexture(w, sc[v], set.volumes[v], set.states[v], true, set.format());
+
+    writeShRecord(w, set);
 
     std::uint64_t total = w.data().size() + sizeof(std::uint64_t);
     std::memcpy(w.data().data() + 12, &total, sizeof(total));
@@ -383,6 +429,7 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
                               sparse[v], true, b.format, path, scales[s]);
         }
     }
+    if (version >= 6) readShRecord(body, set, path);
     if (body.remaining() != 0)
         throw fileError(path, "corrupt: " + std::to_string(body.remaining()) +
                                   " unexpected bytes before the checksum");
@@ -410,7 +457,12 @@ std::optional<ProbeSet> readCachedProbeFile(const std::string& path, std::uint64
     }
     try {
         ProbeSet set = readProbeFile(path);
-        if (set.inputHash == inputHash) return set;
+        // A file from before version 6 has no SH probes: re-bake it so every technique runs.
+        if (set.inputHash == inputHash && set.hasSh()) return set;
+        if (set.inputHash == inputHash) {
+            say("no SH probes (an older probe file version)");
+            return std::nullopt;
+        }
         say("inputs changed");
     } catch (const Error& e) {
         say(std::string("unusable: ") + e.what());
