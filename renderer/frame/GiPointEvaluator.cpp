@@ -60,6 +60,7 @@ std::vector<glm::vec4> GiPointEvaluator::evaluate(const std::vector<GiPoint>& po
         glActiveTexture(GLenum(GL_TEXTURE0 + u));
         glBindTexture(GL_TEXTURE_2D, 0);
         glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+        glBindTexture(GL_TEXTURE_3D, 0);
     }
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -183,6 +183,7 @@ void GiApplyPass::execute(FrameContext& frame) {
         glActiveTexture(GLenum(GL_TEXTURE0 + u));
         glBindTexture(GL_TEXTURE_2D, 0);
         glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+        glBindTexture(GL_TEXTURE_3D, 0);
     }
     glActiveTexture(GL_TEXTURE0);
     frame.gi.enabled = true;
