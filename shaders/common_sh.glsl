@@ -17,7 +17,7 @@ uniform highp sampler3D u_shCoefficients4;
 uniform highp sampler3D u_shCoefficients5;
 uniform highp sampler3D u_shCoefficients6;
 #endif
-uniform highp sampler3D u_shValidity; // R8: validity (none/weight) or the cell's mask
+uniform highp sampler3D u_shValidity; // R8: validity (none) or the cell's valid-corner mask
 
 const float SH_A0 = 3.14159265;
 const float SH_A1 = 2.09439510;
@@ -72,11 +72,27 @@ vec4 shSample(vec3 pos, vec3 normal, vec3 view) {
     vec3 b = p + (DDGI_BIAS_NORMAL * n + DDGI_BIAS_VIEW * v) * u_ddgiBiasDistance;
     vec3 counts = vec3(u_ddgiCounts);
     vec3 g = clamp((b + u_ddgiHalf) * u_ddgiInvCell, vec3(0.0), counts - 1.0);
-#ifdef GI_SH_LEAK_VALIDITY_MASK
+#if defined(GI_SH_LEAK_VALIDITY_MASK) || defined(GI_SH_LEAK_WEIGHT)
     vec3 base = min(floor(g), max(counts - 2.0, vec3(0.0)));
     int mask = int(texelFetch(u_shValidity, ivec3(base.x, base.z, base.y), 0).r * 255.0 + 0.5);
     if (mask == 0) return vec4(0.0);
+#endif
+#ifdef GI_SH_LEAK_VALIDITY_MASK
     g = base + shNudge(g - base, mask);
+#endif
+#ifdef GI_SH_LEAK_WEIGHT
+    // The filtered weight: the valid corners' trilinear weights, summed in float from the
+    // cell's mask rather than by a hardware fetch of an R8 weight - llvmpipe filters UNORM8
+    // with 8-bit weights and RGBA16F with float ones, and that mismatch put the quotient up to
+    // 10% off the reference where the weight is small (GiShCrossCheckTest, measured).
+    vec3 f = g - base;
+    float w = 0.0;
+    for (int c = 0; c < 8; ++c) {
+        if ((mask & (1 << c)) == 0) continue;
+        float wc = 1.0;
+        for (int a = 0; a < 3; ++a) wc *= ((c >> a) & 1) != 0 ? f[a] : 1.0 - f[a];
+        w += wc;
+    }
 #endif
     // Texel centres sit on the probes; texture axes (x, rows z, layers y).
     vec3 uvw = (g.xzy + 0.5) / counts.xzy;
@@ -90,7 +106,6 @@ vec4 shSample(vec3 pos, vec3 normal, vec3 view) {
     vec4 q3 = texture(u_shCoefficients6, uvw);
 #endif
 #ifdef GI_SH_LEAK_WEIGHT
-    float w = texture(u_shValidity, uvw).r;
     if (!(w > 0.0)) return vec4(0.0);
     float invW = 1.0 / w;
 #else

@@ -118,6 +118,7 @@ void Texture::bind(int unit) const {
 }
 
 std::size_t Texture::bytes() const {
+    if (!id_) return 0; // never created: no GPU memory
     std::size_t total = 0;
     for (int l = 0; l < desc_.levels; ++l)
         total += textureBytes(desc_.format, std::max(1, desc_.width >> l),

@@ -76,8 +76,11 @@ public:
     // instruction in shaders built with the guard (common_ddgi.glsl).
     void bindVolume(const gl::Program& program, int v, int firstUnit, const glm::dvec3& origin,
                     float irradianceScale = 1.0f) const;
-    // DDGI binds 3 textures, SH up to 8 (u_shCoefficients0..6, u_shValidity).
-    static constexpr int kUnitsPerVolume = 8;
+    static constexpr int kUnitsPerVolume = 3;   // DDGI: irradiance, visibility, state
+    static constexpr int kShUnitsPerVolume = 8; // SH: u_shCoefficients0..6, u_shValidity
+    int unitsPerVolume() const {
+        return technique_ == profile::GiTechnique::Ddgi ? kUnitsPerVolume : kShUnitsPerVolume;
+    }
 
 private:
     std::vector<GpuProbeVolume> volumes_;

@@ -7,6 +7,7 @@
 namespace pb::render {
 
 std::size_t GpuShVolume::bytes() const {
+    if (!validity) return 0; // not uploaded (DDGI)
     std::size_t total = validity.bytes();
     for (const gl::Texture& t : coefficients)
         total += t.bytes();
@@ -82,7 +83,7 @@ GpuShVolume uploadShVolume(const probes::ProbeSet& set, int scenario, int vi,
                     const int at = ch * 5 + k;
                     texels[size_t(3 + at / 4)][p * 4 + size_t(at % 4)] = c[4 + k][ch] * w;
                 }
-        if (leak == profile::GiShLeak::ValidityMask)
+        if (leak != profile::GiShLeak::None)
             validity[p] = shCellMask(v, states, v.probeCoords(int(p)));
         else
             validity[p] = valid ? 255 : 0;

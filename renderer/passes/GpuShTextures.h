@@ -5,10 +5,13 @@
 //   L1: 3 x RGBA16F, texture c = colour channel c's 4 coefficients (l = 0, 1);
 //   L2: + 4 x RGBA16F holding the 5 quadratic coefficients of R, G, B (15 values, channel
 //       major, 4 per texel; the 16th is 0);
-//   + 1 x R8: gi.sh_leak=none/weight: the probe's validity (255 valid, 0 invalid; `weight`
-//       filters it with the coefficients, which are stored premultiplied by it);
-//       validity_mask: per cell (texel = the cell's lowest corner) the 8-bit mask of its valid
-//       corners (bit x + 2y + 4z), read with texelFetch.
+//   + 1 x R8: gi.sh_leak=none: the probe's validity (255 valid, 0 invalid; unread);
+//       weight and validity_mask: per cell (texel = the cell's lowest corner) the 8-bit mask
+//       of its valid corners (bit x + 2y + 4z), read with texelFetch. `weight` stores the
+//       coefficients premultiplied by the probe's weight (0 or 1), filters them in hardware and
+//       divides by the valid corners' trilinear weights summed from the mask in float (a
+//       hardware-filtered R8 weight disagreed with the float-filtered lighting on llvmpipe by
+//       up to 10% where the weight is small: common_sh.glsl).
 // 25 bytes a probe for L1, 57 for L2 (`probebench memory --technique`). The coefficients are
 // the bake's, already rounded to half (probes/ShIrradiance.h), so the upload is exact.
 #include "gl/Texture.h"
