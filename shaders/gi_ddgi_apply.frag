@@ -14,9 +14,14 @@
 #include "common_octahedral.glsl"
 #include "common_gi_pixel.glsl"
 #include "common_ddgi.glsl"
-#if defined(GI_TECHNIQUE_SH_L1) || defined(GI_TECHNIQUE_SH_L2)
-#include "common_sh.glsl"
+#ifdef GI_TECHNIQUE_SH_L1
 #define GI_TECHNIQUE_SH
+#endif
+#ifdef GI_TECHNIQUE_SH_L2
+#define GI_TECHNIQUE_SH
+#endif
+#ifdef GI_TECHNIQUE_SH
+#include "common_sh.glsl"
 #endif
 layout(location = 0) out vec4 out_gi;
 #ifdef GI_COUNT_PIXELS

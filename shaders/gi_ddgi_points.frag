@@ -3,9 +3,14 @@
 // pass would compute there (common_ddgi.glsl, the same code). One draw per volume, like the
 // apply pass: points outside the drawn volume's influence keep what an earlier draw wrote.
 #include "common_ddgi.glsl"
-#if defined(GI_TECHNIQUE_SH_L1) || defined(GI_TECHNIQUE_SH_L2)
-#include "common_sh.glsl"
+#ifdef GI_TECHNIQUE_SH_L1
 #define GI_TECHNIQUE_SH
+#endif
+#ifdef GI_TECHNIQUE_SH_L2
+#define GI_TECHNIQUE_SH
+#endif
+#ifdef GI_TECHNIQUE_SH
+#include "common_sh.glsl"
 #endif
 out vec4 out_gi;
 uniform highp sampler2D u_pointPosition;

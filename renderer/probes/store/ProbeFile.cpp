@@ -208,7 +208,7 @@ void writeVolumeTexture(ByteWriter& w, const ProbeTexture& t, const ProbeVolume&
 }
 
 // --- SH record (version 6): u8 present; then per volume and probe u8 insideAtLattice; then
-// per scenario, per volume probeCount() x 9 RGB f32, all probes (sparse or not: 108 bytes a probe in the file, the GPU stores half floats).
+// per scenario, per volume and STORED probe 9 RGB f32 (absent probes read as zeros).
 void writeShRecord(ByteWriter& w, const ProbeSet& set) {
     w.pod(std::uint8_t(set.hasSh()));
     if (!set.hasSh()) return;
@@ -222,7 +222,10 @@ void writeShRecord(ByteWriter& w, const ProbeSet& set) {
             if (sc.at(v).size() != std::size_t(set.volumes[v].probeCount()) * 9)
                 throw Error("probe set: SH of volume '" + set.volumes[v].name + "' has " +
                             std::to_string(sc[v].size()) + " coefficients");
-            for (const glm::vec3& c : sc[v]) w.pod(c);
+            // Sparse storage's absent probes hold zeros: only stored probes are written.
+            for (std::size_t p = 0; p < set.states[v].size(); ++p)
+                if (set.states[v][p].stored)
+                    for (int k = 0; k < 9; ++k) w.pod(sc[v][p * 9 + std::size_t(k)]);
         }
 }
 
@@ -237,11 +240,17 @@ void readShRecord(ByteReader& body, ProbeSet& set, const std::string& path) {
     for (auto& sc : set.sh)
         for (const ProbeVolume& v : set.volumes) {
             const std::size_t n = std::size_t(v.probeCount()) * 9;
-            if (n > body.remaining() / sizeof(glm::vec3))
+            std::size_t stored = 0;
+            for (const ProbeState& p : set.states[std::size_t(&v - set.volumes.data())])
+                stored += p.stored ? 1 : 0;
+            if (stored * 9 > body.remaining() / sizeof(glm::vec3))
                 throw fileError(path, "file is truncated or corrupt (SH of volume '" + v.name +
                                           "')");
-            std::vector<glm::vec3> c(n);
-            for (glm::vec3& x : c) {
+            std::vector<glm::vec3> c(n, glm::vec3(0.0f));
+            const auto& states = set.states[std::size_t(&v - set.volumes.data())];
+            for (std::size_t i = 0; i < n; ++i) {
+                if (!states[i / 9].stored) continue;
+                glm::vec3& x = c[i];
                 x = body.pod<glm::vec3>("SH coefficient");
                 if (!finite(x))
                     throw fileError(path, "corrupt SH coefficient in volume '" + v.name +
