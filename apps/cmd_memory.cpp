@@ -3,8 +3,8 @@
 #include "JsonOption.h"
 #include "core/Error.h"
 #include "probes/store/MemoryReport.h"
-#include "probes/store/ProbeFile.h"
 #include "probes/ShIrradiance.h"
+#include "probes/store/ProbeFile.h"
 
 #include <iostream>
 #include <nlohmann/json.hpp>
