@@ -1,6 +1,8 @@
 #include "ProbeOptions.h"
 
 #include "probes/bake/SceneMatch.h"
+#include "core/Error.h"
+#include "probes/ShSampler.h"
 #include "probes/store/VolumeRanksFile.h"
 
 namespace pb::app {
@@ -17,6 +19,12 @@ probes::ProbeSet readProbesForScene(const std::string& path, const scene::Scene&
     probes::ProbeSet set = probes::readProbeFileWithRanks(path);
     probes::requireProbesForScene(path, set, scene, force);
     return set;
+}
+
+void requireTechniqueData(const std::string& path, const probes::ProbeSet& set,
+                          const profile::Profile& p) {
+    if (p.gi.technique != profile::GiTechnique::Ddgi && !set.hasSh())
+        throw Error(probes::noShMessage(path));
 }
 
 } // namespace pb::app

@@ -185,9 +185,10 @@ void printGiLine(std::ostream& info, const render::GpuProbes& gp, const probes::
     std::string changed;
     for (const auto& c : platformProfile.switches.changedSwitches())
         changed += " " + c;
-    info << "gi: ddgi, " << gp.volumes().size() << " of " << set.volumes.size()
+    const bool sh = platformProfile.switches.gi.technique != profile::GiTechnique::Ddgi;
+    info << "gi: " << platformProfile.switches.get("gi.technique") << ", " << gp.volumes().size() << " of " << set.volumes.size()
          << " volume(s), scenario '" << gp.scenarioName() << "', "
-         << probes::formatName(gp.format()) << ", " << double(gp.bytes()) / (1024.0 * 1024.0)
+         << (sh ? "rgba16f sh" : probes::formatName(gp.format())) << ", " << double(gp.bytes()) / (1024.0 * 1024.0)
          << " MiB on the GPU; profile " << platformProfile.name
          << ", switches:" << (changed.empty() ? " defaults" : changed)
          << (debugView == render::GiDebugView::None
@@ -275,6 +276,7 @@ int run(RenderArgs& a) {
     render::GiOptions gi;
     if (!a.probes.empty()) {
         probeSet = readProbesForScene(a.probes, s, a.force);
+        requireTechniqueData(a.probes, probeSet, prof);
         gi.probes = &probeSet;
         gi.scenario = scenarioIndex(probeSet, a);
         gi.profile = prof;

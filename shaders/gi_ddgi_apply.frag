@@ -1,4 +1,5 @@
-// GI apply (DDGI): per pixel of the GI evaluation target, the irradiance of the probe volume
+// GI apply (DDGI, or the SH volume under gi.technique=sh_l1|sh_l2: common_sh.glsl, the same
+// target, draws and discard): per pixel of the GI evaluation target, the irradiance of the probe volume
 // being drawn at the GBuffer surface (common_ddgi.glsl). One draw per volume; a pixel outside
 // the volume's influence is discarded, so the smallest volume containing it wins (the CPU
 // sampler's rule): gi.multi_volume=naive draws largest first and overwrites, =stencil draws
@@ -13,6 +14,15 @@
 #include "common_octahedral.glsl"
 #include "common_gi_pixel.glsl"
 #include "common_ddgi.glsl"
+#ifdef GI_TECHNIQUE_SH_L1
+#define GI_TECHNIQUE_SH
+#endif
+#ifdef GI_TECHNIQUE_SH_L2
+#define GI_TECHNIQUE_SH
+#endif
+#ifdef GI_TECHNIQUE_SH
+#include "common_sh.glsl"
+#endif
 layout(location = 0) out vec4 out_gi;
 #ifdef GI_COUNT_PIXELS
 layout(location = 1) out vec4 out_evaluated;
@@ -70,7 +80,11 @@ void main() {
     if (!ddgiInfluences(ddgiLocal(rel))) discard;
     vec3 n = octDecode(texelFetch(u_gbuffer_normal, px, 0).xy);
     // The eye is the origin of camera-relative space: the view direction is -rel.
+#ifdef GI_TECHNIQUE_SH
+    vec4 gi = shSample(rel, n, -rel); // gi.technique=sh_l1|sh_l2: common_sh.glsl
+#else
     vec4 gi = ddgiSample(rel, n, -rel);
+#endif
 #ifdef GI_DEBUG_EXTRA_FETCHES
     // Test-only (passes/GiDebugInjection.h): fetches that cannot change the result (irradiance
     // >= 0) but that the compiler cannot drop.

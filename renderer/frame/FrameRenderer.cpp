@@ -44,8 +44,16 @@ FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& set
             skipped_.push_back({"pass gi-dynamic-sh", why});
             prof.gi.dynamic = profile::GiDynamic::PerPixel;
         }
+        // The SH technique samples no DDGI textures: dynamic objects get its per-pixel lookup.
+        if (isShTechnique(prof.gi.technique) && prof.gi.dynamic == profile::GiDynamic::Sh) {
+            skipped_.push_back({"pass gi-dynamic-sh", "gi.technique=" +
+                                                          prof.get("gi.technique") +
+                                                          " has no DDGI probes to project"});
+            prof.gi.dynamic = profile::GiDynamic::PerPixel;
+        }
         probes_ = std::make_unique<GpuProbes>(*gi.probes, gi.scenario,
-                                              profile::parseVolumeLod(prof.gi.volumeLod));
+                                              profile::parseVolumeLod(prof.gi.volumeLod),
+                                              prof.gi.technique, prof.gi.shLeak);
         std::vector<int> kept;
         for (const GpuProbeVolume& v : probes_->volumes())
             kept.push_back(v.fileIndex);

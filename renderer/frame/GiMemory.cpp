@@ -4,6 +4,7 @@
 #include "gl/TextureFormat.h"
 #include "passes/DynamicShPass.h"
 #include "passes/GiApplyPass.h"
+#include "passes/GpuShTextures.h"
 #include "profile/VolumeLod.h"
 
 #include <algorithm>
@@ -14,7 +15,10 @@ GiMemory estimateGiMemory(const profile::Profile& p, const probes::ProbeSet& set
                           int height, int dynamicObjects) {
     GiMemory m;
     for (int v : profile::selectVolumes(set, profile::parseVolumeLod(p.gi.volumeLod)))
-        m.probes += profile::gpuVolumeBytes(set, size_t(v));
+        m.probes += isShTechnique(p.gi.technique)
+                        ? shBytesPerProbe(p.gi.technique) *
+                              std::size_t(set.volumes[size_t(v)].probeCount())
+                        : profile::gpuVolumeBytes(set, size_t(v));
     // GiApplyPass::execute: the target at size / divisor (at least 1 texel per axis).
     const int div = profile::resolutionDivisor(p.gi.resolution);
     const int w = std::max(1, width / div), h = std::max(1, height / div);
@@ -30,9 +34,10 @@ GiMemory estimateGiMemory(const profile::Profile& p, const probes::ProbeSet& set
         else
             m.upsample = gl::textureBytes(format, width, height);
     }
-    // DynamicShPass: directions, positions, lookups (kDirections x objects), weights
+    // DynamicShPass (FrameRenderer turns it off under an SH technique): directions, positions, lookups (kDirections x objects), weights
     // (kDirections x 1), coefficients (4 x objects), all RGBA32F.
-    if (p.gi.dynamic == profile::GiDynamic::Sh && dynamicObjects > 0) {
+    if (p.gi.dynamic == profile::GiDynamic::Sh && dynamicObjects > 0 &&
+        !isShTechnique(p.gi.technique)) {
         const int rows = dynamicObjects, n = DynamicShPass::kDirections;
         const auto rgba32f = [](int tw, int th) {
             return gl::textureBytes(gl::TextureFormat::RGBA32F, tw, th);

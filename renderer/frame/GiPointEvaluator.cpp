@@ -56,10 +56,12 @@ std::vector<glm::vec4> GiPointEvaluator::evaluate(const std::vector<GiPoint>& po
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     glBindVertexArray(0);
-    for (int u = 3 + GpuProbes::kUnitsPerVolume - 1; u >= 0; --u) {
+    const bool sh = probes_.technique() != profile::GiTechnique::Ddgi;
+    for (int u = 3 + probes_.unitsPerVolume() - 1; u >= 0; --u) {
         glActiveTexture(GLenum(GL_TEXTURE0 + u));
         glBindTexture(GL_TEXTURE_2D, 0);
         glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+        if (sh) glBindTexture(GL_TEXTURE_3D, 0);
     }
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -58,6 +58,7 @@ Texture::Texture(const TextureDesc& desc) : id_(genTexture()), desc_(desc) {
     glTexParameteri(t, GL_TEXTURE_MAG_FILTER, mag);
     glTexParameteri(t, GL_TEXTURE_WRAP_S, wrap);
     glTexParameteri(t, GL_TEXTURE_WRAP_T, wrap);
+    if (t == GL_TEXTURE_3D) glTexParameteri(t, GL_TEXTURE_WRAP_R, wrap);
     glTexParameteri(t, GL_TEXTURE_MAX_LEVEL, desc_.levels - 1);
     if (desc_.depthCompare) {
         glTexParameteri(t, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
@@ -117,6 +118,7 @@ void Texture::bind(int unit) const {
 }
 
 std::size_t Texture::bytes() const {
+    if (!id_) return 0; // never created: no GPU memory
     std::size_t total = 0;
     for (int l = 0; l < desc_.levels; ++l)
         total += textureBytes(desc_.format, std::max(1, desc_.width >> l),

@@ -1,5 +1,5 @@
 #pragma once
-// Immutable-storage textures (2D and 2D array) with the sampling state set at creation.
+// Immutable-storage textures (2D, 2D array and 3D) with the sampling state set at creation.
 #include "gl/GlObject.h"
 #include "gl/TextureFormat.h"
 
@@ -14,6 +14,7 @@ struct TextureDesc {
     TextureFormat format = TextureFormat::RGBA8;
     int width = 1, height = 1;
     int layers = 0;   // 0 = GL_TEXTURE_2D, >= 1 = GL_TEXTURE_2D_ARRAY
+    bool volume = false; // with layers >= 1: GL_TEXTURE_3D (depth = layers), filtered in 3D
     int levels = 1;   // mip levels; 0 = full chain
     Filter filter = Filter::Linear;
     Wrap wrap = Wrap::Clamp;
@@ -34,7 +35,9 @@ public:
     // A name a GL capture shows (gl/DebugLabels.h).
     void label(const std::string& name) const;
 
-    GLenum target() const { return desc_.layers > 0 ? GL_TEXTURE_2D_ARRAY : GL_TEXTURE_2D; }
+    GLenum target() const {
+        return desc_.layers <= 0 ? GL_TEXTURE_2D : desc_.volume ? GL_TEXTURE_3D : GL_TEXTURE_2D_ARRAY;
+    }
     const TextureDesc& desc() const { return desc_; }
     GLuint id() const { return id_.id(); }
     std::size_t bytes() const;

@@ -179,10 +179,12 @@ void GiApplyPass::execute(FrameContext& frame) {
     }
 
     resetState();
-    for (int u = kFirstProbeUnit + GpuProbes::kUnitsPerVolume - 1; u >= 0; --u) {
+    const bool sh = probes_.technique() != profile::GiTechnique::Ddgi;
+    for (int u = kFirstProbeUnit + probes_.unitsPerVolume() - 1; u >= 0; --u) {
         glActiveTexture(GLenum(GL_TEXTURE0 + u));
         glBindTexture(GL_TEXTURE_2D, 0);
         glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
+        if (sh) glBindTexture(GL_TEXTURE_3D, 0);
     }
     glActiveTexture(GL_TEXTURE0);
     frame.gi.enabled = true;

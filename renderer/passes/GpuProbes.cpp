@@ -129,8 +129,9 @@ gl::Defines ddgiConstantDefines() {
     };
 }
 
-GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::VolumeLod& lod)
-    : format_(set.format()) {
+GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::VolumeLod& lod,
+                     profile::GiTechnique technique, profile::GiShLeak shLeak)
+    : format_(set.format()), technique_(technique) {
     if (scenario < 0 || size_t(scenario) >= set.scenarios.size() ||
         size_t(scenario) >= set.irradiance.size())
         throw Error("probe set: no scenario #" + std::to_string(scenario));
@@ -151,6 +152,12 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
         g.name = v.name;
         g.fileIndex = vi;
         g.root = parents[size_t(vi)] < 0;
+        if (isShTechnique(technique)) {
+            g.sh = uploadShVolume(set, scenario, vi, technique, shLeak, what);
+            fillParameters(g, v);
+            volumes_.push_back(std::move(g));
+            continue;
+        }
         if (set.states[size_t(vi)].size() != size_t(v.probeCount()))
             throw Error(what + ": probe state count does not match its grid");
         // Sparse volumes upload only their stored tiles, packed; dense ones as they are. The
@@ -205,12 +212,21 @@ std::vector<int> GpuProbes::drawOrder() const {
 void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,
                            const glm::dvec3& origin, float irradianceScale) const {
     const GpuProbeVolume& g = volumes_[size_t(v)];
-    g.irradiance.bind(firstUnit);
-    g.visibility.bind(firstUnit + 1);
-    g.state.bind(firstUnit + 2);
-    program.set("u_ddgiIrradiance", firstUnit);
-    program.set("u_ddgiVisibility", firstUnit + 1);
-    program.set("u_ddgiState", firstUnit + 2);
+    if (isShTechnique(technique_)) {
+        for (std::size_t t = 0; t < g.sh.coefficients.size(); ++t) {
+            g.sh.coefficients[t].bind(firstUnit + int(t));
+            program.set("u_shCoefficients" + std::to_string(t), firstUnit + int(t));
+        }
+        g.sh.validity.bind(firstUnit + 7);
+        program.set("u_shValidity", firstUnit + 7);
+    } else {
+        g.irradiance.bind(firstUnit);
+        g.visibility.bind(firstUnit + 1);
+        g.state.bind(firstUnit + 2);
+        program.set("u_ddgiIrradiance", firstUnit);
+        program.set("u_ddgiVisibility", firstUnit + 1);
+        program.set("u_ddgiState", firstUnit + 2);
+    }
     program.set("u_ddgiCenter", glm::vec3(g.center - origin));
     program.set("u_ddgiToLocal", g.toLocal);
     program.set("u_ddgiHalf", g.half);
@@ -224,6 +240,7 @@ void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,
     program.set("u_ddgiBiasDistance", g.biasDistance);
     program.set("u_ddgiInvMaxDistance", g.invMaxDistance);
     program.set("u_ddgiIrradianceScale", irradianceScale * g.irradianceDecode);
+    if (isShTechnique(technique_)) return; // no DDGI textures
     const gl::TextureDesc &irr = g.irradiance.desc(), &vis = g.visibility.desc();
     program.set("u_ddgiIrrInvSize", glm::vec2(1.0f / float(irr.width), 1.0f / float(irr.height)));
     program.set("u_ddgiVisInvSize", glm::vec2(1.0f / float(vis.width), 1.0f / float(vis.height)));

@@ -10,6 +10,7 @@
 #include "gl/Program.h"
 #include "gl/ShaderSource.h"
 #include "gl/Texture.h"
+#include "passes/GpuShTextures.h"
 #include "probes/ProbeSet.h"
 #include "profile/VolumeLod.h"
 
@@ -35,14 +36,23 @@ struct GpuProbeVolume {
     float biasDistance = 0, invMaxDistance = 0, boxVolume = 0;
     // 1 / the irradiance's storage scale (probes/StorageScale.h): fetched * this = true E.
     float irradianceDecode = 1.0f;
-    std::size_t bytes() const { return irradiance.bytes() + visibility.bytes() + state.bytes(); }
+    // gi.technique=sh_l1|sh_l2: the SH 3D textures (GpuShTextures.h) instead of the DDGI ones
+    // (irradiance, visibility and state are then empty).
+    GpuShVolume sh;
+    std::size_t bytes() const {
+        return irradiance.bytes() + visibility.bytes() + state.bytes() + sh.bytes();
+    }
 };
 
 class GpuProbes {
 public:
     // Throws pb::Error for a bad scenario index, texture bytes that do not match the shapes,
     // or a GL that cannot sample the format (BC6H without BPTC).
-    GpuProbes(const probes::ProbeSet& set, int scenario, const profile::VolumeLod& lod = {});
+    // `technique` sh_l1 / sh_l2 uploads the set's SH probes (GpuShTextures.h, with `shLeak`)
+    // instead of the DDGI textures; a set without SH is then a pb::Error saying to re-bake.
+    GpuProbes(const probes::ProbeSet& set, int scenario, const profile::VolumeLod& lod = {},
+              profile::GiTechnique technique = profile::GiTechnique::Ddgi,
+              profile::GiShLeak shLeak = profile::GiShLeak::None);
 
     const std::vector<GpuProbeVolume>& volumes() const { return volumes_; }
     std::size_t bytes() const; // GPU memory of everything uploaded
@@ -50,6 +60,7 @@ public:
     // built with the tile indirection (DDGI_SPARSE_TILES, common_ddgi.glsl).
     bool anySparse() const;
     const std::string& scenarioName() const { return scenario_; }
+    profile::GiTechnique technique() const { return technique_; }
     probes::StorageFormat format() const { return format_; }
 
     // Indices into volumes() in draw order for "each draw overwrites": largest box first, and
@@ -65,12 +76,17 @@ public:
     // instruction in shaders built with the guard (common_ddgi.glsl).
     void bindVolume(const gl::Program& program, int v, int firstUnit, const glm::dvec3& origin,
                     float irradianceScale = 1.0f) const;
-    static constexpr int kUnitsPerVolume = 3;
+    static constexpr int kUnitsPerVolume = 3;   // DDGI: irradiance, visibility, state
+    static constexpr int kShUnitsPerVolume = 8; // SH: u_shCoefficients0..6, u_shValidity
+    int unitsPerVolume() const {
+        return technique_ == profile::GiTechnique::Ddgi ? kUnitsPerVolume : kShUnitsPerVolume;
+    }
 
 private:
     std::vector<GpuProbeVolume> volumes_;
     std::string scenario_;
     probes::StorageFormat format_ = probes::StorageFormat::Rgba16f;
+    profile::GiTechnique technique_ = profile::GiTechnique::Ddgi;
 };
 
 // The sampler's constants (renderer/probes/ProbeSampler.h) as DDGI_* shader defines, so the

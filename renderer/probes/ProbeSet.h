@@ -54,6 +54,10 @@ struct ProbeState {
     // false: sparse storage left the probe out (SparseLayout.h); it is then invalid too, with
     // zero texels, and owns no tile in the file or on the GPU.
     bool stored = true;
+    // The lattice point itself is inside geometry (back-face ratio above the threshold before
+    // relocation moved the probe out). The SH technique looks probes up at their lattice points,
+    // so for it such a probe is invalid (ShIrradiance.h shProbeValid). Stored in the SH record.
+    bool insideAtLattice = false;
 };
 
 struct ProbeSet {
@@ -64,12 +68,17 @@ struct ProbeSet {
     std::vector<ProbeTexture> visibility;        // [volume]
     std::vector<Scenario> scenarios;
     std::vector<std::vector<ProbeTexture>> irradiance; // [scenario][volume]
+    // The SH technique's probes (ShIrradiance.h): [scenario][volume][probe * 9 + coefficient],
+    // radiance SH in the volume's local frame, from the same bake. Empty: a file from before
+    // version 6 (re-bake for gi.technique=sh_l1|sh_l2).
+    std::vector<std::vector<std::vector<glm::vec3>>> sh;
     // Not part of the probe file: the volume ranks of its sidecar FILE.ranks.json when one was
     // read and matches (VolumeRanksFile.h); otherwise empty and `ranksNote` says why.
     std::optional<VolumeRanks> ranks;
     std::string ranksNote;
 
     StorageFormat format() const { return settings.format; }
+    bool hasSh() const { return !sh.empty(); }
     // -1 when absent.
     int findScenario(const std::string& name) const;
     std::size_t probeCount() const;

@@ -13,7 +13,8 @@
 
 namespace pb::profile {
 
-enum class GiTechnique { Ddgi };
+enum class GiTechnique { Ddgi, ShL1, ShL2 };
+enum class GiShLeak { None, Weight, ValidityMask };
 enum class GiResolution { Full, Half, Quarter };
 enum class GiTargetFormat { Rgba16f, R11g11b10f, Rgba32f };
 enum class GiPrecision { Fp32, Fp16 };
@@ -26,6 +27,7 @@ enum class GiGuard { Off, On }; // gi.guard_*: numerical guards (issue 8)
 
 struct GiSwitches {
     GiTechnique technique;
+    GiShLeak shLeak; // sh_l1 / sh_l2 only
     GiResolution resolution;
     GiTargetFormat targetFormat;
     GiPrecision precision;

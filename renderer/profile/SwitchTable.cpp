@@ -71,8 +71,21 @@ std::vector<SwitchInfo> buildTable() {
     using D = DefineStyle;
     return {
         choice("gi.technique", &GiSwitches::technique,
-               Names<GiTechnique>{{GiTechnique::Ddgi, "ddgi"}}, "ddgi", D::ChoiceFlag,
-               "GI_TECHNIQUE", "indirect diffuse technique (DDGI probes; others come later)"),
+               Names<GiTechnique>{{GiTechnique::Ddgi, "ddgi"},
+                                  {GiTechnique::ShL1, "sh_l1"},
+                                  {GiTechnique::ShL2, "sh_l2"}},
+               "ddgi", D::ChoiceFlag, "GI_TECHNIQUE",
+               "indirect diffuse technique: DDGI probes (octahedral irradiance + visibility), or "
+               "an SH L1 / L2 irradiance volume read with hardware trilinear 3D fetches, no "
+               "visibility (same bake)"),
+        choice("gi.sh_leak", &GiSwitches::shLeak,
+               Names<GiShLeak>{{GiShLeak::None, "none"},
+                               {GiShLeak::Weight, "weight"},
+                               {GiShLeak::ValidityMask, "validity_mask"}},
+               "none", D::ChoiceFlag, "GI_SH_LEAK",
+               "SH techniques' leak reduction: none; weight (invalid probes weigh 0, lighting "
+               "and weight filtered together and divided); validity_mask (8-bit mask of valid "
+               "corners per cell, sample nudged off invalid corners)"),
         choice("gi.resolution", &GiSwitches::resolution,
                Names<GiResolution>{{GiResolution::Full, "full"},
                                    {GiResolution::Half, "half"},

@@ -10,5 +10,7 @@ Scene makeRoomsScene();
 // `rooms` with three dynamic boxes in free space (issue 18).
 Scene makeRoomsDynamicScene();
 Scene makeCourtyardScene();
+// Two rooms sharing a 10 cm wall, one lit: the GI leak figure (issue 19).
+Scene makeThinWallScene();
 
 } // namespace pb::scene

@@ -33,7 +33,7 @@ bool hasGltfExtension(const std::string& path) {
 
 const std::vector<std::string>& builtinSceneNames() {
     static const std::vector<std::string> names = {"cornell", "rooms", "courtyard", "empty",
-                                                   "rooms_dynamic"};
+                                                   "rooms_dynamic", "thin_wall"};
     return names;
 }
 
@@ -52,6 +52,8 @@ Scene makeBuiltinScene(const std::string& name) {
         s = makeCourtyardScene();
     else if (name == "rooms_dynamic")
         s = makeRoomsDynamicScene();
+    else if (name == "thin_wall")
+        s = makeThinWallScene();
     else if (name == "empty")
         s.name = "empty"; // no geometry; sun and sky keep their defaults (furnace tests set them)
     else

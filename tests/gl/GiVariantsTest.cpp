@@ -17,11 +17,16 @@
 namespace pb::test {
 namespace {
 
+// Every DDGI combination of the shader switches, then each SH technique with each leak mode
+// on the defaults: common_sh.glsl reads only GI_TECHNIQUE_* and GI_SH_LEAK_*, and the rest of
+// the apply shader is DDGI's, so crossing them with every other switch (9x the programs) would
+// compile the same SH code again and again.
 std::vector<profile::Profile> allShaderCombinations() {
     std::vector<profile::Profile> out(1);
     for (const profile::SwitchInfo& s : profile::switchTable()) {
         if (s.defineStyle == profile::DefineStyle::HostOnly ||
-            s.kind != profile::SwitchKind::Choice)
+            s.kind != profile::SwitchKind::Choice || s.key == "gi.technique" ||
+            s.key == "gi.sh_leak")
             continue;
         std::vector<profile::Profile> next;
         for (const profile::Profile& p : out)
@@ -31,6 +36,13 @@ std::vector<profile::Profile> allShaderCombinations() {
             }
         out = std::move(next);
     }
+    for (const char* technique : {"sh_l1", "sh_l2"})
+        for (const char* leak : {"none", "weight", "validity_mask"}) {
+            profile::Profile p;
+            p.set("gi.technique", technique);
+            p.set("gi.sh_leak", leak);
+            out.push_back(p);
+        }
     return out;
 }
 

@@ -1,5 +1,7 @@
 #include "probes/bake/Baker.h"
 
+#include "probes/ShIrradiance.h"
+
 #include "core/Error.h"
 #include "probes/bake/BakeOrigin.h"
 #include "probes/bake/BakePhaseClock.h"
@@ -412,6 +414,16 @@ std::vector<QuantisationError> quantiseSet(ProbeSet& set, StorageFormat format, 
     return errors;
 }
 
+// Probes sparse storage left out hold no light, in SH as in their (zeroed) tiles.
+void zeroAbsentSh(ProbeSet& set) {
+    for (auto& sc : set.sh)
+        for (std::size_t v = 0; v < sc.size(); ++v)
+            for (std::size_t p = 0; p < set.states[v].size(); ++p)
+                if (!set.states[v][p].stored)
+                    std::fill_n(sc[v].begin() + std::ptrdiff_t(p * kShL2Coefficients),
+                                kShL2Coefficients, glm::vec3(0.0f));
+}
+
 std::vector<std::size_t> invalidPerVolume(const ProbeSet& set) {
     std::vector<std::size_t> invalid;
     for (const auto& vs : set.states)
@@ -472,6 +484,8 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     bakeGeometry(run);
     const RadianceMask mask(run);
     bakeRadiance(run, mask);
+    // The SH technique's probes, from the same unquantised irradiance (ShIrradiance.h).
+    run.set.sh = projectSetToSh(run.set, threads);
     const std::vector<BakePhase> phaseTimes = run.phases.take();
     if (req.recordRays) *req.recordRays = own->stopRecording();
 
@@ -480,6 +494,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     // Invalid as baked, before sparse storage marks its absent probes invalid too.
     std::vector<std::size_t> bakedInvalid = invalidPerVolume(run.set);
     if (req.sparse) storeOnly(run.set, mask.keep);
+    zeroAbsentSh(run.set);
 
     if (statsOut) {
         BakeStats st = countStats(run, std::move(bakedInvalid));

@@ -98,6 +98,7 @@ void bakeProbeGeometry(const RayScene& rs, const ProbeVolume& vol, const glm::iv
 
     glm::vec3 offset(0.0f);
     TraceSummary sum = trace(rs, vol.toWorld(grid), rot, dirs, bounds, s, rays);
+    state.insideAtLattice = float(sum.backfaces) > threshold;
     for (int it = 0; settings.relocate && it < kMaxRelocationIterations; ++it) {
         glm::vec3 move(0.0f);
         if (float(sum.backfaces) > threshold && sum.closestBackRay >= 0)

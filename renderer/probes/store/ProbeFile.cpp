@@ -207,6 +207,59 @@ void writeVolumeTexture(ByteWriter& w, const ProbeTexture& t, const ProbeVolume&
                               irradiance ? kIrradianceTile : kVisibilityTile, f));
 }
 
+// --- SH record (version 6): u8 present; then per volume and probe u8 insideAtLattice; then
+// per scenario, per volume and STORED probe 9 RGB f32 (absent probes read as zeros).
+void writeShRecord(ByteWriter& w, const ProbeSet& set) {
+    w.pod(std::uint8_t(set.hasSh()));
+    if (!set.hasSh()) return;
+    for (const auto& states : set.states)
+        for (const ProbeState& p : states) w.pod(std::uint8_t(p.insideAtLattice));
+    if (set.sh.size() != set.irradiance.size())
+        throw Error("probe set: SH for " + std::to_string(set.sh.size()) + " scenarios, " +
+                    std::to_string(set.irradiance.size()) + " baked");
+    for (const auto& sc : set.sh)
+        for (std::size_t v = 0; v < set.volumes.size(); ++v) {
+            if (sc.at(v).size() != std::size_t(set.volumes[v].probeCount()) * 9)
+                throw Error("probe set: SH of volume '" + set.volumes[v].name + "' has " +
+                            std::to_string(sc[v].size()) + " coefficients");
+            // Sparse storage's absent probes hold zeros: only stored probes are written.
+            for (std::size_t p = 0; p < set.states[v].size(); ++p)
+                if (set.states[v][p].stored)
+                    for (int k = 0; k < 9; ++k) w.pod(sc[v][p * 9 + std::size_t(k)]);
+        }
+}
+
+void readShRecord(ByteReader& body, ProbeSet& set, const std::string& path) {
+    if (body.pod<std::uint8_t>("SH present") == 0) return;
+    for (auto& states : set.states) {
+        if (states.size() > body.remaining())
+            throw fileError(path, "file is truncated or corrupt (SH lattice validity)");
+        for (ProbeState& p : states) p.insideAtLattice = body.pod<std::uint8_t>("SH lattice") != 0;
+    }
+    set.sh.resize(set.irradiance.size());
+    for (auto& sc : set.sh)
+        for (const ProbeVolume& v : set.volumes) {
+            const std::size_t n = std::size_t(v.probeCount()) * 9;
+            std::size_t stored = 0;
+            for (const ProbeState& p : set.states[std::size_t(&v - set.volumes.data())])
+                stored += p.stored ? 1 : 0;
+            if (stored * 9 > body.remaining() / sizeof(glm::vec3))
+                throw fileError(path, "file is truncated or corrupt (SH of volume '" + v.name +
+                                          "')");
+            std::vector<glm::vec3> c(n, glm::vec3(0.0f));
+            const auto& states = set.states[std::size_t(&v - set.volumes.data())];
+            for (std::size_t i = 0; i < n; ++i) {
+                if (!states[i / 9].stored) continue;
+                glm::vec3& x = c[i];
+                x = body.pod<glm::vec3>("SH coefficient");
+                if (!finite(x))
+                    throw fileError(path, "corrupt SH coefficient in volume '" + v.name +
+                                              "' (not finite)");
+            }
+            sc.push_back(std::move(c));
+        }
+}
+
 } // namespace
 
 std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
@@ -264,6 +317,8 @@ std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
     for (const auto& sc : set.irradiance)
         for (std::size_t v = 0; v < sc.size(); ++v)
             writeVolumeTexture(w, sc[v], set.volumes[v], set.states[v], true, set.format());
+
+    writeShRecord(w, set);
 
     std::uint64_t total = w.data().size() + sizeof(std::uint64_t);
     std::memcpy(w.data().data() + 12, &total, sizeof(total));
@@ -383,6 +438,7 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
                               sparse[v], true, b.format, path, scales[s]);
         }
     }
+    if (version >= 6) readShRecord(body, set, path);
     if (body.remaining() != 0)
         throw fileError(path, "corrupt: " + std::to_string(body.remaining()) +
                                   " unexpected bytes before the checksum");
@@ -410,7 +466,12 @@ std::optional<ProbeSet> readCachedProbeFile(const std::string& path, std::uint64
     }
     try {
         ProbeSet set = readProbeFile(path);
-        if (set.inputHash == inputHash) return set;
+        // A file from before version 6 has no SH probes: re-bake it so every technique runs.
+        if (set.inputHash == inputHash && set.hasSh()) return set;
+        if (set.inputHash == inputHash) {
+            say("no SH probes (an older probe file version)");
+            return std::nullopt;
+        }
         say("inputs changed");
     } catch (const Error& e) {
         say(std::string("unusable: ") + e.what());

@@ -24,7 +24,10 @@ inline constexpr char kProbeFileMagic[8] = {'P', 'B', 'P', 'R', 'O', 'B', 'E', '
 // 3: per-scenario storage scales (StorageScale.h) and the sparse storage record.
 // 4: the converged bake's settings (emitter samples, noise target) after the backface threshold.
 // 5: the lit-surface samples after the noise target.
-inline constexpr std::uint32_t kProbeFileVersion = 5;
+// 6: the SH probes (ShIrradiance.h) after the irradiance: u8 present, then per volume and
+//    probe u8 insideAtLattice, then per scenario, volume and stored probe 9 x RGB f32 (older
+//    files read with no SH).
+inline constexpr std::uint32_t kProbeFileVersion = 6;
 inline constexpr std::uint32_t kProbeFileFirstVersion = 1; // oldest version still read
 
 std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set);

@@ -146,6 +146,7 @@ ProbeSet mergeProbeFileParts(const std::vector<ProbeFilePart>& parts,
     ProbeSet out = first.set;
     out.scenarios.clear();
     out.irradiance.clear();
+    out.sh.clear();
     for (std::uint32_t s = 0; s < first.totalScenarios; ++s) {
         if (owner[s] < 0)
             throw Error("bake-merge: scenario " + std::to_string(s) + " is in no part");
@@ -154,7 +155,9 @@ ProbeSet mergeProbeFileParts(const std::vector<ProbeFilePart>& parts,
                                     p.scenarios.begin());
         out.scenarios.push_back(p.set.scenarios[at]);
         out.irradiance.push_back(p.set.irradiance[at]);
+        if (p.set.hasSh()) out.sh.push_back(p.set.sh[at]);
     }
+    if (out.sh.size() != out.irradiance.size()) out.sh.clear(); // a part without SH: none
     return out;
 }
 

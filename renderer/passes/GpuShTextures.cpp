@@ -1,0 +1,101 @@
+#include "passes/GpuShTextures.h"
+
+#include "core/Error.h"
+#include "probes/ShIrradiance.h"
+#include "probes/ShSampler.h"
+
+namespace pb::render {
+
+std::size_t GpuShVolume::bytes() const {
+    if (!validity) return 0; // not uploaded (DDGI)
+    std::size_t total = validity.bytes();
+    for (const gl::Texture& t : coefficients)
+        total += t.bytes();
+    return total;
+}
+
+int shCoefficientCount(profile::GiTechnique t) {
+    return t == profile::GiTechnique::ShL1   ? probes::kShL1Coefficients
+           : t == profile::GiTechnique::ShL2 ? probes::kShL2Coefficients
+                                             : 0;
+}
+
+bool isShTechnique(profile::GiTechnique t) {
+    return shCoefficientCount(t) > 0;
+}
+
+std::size_t shBytesPerProbe(profile::GiTechnique t) {
+    return probes::shGpuBytesPerProbe(shCoefficientCount(t));
+}
+
+std::uint8_t shCellMask(const probes::ProbeVolume& v, const std::vector<probes::ProbeState>& s,
+                        const glm::ivec3& base) {
+    std::uint8_t mask = 0;
+    for (int c = 0; c < 8; ++c) {
+        const glm::ivec3 q =
+            glm::min(base + glm::ivec3(c & 1, (c >> 1) & 1, (c >> 2) & 1), v.counts - 1);
+        if (probes::shProbeValid(s[size_t(v.probeIndex(q))])) mask = std::uint8_t(mask | (1u << c));
+    }
+    return mask;
+}
+
+namespace {
+gl::Texture volumeTexture(gl::TextureFormat f, const glm::ivec3& counts, const void* data,
+                          const std::string& label) {
+    gl::TextureDesc d;
+    d.format = f;
+    d.width = counts.x;
+    d.height = counts.z; // rows along local Z, depth (layers) along local Y
+    d.layers = counts.y;
+    d.volume = true;
+    d.filter = gl::Filter::Linear;
+    gl::Texture t(d);
+    t.upload(data);
+    t.label(label);
+    return t;
+}
+} // namespace
+
+GpuShVolume uploadShVolume(const probes::ProbeSet& set, int scenario, int vi,
+                           profile::GiTechnique technique, profile::GiShLeak leak,
+                           const std::string& label) {
+    if (!set.hasSh()) throw Error(probes::noShMessage("the probe set"));
+    const probes::ProbeVolume& v = set.volumes[size_t(vi)];
+    const auto& states = set.states[size_t(vi)];
+    const std::vector<glm::vec3>& sh = set.sh[size_t(scenario)][size_t(vi)];
+    const int n = shCoefficientCount(technique);
+    const int textures = n == probes::kShL1Coefficients ? 3 : 7;
+    const std::size_t probes = std::size_t(v.probeCount());
+    // Texel order x fastest, then z (rows), then y (layers): the probe index order.
+    std::vector<std::vector<float>> texels(size_t(textures), std::vector<float>(probes * 4, 0));
+    std::vector<std::uint8_t> validity(probes, 0);
+    for (std::size_t p = 0; p < probes; ++p) {
+        const bool valid = probes::shProbeValid(states[p]);
+        // `weight` stores lighting premultiplied by the weight (0 or 1 here).
+        const float w = leak == profile::GiShLeak::Weight && !valid ? 0.0f : 1.0f;
+        const glm::vec3* c = sh.data() + p * probes::kShL2Coefficients;
+        for (int ch = 0; ch < 3; ++ch)
+            for (int k = 0; k < 4; ++k)
+                texels[size_t(ch)][p * 4 + size_t(k)] = c[k][ch] * w;
+        if (n == probes::kShL2Coefficients)
+            for (int ch = 0; ch < 3; ++ch)
+                for (int k = 0; k < 5; ++k) {
+                    const int at = ch * 5 + k;
+                    texels[size_t(3 + at / 4)][p * 4 + size_t(at % 4)] = c[4 + k][ch] * w;
+                }
+        if (leak != profile::GiShLeak::None)
+            validity[p] = shCellMask(v, states, v.probeCoords(int(p)));
+        else
+            validity[p] = valid ? 255 : 0;
+    }
+    GpuShVolume g;
+    for (int t = 0; t < textures; ++t)
+        g.coefficients.push_back(volumeTexture(gl::TextureFormat::RGBA16F, v.counts,
+                                               texels[size_t(t)].data(),
+                                               label + " sh" + std::to_string(t)));
+    g.validity =
+        volumeTexture(gl::TextureFormat::R8, v.counts, validity.data(), label + " sh validity");
+    return g;
+}
+
+} // namespace pb::render
