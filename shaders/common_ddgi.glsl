@@ -84,6 +84,19 @@ vec3 ddgiSafeNormalize(vec3 v, vec3 fallback) {
     return len > 0.0 ? v / len : fallback;
 }
 
+// Edge fade at local point p: 1 inside the box, linear to 0 across a root's fade width per
+// axis; a child (zero fade width) is 0 outside its box. Shared by DDGI and the SH volume.
+float ddgiEdgeFade(vec3 p) {
+    float fade = 1.0;
+    for (int a = 0; a < 3; ++a) {
+        float outside = abs(p[a]) - u_ddgiHalf[a];
+        if (outside > 0.0)
+            fade *= u_ddgiFadeWidth[a] > 0.0
+                        ? clamp(1.0 - outside / u_ddgiFadeWidth[a], 0.0, 1.0) : 0.0;
+    }
+    return fade;
+}
+
 // renderer/probes/Octahedral.h: +Y at the centre, the lower hemisphere folded to the corners.
 vec2 ddgiOctEncode(vec3 d) {
     float l1 = abs(d.x) + abs(d.y) + abs(d.z);
@@ -201,13 +214,7 @@ hvec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
     vec3 v = ddgiSafeNormalize(u_ddgiToLocal * view, n);
 
     // 2. Edge fade (roots; children have a zero fade width and fade 0 outside the box).
-    float fade = 1.0;
-    for (int a = 0; a < 3; ++a) {
-        float outside = abs(p[a]) - u_ddgiHalf[a];
-        if (outside > 0.0)
-            fade *= u_ddgiFadeWidth[a] > 0.0
-                        ? clamp(1.0 - outside / u_ddgiFadeWidth[a], 0.0, 1.0) : 0.0;
-    }
+    float fade = ddgiEdgeFade(p);
     if (fade <= 0.0) return vec4(0.0);
 
     // 3. Surface bias; base probe from the unbiased point, fractions from the biased one.

@@ -61,13 +61,7 @@ vec4 shSample(vec3 pos, vec3 normal, vec3 view) {
     vec3 p = ddgiLocal(pos);
     vec3 n = ddgiSafeNormalize(u_ddgiToLocal * normal, vec3(0.0, 1.0, 0.0));
     vec3 v = ddgiSafeNormalize(u_ddgiToLocal * view, n);
-    float fade = 1.0;
-    for (int a = 0; a < 3; ++a) {
-        float outside = abs(p[a]) - u_ddgiHalf[a];
-        if (outside > 0.0)
-            fade *= u_ddgiFadeWidth[a] > 0.0
-                        ? clamp(1.0 - outside / u_ddgiFadeWidth[a], 0.0, 1.0) : 0.0;
-    }
+    float fade = ddgiEdgeFade(p);
     if (fade <= 0.0) return vec4(0.0);
     vec3 b = p + (DDGI_BIAS_NORMAL * n + DDGI_BIAS_VIEW * v) * u_ddgiBiasDistance;
     vec3 counts = vec3(u_ddgiCounts);
