@@ -11,6 +11,7 @@
 //   is 0.18-0.23 on the built-in scenes (MidAirLookupTest's printout), measured here 0.18.
 // Plus a golden image of the scene lit by the sparse bake.
 #include "gl/GlTestFixture.h"
+#include "gl/GoldenCheck.h"
 #include "gl/LambertIrradiance.h"
 
 #include "frame/FrameRenderer.h"
@@ -140,18 +141,7 @@ TEST_F(GiDynamicGolden, SparseBakeLitSceneMatchesItsGolden) {
     const image::Image8 actual = r.readOutput();
     checkNoGlErrors("rendering");
     const fs::path golden = goldenDir() / "rooms_dynamic_dynamic_gi.png";
-    const char* update = std::getenv("PB_UPDATE_GOLDENS");
-    if (update && std::string(update) == "1") {
-        image::writePng(golden.string(), actual);
-        GTEST_SKIP() << "golden written: " << golden;
-    }
-    ASSERT_TRUE(fs::exists(golden)) << "no golden image " << golden;
-    const image::Image8 expected = image::readPng(golden.string());
-    const ImageDiff d = compareImages(actual, expected, kGoldenTolerance);
-    if (!withinTolerance(d, kGoldenTolerance)) {
-        writeFailureImages(outputDir(), actual, expected);
-        ADD_FAILURE() << d.describe() << "; images in " << outputDir();
-    }
+    if (updateOrCompareGolden(actual, golden)) GTEST_SKIP() << "golden written: " << golden;
 }
 
 } // namespace

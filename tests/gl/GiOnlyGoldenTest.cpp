@@ -13,6 +13,7 @@
 // then look at them before committing.
 #include "frame/FrameRenderer.h"
 #include "gl/GlTestFixture.h"
+#include "gl/GoldenCheck.h"
 #include "probes/Scenario.h"
 #include "probes/bake/Baker.h"
 #include "probes/placement/AutoPlacement.h"
@@ -82,19 +83,7 @@ TEST_P(GiOnlyGolden, MatchesItsGolden) {
     checkNoGlErrors("rendering");
 
     const fs::path golden = goldenDir() / (std::string("gi_only_") + c.name + ".png");
-    const char* update = std::getenv("PB_UPDATE_GOLDENS");
-    if (update && std::string(update) == "1") {
-        image::writePng(golden.string(), actual);
-        GTEST_SKIP() << "golden written: " << golden;
-    }
-    ASSERT_TRUE(fs::exists(golden)) << "no golden image " << golden
-                                    << " (create it with PB_UPDATE_GOLDENS=1, see tests/README.md)";
-    const image::Image8 expected = image::readPng(golden.string());
-    const ImageDiff d = compareImages(actual, expected, kGoldenTolerance);
-    if (!withinTolerance(d, kGoldenTolerance)) {
-        writeFailureImages(outputDir(), actual, expected);
-        ADD_FAILURE() << d.describe() << "; actual/expected/diff images in " << outputDir();
-    }
+    if (updateOrCompareGolden(actual, golden)) GTEST_SKIP() << "golden written: " << golden;
 }
 
 INSTANTIATE_TEST_SUITE_P(

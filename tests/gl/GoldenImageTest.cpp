@@ -5,6 +5,7 @@
 // (then look at the images and commit them; tests/README.md).
 #include "frame/FrameRenderer.h"
 #include "gl/GlTestFixture.h"
+#include "gl/GoldenCheck.h"
 #include "scene/SceneLoader.h"
 #include "support/ImageCompare.h"
 #include "support/TestEnv.h"
@@ -40,21 +41,7 @@ TEST_P(Golden, MatchesReference) {
     checkNoGlErrors("rendering");
 
     fs::path golden = test::goldenDir() / (std::string(c.scene) + "_" + c.view + ".png");
-    const char* update = std::getenv("PB_UPDATE_GOLDENS");
-    if (update && std::string(update) == "1") {
-        image::writePng(golden.string(), actual);
-        GTEST_SKIP() << "golden written: " << golden;
-    }
-    ASSERT_TRUE(fs::exists(golden)) << "no golden image " << golden
-                                    << " (create it with PB_UPDATE_GOLDENS=1, see tests/README.md)";
-    image::Image8 expected = image::readPng(golden.string());
-    test::ImageDiff d = test::compareImages(actual, expected, kGoldenTolerance);
-    bool ok = test::withinTolerance(d, kGoldenTolerance);
-    if (!ok) {
-        fs::path dir = test::outputDir();
-        test::writeFailureImages(dir, actual, expected);
-        ADD_FAILURE() << d.describe() << "; actual/expected/diff images in " << dir;
-    }
+    if (test::updateOrCompareGolden(actual, golden)) GTEST_SKIP() << "golden written: " << golden;
 }
 
 INSTANTIATE_TEST_SUITE_P(Builtin, Golden,
