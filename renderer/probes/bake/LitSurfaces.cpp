@@ -105,12 +105,12 @@ LitSurfaces::LitSurfaces(const RayScene& rs, const Scenario& sc,
         shadowRays += r;
 
     // 3. The lit ones become entries, in candidate order (deterministic).
-    slots_.assign(slotCount, -1);
+    std::vector<std::int32_t> slots(slotCount, -1); // entry index or -1
     std::vector<double> weights;
     for (std::size_t k = 0; k < candidates.size(); ++k) {
         if (!(power[k] > 0.0) || !std::isfinite(power[k])) continue;
         const Candidate& cd = candidates[k];
-        slots_[std::size_t(triangles_[cd.geomID][cd.primID].first + cd.slot)] =
+        slots[std::size_t(triangles_[cd.geomID][cd.primID].first + cd.slot)] =
             std::int32_t(entries_.size());
         entries_.push_back({cd.a, cd.b, cd.c, cd.normal, cd.albedoOverPi, 0.0f, cd.geomID,
                             cd.primID, (cd.slot & 1) != 0});
@@ -126,15 +126,18 @@ LitSurfaces::LitSurfaces(const RayScene& rs, const Scenario& sc,
         const float area = 0.5f * glm::length(glm::cross(en.b - en.a, en.c - en.a));
         entries_[e].pdfArea = float(table.probability(e) / double(area));
     }
+    slotPdf_.assign(slotCount, 0.0f);
+    for (std::size_t k = 0; k < slotCount; ++k)
+        if (slots[k] >= 0) slotPdf_[k] = entries_[std::size_t(slots[k])].pdfArea;
     pick_ = table;
 }
 
-float LitSurfaces::pdfArea(unsigned geomID, unsigned primID, bool back,
-                           const glm::vec3& x) const {
+std::int64_t LitSurfaces::slotOf(unsigned geomID, unsigned primID, bool back,
+                                 const glm::vec3& x) const {
     if (entries_.empty() || geomID >= triangles_.size() || primID >= triangles_[geomID].size())
-        return 0.0f;
+        return -1;
     const TriangleSlots& t = triangles_[geomID][primID];
-    if (t.first < 0) return 0.0f;
+    if (t.first < 0) return -1;
     glm::vec3 a, b, c;
     rs_->triangleCorners(geomID, primID, a, b, c);
     // Barycentrics of x: u for corner b, v for corner c.
@@ -142,18 +145,15 @@ float LitSurfaces::pdfArea(unsigned geomID, unsigned primID, bool back,
     const float d00 = glm::dot(e0, e0), d01 = glm::dot(e0, e1), d11 = glm::dot(e1, e1);
     const float d20 = glm::dot(d, e0), d21 = glm::dot(d, e1);
     const float denom = d00 * d11 - d01 * d01;
-    if (!(denom > 0.0f)) return 0.0f;
+    if (!(denom > 0.0f)) return -1;
     const float u = std::clamp((d11 * d20 - d01 * d21) / denom, 0.0f, 1.0f);
     const float v = std::clamp((d00 * d21 - d01 * d20) / denom, 0.0f, 1.0f);
-    const int slot = subTriangle(u, v, t.split) * 2 + int(back);
-    const std::int32_t e = slots_[std::size_t(t.first + slot)];
-    return e < 0 ? 0.0f : entries_[std::size_t(e)].pdfArea;
+    return std::int64_t(t.first) + subTriangle(u, v, t.split) * 2 + int(back);
 }
 
-LitPatchSample LitSurfaces::sample(float u0, float u1, float u2) const {
+LitPatchSample LitSurfaces::sampleEntry(std::size_t k, float u1, float u2) const {
     LitPatchSample s;
     if (entries_.empty()) return s;
-    const std::size_t k = pick_.pick(u0);
     const Entry& e = entries_[k];
     const float r = std::sqrt(u1); // uniform on the triangle: the square-root warp
     s.point = e.a * (1.0f - r) + e.b * (r * (1.0f - u2)) + e.c * (r * u2);

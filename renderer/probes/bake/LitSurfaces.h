@@ -58,9 +58,39 @@ public:
 
     // The area density P(entry) / area of the patch holding hit point x of triangle
     // (geomID, primID) on side `back` (false: the front); 0 where nothing is sampled.
-    float pdfArea(unsigned geomID, unsigned primID, bool back, const glm::vec3& x) const;
+    float pdfArea(unsigned geomID, unsigned primID, bool back, const glm::vec3& x) const {
+        return pdfAtSlot(slotOf(geomID, primID, back, x));
+    }
+    // pdfArea in two steps, so that a loop over many hits can prefetch each density before it
+    // reads it (the densities are one large array read at random: most of pdfArea's time was
+    // that cache miss). slotOf: the hit's patch side, -1 where nothing is sampled.
+    std::int64_t slotOf(unsigned geomID, unsigned primID, bool back, const glm::vec3& x) const;
+    float pdfAtSlot(std::int64_t slot) const {
+        return slot < 0 ? 0.0f : slotPdf_[std::size_t(slot)];
+    }
+    void prefetchSlot(std::int64_t slot) const {
+        if (slot >= 0) __builtin_prefetch(&slotPdf_[std::size_t(slot)]);
+    }
+    // Hints that slotOf will be asked about this triangle soon.
+    void prefetchTriangle(unsigned geomID, unsigned primID) const {
+        if (geomID < triangles_.size() && primID < triangles_[geomID].size())
+            __builtin_prefetch(&triangles_[geomID][primID]);
+    }
+
     // u0 picks the entry (alias table), u1, u2 the point (uniform on its patch).
-    LitPatchSample sample(float u0, float u1, float u2) const;
+    LitPatchSample sample(float u0, float u1, float u2) const {
+        return empty() ? LitPatchSample{} : sampleEntry(pickEntry(u0), u1, u2);
+    }
+    // sample in steps, for the same reason as slotOf: pick, prefetch, then read the entry.
+    // pickEntry must not be called on an empty table.
+    std::size_t pickEntry(float u0) const { return pick_.pick(u0); }
+    void prefetchPick(float u0) const { pick_.prefetch(u0); }
+    void prefetchEntry(std::size_t k) const {
+        const char* p = reinterpret_cast<const char*>(&entries_[k]);
+        __builtin_prefetch(p);
+        __builtin_prefetch(p + sizeof(Entry) - 1);
+    }
+    LitPatchSample sampleEntry(std::size_t k, float u1, float u2) const;
 
 private:
     struct Entry {
@@ -72,7 +102,7 @@ private:
         bool back;
     };
     struct TriangleSlots {
-        std::int32_t first = -1; // into slots_: n * n * 2 (sub-triangle) * 2 (side), or -1
+        std::int32_t first = -1; // into slotPdf_: n * n * 2 (sub-triangle) * 2 (side), or -1
         std::int32_t split = 0;  // n
     };
     // Sub-triangle slot of barycentrics (u, v) in an n-split triangle.
@@ -81,7 +111,7 @@ private:
     const RayScene* rs_ = nullptr;
     std::vector<Entry> entries_;
     std::vector<std::vector<TriangleSlots>> triangles_; // [geomID][primID]
-    std::vector<std::int32_t> slots_;                   // entry index or -1
+    std::vector<float> slotPdf_;                        // the entry's pdfArea, or 0
     AliasTable pick_; // entries by power
     std::size_t patches_ = 0;
 };

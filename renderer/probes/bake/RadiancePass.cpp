@@ -64,6 +64,7 @@ void RadianceSlab::reset(std::size_t probes, int rays) {
     const std::size_t n = probes * std::size_t(rays);
     radiance_.resize(n);
     hits_.resize(n);
+    litSlots_.resize(n);
     pending_.resize(probes);
     keys_.resize(probes);
     for (auto& p : pending_)
@@ -98,6 +99,7 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
     for (std::size_t i = 0; i < n; ++i) {
         hits[i] = rs.intersect(origin, rot * dirs[i]);
         rs.prefetchSurface(hits[i]);
+        if (nee.lit && hits[i].hit()) nee.lit->prefetchTriangle(hits[i].geomID, hits[i].primID);
     }
     counters.primary += n;
     // Emitters that fill a large part of the probe's sphere (a quarter or more of its rays hit
@@ -114,6 +116,21 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
     slotSamples_[slot] = m;
     const int ml = nee.lit && !nee.lit->empty() ? nee.litSamples : 0;
     slotLitSamples_[slot] = ml;
+    // The lit-surface density of each hit the shading below weights: its slot first, and a
+    // prefetch, so the random reads of the large density array overlap (same values).
+    std::int64_t* litSlots = litSlots_.data() + first;
+    if (ml > 0) {
+        for (std::size_t i = 0; i < n; ++i) {
+            const RayHit& h = hits[i];
+            litSlots[i] = -1;
+            if (!h.hit() || rs.surface(h.geomID).albedo == glm::vec3(0.0f)) continue;
+            const glm::vec3 d = rot * dirs[i];
+            const bool back = glm::dot(rs.faceNormal(h.geomID, h.primID), d) > 0.0f;
+            if (back && !rs.surface(h.geomID).doubleSided) continue;
+            litSlots[i] = nee.lit->slotOf(h.geomID, h.primID, back, origin + d * h.t);
+            nee.lit->prefetchSlot(litSlots[i]);
+        }
+    }
     for (std::size_t i = 0; i < n; ++i) {
         const glm::vec3 d = rot * dirs[i];
         const RayHit& h = hits[i];
@@ -138,7 +155,7 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
                     glm::vec3 e = directIrradiance(rs, sc, lights, x, nrm, counters.shadow);
                     float weight = 1.0f; // the balance heuristic's, against lit-surface samples
                     if (ml > 0) {
-                        const float pdfA = nee.lit->pdfArea(h.geomID, h.primID, back, x);
+                        const float pdfA = nee.lit->pdfAtSlot(litSlots[i]);
                         const float cosL = std::fabs(glm::dot(nrm, d));
                         if (pdfA > 0.0f)
                             weight = cosL > 1e-6f
@@ -201,9 +218,23 @@ void RadianceSlab::traceLitSamples(std::size_t slot, const RayScene& rs, const S
     float* y1 = litY_.data() + slot * kTexels;
     float* y2 = litY2_.data() + slot * kTexels;
     const float eps = rs.epsilon();
+    // The samples' numbers first (the stream's order), then the table reads in two prefetched
+    // steps (alias column, entry): both tables are large and read at random.
+    thread_local std::vector<float> us;
+    thread_local std::vector<std::size_t> picks;
+    us.resize(3 * std::size_t(ml));
+    picks.resize(std::size_t(ml));
+    for (int j = 0; j < 3 * ml; ++j)
+        us[std::size_t(j)] = uniformFloat(state);
+    for (int j = 0; j < ml; ++j)
+        nee.lit->prefetchPick(us[3 * std::size_t(j)]);
     for (int j = 0; j < ml; ++j) {
-        const float u0 = uniformFloat(state), u1 = uniformFloat(state), u2 = uniformFloat(state);
-        const LitPatchSample s = nee.lit->sample(u0, u1, u2);
+        picks[std::size_t(j)] = nee.lit->pickEntry(us[3 * std::size_t(j)]);
+        nee.lit->prefetchEntry(picks[std::size_t(j)]);
+    }
+    for (int j = 0; j < ml; ++j) {
+        const float u1 = us[3 * std::size_t(j) + 1], u2 = us[3 * std::size_t(j) + 2];
+        const LitPatchSample s = nee.lit->sampleEntry(picks[std::size_t(j)], u1, u2);
         glm::vec3 w = s.point - origin;
         const float dist = glm::length(w);
         if (!(dist > 0.0f)) continue;

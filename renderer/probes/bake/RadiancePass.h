@@ -108,6 +108,7 @@ private:
     };
     int rays_ = 0;
     std::vector<RayHit> hits_;                     // per ray, slot-major
+    std::vector<std::int64_t> litSlots_;           // per ray: LitSurfaces::slotOf of its hit
     std::vector<glm::vec4> radiance_;              // per ray, slot-major: RGB + unused
     std::vector<std::vector<Pending>> pending_;    // per slot
     std::vector<std::vector<std::uint32_t>> keys_; // per slot: localityKey of each pending hit
