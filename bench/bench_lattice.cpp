@@ -17,7 +17,13 @@
 // and the lattice score of each line at the spacing of the volume that holds its midpoint
 // (median, p90, and the share of lines above 2).
 //
-// Usage: bench_lattice [--lines N] [--rays R] [--gather-rays G] [--volumes FILE]...
+// --elevation DEG: the viewer's angle above the floor (default 15: a standing eye looking a few
+// metres ahead; 90 looks straight down, where the surface bias points straight up).
+// --below Y keeps the lines under height Y (world units): a value a little over a storey's floor
+// measures that floor alone (Sponza's ground floor: --below 1; without it most lines fall on
+// the roof).
+// Usage: bench_lattice [--lines N] [--rays R] [--gather-rays G] [--below Y] [--elevation DEG]
+//                      [--volumes FILE]...
 //                      [--json FILE] [SCENE...]   (default: the five shared scenes)
 #include "SharedScenes.h"
 #include "core/Error.h"
@@ -37,6 +43,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -50,6 +57,8 @@ constexpr int kSamplesPerLine = 64, kSamplesPerCell = 8;
 
 struct Options {
     int lines = 40, rays = 128, gatherRays = 512;
+    float below = std::numeric_limits<float>::infinity(); // --below: lines start under it
+    float elevation = 15.0f; // --elevation: the viewer's angle above the floor, degrees
     std::vector<std::string> volumeFiles, scenes;
     std::string json;
 };
@@ -76,7 +85,7 @@ ProbeSet bake(const scene::Scene& s, const std::vector<ProbeVolume>& volumes, bo
 
 nlohmann::json scorePlacement(const std::string& name, const ProbeSet& set,
                               const std::vector<FloorLine>& lines,
-                              const std::vector<glm::vec3>& truth) {
+                              const std::vector<glm::vec3>& truth, float elevationDeg) {
     const ProbeSampler sampler(set, 0);
     std::vector<double> scores;
     double squared = 0.0, truthSum = 0.0;
@@ -84,13 +93,18 @@ nlohmann::json scorePlacement(const std::string& name, const ProbeSet& set,
     for (std::size_t l = 0; l < lines.size(); ++l) {
         const FloorLine& line = lines[l];
         std::vector<double> residual(std::size_t(line.samples));
+        // Towards a viewer looking along the line from behind its start, elevationDeg above
+        // the floor: the surface bias leans along the view, so a grazing view reads the probes
+        // from much closer to the floor than a view from straight above.
+        const float el = glm::radians(elevationDeg);
+        const glm::vec3 view = -line.axis * std::cos(el) + glm::vec3(0, 1, 0) * std::sin(el);
         double lineTruth = 0.0;
         for (int i = 0; i < line.samples; ++i)
             lineTruth += luminance(truth[l * kSamplesPerLine + std::size_t(i)]) / line.samples;
         if (!(lineTruth > 0.0)) continue;
         for (int i = 0; i < line.samples; ++i) {
             const glm::vec3 p = line.point(i);
-            const IrradianceSample e = sampler.sample(p, {0, 1, 0}, {0, 1, 0});
+            const IrradianceSample e = sampler.sample(p, {0, 1, 0}, view);
             unlit += e.weight <= 0.0f;
             const double t = luminance(truth[l * kSamplesPerLine + std::size_t(i)]);
             const double d = luminance(e.irradiance) - t;
@@ -131,8 +145,10 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
     const std::vector<ProbeVolume> uniform = placeAutoVolumes(s, uniformReq).volumes;
     const float spacing = uniform[0].cellSize().x;
     const float step = spacing / float(kSamplesPerCell);
-    const std::vector<FloorLine> lines = findFloorLines(rs, o.lines, kSamplesPerLine, step);
-    nlohmann::json out = {{"scene", path}, {"lines", lines.size()}, {"step", step}};
+    const std::vector<FloorLine> lines =
+        findFloorLines(rs, o.lines, kSamplesPerLine, step, 0x11A77ECEu, o.below);
+    nlohmann::json out = {{"scene", path}, {"lines", lines.size()}, {"step", step},
+                          {"view_elevation_deg", o.elevation}};
     if (lines.empty()) {
         out["placements"] = nlohmann::json::array();
         return out;
@@ -149,16 +165,16 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
         rs, resolveScenarios({}, {}, s)[0], s.lights, points, &indirect, gs);
 
     nlohmann::json rows = nlohmann::json::array();
-    rows.push_back(scorePlacement("uniform", bake(s, uniform, false, o.rays, 2), lines, truth));
+    rows.push_back(scorePlacement("uniform", bake(s, uniform, false, o.rays, 2), lines, truth, o.elevation));
     AutoPlacementRequest autoReq;
     autoReq.sparse = true;
     rows.push_back(scorePlacement("auto", bake(s, placeAutoVolumes(s, autoReq).volumes, true,
                                                o.rays, 2),
-                                  lines, truth));
+                                  lines, truth, o.elevation));
     for (const std::string& f : o.volumeFiles)
         rows.push_back(scorePlacement(std::filesystem::path(f).filename().string(),
                                       bake(s, loadVolumeFile(f).volumes, false, o.rays, 2),
-                                      lines, truth));
+                                      lines, truth, o.elevation));
     out["placements"] = rows;
     return out;
 }
@@ -174,6 +190,8 @@ int main(int argc, char** argv) {
         if (a == "--lines" && hasValue) o.lines = std::atoi(argv[++i]);
         else if (a == "--rays" && hasValue) o.rays = std::atoi(argv[++i]);
         else if (a == "--gather-rays" && hasValue) o.gatherRays = std::atoi(argv[++i]);
+        else if (a == "--below" && hasValue) o.below = float(std::atof(argv[++i]));
+        else if (a == "--elevation" && hasValue) o.elevation = float(std::atof(argv[++i]));
         else if (a == "--volumes" && hasValue) o.volumeFiles.push_back(argv[++i]);
         else if (a == "--json" && hasValue) o.json = argv[++i];
         else if (a.rfind("--", 0) == 0) {

@@ -27,17 +27,21 @@ double powerAt(const std::vector<double>& x, float step, double frequency) {
 } // namespace
 
 std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples, float step,
-                                      std::uint64_t seed) {
+                                      std::uint64_t seed, float startBelow) {
     std::vector<FloorLine> lines;
     const scene::Bounds b = rs.bounds();
     if (b.empty() || count <= 0 || samples < 2 || !(step > 0.0f)) return lines;
+    const float top = std::min(b.max.y, startBelow);
+    if (!(top > b.min.y)) return lines;
     const float clearance = 4.0f * step, flat = step / 8.0f;
     const float lift = std::max(rs.epsilon() * 4.0f, 1e-4f * glm::length(b.size()));
     std::uint64_t state = seed;
     for (int attempt = 0; attempt < 4000 * count && int(lines.size()) < count; ++attempt) {
-        const glm::vec3 axis = lines.size() % 2 == 0 ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
+        // The axis alternates by attempt, not by line: a floor narrower than a line along one
+        // axis (Sponza's courtyard along Z) must not stop the search for lines along the other.
+        const glm::vec3 axis = attempt % 2 == 0 ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
         const glm::vec3 p(b.min.x + uniformFloat(state) * (b.max.x - b.min.x),
-                          b.min.y + uniformFloat(state) * (b.max.y - b.min.y),
+                          b.min.y + uniformFloat(state) * (top - b.min.y),
                           b.min.z + uniformFloat(state) * (b.max.z - b.min.z));
         // From a random height down to the first upward surface: a floor of any storey, a
         // roof, a table top; the line must then stay on it.

@@ -12,6 +12,7 @@
 #include "probes/bake/RayScene.h"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace pb::probes {
@@ -25,14 +26,17 @@ struct FloorLine {
     glm::vec3 point(int i) const { return start + axis * (step * float(i)); }
 };
 
-// Up to `count` lines of `samples` points `step` apart along world X or Z (alternating) on
+// Up to `count` lines of `samples` points `step` apart along world X or Z (tried in turn) on
 // upward-facing surfaces (normal within ~2.5 degrees of +Y) that stay flat (every point's
 // surface at the first point's height, within step / 8) and open above over their whole
 // length (nothing within 4 steps, and the first thing above is a ceiling seen from below, not
 // the inside of a solid). Starts are random in the scene's bounds, dropped to the first
 // surface below (seeded: the same lines for the same scene); 4000 * count tries at most.
+// Starts above `startBelow` are not drawn: a height a little over a storey's floor keeps the
+// lines on that storey (the roofs of a tall scene would otherwise take most of them).
 std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples, float step,
-                                      std::uint64_t seed = 0x11A77ECEu);
+                                      std::uint64_t seed = 0x11A77ECEu,
+                                      float startBelow = std::numeric_limits<float>::infinity());
 
 // The residual's power at `frequency` (cycles per unit length) over the mean power 2 and 3
 // bins either side (a bin: 1 / (samples x step)), after removing its mean and linear trend and
