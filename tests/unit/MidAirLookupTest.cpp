@@ -50,7 +50,33 @@ struct MidAirError {
     int lookups = 0, changed = 0, unlit = 0;
     // Relative luminance error of the lookups that differ from the dense one (below).
     float mean = 0.0f, p90 = 0.0f, worst = 0.0f;
+    // Of those, the ones outside the dense light within one cell (below), and by how much
+    // the worst one lies outside it (relative, as the error; <= 0: inside).
+    int outsideCellRange = 0;
+    float worstBeyondCellRange = -1.0f;
 };
+
+// The dense set's luminance range over the point and the 26 points one cell away from it
+// (in the volume's axes) that lie in free space and get a lookup: how much the light itself
+// changes within the reach of a stand-in (stand-ins are at most one cell per axis away).
+struct Range {
+    float lo, hi;
+};
+Range denseRangeWithinOneCell(const RayScene& rs, const ProbeSampler& dense, const ProbeVolume& v,
+                              const glm::vec3& p, const glm::vec3& n, float centre) {
+    Range r{centre, centre};
+    for (int dz = -1; dz <= 1; ++dz)
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) {
+                const glm::vec3 q = p + v.rotation * (glm::vec3(dx, dy, dz) * v.cellSize());
+                if (insideGeometry(rs, q, v.minCellSize())) continue;
+                const IrradianceSample d = dense.sample(q, n, n);
+                if (!(d.weight > 0.0f)) continue;
+                r.lo = std::min(r.lo, luminance(d.irradiance));
+                r.hi = std::max(r.hi, luminance(d.irradiance));
+            }
+    return r;
+}
 
 // Sparse against dense at free-space points, six normals each (a dynamic object's sides). The
 // error of a lookup is relative to the dense value, or to a tenth of the scene's mean mid-air
@@ -62,6 +88,7 @@ MidAirError compareMidAir(const DenseAndSparse& b, int points) {
     const ProbeSampler dense(b.dense, 0), sparse(b.sparse, 0);
     struct Pair {
         float dense, sparse;
+        Range cell;
     };
     std::vector<Pair> filled;
     MidAirError e;
@@ -76,17 +103,24 @@ MidAirError compareMidAir(const DenseAndSparse& b, int points) {
             // A lookup whose 8 corners are all stored (or inside geometry in both) is the dense
             // lookup bit for bit; the others read stand-ins or fewer probes.
             if (s.filled == 0 && s.probes == d.probes) {
-                EXPECT_EQ(s.irradiance, d.irradiance) << "all corners stored, yet not the dense lookup";
+                EXPECT_EQ(s.irradiance, d.irradiance)
+                    << "all corners stored, yet not the dense lookup";
                 continue;
             }
-            filled.push_back({luminance(d.irradiance), luminance(s.irradiance)});
+            filled.push_back({luminance(d.irradiance), luminance(s.irradiance),
+                              denseRangeWithinOneCell(rs, dense, b.dense.volumes[0], p, n,
+                                                      luminance(d.irradiance))});
         }
     const float floor = 0.1f * float(total / std::max(e.lookups, 1));
     std::vector<float> rel;
     double sum = 0.0;
     for (const Pair& q : filled) {
-        rel.push_back(std::abs(q.sparse - q.dense) / std::max(q.dense, floor));
+        const float scale = std::max(q.dense, floor);
+        rel.push_back(std::abs(q.sparse - q.dense) / scale);
         sum += rel.back();
+        const float beyond = std::max(q.cell.lo - q.sparse, q.sparse - q.cell.hi) / scale;
+        e.worstBeyondCellRange = std::max(e.worstBeyondCellRange, beyond);
+        if (beyond > 0.15f) ++e.outsideCellRange;
     }
     e.changed = int(rel.size());
     if (rel.empty()) return e;
@@ -101,22 +135,29 @@ MidAirError compareMidAir(const DenseAndSparse& b, int points) {
 
 class MidAir : public testing::TestWithParam<const char*> {};
 
-// What holds (bench/README.md, "Mid-air lookups"): every point gets a lookup, and the lookups
-// that differ from the dense one at all are within 15% of it on average. Not each of them
-// (issue 18 asks that; not met): next to the Cornell box's ceiling panel and in the rooms'
-// doorway the irradiance changes by more than 15% between a stand-in and the probe it
-// replaces, one cell away.
-TEST_P(MidAir, EveryPointIsLitAndWithin15PercentOfTheDenseLookupOnAverage) {
+// What holds (bench/README.md, "Mid-air lookups"): every point gets a lookup; the lookups
+// that differ from the dense one at all are within 15% of it on average; and each of them is
+// within 15% of the light the dense set gives within one cell of the point - a stand-in is at
+// most one cell per axis away, so the fill is off by no more than the light changes over one
+// cell. Not within 15% of the dense lookup at the point itself everywhere (issue 18 asks that;
+// not met, bench/results/2026-11-25-mid-air-worst.md): under the Cornell box's ceiling light
+// and in the rooms' doorway the light changes by 2x within one cell, and a stand-in one cell
+// nearer the light reads that much brighter.
+TEST_P(MidAir, EveryPointIsLitAndWithin15PercentOfTheDenseLightWithinOneCell) {
     const DenseAndSparse b = bakeBoth(GetParam(), 1500);
     ASSERT_LT(b.sparse.storedCount(), b.sparse.probeCount()) << "nothing absent: vacuous";
     const MidAirError e = compareMidAir(b, 500);
     std::printf("[ mid-air ] %s: %d of %zu probes stored; %d lookups, %d differ from the dense "
-                "one: relative luminance error mean %.4f, p90 %.4f, worst %.4f; %d unlit\n",
+                "one: relative luminance error mean %.4f, p90 %.4f, worst %.4f; %d unlit; "
+                "worst beyond the dense light within one cell %.4f\n",
                 GetParam(), int(b.sparse.storedCount()), b.sparse.probeCount(), e.lookups,
-                e.changed, e.mean, e.p90, e.worst, e.unlit);
+                e.changed, e.mean, e.p90, e.worst, e.unlit, e.worstBeyondCellRange);
     EXPECT_EQ(e.unlit, 0) << "a point the dense set lights got no lookup";
     EXPECT_GT(e.changed, e.lookups / 10) << "too few lookups read stand-ins: the test is vacuous";
     EXPECT_LE(e.mean, 0.15f);
+    EXPECT_EQ(e.outsideCellRange, 0)
+        << "a lookup is off by more than 15% beyond the light within one cell of it (worst "
+        << e.worstBeyondCellRange << ")";
 }
 
 INSTANTIATE_TEST_SUITE_P(Builtin, MidAir, testing::Values("cornell", "rooms", "courtyard"));
