@@ -14,7 +14,9 @@
 //     lattice itself in cells with absent corners (a coarse volume of the lattice probes, their
 //     visibility rescaled to its range), the stored set grown by 1 or 2 probes around every
 //     surface corner (with and without that coarse lookup), the lattice alone everywhere, and
-//     stand-ins ranked with a penalty for surface-corner probes;
+//     stand-ins ranked with a penalty for surface-corner probes, and a coarse parent volume
+//     over the lattice's points baked and stored dense, read where the sparse child's cell has
+//     absent corners (stored counts: child + parent);
 //   - what growing by 1 costs in the default placement (`--volumes auto`, sparse, no lattice
 //     search): probes stored with and without it.
 //
@@ -278,6 +280,30 @@ void run(const char* name) {
     stats(
         name, "coarse lattice everywhere (ref)", changed, floor,
         [&](const Q& q) { return cs.sample(q.p, q.n, q.n); }, co.vol.probeCount(), N);
+
+    // A coarse parent volume stored dense (its own bake over the lattice's points, with its
+    // own visibility range), read where the sparse child's cell has an absent corner; the
+    // child stores its surface corners and the lattice (as kept) or the surface corners only.
+    BakeRequest pr = r;
+    pr.volumes = {co.vol};
+    const ProbeSet parent = bakeProbes(scene, pr);
+    const ProbeSampler ps(parent, 0);
+    stats(
+        name, "dense coarse parent where the child cell has absent corners", changed, floor,
+        [&](const Q& q) {
+            return anyFillable(sparse, q.p) ? ps.sample(q.p, q.n, q.n) : ss.sample(q.p, q.n, q.n);
+        },
+        sparse.storedCount() + parent.storedCount(), N);
+    ProbeSet surfaceOnly = dense;
+    storeOnly(surfaceOnly, {surfaceCornerProbes(v, true, tris)});
+    const ProbeSampler so(surfaceOnly, 0);
+    stats(
+        name, "dense coarse parent + child of surface corners only", changed, floor,
+        [&](const Q& q) {
+            return anyFillable(surfaceOnly, q.p) ? ps.sample(q.p, q.n, q.n)
+                                                 : so.sample(q.p, q.n, q.n);
+        },
+        surfaceOnly.storedCount() + parent.storedCount(), N);
 }
 
 } // namespace
