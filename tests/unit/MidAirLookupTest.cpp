@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <gtest/gtest.h>
+#include <limits>
 
 using namespace pb::probes;
 
@@ -50,51 +51,62 @@ struct MidAirError {
     int lookups = 0, changed = 0, unlit = 0;
     // Relative luminance error of the lookups that differ from the dense one (below).
     float mean = 0.0f, p90 = 0.0f, worst = 0.0f;
-    // Of those, the ones outside the dense light within one cell (below), and by how much
-    // the worst one lies outside it (relative, as the error; <= 0: inside).
-    int outsideCellRange = 0;
-    float worstBeyondCellRange = -1.0f;
+    // Of those, the ones more than 15% outside the dense light within the stand-ins' reach
+    // (below), and by how much the worst one lies outside it (relative, as the error; <= 0:
+    // inside).
+    int outsideReach = 0;
+    float worstBeyondReach = -1.0f;
 };
 
-// The dense set's luminance range over the point and the 26 points one cell away from it
-// (in the volume's axes) that lie in free space and get a lookup: how much the light itself
-// changes within the reach of a stand-in (stand-ins are at most one cell per axis away).
+// How far from a point the probes its lookup reads can lie, in cells per axis: a corner of its
+// cell is at most one cell away, and a stand-in at most one cell per axis from the corner it
+// replaces (the nearest stored probe; the step-2 lattice has one that near).
+constexpr int kStandInReachCells = 2;
+
+// The free-space points on the grid of cell steps around `p` within that reach (p included):
+// where the dense set's own light is compared with what the sparse lookup read.
+std::vector<glm::vec3> freeSpaceNeighbours(const RayScene& rs, const ProbeVolume& v,
+                                           const glm::vec3& p) {
+    std::vector<glm::vec3> out{p};
+    const int r = kStandInReachCells;
+    for (int dz = -r; dz <= r; ++dz)
+        for (int dy = -r; dy <= r; ++dy)
+            for (int dx = -r; dx <= r; ++dx) {
+                const glm::vec3 q = p + v.rotation * (glm::vec3(dx, dy, dz) * v.cellSize());
+                if ((dx || dy || dz) && !insideGeometry(rs, q, v.minCellSize())) out.push_back(q);
+            }
+    return out;
+}
+
+// The dense set's luminance range over those points (the lookups with weight).
 struct Range {
     float lo, hi;
 };
-Range denseRangeWithinOneCell(const RayScene& rs, const ProbeSampler& dense, const ProbeVolume& v,
-                              const glm::vec3& p, const glm::vec3& n, float centre) {
-    Range r{centre, centre};
-    for (int dz = -1; dz <= 1; ++dz)
-        for (int dy = -1; dy <= 1; ++dy)
-            for (int dx = -1; dx <= 1; ++dx) {
-                const glm::vec3 q = p + v.rotation * (glm::vec3(dx, dy, dz) * v.cellSize());
-                if (insideGeometry(rs, q, v.minCellSize())) continue;
-                const IrradianceSample d = dense.sample(q, n, n);
-                if (!(d.weight > 0.0f)) continue;
-                r.lo = std::min(r.lo, luminance(d.irradiance));
-                r.hi = std::max(r.hi, luminance(d.irradiance));
-            }
+Range denseRange(const ProbeSampler& dense, const std::vector<glm::vec3>& points,
+                 const glm::vec3& n) {
+    Range r{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
+    for (const glm::vec3& q : points) {
+        const IrradianceSample d = dense.sample(q, n, n);
+        if (!(d.weight > 0.0f)) continue;
+        r.lo = std::min(r.lo, luminance(d.irradiance));
+        r.hi = std::max(r.hi, luminance(d.irradiance));
+    }
     return r;
 }
 
-// Sparse against dense at free-space points, six normals each (a dynamic object's sides). The
-// error of a lookup is relative to the dense value, or to a tenth of the scene's mean mid-air
-// irradiance where the dense value is darker than that: in the rooms' dark room the dense
-// bake's own probes carry more noise than 15% (the bake summary's p95 noise is ~38% there),
-// so a relative error of a near-black value measures the bake's noise, not the fill.
 MidAirError compareMidAir(const DenseAndSparse& b, int points) {
     const RayScene rs(b.scene);
     const ProbeSampler dense(b.dense, 0), sparse(b.sparse, 0);
     struct Pair {
         float dense, sparse;
-        Range cell;
+        Range reach; // the dense light within the stand-ins' reach
     };
     std::vector<Pair> filled;
     MidAirError e;
     double total = 0.0;
     for (const glm::vec3& p :
-         midAirSamples(rs, b.dense.volumes, points, b.dense.volumes[0].minCellSize()))
+         midAirSamples(rs, b.dense.volumes, points, b.dense.volumes[0].minCellSize())) {
+        std::vector<glm::vec3> around; // computed for the first lookup that needs it
         for (const glm::vec3& n : kAxes) {
             const IrradianceSample d = dense.sample(p, n, n), s = sparse.sample(p, n, n);
             ++e.lookups;
@@ -107,10 +119,11 @@ MidAirError compareMidAir(const DenseAndSparse& b, int points) {
                     << "all corners stored, yet not the dense lookup";
                 continue;
             }
-            filled.push_back({luminance(d.irradiance), luminance(s.irradiance),
-                              denseRangeWithinOneCell(rs, dense, b.dense.volumes[0], p, n,
-                                                      luminance(d.irradiance))});
+            if (around.empty()) around = freeSpaceNeighbours(rs, b.dense.volumes[0], p);
+            filled.push_back(
+                {luminance(d.irradiance), luminance(s.irradiance), denseRange(dense, around, n)});
         }
+    }
     const float floor = 0.1f * float(total / std::max(e.lookups, 1));
     std::vector<float> rel;
     double sum = 0.0;
@@ -118,9 +131,9 @@ MidAirError compareMidAir(const DenseAndSparse& b, int points) {
         const float scale = std::max(q.dense, floor);
         rel.push_back(std::abs(q.sparse - q.dense) / scale);
         sum += rel.back();
-        const float beyond = std::max(q.cell.lo - q.sparse, q.sparse - q.cell.hi) / scale;
-        e.worstBeyondCellRange = std::max(e.worstBeyondCellRange, beyond);
-        if (beyond > 0.15f) ++e.outsideCellRange;
+        const float beyond = std::max(q.reach.lo - q.sparse, q.sparse - q.reach.hi) / scale;
+        e.worstBeyondReach = std::max(e.worstBeyondReach, beyond);
+        if (beyond > 0.15f) ++e.outsideReach;
     }
     e.changed = int(rel.size());
     if (rel.empty()) return e;
@@ -136,28 +149,28 @@ MidAirError compareMidAir(const DenseAndSparse& b, int points) {
 class MidAir : public testing::TestWithParam<const char*> {};
 
 // What holds (bench/README.md, "Mid-air lookups"): every point gets a lookup; the lookups
-// that differ from the dense one at all are within 15% of it on average; and each of them is
-// within 15% of the light the dense set gives within one cell of the point - a stand-in is at
-// most one cell per axis away, so the fill is off by no more than the light changes over one
-// cell. Not within 15% of the dense lookup at the point itself everywhere (issue 18 asks that;
-// not met, bench/results/2026-11-25-mid-air-worst.md): under the Cornell box's ceiling light
-// and in the rooms' doorway the light changes by 2x within one cell, and a stand-in one cell
-// nearer the light reads that much brighter.
-TEST_P(MidAir, EveryPointIsLitAndWithin15PercentOfTheDenseLightWithinOneCell) {
+// that differ from the dense one at all are within 15% of it on average; and none lies more
+// than 15% outside the light the dense set itself gives within the stand-ins' reach of the
+// point (two cells per axis): the fill is off by no more than the light changes over the
+// distance it reads from. Not within 15% of the dense lookup at the point itself everywhere
+// (issue 18 asks that; not met, bench/results/2026-11-25-mid-air-worst.md): under the Cornell
+// box's ceiling light and in the rooms' doorway the light changes by 2x within a cell, and a
+// stand-in one cell nearer the light reads that much brighter.
+TEST_P(MidAir, EveryPointIsLitAndWithin15PercentOfTheDenseLightWithinReach) {
     const DenseAndSparse b = bakeBoth(GetParam(), 1500);
     ASSERT_LT(b.sparse.storedCount(), b.sparse.probeCount()) << "nothing absent: vacuous";
     const MidAirError e = compareMidAir(b, 500);
     std::printf("[ mid-air ] %s: %d of %zu probes stored; %d lookups, %d differ from the dense "
                 "one: relative luminance error mean %.4f, p90 %.4f, worst %.4f; %d unlit; "
-                "worst beyond the dense light within one cell %.4f\n",
+                "worst beyond the dense light within reach %.4f\n",
                 GetParam(), int(b.sparse.storedCount()), b.sparse.probeCount(), e.lookups,
-                e.changed, e.mean, e.p90, e.worst, e.unlit, e.worstBeyondCellRange);
+                e.changed, e.mean, e.p90, e.worst, e.unlit, e.worstBeyondReach);
     EXPECT_EQ(e.unlit, 0) << "a point the dense set lights got no lookup";
     EXPECT_GT(e.changed, e.lookups / 10) << "too few lookups read stand-ins: the test is vacuous";
     EXPECT_LE(e.mean, 0.15f);
-    EXPECT_EQ(e.outsideCellRange, 0)
-        << "a lookup is off by more than 15% beyond the light within one cell of it (worst "
-        << e.worstBeyondCellRange << ")";
+    EXPECT_EQ(e.outsideReach, 0)
+        << "a lookup is off by more than 15% beyond the dense light within reach (worst "
+        << e.worstBeyondReach << ")";
 }
 
 INSTANTIATE_TEST_SUITE_P(Builtin, MidAir, testing::Values("cornell", "rooms", "courtyard"));
