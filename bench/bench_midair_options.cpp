@@ -235,8 +235,6 @@ void run(const char* name) {
             return anyFillable(sparse, q.p) ? cs.sample(q.p, q.n, q.n) : ss.sample(q.p, q.n, q.n);
         },
         sparse.storedCount(), N);
-    // 2b. Coarse parent dense: the same lattice, but from a separate dense bake's probes would
-    // be the same probes; the parent baked with its own max distance is not modelled here.
 
     // 3. Grow: keep every probe within g steps of a surface corner.
     for (int grow = 1; grow <= 2; ++grow) {
