@@ -3,23 +3,23 @@
 #include "probes/ShIrradiance.h"
 
 #include "core/Error.h"
+#include "core/ParallelFor.h"
+#include "probes/StorageScale.h"
 #include "probes/bake/BakeOrigin.h"
 #include "probes/bake/BakePhaseClock.h"
 #include "probes/bake/GeometryPass.h"
-#include "probes/bake/NestingBlend.h"
 #include "probes/bake/LitSurfaces.h"
+#include "probes/bake/NestingBlend.h"
 #include "probes/bake/NoiseRounds.h"
-#include "core/ParallelFor.h"
 #include "probes/bake/RadiancePass.h"
 #include "probes/bake/RayDirections.h"
 #include "probes/bake/RayScene.h"
 #include "probes/store/SparseStorage.h"
-#include "probes/StorageScale.h"
 
 #include <algorithm>
 #include <chrono>
-#include <memory>
 #include <cmath>
+#include <memory>
 #include <numeric>
 #include <optional>
 
@@ -200,8 +200,7 @@ struct RadianceMask {
         if (run.req.sparse) {
             const std::vector<WorldTriangle> triangles = staticBakeTriangles(run.scene);
             for (size_t v = 0; v < run.set.volumes.size(); ++v)
-                keep.push_back(
-                    sparseKeptProbes(run.set.volumes[v], run.parents[v] < 0, triangles));
+                keep.push_back(sparseKeptProbes(run.set.volumes[v], run.parents[v] < 0, triangles));
         }
         for (int p : run.parents)
             if (p >= 0) isParent[size_t(p)] = true;
@@ -414,16 +413,6 @@ std::vector<QuantisationError> quantiseSet(ProbeSet& set, StorageFormat format, 
     return errors;
 }
 
-// Probes sparse storage left out hold no light, in SH as in their (zeroed) tiles.
-void zeroAbsentSh(ProbeSet& set) {
-    for (auto& sc : set.sh)
-        for (std::size_t v = 0; v < sc.size(); ++v)
-            for (std::size_t p = 0; p < set.states[v].size(); ++p)
-                if (!set.states[v][p].stored)
-                    std::fill_n(sc[v].begin() + std::ptrdiff_t(p * kShL2Coefficients),
-                                kShL2Coefficients, glm::vec3(0.0f));
-}
-
 std::vector<std::size_t> invalidPerVolume(const ProbeSet& set) {
     std::vector<std::size_t> invalid;
     for (const auto& vs : set.states)
@@ -493,8 +482,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     std::vector<QuantisationError> errors = quantiseSet(run.set, req.settings.format, threads);
     // Invalid as baked, before sparse storage marks its absent probes invalid too.
     std::vector<std::size_t> bakedInvalid = invalidPerVolume(run.set);
-    if (req.sparse) storeOnly(run.set, mask.keep);
-    zeroAbsentSh(run.set);
+    if (req.sparse) storeOnly(run.set, mask.keep); // zeroes the absent probes' SH too
 
     if (statsOut) {
         BakeStats st = countStats(run, std::move(bakedInvalid));
