@@ -23,8 +23,8 @@ TextureTable makeTextureTable(int gbufferWidth, int gbufferHeight, const probes:
                               int shCoefficientTextures) {
     TextureTable t;
     std::uint64_t next = kTextureAlignment; // address 0 left unused
-    auto add = [&](int w, int h, int layers, int block, int bytes) {
-        t.textures.emplace_back(next, w, h, layers, block, bytes, layout);
+    auto add = [&](int w, int h, int layers, int block, int bytes, bool volume = false) {
+        t.textures.emplace_back(next, w, h, layers, block, bytes, layout, volume);
         next = t.textures.back().end();
         return int(t.textures.size()) - 1;
     };
@@ -37,8 +37,8 @@ TextureTable makeTextureTable(int gbufferWidth, int gbufferHeight, const probes:
         TextureTable::Volume vol;
         if (shCoefficientTextures > 0) {
             for (int k = 0; k < shCoefficientTextures; ++k)
-                vol.sh.push_back(add(n.x, n.z, n.y, 1, 8));
-            vol.shMask = add(n.x, n.z, n.y, 1, 1);
+                vol.sh.push_back(add(n.x, n.z, n.y, 1, 8, true));
+            vol.shMask = add(n.x, n.z, n.y, 1, 1, true);
             t.volumes.push_back(vol);
             continue;
         }

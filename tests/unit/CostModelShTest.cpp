@@ -6,6 +6,7 @@
 #include "costmodel/CachePresets.h"
 #include "costmodel/CostModel.h"
 #include "costmodel/ShFetchStream.h"
+#include "costmodel/TextureMemory.h"
 #include "probes/StaticTriangles.h"
 #include "probes/bake/Baker.h"
 #include "probes/placement/AutoVolume.h"
@@ -14,6 +15,7 @@
 
 #include <cstdio>
 #include <gtest/gtest.h>
+#include <set>
 
 using namespace pb;
 using namespace pb::costmodel;
@@ -120,4 +122,31 @@ TEST(CostModelSh, EachLookupReadsEightTexelsPerCoefficientTexturePlusTheMask) {
                       std::uint64_t(baked().set.volumes[0].probeCount()) *
                           probes::shGpuBytesPerProbe(textures == 3 ? 4 : 9));
         }
+}
+
+// The 3D textures' tiled layout: 4 KiB bricks in 3D Morton order, so an aligned 2x2x2
+// footprint of 8-byte texels is one 64-byte line, and every texel has its own address inside
+// the texture.
+TEST(CostModelSh, VolumeTexturesAreTiledInBricks) {
+    const TextureMemory m(kTextureAlignment, 20, 12, 9, 1, 8, MemoryLayout::Tiled, true);
+    std::set<std::uint64_t> seen;
+    for (int l = 0; l < 9; ++l)
+        for (int y = 0; y < 12; ++y)
+            for (int x = 0; x < 20; ++x) {
+                const std::uint64_t a = m.address(x, y, l);
+                EXPECT_GE(a, m.base());
+                EXPECT_LT(a + 8, m.base() + m.bytes() + 1);
+                EXPECT_TRUE(seen.insert(a).second) << x << " " << y << " " << l;
+            }
+    for (int l = 0; l + 1 < 9; l += 2)
+        for (int y = 0; y + 1 < 12; y += 2)
+            for (int x = 0; x + 1 < 20; x += 2) {
+                std::set<std::uint64_t> lines;
+                for (int c = 0; c < 8; ++c)
+                    lines.insert(m.address(x + (c & 1), y + (c >> 1 & 1), l + (c >> 2)) / 64);
+                EXPECT_EQ(lines.size(), 1u) << x << " " << y << " " << l;
+            }
+    // 2D textures keep one tile per layer: the same footprint spans two lines at least.
+    const TextureMemory flat(kTextureAlignment, 20, 12, 9, 1, 8, MemoryLayout::Tiled);
+    EXPECT_NE(flat.address(0, 0, 0) / 64, flat.address(0, 0, 1) / 64);
 }
