@@ -9,6 +9,7 @@
 #include "probes/ShIrradiance.h"
 #include "probes/bake/Baker.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <gtest/gtest.h>
@@ -74,4 +75,52 @@ TEST(ShRayProjection, BakedShIsTheRaySamplesProjectionOfAHalfSky) {
     // One ray of 256 is 0.8% of c00 per coefficient: about a ray per coefficient at most.
     EXPECT_LT(rays, 0.1);
     EXPECT_LT(rays, maps) << "the map projection was closer: the rays are not what is stored";
+}
+
+// A nested child's outer ring is blended towards the parent on the map after the rays
+// (NestingBlend.h), so those probes - and only those - store the map's projection of their
+// final tile; every other probe stores its rays' projection.
+TEST(ShRayProjection, BlendedRingProbesTakeTheMapProjection) {
+    const pb::scene::Scene s = pb::test::sunlitFloor();
+    BakeRequest r;
+    ProbeVolume root, child;
+    root.name = "root";
+    root.center = {0, 1, 0};
+    root.halfExtents = {2, 0.9f, 2};
+    root.counts = {4, 2, 4};
+    child.name = "child";
+    child.parent = "root";
+    child.center = {0, 1, 0};
+    child.halfExtents = {1, 0.6f, 1};
+    child.counts = {4, 3, 4};
+    r.volumes = {root, child};
+    r.scenarios = resolveScenarios({"day"}, {}, s);
+    r.settings.raysPerProbe = 64;
+    const ProbeSet set = bakeProbes(s, r);
+    const ProbeVolume& v = set.volumes[1];
+    int ring = 0, inner = 0;
+    for (int p = 0; p < v.probeCount(); ++p) {
+        const glm::ivec3 c = v.probeCoords(p);
+        const ProbeState& st = set.states[1][size_t(p)];
+        if (!st.valid) continue;
+        // The stored map is quantised to RGBA16F after the SH were taken: a match is within
+        // half-float rounding (2^-11 relative per texel, and the SH's own), well below 2e-3;
+        // 64 rays and the map's filtering differ by more than twice that.
+        const ShCoefficients map = projectIrradianceTile(c, set.irradiance[0][1]);
+        double diff = 0;
+        for (int k = 0; k < kShL2Coefficients; ++k)
+            diff = std::max(diff, double(glm::length(set.sh[0][1][size_t(p) * 9 + size_t(k)] -
+                                                     map[size_t(k)])));
+        diff /= std::max(double(glm::length(map[0])), 1e-6);
+        const bool blended = c.x == 0 || c.x == 3 || c.y == 0 || c.y == 2 || c.z == 0 || c.z == 3;
+        if (blended && st.offset == glm::vec3(0.0f)) {
+            ++ring;
+            EXPECT_LT(diff, 2e-3) << "ring probe " << p;
+        } else if (!blended) {
+            ++inner;
+            EXPECT_GT(diff, 4e-3) << "inner probe " << p << " stores the map's projection";
+        }
+    }
+    EXPECT_GT(ring, 10);
+    EXPECT_GT(inner, 1);
 }
