@@ -51,6 +51,8 @@ ShSampler::ShSampler(const ProbeSet& set, int scenario, const std::string& sourc
         f.volume = &vol;
         f.lookup = shLookupVolume(vol, set.states[v], set.sh[size_t(scenario)][v],
                                   set.settings.backfaceThreshold);
+        for (int p = 0; p < vol.probeCount(); ++p)
+            f.apv.push_back(encodeApv(&f.lookup.sh[size_t(p) * kShL2Coefficients]));
         f.toLocal = glm::transpose(vol.localToWorldRotation());
         const glm::vec3 cell = vol.cellSize();
         for (int a = 0; a < 3; ++a)
@@ -149,6 +151,7 @@ IrradianceSample ShSampler::sampleVolume(int vi, const glm::vec3& pos, const glm
         trace->lattice = glm::vec3(base) + frac;
     }
     glm::vec3 sum[kShL2Coefficients] = {};
+    ShApvTexels apv;
     float sumW = 0.0f;
     for (int c = 0; c < 8; ++c) {
         float w = 1.0f;
@@ -158,8 +161,14 @@ IrradianceSample ShSampler::sampleVolume(int vi, const glm::vec3& pos, const glm
         if (w == 0.0f) continue;
         const glm::vec3* src =
             f.lookup.sh.data() + std::size_t(vol.probeIndex(corner(c))) * kShL2Coefficients;
-        for (int k = 0; k < opt.coefficients; ++k)
+        for (int k = opt.apv ? kShL1Coefficients : 0; k < opt.coefficients; ++k)
             sum[k] += src[k] * w;
+        if (opt.apv) {
+            const ShApvTexels& t = f.apv[size_t(vol.probeIndex(corner(c)))];
+            apv.t0 += t.t0 * w;
+            apv.t1 += t.t1 * w;
+            apv.t2 += t.t2 * w;
+        }
         sumW += w;
         ++out.probes;
     }
@@ -167,7 +176,11 @@ IrradianceSample ShSampler::sampleVolume(int vi, const glm::vec3& pos, const glm
         if (!(sumW > 0.0f)) return {};
         for (int k = 0; k < opt.coefficients; ++k)
             sum[k] /= sumW;
+        apv.t0 /= sumW;
+        apv.t1 /= sumW;
+        apv.t2 /= sumW;
     }
+    if (opt.apv) decodeApv(apv, sum);
     // 5. Irradiance, faded.
     out.irradiance = shIrradiance(sum, n, opt.coefficients) * fade;
     out.weight = fade;

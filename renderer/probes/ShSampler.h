@@ -22,6 +22,7 @@
 // No visibility test: this is the leak the testbed measures against DDGI.
 #include "probes/ProbeSampler.h"
 #include "probes/ShAbsentFill.h"
+#include "probes/ShApvEncoding.h"
 #include "probes/ShIrradiance.h"
 
 #include <cstdint>
@@ -36,6 +37,9 @@ struct ShSampleOptions {
     int coefficients = kShL1Coefficients; // 4: sh_l1, 9: sh_l2
     ShLeak leak = ShLeak::None;
     bool edgeFade = true;
+    // L1 as the APV encoding stores it (ShApvEncoding.h): blend the encoded texels, decode
+    // with the blended L0. CPU only (no switch, no GPU path): measures the encoding's error.
+    bool apv = false;
 };
 
 // The trilinear fractions moved the least (sum of |moves|, ties: first in x, y, z order of
@@ -69,7 +73,8 @@ public:
 private:
     struct Frame {
         const ProbeVolume* volume;
-        ShLookupVolume lookup; // states and coefficients with absent probes filled
+        ShLookupVolume lookup;        // states and coefficients with absent probes filled
+        std::vector<ShApvTexels> apv; // lookup.sh's L1 encoded, per probe
         glm::mat3 toLocal;
         glm::vec3 invCell, fadeWidth;
         float minCell, boxVolume;
