@@ -160,8 +160,8 @@ TEST(BenchReport, CacheModelSectionShowsAnShProfilesStreamInItsOwnColumn) {
     CacheModelEntry ddgi{
         "reference", "pc-high: 128 KiB, 128 B lines, 16-way", 512, 288, "xyz/fused", {}};
     ddgi.variants = {{"xyz/fused", 0.9950, 10.0}};
-    CacheModelEntry sh{
-        "sh-l1", "pc-high: 128 KiB, 128 B lines, 16-way", 512, 288, "sh_l1/weight", {}};
+    CacheModelEntry sh{"sh-l1", "pc-high: 128 KiB, 128 B lines, 16-way", 512, 288, "sh_l1/weight",
+                       {}};
     sh.variants = {{"sh_l1/weight", 0.9900, 2.5}};
     r.cacheModel = {ddgi, sh};
     const std::string md = markdownSummary(r);
