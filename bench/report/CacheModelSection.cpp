@@ -20,6 +20,19 @@ std::string cellText(const CacheModelEntry& e, const char* variant) {
     return buf;
 }
 
+// An SH profile's one stream (CostModel.h: named "technique/leak"), "n/a" for DDGI profiles.
+std::string shCellText(const CacheModelEntry& e) {
+    for (const CacheModelVariant& v : e.variants)
+        if (v.variant.rfind("sh_", 0) == 0) {
+            char buf[96];
+            std::snprintf(buf, sizeof buf, "%s: %.2f%% / %.1f%s", v.variant.c_str(),
+                          100 * v.hitRate, v.bytesMissedPerPixel,
+                          e.profileVariant == v.variant ? " *" : "");
+            return buf;
+        }
+    return "n/a";
+}
+
 // Relative change of bytes missed from variant a to b ("-4.1%"), "n/a" without both.
 std::string change(const CacheModelEntry& e, const char* a, const char* b) {
     const CacheModelVariant *va = e.find(a), *vb = e.find(b);
@@ -33,7 +46,9 @@ std::string change(const CacheModelEntry& e, const char* a, const char* b) {
 const char* kIntro =
     "Probe-texture hit rate / bytes missed per GI pixel in the cost model (renderer/costmodel: "
     "each variant's texel addresses, 8x8 tiles of 2x2 quads, warps of 32, through the "
-    "profile's cache preset; * = the profile's variant). Hardware-independent; not a timing.";
+    "profile's cache preset; * = the profile's variant; SH profiles: their one stream, one "
+    "trilinear 3D fetch per coefficient texture + the mask). Hardware-independent; not a "
+    "timing.";
 
 } // namespace
 
@@ -67,11 +82,13 @@ std::string cacheModelMarkdown(const std::vector<CacheModelEntry>& entries) {
     out << "\nTexture-cache model: " << kIntro << "\n\n| profile | cache |";
     for (const char* v : kVariants)
         out << " " << v << " |";
-    out << " slice_first vs xyz | split vs fused |\n|---|---|---|---|---|---|---|---|\n";
+    out << " SH (gi.technique/gi.sh_leak) | slice_first vs xyz | split vs fused |\n"
+        << "|---|---|---|---|---|---|---|---|---|\n";
     for (const CacheModelEntry& e : entries) {
         out << "| " << e.profile << " | " << e.cache << " |";
         for (const char* v : kVariants)
             out << " " << cellText(e, v) << " |";
+        out << " " << shCellText(e) << " |";
         out << " " << change(e, "xyz/fused", "slice_first/fused") << " | "
             << change(e, "xyz/fused", "xyz/split") << " |\n";
     }
@@ -87,12 +104,14 @@ std::string cacheModelHtml(const std::vector<CacheModelEntry>& entries) {
       << "<table id=\"cache-model\"><tr><th class=\"l\">profile</th><th class=\"l\">cache</th>";
     for (const char* v : kVariants)
         h << "<th>" << v << "</th>";
-    h << "<th>slice_first vs xyz</th><th>split vs fused</th></tr>\n";
+    h << "<th>SH (gi.technique/gi.sh_leak)</th><th>slice_first vs xyz</th><th>split vs "
+         "fused</th></tr>\n";
     for (const CacheModelEntry& e : entries) {
         h << "<tr><td class=\"l\">" << htmlEscape(e.profile) << "</td><td class=\"l\">"
           << htmlEscape(e.cache) << "</td>";
         for (const char* v : kVariants)
             h << "<td>" << htmlEscape(cellText(e, v)) << "</td>";
+        h << "<td>" << htmlEscape(shCellText(e)) << "</td>";
         h << "<td>" << change(e, "xyz/fused", "slice_first/fused") << "</td><td>"
           << change(e, "xyz/fused", "xyz/split") << "</td></tr>\n";
     }

@@ -17,14 +17,6 @@ cacheModelEntries(const BenchPlan& plan, const scene::Scene& scene, const probes
     std::vector<CacheModelEntry> out;
     for (const Session& s : plan.sessions) {
         const profile::PlatformProfile& p = s.profile;
-        // The model replays DDGI's fetches; the SH technique's (one trilinear 3D fetch per
-        // texture) are not modelled yet, and a DDGI replay would misreport them: left out.
-        if (p.switches.gi.technique != profile::GiTechnique::Ddgi) {
-            if (progress)
-                progress("texture-cache model of " + p.name + ": left out (" +
-                         p.switches.get("gi.technique") + " is not modelled, only ddgi)");
-            continue;
-        }
         if (progress) progress("texture-cache model of " + p.name);
         auto& tester = testers[p.switches.gi.volumeLod];
         if (!tester) {

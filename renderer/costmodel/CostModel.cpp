@@ -1,14 +1,18 @@
 #include "costmodel/CostModel.h"
 
 #include "core/Error.h"
+#include "core/ParallelFor.h"
 #include "costmodel/CachePresets.h"
 #include "costmodel/FetchStream.h"
-#include "profile/GiVolumeLod.h"
 #include "costmodel/PixelOrder.h"
-#include "core/ParallelFor.h"
+#include "costmodel/ShFetchStream.h"
 #include "probes/ProbeSampler.h"
+#include "probes/ShIrradiance.h"
+#include "probes/ShSampler.h"
+#include "profile/GiVolumeLod.h"
 
 #include <algorithm>
+#include <optional>
 
 namespace pb::costmodel {
 
@@ -16,6 +20,7 @@ namespace {
 
 constexpr int kGBufferTexturesBound = 5; // passes/GBufferLayout.h: 4 channels + depth
 constexpr int kUnitsUnbound = 8;         // GiApplyPass: units 0 .. kFirstProbeUnit + 2
+constexpr int kShUnitsBound = 8;         // GpuProbes::kShUnitsPerVolume
 constexpr std::size_t kChunkMin = 4096;  // pixels traced per step (bounds memory)
 
 int targetBytes(profile::GiTargetFormat f) {
@@ -35,7 +40,8 @@ int targetBytes(profile::GiTargetFormat f) {
 // reads of the fragments the influence test discards are not modelled, README.md).
 struct Lookup {
     enum Stage : std::uint8_t { Skipped, Sky, Outside, Evaluated } stage = Sky;
-    probes::SampleTrace trace;
+    probes::SampleTrace trace; // DDGI
+    probes::ShTrace sh;        // gi.technique=sh_*
 };
 
 void countLookup(const Lookup& l, const std::vector<Fetch>& fetches, const TextureTable& table,
@@ -54,11 +60,14 @@ void countLookup(const Lookup& l, const std::vector<Fetch>& fetches, const Textu
     }
     ++c.normalFetches;
     ++c.evaluated;
-    if (!l.trace.probesRead) ++c.fadedOut;
+    if (!l.trace.probesRead && !l.sh.maskRead && !l.sh.coefficientsRead) ++c.fadedOut;
     for (const Fetch& f : fetches) {
         c.stateFetches += f.kind == FetchKind::ProbeState;
         c.visibilityFetches += f.kind == FetchKind::Visibility;
         c.irradianceFetches += f.kind == FetchKind::Irradiance;
+        c.shMaskFetches += f.kind == FetchKind::ShMask;
+        c.shCoefficientFetches += f.kind == FetchKind::ShCoefficients;
+        c.probeTexels += std::uint64_t(nominalTexels(f));
         c.probeFootprintBytes += footprintBytes(f, table);
     }
 }
@@ -76,13 +85,24 @@ double CacheResult::allBytesMissedPerPixel(std::uint64_t giPixels) const {
     return giPixels ? double(misses) * cache.lineBytes / double(giPixels) : 0.0;
 }
 
+// One lookup's probe fetches: the DDGI variant's (`vs`) or, without one, the SH technique's.
+void appendLookupFetches(const Lookup& l, const VariantStructure* vs,
+                         const TextureTable::Volume& tex, const glm::ivec3& counts,
+                         std::vector<Fetch>& out) {
+    if (vs)
+        appendProbeFetches(l.trace, *vs, tex, out);
+    else
+        appendShFetches(l.sh, tex, counts, out);
+}
+
 // Replays `n` lookups through one cache as SIMT groups issue them: per group of
-// warpsInFlight warps, instruction slot by slot, warp by warp, pixel by pixel.
-void replayChunk(CacheReplay& replay, const VariantStructure& vs, const TextureTable& table,
-                 const TextureTable::Volume& tex, const Lookup* lookups,
+// warpsInFlight warps, instruction slot by slot, warp by warp, pixel by pixel. `vs`: the DDGI
+// variant; null: the SH technique (ShFetchStream.h) on a volume of `counts` probes.
+void replayChunk(CacheReplay& replay, const VariantStructure* vs, const TextureTable& table,
+                 const TextureTable::Volume& tex, const glm::ivec3& counts, const Lookup* lookups,
                  const glm::ivec2* gbufferPx, size_t n, int warpPixels, int warpsInFlight) {
     const size_t group = size_t(warpPixels) * size_t(warpsInFlight);
-    const int slots = fetchSlotCount(vs);
+    const int slots = vs ? fetchSlotCount(*vs) : shFetchSlotCount(int(tex.sh.size()));
     std::vector<std::vector<Fetch>> pixel(group);
     std::vector<size_t> next(group);
     for (size_t g = 0; g < n; g += group) {
@@ -97,7 +117,7 @@ void replayChunk(CacheReplay& replay, const VariantStructure& vs, const TextureT
             if (lookups[g + i].stage == Lookup::Evaluated) {
                 f.push_back(
                     {FetchKind::GBufferNormal, table.gbufferNormal, px.x, px.y, 0, false, 1});
-                appendProbeFetches(lookups[g + i].trace, vs, tex, f);
+                appendLookupFetches(lookups[g + i], vs, tex, counts, f);
             }
         }
         // Warps interleave per instruction (slot); inside a warp, pixels in order.
@@ -110,6 +130,11 @@ void replayChunk(CacheReplay& replay, const VariantStructure& vs, const TextureT
 
 namespace {
 
+// The SH technique's one fetch stream, named by technique and leak mode ("sh_l1/weight").
+std::string shVariantName(const profile::Profile& p) {
+    return p.get("gi.technique") + "/" + p.get("gi.sh_leak");
+}
+
 // The report's header: what was modelled.
 CostReport describeRun(const CostModelOptions& o, const probes::ProbeSet& set) {
     CostReport r;
@@ -119,7 +144,9 @@ CostReport describeRun(const CostModelOptions& o, const probes::ProbeSet& set) {
     r.tile = o.tile;
     r.warpPixels = o.warpPixels;
     r.warpsInFlight = o.warpsInFlight;
-    r.profileVariant = GiVariant{o.profile.gi.probeOrder, o.profile.gi.loops}.name();
+    r.profileVariant = shCoefficientTextures(o.profile.gi.technique) > 0
+                           ? shVariantName(o.profile)
+                           : GiVariant{o.profile.gi.probeOrder, o.profile.gi.loops}.name();
     return r;
 }
 
@@ -147,17 +174,24 @@ public:
         : view_(view), o_(o), set_(tester.probes()), caches_(caches), c_(c),
           kept_(profile::selectVolumes(set_, profile::parseVolumeLod(o.profile.gi.volumeLod))),
           stencil_(o.profile.gi.multiVolume == profile::GiMultiVolume::Stencil),
-          shFlags_(o.profile.gi.dynamic == profile::GiDynamic::Sh), sampler_(set_, o.scenario),
-          table_(makeTextureTable(o.width, o.height, set_, kept_, o.layout)),
-          variants_(allGiVariants()) {
+          shFlags_(o.profile.gi.dynamic == profile::GiDynamic::Sh),
+          shTextures_(shCoefficientTextures(o.profile.gi.technique)), sampler_(set_, o.scenario),
+          table_(makeTextureTable(o.width, o.height, set_, kept_, o.layout, shTextures_)) {
         const size_t group = size_t(o.warpPixels) * size_t(o.warpsInFlight);
         chunk_ = (kChunkMin + group - 1) / group * group;
         orderVolumes();
         shadingPixels(tester);
-        for (const GiVariant& v : variants_)
-            structures_.push_back(variantStructure(v));
-        replays_.reserve(variants_.size() * caches_.size()); // variant-major: variants x caches
-        for (size_t v = 0; v < variants_.size(); ++v)
+        if (shTextures_ > 0) {
+            shSampler_.emplace(set_, o.scenario, "cost model");
+            shOptions_ = shSampleOptions(o.profile);
+            variantNames_.push_back(shVariantName(o.profile));
+        } else
+            for (const GiVariant& v : allGiVariants()) {
+                variantNames_.push_back(v.name());
+                structures_.push_back(variantStructure(v));
+            }
+        replays_.reserve(variantNames_.size() * caches_.size()); // variant-major
+        for (size_t v = 0; v < variantNames_.size(); ++v)
             for (const CacheConfig& cfg : caches_)
                 replays_.emplace_back(cfg, table_);
         covered_.assign(order_.size(), 0);
@@ -180,6 +214,12 @@ public:
         if (stencil_) {
             c_.drawCalls = c_.programBinds = c_.textureBinds = c_.textureUnbinds = -1;
             c_.depthCopyFetches = c_.targetPixels; // gi_depth_copy.frag: one depth read per texel
+        } else if (shTextures_ > 0) {
+            // GpuProbes::bindVolume: the coefficient textures and the mask per volume; the
+            // pass then unbinds 2D, 2D-array and 3D on units 0 .. 5 + 8 - 1.
+            c_.drawCalls = drawn_;
+            c_.textureBinds = kGBufferTexturesBound + (shTextures_ + 1) * drawn_;
+            c_.textureUnbinds = 3 * (kGBufferTexturesBound + kShUnitsBound);
         } else {
             c_.drawCalls = drawn_;
             c_.textureBinds = kGBufferTexturesBound + 3 * drawn_;
@@ -188,24 +228,32 @@ public:
         c_.gbufferFetches = c_.depthCopyFetches;
         for (const VolumeCounters& v : c_.volumes) {
             c_.gbufferFetches += v.depthFetches + v.normalFetches + v.flagsFetches;
-            c_.probeFetches += v.stateFetches + v.visibilityFetches + v.irradianceFetches;
+            c_.probeFetches += v.stateFetches + v.visibilityFetches + v.irradianceFetches +
+                               v.shMaskFetches + v.shCoefficientFetches;
             c_.probeFootprintBytes += v.probeFootprintBytes;
+            c_.probeTexels += v.probeTexels;
             c_.renderTargetBytesWritten += v.evaluated * std::uint64_t(c_.targetBytesPerPixel);
         }
         c_.fetchesPerGiPixel =
             c_.giPixels ? double(c_.gbufferFetches + c_.probeFetches) / double(c_.giPixels) : 0.0;
         c_.maxFetchesPerLookup =
-            maxFetchesPerLookup(GiVariant{o_.profile.gi.probeOrder, o_.profile.gi.loops});
+            shTextures_ > 0
+                ? kGBufferFetchesPerLookup + shTextures_ +
+                      (o_.profile.gi.shLeak == profile::GiShLeak::None ? 0 : 1)
+                : maxFetchesPerLookup(GiVariant{o_.profile.gi.probeOrder, o_.profile.gi.loops});
         c_.clearBytes = c_.targetPixels * std::uint64_t(c_.targetBytesPerPixel);
         for (int v : kept_)
-            c_.gpuProbeBytes += profile::gpuVolumeBytes(set_, size_t(v));
+            c_.gpuProbeBytes += shTextures_ > 0
+                                    ? std::uint64_t(set_.volumes[size_t(v)].probeCount()) *
+                                          probes::shGpuBytesPerProbe(shOptions_.coefficients)
+                                    : profile::gpuVolumeBytes(set_, size_t(v));
     }
 
     std::vector<CacheResult> cacheResults() const {
         std::vector<CacheResult> results;
         for (size_t k = 0; k < replays_.size(); ++k) {
             CacheResult res;
-            res.variant = variants_[k / caches_.size()].name();
+            res.variant = variantNames_[k / caches_.size()];
             res.cache = caches_[k % caches_.size()];
             const CacheStats& s = replays_[k].stats();
             res.probeLines = s.probeLines;
@@ -256,7 +304,7 @@ private:
             const size_t n = std::min(chunk_, order_.size() - start);
             lookUpChunk(fileIndex, start, n);
             countChunk(d, tex, start, n, vc);
-            replayChunks(tex, start, n);
+            replayChunks(d, tex, start, n);
         }
         return vc;
     }
@@ -272,7 +320,10 @@ private:
                       : sampler_.influencesPoint(fileIndex, s.position) ? Lookup::Evaluated
                                                                         : miss;
             if (stencil_ && l.stage == Lookup::Sky) l.stage = Lookup::Skipped;
-            if (l.stage == Lookup::Evaluated)
+            if (l.stage == Lookup::Evaluated && shSampler_)
+                shSampler_->sampleVolume(fileIndex, s.position, s.normal,
+                                         view_.position - s.position, shOptions_, &l.sh);
+            else if (l.stage == Lookup::Evaluated)
                 sampler_.sampleVolume(fileIndex, s.position, s.normal, view_.position - s.position,
                                       {}, &l.trace);
         });
@@ -282,10 +333,12 @@ private:
     void countChunk(int d, const TextureTable::Volume& tex, size_t start, size_t n,
                     VolumeCounters& vc) {
         std::vector<Fetch> fetches;
+        const VariantStructure* vs = structures_.empty() ? nullptr : &structures_[0];
+        const glm::ivec3 counts = set_.volumes[size_t(kept_[size_t(d)])].counts;
         for (size_t i = 0; i < n; ++i) {
             fetches.clear();
             if (lookups_[i].stage == Lookup::Evaluated) {
-                appendProbeFetches(lookups_[i].trace, structures_[0], tex, fetches);
+                appendLookupFetches(lookups_[i], vs, tex, counts, fetches);
                 covered_[start + i] = 1;
                 winner_[start + i] = d;
             }
@@ -295,10 +348,13 @@ private:
 
     // 3. Every (variant, cache) replays the chunk in shading order (parallel: each replay
     //    owns its cache).
-    void replayChunks(const TextureTable::Volume& tex, size_t start, size_t n) {
+    void replayChunks(int d, const TextureTable::Volume& tex, size_t start, size_t n) {
+        const glm::ivec3 counts = set_.volumes[size_t(kept_[size_t(d)])].counts;
         pb::parallelFor(replays_.size(), 0, [&](size_t k, int) {
-            replayChunk(replays_[k], structures_[k / caches_.size()], table_, tex, lookups_.data(),
-                        gbufferPx_.data() + start, n, o_.warpPixels, o_.warpsInFlight);
+            const size_t v = k / caches_.size();
+            replayChunk(replays_[k], structures_.empty() ? nullptr : &structures_[v], table_, tex,
+                        counts, lookups_.data(), gbufferPx_.data() + start, n, o_.warpPixels,
+                        o_.warpsInFlight);
         });
     }
 
@@ -309,15 +365,18 @@ private:
     GiPassCounters& c_;
     const std::vector<int> kept_;
     const bool stencil_, shFlags_;
+    const int shTextures_; // gi.technique=sh_*: coefficient textures per volume; 0: DDGI
     const probes::ProbeSampler sampler_;
+    std::optional<probes::ShSampler> shSampler_;
+    probes::ShSampleOptions shOptions_;
     const TextureTable table_;
-    const std::vector<GiVariant> variants_;
+    std::vector<std::string> variantNames_; // DDGI: allGiVariants(); SH: one
+    std::vector<VariantStructure> structures_;
     size_t chunk_ = 0;                  // pixels per step, whole SIMT groups
     std::vector<int> drawOrder_;        // indices into kept_
     std::vector<glm::ivec2> order_;     // target pixels in shading order
     std::vector<glm::ivec2> gbufferPx_; // the GBuffer pixel each one reads
     std::vector<views::SurfacePoint> surface_;
-    std::vector<VariantStructure> structures_;
     std::vector<CacheReplay> replays_;  // variant-major: variants x caches
     std::vector<std::uint8_t> covered_; // stencil: 'any' set
     std::vector<int> winner_;

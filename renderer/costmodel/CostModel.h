@@ -4,7 +4,8 @@
 // culled, gi.multi_volume=naive: one full-screen draw (largest first) with the sky and influence
 // discards; =stencil: each pixel evaluated once, by the smallest volume containing it - per
 // pixel of the GI target the GBuffer reads (+ the flags with gi.dynamic=sh) and the 8-probe
-// lookup of common_ddgi.glsl - on the CPU:
+// lookup of common_ddgi.glsl, or with gi.technique=sh_l1|sh_l2 the SH lookup of common_sh.glsl
+// (ShFetchStream.h; its one "variant" is named after the technique and leak mode) - on the CPU:
 //   - exact counters (pixels per volume, fetches by kind, footprint bytes, render-target
 //     bytes, draws and binds, GPU memory of the probe data): hardware-independent;
 //   - each shader variant's texel-address stream through set-associative LRU caches: hit
@@ -57,6 +58,8 @@ struct VolumeCounters {
     std::uint64_t depthFetches = 0, normalFetches = 0;
     std::uint64_t flagsFetches = 0; // gi.dynamic=sh: the early-out's flags read
     std::uint64_t stateFetches = 0, visibilityFetches = 0, irradianceFetches = 0;
+    std::uint64_t shMaskFetches = 0, shCoefficientFetches = 0; // gi.technique=sh_*
+    std::uint64_t probeTexels = 0;         // texels its probe fetches ask for (1, 4 or 8 each)
     std::uint64_t probeFootprintBytes = 0; // distinct texel (block) bytes of its probe fetches
 };
 
@@ -78,6 +81,7 @@ struct GiPassCounters {
     double fetchesPerGiPixel = 0;
     int maxFetchesPerLookup = 0; // the shader's structure: GBuffer + 8 probes x fetches
     std::uint64_t probeFootprintBytes = 0;
+    std::uint64_t probeTexels = 0;
     std::uint64_t renderTargetBytesWritten = 0; // evaluated fragments x target bytes
     std::uint64_t clearBytes = 0;               // target pixels x target bytes
     std::uint64_t gpuProbeBytes = 0;            // profile::gpuVolumeBytes of the kept volumes

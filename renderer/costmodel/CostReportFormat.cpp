@@ -29,7 +29,10 @@ nlohmann::json volumeJson(const VolumeCounters& v) {
               {"gbuffer_flags", v.flagsFetches},
               {"probe_state", v.stateFetches},
               {"visibility", v.visibilityFetches},
-              {"irradiance", v.irradianceFetches}}},
+              {"irradiance", v.irradianceFetches},
+              {"sh_mask", v.shMaskFetches},
+              {"sh_coefficients", v.shCoefficientFetches}}},
+            {"probe_texels", v.probeTexels},
             {"probe_footprint_bytes", v.probeFootprintBytes}};
 }
 
@@ -79,6 +82,7 @@ nlohmann::json reportJson(const CostReport& r) {
                         {"probe_fetches", c.probeFetches},
                         {"fetches_per_gi_pixel", c.fetchesPerGiPixel},
                         {"max_fetches_per_lookup", c.maxFetchesPerLookup},
+                        {"probe_texels", c.probeTexels},
                         {"probe_footprint_bytes", c.probeFootprintBytes},
                         {"render_target_bytes_written", c.renderTargetBytesWritten},
                         {"clear_bytes", c.clearBytes},
@@ -133,20 +137,20 @@ std::string reportText(const CostReport& r) {
                   c.targetBytesPerPixel, (unsigned long long)c.giPixels,
                   (unsigned long long)c.targetPixels);
     out += line;
-    std::snprintf(line, sizeof line,
-                  "  draws %s, clears %d, program binds %s, texture binds %s (+%s unbinds)\n"
-                  "  fetches: %llu GBuffer + %llu probe = %.2f per GI pixel (shader maximum "
-                  "%d per lookup)\n"
-                  "  probe footprint read %s, render target written %s (+ clear %s), probe data "
-                  "on the GPU %s\n",
-                  structureText(c.drawCalls).c_str(), c.clears,
-                  structureText(c.programBinds).c_str(), structureText(c.textureBinds).c_str(),
-                  structureText(c.textureUnbinds).c_str(), (unsigned long long)c.gbufferFetches,
-                  (unsigned long long)c.probeFetches, c.fetchesPerGiPixel, c.maxFetchesPerLookup,
-                  bytesText(double(c.probeFootprintBytes)).c_str(),
-                  bytesText(double(c.renderTargetBytesWritten)).c_str(),
-                  bytesText(double(c.clearBytes)).c_str(),
-                  bytesText(double(c.gpuProbeBytes)).c_str());
+    std::snprintf(
+        line, sizeof line,
+        "  draws %s, clears %d, program binds %s, texture binds %s (+%s unbinds)\n"
+        "  fetches: %llu GBuffer + %llu probe = %.2f per GI pixel (shader maximum "
+        "%d per lookup), %llu probe texels\n"
+        "  probe footprint read %s, render target written %s (+ clear %s), probe data "
+        "on the GPU %s\n",
+        structureText(c.drawCalls).c_str(), c.clears, structureText(c.programBinds).c_str(),
+        structureText(c.textureBinds).c_str(), structureText(c.textureUnbinds).c_str(),
+        (unsigned long long)c.gbufferFetches, (unsigned long long)c.probeFetches,
+        c.fetchesPerGiPixel, c.maxFetchesPerLookup, (unsigned long long)c.probeTexels,
+        bytesText(double(c.probeFootprintBytes)).c_str(),
+        bytesText(double(c.renderTargetBytesWritten)).c_str(),
+        bytesText(double(c.clearBytes)).c_str(), bytesText(double(c.gpuProbeBytes)).c_str());
     out += line;
     std::snprintf(line, sizeof line, "  %-16s %10s %8s %8s %9s %8s %6s\n", "volume (draw order)",
                   "evaluated", "won", "sky", "outside", "faded", "fetch");
@@ -158,7 +162,8 @@ std::string reportText(const CostReport& r) {
             out += line;
             continue;
         }
-        const std::uint64_t probe = v.stateFetches + v.visibilityFetches + v.irradianceFetches;
+        const std::uint64_t probe = v.stateFetches + v.visibilityFetches + v.irradianceFetches +
+                                    v.shMaskFetches + v.shCoefficientFetches;
         std::snprintf(line, sizeof line, "  %-16s %10llu %8llu %8llu %9llu %8llu %6.2f\n",
                       v.name.c_str(), (unsigned long long)v.evaluated, (unsigned long long)v.won,
                       (unsigned long long)v.skySkipped, (unsigned long long)v.outsideSkipped,
@@ -178,7 +183,7 @@ std::string reportText(const CostReport& r) {
                       res.probeBytesMissedPerPixel(c.giPixels));
         out += line;
     }
-    out += "  * the profile's variant (gi.probe_order, gi.loops)\n";
+    out += "  * the profile's variant (gi.probe_order, gi.loops; SH: gi.technique/gi.sh_leak)\n";
     return out;
 }
 

@@ -19,11 +19,12 @@ ProbeTextureFormat probeTextureFormat(probes::StorageFormat f) {
 }
 
 TextureTable makeTextureTable(int gbufferWidth, int gbufferHeight, const probes::ProbeSet& set,
-                              const std::vector<int>& keptVolumes, MemoryLayout layout) {
+                              const std::vector<int>& keptVolumes, MemoryLayout layout,
+                              int shCoefficientTextures) {
     TextureTable t;
     std::uint64_t next = kTextureAlignment; // address 0 left unused
-    auto add = [&](int w, int h, int layers, int block, int bytes) {
-        t.textures.emplace_back(next, w, h, layers, block, bytes, layout);
+    auto add = [&](int w, int h, int layers, int block, int bytes, bool volume = false) {
+        t.textures.emplace_back(next, w, h, layers, block, bytes, layout, volume);
         next = t.textures.back().end();
         return int(t.textures.size()) - 1;
     };
@@ -34,6 +35,13 @@ TextureTable makeTextureTable(int gbufferWidth, int gbufferHeight, const probes:
         const probes::ProbeVolume& volume = set.volumes[size_t(v)];
         const glm::ivec3 n = volume.counts;
         TextureTable::Volume vol;
+        if (shCoefficientTextures > 0) {
+            for (int k = 0; k < shCoefficientTextures; ++k)
+                vol.sh.push_back(add(n.x, n.z, n.y, 1, 8, true));
+            vol.shMask = add(n.x, n.z, n.y, 1, 1, true);
+            t.volumes.push_back(vol);
+            continue;
+        }
         vol.tiles = probes::tileLayout(
             volume, set.states[size_t(v)],
             probes::fillSources(volume, set.states[size_t(v)], set.settings.backfaceThreshold));
@@ -82,24 +90,32 @@ void appendProbeFetches(const probes::SampleTrace& trace, const VariantStructure
 
 namespace {
 // The distinct addresses of a fetch's texels, or of the blocks holding them.
-int fetchAddresses(const Fetch& f, const TextureMemory& m, std::uint64_t out[4]) {
+constexpr int kMaxTexels = 8;
+int fetchAddresses(const Fetch& f, const TextureMemory& m, std::uint64_t out[kMaxTexels]) {
     if (!f.bilinear) {
         out[0] = m.address(f.x, f.y, f.layer);
         return 1;
     }
+    const glm::ivec3 step = f.trilinear ? f.step : glm::ivec3(1, 1, 0);
     int n = 0;
-    for (int dy = 0; dy < 2; ++dy)
-        for (int dx = 0; dx < 2; ++dx) {
-            const std::uint64_t a = m.address(f.x + dx, f.y + dy, f.layer);
-            if (std::find(out, out + n, a) == out + n) out[n++] = a;
-        }
+    for (int dz = 0; dz < (f.trilinear ? 2 : 1); ++dz)
+        for (int dy = 0; dy < 2; ++dy)
+            for (int dx = 0; dx < 2; ++dx) {
+                const std::uint64_t a =
+                    m.address(f.x + dx * step.x, f.y + dy * step.y, f.layer + dz * step.z);
+                if (std::find(out, out + n, a) == out + n) out[n++] = a;
+            }
     return n;
 }
 } // namespace
 
+int nominalTexels(const Fetch& f) {
+    return !f.bilinear ? 1 : f.trilinear ? 8 : 4;
+}
+
 std::uint64_t footprintBytes(const Fetch& f, const TextureTable& table) {
     const TextureMemory& m = table.textures[size_t(f.texture)];
-    std::uint64_t a[4];
+    std::uint64_t a[kMaxTexels];
     return std::uint64_t(fetchAddresses(f, m, a)) * std::uint64_t(m.elementBytes());
 }
 
@@ -107,11 +123,11 @@ CacheReplay::CacheReplay(const CacheConfig& config, const TextureTable& table)
     : config_(config), cache_(config), table_(table) {}
 
 void CacheReplay::fetch(const Fetch& f) {
-    std::uint64_t addr[4];
+    std::uint64_t addr[kMaxTexels];
     const int n = fetchAddresses(f, table_.textures[size_t(f.texture)], addr);
     // A fetch asks for each line it touches once (the texture unit merges a footprint).
     const std::uint64_t lineMask = ~std::uint64_t(config_.lineBytes - 1);
-    std::uint64_t lines[4];
+    std::uint64_t lines[kMaxTexels];
     int m = 0;
     for (int i = 0; i < n; ++i) {
         const std::uint64_t l = addr[i] & lineMask;

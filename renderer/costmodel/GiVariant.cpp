@@ -12,6 +12,10 @@ const char* fetchKindName(FetchKind k) {
         return "probe_state";
     case FetchKind::Visibility:
         return "visibility";
+    case FetchKind::ShMask:
+        return "sh_mask";
+    case FetchKind::ShCoefficients:
+        return "sh_coefficients";
     case FetchKind::Irradiance:
         break;
     }

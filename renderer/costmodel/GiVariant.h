@@ -11,7 +11,15 @@
 
 namespace pb::costmodel {
 
-enum class FetchKind { GBufferDepth, GBufferNormal, ProbeState, Visibility, Irradiance };
+enum class FetchKind {
+    GBufferDepth,
+    GBufferNormal,
+    ProbeState,
+    Visibility,
+    Irradiance,
+    ShMask,         // gi.technique=sh_*: the cell's validity mask (ShFetchStream.h)
+    ShCoefficients, // gi.technique=sh_*: one coefficient 3D texture, trilinear
+};
 const char* fetchKindName(FetchKind k);
 
 struct GiVariant {

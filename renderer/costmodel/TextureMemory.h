@@ -9,6 +9,10 @@
 //           block layouts), not any one of them exactly.
 // Elements are texels, or 4x4 blocks for block-compressed formats (BC6H: 16 B per block).
 // Layers follow each other; every texture starts on a kTextureAlignment boundary.
+// A 3D texture (`volume`, the SH technique's) is tiled in 3D instead: kTileBytes bricks
+// (8x8x8 texels of 8 B, 16x16x16 of 1 B), bricks x, then y, then layer-major, elements inside a
+// brick in 3D Morton order (x lowest) - the "thick" tiling GPUs use for volume textures, so a
+// trilinear 2x2x2 footprint lies in one to a few lines instead of one tile per layer.
 #include <cstdint>
 #include <string>
 
@@ -27,10 +31,12 @@ public:
     TextureMemory() = default;
     // width/height in texels; blockDim 1 (texels) or 4 (4x4 blocks of elementBytes each).
     TextureMemory(std::uint64_t base, int width, int height, int layers, int blockDim,
-                  int elementBytes, MemoryLayout layout);
+                  int elementBytes, MemoryLayout layout, bool volume = false);
     std::uint64_t address(int x, int y, int layer) const; // texel (x, y) of a layer
     std::uint64_t base() const { return base_; }
-    std::uint64_t bytes() const { return layerBytes_ * std::uint64_t(layers_); }
+    std::uint64_t bytes() const {
+        return brickBits_ ? totalBytes_ : layerBytes_ * std::uint64_t(layers_);
+    }
     // First free aligned address after this texture.
     std::uint64_t end() const;
     int blockDim() const { return blockDim_; }
@@ -43,6 +49,10 @@ private:
     int tileBitsX_ = 0, tileBitsY_ = 0; // tiled: tile = 2^bx x 2^by elements
     int tilesPerRow_ = 0;
     MemoryLayout layout_ = MemoryLayout::Tiled;
+    // Tiled volume: brick = 2^bx x 2^by x 2^bz elements (brickBits_ = bx + by + bz, 0: 2D).
+    int brickBits_ = 0, brickBitsX_ = 0, brickBitsY_ = 0, brickBitsZ_ = 0;
+    int bricksPerRow_ = 0, brickRows_ = 0;
+    std::uint64_t totalBytes_ = 0;
 };
 
 } // namespace pb::costmodel

@@ -1,6 +1,7 @@
 #include "passes/GpuShTextures.h"
 
 #include "core/Error.h"
+#include "probes/ShAbsentFill.h"
 #include "probes/ShIrradiance.h"
 #include "probes/ShSampler.h"
 
@@ -61,8 +62,12 @@ GpuShVolume uploadShVolume(const probes::ProbeSet& set, int scenario, int vi,
                            const std::string& label) {
     if (!set.hasSh()) throw Error(probes::noShMessage("the probe set"));
     const probes::ProbeVolume& v = set.volumes[size_t(vi)];
-    const auto& states = set.states[size_t(vi)];
-    const std::vector<glm::vec3>& sh = set.sh[size_t(scenario)][size_t(vi)];
+    // Absent probes read as their nearest stored one, as in ShSampler (ShAbsentFill.h).
+    const probes::ShLookupVolume lookup =
+        probes::shLookupVolume(v, set.states[size_t(vi)], set.sh[size_t(scenario)][size_t(vi)],
+                               set.settings.backfaceThreshold);
+    const std::vector<probes::ProbeState>& states = lookup.states;
+    const std::vector<glm::vec3>& sh = lookup.sh;
     const int n = shCoefficientCount(technique);
     const int textures = n == probes::kShL1Coefficients ? 3 : 7;
     const std::size_t probes = std::size_t(v.probeCount());

@@ -3,6 +3,7 @@
 #include "core/ParallelFor.h"
 #include "probes/ProbeSampler.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/gtc/packing.hpp>
 
@@ -59,27 +60,30 @@ glm::vec3 shIrradiance(const glm::vec3* c, const glm::vec3& n, int count) {
     return glm::max(e, glm::vec3(0.0f));
 }
 
+ShCoefficients projectIrradianceTile(const glm::ivec3& c, const ProbeTexture& irradiance) {
+    static const std::vector<glm::vec3> dirs = shProjectionDirections(kShProjectionDirections);
+    std::vector<glm::vec3> e(dirs.size());
+    for (std::size_t i = 0; i < dirs.size(); ++i) {
+        const glm::vec2 t = tileCoord(c, dirs[i], kIrradianceInterior);
+        float rgba[4];
+        bilinearFetch(irradiance, t.x, t.y, c.y, rgba);
+        e[i] = glm::vec3(rgba[0], rgba[1], rgba[2]);
+    }
+    // Irradiance SH, then band l divided by A_l: the radiance SH a lookup convolves back.
+    ShCoefficients sh = projectRadiance(dirs, e);
+    for (int k = 0; k < kShL2Coefficients; ++k)
+        sh[size_t(k)] /= kShBandA[k == 0 ? 0 : k < 4 ? 1 : 2];
+    return sh;
+}
+
 std::vector<glm::vec3> projectIrradianceTexture(const ProbeVolume& v,
                                                 const std::vector<ProbeState>& states,
                                                 const ProbeTexture& irradiance) {
-    static const std::vector<glm::vec3> dirs = shProjectionDirections(kShProjectionDirections);
     std::vector<glm::vec3> out(size_t(v.probeCount()) * kShL2Coefficients, glm::vec3(0.0f));
-    std::vector<glm::vec3> e(dirs.size());
     for (int p = 0; p < v.probeCount(); ++p) {
         if (!states[size_t(p)].stored) continue;
-        const glm::ivec3 c = v.probeCoords(p);
-        for (std::size_t i = 0; i < dirs.size(); ++i) {
-            const glm::vec2 t = tileCoord(c, dirs[i], kIrradianceInterior);
-            float rgba[4];
-            bilinearFetch(irradiance, t.x, t.y, c.y, rgba);
-            e[i] = glm::vec3(rgba[0], rgba[1], rgba[2]);
-        }
-        // Irradiance SH, then band l divided by A_l: the radiance SH a lookup convolves back.
-        ShCoefficients sh = projectRadiance(dirs, e);
-        for (int k = 0; k < kShL2Coefficients; ++k)
-            out[size_t(p) * kShL2Coefficients + size_t(k)] = sh[size_t(k)] / kShBandA[k == 0  ? 0
-                                                                                      : k < 4 ? 1
-                                                                                              : 2];
+        const ShCoefficients sh = projectIrradianceTile(v.probeCoords(p), irradiance);
+        std::copy(sh.begin(), sh.end(), out.begin() + std::ptrdiff_t(p) * kShL2Coefficients);
     }
     return out;
 }

@@ -4,12 +4,15 @@
 // local frame. A lookup convolves them with the clamped-cosine lobe (Ramamoorthi & Hanrahan
 // 2001: A0 = pi, A1 = 2pi/3, A2 = pi/4) to get irradiance.
 //
-// Where the coefficients come from: the bake projects each probe's final irradiance map (the
-// octahedral tile, before quantisation; it already holds every bounce, the emitter and
-// lit-surface samples and the nested-ring blend) at kShProjectionDirections spherical
-// Fibonacci directions and divides band l by A_l. By Funk-Hecke that equals projecting the
-// radiance band-limited to L2, up to the map's own filtering, and it keeps the SH probes on
-// exactly the same bake as DDGI's.
+// Where the coefficients come from: the bake's last radiance pass projects each probe's own
+// samples (RadianceSlab::projectSh: 4 pi / N sum L(w) Y(w) over its rays, plus its emitter and
+// lit-surface samples' shares; noise rounds averaged as the texels are), the same samples its
+// octahedral irradiance tile convolves, so the SH probes sit on exactly DDGI's bake. Only a
+// nested child's blended ring probes (NestingBlend.h) take the map projection below
+// (projectIrradianceTile: the final tile at kShProjectionDirections spherical Fibonacci
+// directions, band l divided by A_l; by Funk-Hecke the radiance band-limited to L2, up to the
+// map's filtering), since their blend happens on the map. Measured against that projection for
+// every probe: bench/results/2026-11-25-sh-technique-2.md.
 #include "probes/ProbeLayout.h"
 #include "probes/ProbeSet.h"
 
@@ -58,7 +61,11 @@ ShCoefficients projectRadiance(const std::vector<glm::vec3>& dirs,
 // `coefficients` (4: L1, 9: L2) terms, clamped at 0 (a truncated series can ring negative).
 glm::vec3 shIrradiance(const glm::vec3* coefficients, const glm::vec3& n, int count);
 
-// The bake's projection of one volume's irradiance texture (RGBA, float, borders filled):
+// One probe's irradiance tile (grid coords `c`) projected as below: radiance SH, band l
+// divided by A_l.
+ShCoefficients projectIrradianceTile(const glm::ivec3& c, const ProbeTexture& irradiance);
+
+// The map projection of one volume's irradiance texture (RGBA, float, borders filled):
 // probeCount() x 9 coefficients, probe-major. Probes that are not stored get zeros.
 std::vector<glm::vec3> projectIrradianceTexture(const ProbeVolume& v,
                                                 const std::vector<ProbeState>& states,
@@ -68,8 +75,9 @@ std::vector<glm::vec3> projectIrradianceTexture(const ProbeVolume& v,
 // in the bake makes the CPU sampler and the GPU see the same coefficients.
 glm::vec3 toHalfPrecision(const glm::vec3& c);
 
-// Every scenario and volume of `set` ([scenario][volume]), from its (unquantised) irradiance,
-// rounded by toHalfPrecision.
+// Every scenario and volume of `set` ([scenario][volume]) by the map projection of its
+// (unquantised) irradiance, rounded by toHalfPrecision: SH for sets built without a bake
+// (tests) and the comparison the bake's ray projection was chosen by.
 std::vector<std::vector<std::vector<glm::vec3>>> projectSetToSh(const ProbeSet& set, int threads);
 
 } // namespace pb::probes

@@ -49,8 +49,10 @@ ShSampler::ShSampler(const ProbeSet& set, int scenario, const std::string& sourc
         const ProbeVolume& vol = set.volumes[v];
         Frame f;
         f.volume = &vol;
-        f.states = &set.states[v];
-        f.sh = &set.sh[size_t(scenario)][v];
+        f.lookup = shLookupVolume(vol, set.states[v], set.sh[size_t(scenario)][v],
+                                  set.settings.backfaceThreshold);
+        for (int p = 0; p < vol.probeCount(); ++p)
+            f.apv.push_back(encodeApv(&f.lookup.sh[size_t(p) * kShL2Coefficients]));
         f.toLocal = glm::transpose(vol.localToWorldRotation());
         const glm::vec3 cell = vol.cellSize();
         for (int a = 0; a < 3; ++a)
@@ -88,10 +90,16 @@ glm::vec3 unitOr(const glm::vec3& v, const glm::vec3& fallback) {
 
 IrradianceSample ShSampler::sample(const glm::vec3& pos, const glm::vec3& normal,
                                    const glm::vec3& view, const ShSampleOptions& opt) const {
-    IrradianceSample out;
     const int vi = selectVolume(pos);
-    if (vi < 0) return out;
-    const Frame& f = frames_[size_t(vi)];
+    return vi < 0 ? IrradianceSample{} : sampleVolume(vi, pos, normal, view, opt);
+}
+
+IrradianceSample ShSampler::sampleVolume(int vi, const glm::vec3& pos, const glm::vec3& normal,
+                                         const glm::vec3& view, const ShSampleOptions& opt,
+                                         ShTrace* trace) const {
+    IrradianceSample out;
+    if (trace) *trace = ShTrace{};
+    const Frame& f = frames_.at(size_t(vi));
     const ProbeVolume& vol = *f.volume;
     out.volume = vi;
     // 1. Local frame and edge fade.
@@ -124,16 +132,26 @@ IrradianceSample ShSampler::sample(const glm::vec3& pos, const glm::vec3& normal
         return glm::min(base + glm::ivec3(c & 1, (c >> 1) & 1, (c >> 2) & 1), vol.counts - 1);
     };
     auto valid = [&](int c) {
-        return shProbeValid((*f.states)[size_t(vol.probeIndex(corner(c)))]);
+        return shProbeValid(f.lookup.states[size_t(vol.probeIndex(corner(c)))]);
     };
     // 4. Leak mode.
-    if (opt.leak == ShLeak::ValidityMask) {
+    if (opt.leak != ShLeak::None) {
         std::uint8_t mask = 0;
         for (int c = 0; c < 8; ++c)
             if (valid(c)) mask = std::uint8_t(mask | (1u << c));
-        if (!nudgeToValid(frac, mask)) return out;
+        if (trace) {
+            trace->maskRead = true;
+            trace->cell = base;
+        }
+        if (mask == 0) return opt.leak == ShLeak::Weight ? IrradianceSample{} : out;
+        if (opt.leak == ShLeak::ValidityMask) nudgeToValid(frac, mask);
+    }
+    if (trace) {
+        trace->coefficientsRead = true;
+        trace->lattice = glm::vec3(base) + frac;
     }
     glm::vec3 sum[kShL2Coefficients] = {};
+    ShApvTexels apv;
     float sumW = 0.0f;
     for (int c = 0; c < 8; ++c) {
         float w = 1.0f;
@@ -142,9 +160,15 @@ IrradianceSample ShSampler::sample(const glm::vec3& pos, const glm::vec3& normal
         if (opt.leak == ShLeak::Weight && !valid(c)) w = 0.0f;
         if (w == 0.0f) continue;
         const glm::vec3* src =
-            f.sh->data() + std::size_t(vol.probeIndex(corner(c))) * kShL2Coefficients;
-        for (int k = 0; k < opt.coefficients; ++k)
+            f.lookup.sh.data() + std::size_t(vol.probeIndex(corner(c))) * kShL2Coefficients;
+        for (int k = opt.apv ? kShL1Coefficients : 0; k < opt.coefficients; ++k)
             sum[k] += src[k] * w;
+        if (opt.apv) {
+            const ShApvTexels& t = f.apv[size_t(vol.probeIndex(corner(c)))];
+            apv.t0 += t.t0 * w;
+            apv.t1 += t.t1 * w;
+            apv.t2 += t.t2 * w;
+        }
         sumW += w;
         ++out.probes;
     }
@@ -152,7 +176,11 @@ IrradianceSample ShSampler::sample(const glm::vec3& pos, const glm::vec3& normal
         if (!(sumW > 0.0f)) return {};
         for (int k = 0; k < opt.coefficients; ++k)
             sum[k] /= sumW;
+        apv.t0 /= sumW;
+        apv.t1 /= sumW;
+        apv.t2 /= sumW;
     }
+    if (opt.apv) decodeApv(apv, sum);
     // 5. Irradiance, faded.
     out.irradiance = shIrradiance(sum, n, opt.coefficients) * fade;
     out.weight = fade;

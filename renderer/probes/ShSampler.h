@@ -10,6 +10,8 @@
 //    texture's texel centres sit on the probes, CLAMP_TO_EDGE); base = min(floor g, counts-2),
 //    fraction f = g - base (axes with one probe: base 0, f 0).
 // 4. Leak mode (gi.sh_leak):
+//    Sparse bakes' absent probes are read as their nearest stored probe in every mode
+//    (ShAbsentFill.h), so absence never darkens a lookup.
 //    none           trilinear blend of the 8 probes' coefficients, valid or not;
 //    weight         Enlighten: invalid probes weigh 0; coefficients premultiplied by the
 //                   weight and the weight are blended together, then divided;
@@ -19,6 +21,8 @@
 // 5. Irradiance from the blended coefficients (shIrradiance, first 4 or 9), times the fade.
 // No visibility test: this is the leak the testbed measures against DDGI.
 #include "probes/ProbeSampler.h"
+#include "probes/ShAbsentFill.h"
+#include "probes/ShApvEncoding.h"
 #include "probes/ShIrradiance.h"
 
 #include <cstdint>
@@ -33,6 +37,9 @@ struct ShSampleOptions {
     int coefficients = kShL1Coefficients; // 4: sh_l1, 9: sh_l2
     ShLeak leak = ShLeak::None;
     bool edgeFade = true;
+    // L1 as the APV encoding stores it (ShApvEncoding.h): blend the encoded texels, decode
+    // with the blended L0. CPU only (no switch, no GPU path): measures the encoding's error.
+    bool apv = false;
 };
 
 // The trilinear fractions moved the least (sum of |moves|, ties: first in x, y, z order of
@@ -40,19 +47,34 @@ struct ShSampleOptions {
 // (corner = x + 2y + 4z) gets weight 0. False when the mask is 0.
 bool nudgeToValid(glm::vec3& f, std::uint8_t validMask);
 
+// What one lookup fetched, for the cost model (renderer/costmodel): the GPU pass's fetches
+// follow from it (common_sh.glsl). `maskRead`: the cell's validity mask was fetched (weight and
+// validity_mask, after the fade test); `coefficientsRead`: the coefficient textures were
+// fetched (mask nonzero); `lattice`: the (nudged) lattice coordinate the trilinear fetches sample,
+// in probe units (texel centres on probes).
+struct ShTrace {
+    bool maskRead = false, coefficientsRead = false;
+    glm::ivec3 cell{0}; // the mask's texel (the cell's base corner)
+    glm::vec3 lattice{0.0f};
+};
+
 class ShSampler {
 public:
     // Throws pb::Error naming `source` when the set has no SH probes ("re-bake").
     ShSampler(const ProbeSet& set, int scenario, const std::string& source);
     IrradianceSample sample(const glm::vec3& pos, const glm::vec3& normal, const glm::vec3& view,
                             const ShSampleOptions& opt) const;
+    // The lookup in one volume (file index), as that volume's draw runs it; `trace` optional.
+    IrradianceSample sampleVolume(int volume, const glm::vec3& pos, const glm::vec3& normal,
+                                  const glm::vec3& view, const ShSampleOptions& opt,
+                                  ShTrace* trace = nullptr) const;
     int selectVolume(const glm::vec3& pos) const;
 
 private:
     struct Frame {
         const ProbeVolume* volume;
-        const std::vector<ProbeState>* states;
-        const std::vector<glm::vec3>* sh;
+        ShLookupVolume lookup;        // states and coefficients with absent probes filled
+        std::vector<ShApvTexels> apv; // lookup.sh's L1 encoded, per probe
         glm::mat3 toLocal;
         glm::vec3 invCell, fadeWidth;
         float minCell, boxVolume;

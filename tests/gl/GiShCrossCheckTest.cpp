@@ -10,6 +10,8 @@
 #include "core/Error.h"
 #include "frame/GiPointEvaluator.h"
 #include "probes/ShSampler.h"
+#include "probes/StaticTriangles.h"
+#include "probes/store/SparseStorage.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -96,6 +98,23 @@ TEST_P(GiShCrossCheckTest, GpuMatchesTheCpuShSamplerForEveryTechniqueAndLeakMode
                         r.maxWeightError);
             EXPECT_GT(r.covered, 2000) << technique << " " << leak;
             EXPECT_GT(r.inChild, 100) << technique << " " << leak;
+            EXPECT_LE(r.maxRel, 1e-3) << technique << " " << leak << " worst #" << r.worst;
+            EXPECT_LE(r.maxWeightError, 1e-3) << technique << " " << leak;
+        }
+}
+
+// A sparse set (absent probes read as their nearest stored one, probes/ShAbsentFill.h): the
+// upload and the CPU sampler fill them alike, in every mode.
+TEST_P(GiShCrossCheckTest, SparseSetGpuMatchesTheCpuShSampler) {
+    probes::ProbeSet set = giTestProbes(probes::StorageFormat::Rgba16f);
+    probes::applySparseStorage(set, probes::staticBakeTriangles(giTestScene()));
+    ASSERT_LT(set.storedCount(), set.probeCount()) << "nothing absent: vacuous";
+    for (const char* technique : {"sh_l1", "sh_l2"})
+        for (const char* leak : {"none", "weight", "validity_mask"}) {
+            const ShCheck r = crossCheck(set, technique, leak, 2000);
+            std::printf("[ sh cross-check ] %s sparse, %s, %s: %d covered, max rel %.3g\n",
+                        GetParam().c_str(), technique, leak, r.covered, r.maxRel);
+            EXPECT_GT(r.covered, 1000) << technique << " " << leak;
             EXPECT_LE(r.maxRel, 1e-3) << technique << " " << leak << " worst #" << r.worst;
             EXPECT_LE(r.maxWeightError, 1e-3) << technique << " " << leak;
         }

@@ -153,6 +153,26 @@ TEST(BenchReport, CacheModelSectionComparesTheVariantsPerProfile) {
     EXPECT_DOUBLE_EQ(j[0]["variants"][2]["probe_bytes_missed_per_pixel"].get<double>(), 9.0);
 }
 
+// An SH profile has one stream (costmodel: "technique/leak"): the SH column shows it, the
+// DDGI variants' columns and the changes between them are n/a.
+TEST(BenchReport, CacheModelSectionShowsAnShProfilesStreamInItsOwnColumn) {
+    BenchResult r = result();
+    CacheModelEntry ddgi{
+        "reference", "pc-high: 128 KiB, 128 B lines, 16-way", 512, 288, "xyz/fused", {}};
+    ddgi.variants = {{"xyz/fused", 0.9950, 10.0}};
+    CacheModelEntry sh{"sh-l1", "pc-high: 128 KiB, 128 B lines, 16-way", 512, 288, "sh_l1/weight",
+                       {}};
+    sh.variants = {{"sh_l1/weight", 0.9900, 2.5}};
+    r.cacheModel = {ddgi, sh};
+    const std::string md = markdownSummary(r);
+    EXPECT_NE(md.find("| SH (gi.technique/gi.sh_leak) |"), std::string::npos) << md;
+    EXPECT_NE(md.find("| n/a | n/a | n/a | n/a | sh_l1/weight: 99.00% / 2.5 * | n/a | n/a |"),
+              std::string::npos)
+        << md;
+    EXPECT_NE(md.find("99.50% / 10.0 * | n/a | n/a | n/a | n/a |"), std::string::npos) << md;
+    EXPECT_NE(htmlReport(r).find("sh_l1/weight: 99.00% / 2.5 *"), std::string::npos);
+}
+
 } // namespace
 } // namespace pb::test
 

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <gtest/gtest.h>
+#include <limits>
 
 using namespace pb::probes;
 
@@ -50,24 +51,62 @@ struct MidAirError {
     int lookups = 0, changed = 0, unlit = 0;
     // Relative luminance error of the lookups that differ from the dense one (below).
     float mean = 0.0f, p90 = 0.0f, worst = 0.0f;
+    // Of those, the ones more than 15% outside the dense light within the stand-ins' reach
+    // (below), and by how much the worst one lies outside it (relative, as the error; <= 0:
+    // inside).
+    int outsideReach = 0;
+    float worstBeyondReach = -1.0f;
 };
 
-// Sparse against dense at free-space points, six normals each (a dynamic object's sides). The
-// error of a lookup is relative to the dense value, or to a tenth of the scene's mean mid-air
-// irradiance where the dense value is darker than that: in the rooms' dark room the dense
-// bake's own probes carry more noise than 15% (the bake summary's p95 noise is ~38% there),
-// so a relative error of a near-black value measures the bake's noise, not the fill.
+// How far from a point the probes its lookup reads can lie, in cells per axis: a corner of its
+// cell is at most one cell away, and a stand-in at most one cell per axis from the corner it
+// replaces (the nearest stored probe; the step-2 lattice has one that near).
+constexpr int kStandInReachCells = 2;
+
+// The free-space points on the grid of cell steps around `p` within that reach (p included):
+// where the dense set's own light is compared with what the sparse lookup read.
+std::vector<glm::vec3> freeSpaceNeighbours(const RayScene& rs, const ProbeVolume& v,
+                                           const glm::vec3& p) {
+    std::vector<glm::vec3> out{p};
+    const int r = kStandInReachCells;
+    for (int dz = -r; dz <= r; ++dz)
+        for (int dy = -r; dy <= r; ++dy)
+            for (int dx = -r; dx <= r; ++dx) {
+                const glm::vec3 q = p + v.rotation * (glm::vec3(dx, dy, dz) * v.cellSize());
+                if ((dx || dy || dz) && !insideGeometry(rs, q, v.minCellSize())) out.push_back(q);
+            }
+    return out;
+}
+
+// The dense set's luminance range over those points (the lookups with weight).
+struct Range {
+    float lo, hi;
+};
+Range denseRange(const ProbeSampler& dense, const std::vector<glm::vec3>& points,
+                 const glm::vec3& n) {
+    Range r{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
+    for (const glm::vec3& q : points) {
+        const IrradianceSample d = dense.sample(q, n, n);
+        if (!(d.weight > 0.0f)) continue;
+        r.lo = std::min(r.lo, luminance(d.irradiance));
+        r.hi = std::max(r.hi, luminance(d.irradiance));
+    }
+    return r;
+}
+
 MidAirError compareMidAir(const DenseAndSparse& b, int points) {
     const RayScene rs(b.scene);
     const ProbeSampler dense(b.dense, 0), sparse(b.sparse, 0);
     struct Pair {
         float dense, sparse;
+        Range reach; // the dense light within the stand-ins' reach
     };
     std::vector<Pair> filled;
     MidAirError e;
     double total = 0.0;
     for (const glm::vec3& p :
-         midAirSamples(rs, b.dense.volumes, points, b.dense.volumes[0].minCellSize()))
+         midAirSamples(rs, b.dense.volumes, points, b.dense.volumes[0].minCellSize())) {
+        std::vector<glm::vec3> around; // computed for the first lookup that needs it
         for (const glm::vec3& n : kAxes) {
             const IrradianceSample d = dense.sample(p, n, n), s = sparse.sample(p, n, n);
             ++e.lookups;
@@ -76,17 +115,25 @@ MidAirError compareMidAir(const DenseAndSparse& b, int points) {
             // A lookup whose 8 corners are all stored (or inside geometry in both) is the dense
             // lookup bit for bit; the others read stand-ins or fewer probes.
             if (s.filled == 0 && s.probes == d.probes) {
-                EXPECT_EQ(s.irradiance, d.irradiance) << "all corners stored, yet not the dense lookup";
+                EXPECT_EQ(s.irradiance, d.irradiance)
+                    << "all corners stored, yet not the dense lookup";
                 continue;
             }
-            filled.push_back({luminance(d.irradiance), luminance(s.irradiance)});
+            if (around.empty()) around = freeSpaceNeighbours(rs, b.dense.volumes[0], p);
+            filled.push_back(
+                {luminance(d.irradiance), luminance(s.irradiance), denseRange(dense, around, n)});
         }
+    }
     const float floor = 0.1f * float(total / std::max(e.lookups, 1));
     std::vector<float> rel;
     double sum = 0.0;
     for (const Pair& q : filled) {
-        rel.push_back(std::abs(q.sparse - q.dense) / std::max(q.dense, floor));
+        const float scale = std::max(q.dense, floor);
+        rel.push_back(std::abs(q.sparse - q.dense) / scale);
         sum += rel.back();
+        const float beyond = std::max(q.reach.lo - q.sparse, q.sparse - q.reach.hi) / scale;
+        e.worstBeyondReach = std::max(e.worstBeyondReach, beyond);
+        if (beyond > 0.15f) ++e.outsideReach;
     }
     e.changed = int(rel.size());
     if (rel.empty()) return e;
@@ -101,22 +148,29 @@ MidAirError compareMidAir(const DenseAndSparse& b, int points) {
 
 class MidAir : public testing::TestWithParam<const char*> {};
 
-// What holds (bench/README.md, "Mid-air lookups"): every point gets a lookup, and the lookups
-// that differ from the dense one at all are within 15% of it on average. Not each of them
-// (issue 18 asks that; not met): next to the Cornell box's ceiling panel and in the rooms'
-// doorway the irradiance changes by more than 15% between a stand-in and the probe it
-// replaces, one cell away.
-TEST_P(MidAir, EveryPointIsLitAndWithin15PercentOfTheDenseLookupOnAverage) {
+// What holds (bench/README.md, "Mid-air lookups"): every point gets a lookup; the lookups
+// that differ from the dense one at all are within 15% of it on average; and none lies more
+// than 15% outside the light the dense set itself gives within the stand-ins' reach of the
+// point (two cells per axis): the fill is off by no more than the light changes over the
+// distance it reads from. Not within 15% of the dense lookup at the point itself everywhere
+// (issue 18 asks that; not met, bench/results/2026-11-25-mid-air-worst.md): under the Cornell
+// box's ceiling light and in the rooms' doorway the light changes by 2x within a cell, and a
+// stand-in one cell nearer the light reads that much brighter.
+TEST_P(MidAir, EveryPointIsLitAndWithin15PercentOfTheDenseLightWithinReach) {
     const DenseAndSparse b = bakeBoth(GetParam(), 1500);
     ASSERT_LT(b.sparse.storedCount(), b.sparse.probeCount()) << "nothing absent: vacuous";
     const MidAirError e = compareMidAir(b, 500);
     std::printf("[ mid-air ] %s: %d of %zu probes stored; %d lookups, %d differ from the dense "
-                "one: relative luminance error mean %.4f, p90 %.4f, worst %.4f; %d unlit\n",
+                "one: relative luminance error mean %.4f, p90 %.4f, worst %.4f; %d unlit; "
+                "worst beyond the dense light within reach %.4f\n",
                 GetParam(), int(b.sparse.storedCount()), b.sparse.probeCount(), e.lookups,
-                e.changed, e.mean, e.p90, e.worst, e.unlit);
+                e.changed, e.mean, e.p90, e.worst, e.unlit, e.worstBeyondReach);
     EXPECT_EQ(e.unlit, 0) << "a point the dense set lights got no lookup";
     EXPECT_GT(e.changed, e.lookups / 10) << "too few lookups read stand-ins: the test is vacuous";
     EXPECT_LE(e.mean, 0.15f);
+    EXPECT_EQ(e.outsideReach, 0)
+        << "a lookup is off by more than 15% beyond the dense light within reach (worst "
+        << e.worstBeyondReach << ")";
 }
 
 INSTANTIATE_TEST_SUITE_P(Builtin, MidAir, testing::Values("cornell", "rooms", "courtyard"));

@@ -16,7 +16,7 @@ namespace {
 // probes alone and looks the parent up without surface bias (issue 24); 4: lit-surface samples; 3: emitter sampling (MIS) at the probe; 2: far scenes bake in a moved
 // frame. (Sparse storage's free-space lattice changed only sparse files: bakeInputHash hashes
 // its step for sparse requests, so dense files kept their hash.)
-constexpr std::uint32_t kBakeAlgorithmVersion = 5;
+constexpr std::uint32_t kBakeAlgorithmVersion = 6;
 
 void hashScene(Hasher& h, const scene::Scene& s) {
     const auto mats = summariseMaterials(s);

@@ -3,23 +3,23 @@
 #include "probes/ShIrradiance.h"
 
 #include "core/Error.h"
+#include "core/ParallelFor.h"
+#include "probes/StorageScale.h"
 #include "probes/bake/BakeOrigin.h"
 #include "probes/bake/BakePhaseClock.h"
 #include "probes/bake/GeometryPass.h"
-#include "probes/bake/NestingBlend.h"
 #include "probes/bake/LitSurfaces.h"
+#include "probes/bake/NestingBlend.h"
 #include "probes/bake/NoiseRounds.h"
-#include "core/ParallelFor.h"
 #include "probes/bake/RadiancePass.h"
 #include "probes/bake/RayDirections.h"
 #include "probes/bake/RayScene.h"
 #include "probes/store/SparseStorage.h"
-#include "probes/StorageScale.h"
 
 #include <algorithm>
 #include <chrono>
-#include <memory>
 #include <cmath>
+#include <memory>
 #include <numeric>
 #include <optional>
 
@@ -116,6 +116,9 @@ struct BakeRun {
     NoiseRounds noise{0.0f}; // the converged bake's bookkeeping (NoiseRounds.h)
     // Per scenario, built by its first pass when the settings ask for lit-surface samples.
     std::vector<std::unique_ptr<LitSurfaces>> lit{};
+    // The current pass's radiance SH per volume (9 RGB per probe, zero for probes not
+    // traced): the same samples as its irradiance tiles, projected (RadianceSlab::projectSh).
+    std::vector<std::vector<glm::vec3>> passSh{};
 
     void report(const std::string& stage, std::size_t done) const {
         if (progress) progress({stage, doneBefore + done, stages * index.total()});
@@ -200,8 +203,7 @@ struct RadianceMask {
         if (run.req.sparse) {
             const std::vector<WorldTriangle> triangles = staticBakeTriangles(run.scene);
             for (size_t v = 0; v < run.set.volumes.size(); ++v)
-                keep.push_back(
-                    sparseKeptProbes(run.set.volumes[v], run.parents[v] < 0, triangles));
+                keep.push_back(sparseKeptProbes(run.set.volumes[v], run.parents[v] < 0, triangles));
         }
         for (int p : run.parents)
             if (p >= 0) isParent[size_t(p)] = true;
@@ -250,6 +252,11 @@ void traceMoreRounds(BakeRun& run, const Scenario& sc, size_t s, int pass,
             float* out = irr[size_t(t)].data();
             run.slab.convolve(j, conv, out);
             const int k = run.noise.addRound(todo[j], out);
+            glm::vec3 sh[kShL2Coefficients];
+            run.slab.projectSh(j, dirs, sh);
+            glm::vec3* mean = &run.passSh[size_t(v)][size_t(p) * kShL2Coefficients];
+            for (int q = 0; q < kShL2Coefficients; ++q)
+                mean[q] += (sh[q] - mean[q]) / float(k); // the running mean, as the texels
             for (int y = 0; y < kIrradianceInterior; ++y)
                 for (int x = 0; x < kIrradianceInterior; ++x)
                     for (int ch = 0; ch < 3; ++ch) {
@@ -272,8 +279,11 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     const BakeSettings& cfg = run.cfg;
     const Scenario& sc = run.req.scenarios[s];
     std::vector<ProbeTexture> cur;
-    for (const ProbeVolume& v : set.volumes)
+    run.passSh.clear();
+    for (const ProbeVolume& v : set.volumes) {
         cur.push_back(ProbeTexture::make(irradianceShape(v.counts)));
+        run.passSh.emplace_back(std::size_t(v.probeCount()) * kShL2Coefficients, glm::vec3(0.0f));
+    }
     std::vector<SamplerVolume> prevViews, curViews;
     std::vector<ProbeTexture*> targets;
     for (size_t v = 0; v < set.volumes.size(); ++v) {
@@ -314,6 +324,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
         if (!mask.needed(set, v, p)) return;
         float* out = irr[size_t(t)].data();
         run.slab.convolve(i, conv, out);
+        run.slab.projectSh(i, dirs, &run.passSh[size_t(v)][size_t(p) * kShL2Coefficients]);
         run.noise.firstRound(i, run.slab, conv, out);
         for (int y = 0; y < kIrradianceInterior; ++y)
             for (int x = 0; x < kIrradianceInterior; ++x)
@@ -365,6 +376,30 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     return cur;
 }
 
+// The SH probes of every scenario, from the last pass's ray projection (BakeRun::passSh),
+// except the nested rings' blended probes: their irradiance was blended towards the parent
+// after the rays (NestingBlend.h), so they take the map projection of their final tile.
+// Rounded to half floats (the GPU's RGBA16F).
+void finishSh(BakeRun& run) {
+    ProbeSet& set = run.set;
+    for (std::size_t s = 0; s < set.sh.size(); ++s)
+        for (std::size_t v = 0; v < set.volumes.size(); ++v) {
+            const ProbeVolume& vol = set.volumes[v];
+            std::vector<glm::vec3>& sh = set.sh[s][v];
+            parallelFor(std::size_t(vol.probeCount()), run.threads, [&](std::size_t p, int) {
+                const glm::ivec3 c = vol.probeCoords(int(p));
+                if (blendsRing(vol, run.parents[v] >= 0, c, set.states[v][p])) {
+                    const ShCoefficients m = projectIrradianceTile(c, set.irradiance[s][v]);
+                    std::copy(m.begin(), m.end(),
+                              sh.begin() + std::ptrdiff_t(p * kShL2Coefficients));
+                }
+                for (int k = 0; k < kShL2Coefficients; ++k)
+                    sh[p * kShL2Coefficients + std::size_t(k)] =
+                        toHalfPrecision(sh[p * kShL2Coefficients + std::size_t(k)]);
+            });
+        }
+}
+
 // The indices of req.scenarios this bake bakes: all, or the scenario split's part.
 std::vector<std::size_t> bakedScenarios(const BakeRequest& req) {
     if (!req.onlyScenarios.empty()) return req.onlyScenarios;
@@ -382,6 +417,7 @@ void bakeRadiance(BakeRun& run, const RadianceMask& mask) {
         for (int pass = 1; pass <= run.cfg.bounces; ++pass)
             prev = bakeRadiancePass(run, mask, s, pass, prev);
         run.set.irradiance.push_back(std::move(prev));
+        run.set.sh.push_back(std::move(run.passSh)); // the last bounce's, as the irradiance
         baked.push_back(run.req.scenarios[s]);
     }
     run.set.scenarios = std::move(baked);
@@ -412,16 +448,6 @@ std::vector<QuantisationError> quantiseSet(ProbeSet& set, StorageFormat format, 
         errors[i] = measureQuantisation(before, *all[i], errors[i]);
     });
     return errors;
-}
-
-// Probes sparse storage left out hold no light, in SH as in their (zeroed) tiles.
-void zeroAbsentSh(ProbeSet& set) {
-    for (auto& sc : set.sh)
-        for (std::size_t v = 0; v < sc.size(); ++v)
-            for (std::size_t p = 0; p < set.states[v].size(); ++p)
-                if (!set.states[v][p].stored)
-                    std::fill_n(sc[v].begin() + std::ptrdiff_t(p * kShL2Coefficients),
-                                kShL2Coefficients, glm::vec3(0.0f));
 }
 
 std::vector<std::size_t> invalidPerVolume(const ProbeSet& set) {
@@ -484,8 +510,8 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     bakeGeometry(run);
     const RadianceMask mask(run);
     bakeRadiance(run, mask);
-    // The SH technique's probes, from the same unquantised irradiance (ShIrradiance.h).
-    run.set.sh = projectSetToSh(run.set, threads);
+    // The SH technique's probes: the last pass's ray samples projected (ShIrradiance.h).
+    finishSh(run);
     const std::vector<BakePhase> phaseTimes = run.phases.take();
     if (req.recordRays) *req.recordRays = own->stopRecording();
 
@@ -493,8 +519,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     std::vector<QuantisationError> errors = quantiseSet(run.set, req.settings.format, threads);
     // Invalid as baked, before sparse storage marks its absent probes invalid too.
     std::vector<std::size_t> bakedInvalid = invalidPerVolume(run.set);
-    if (req.sparse) storeOnly(run.set, mask.keep);
-    zeroAbsentSh(run.set);
+    if (req.sparse) storeOnly(run.set, mask.keep); // zeroes the absent probes' SH too
 
     if (statsOut) {
         BakeStats st = countStats(run, std::move(bakedInvalid));

@@ -6,6 +6,18 @@
 
 namespace pb::probes {
 
+bool blendsRing(const ProbeVolume& vol, bool hasParent, const glm::ivec3& c, const ProbeState& s) {
+    if (!hasParent || vol.edgeBlend <= 0.0f) return false;
+    bool ring = false;
+    for (int a = 0; a < 3; ++a)
+        ring = ring || c[a] == 0 || c[a] == vol.counts[a] - 1;
+    // A relocated ring probe started in or against geometry: its box face lies in a wall, where
+    // no camera sees a seam, and the parent's coarser probes straddle that wall - blending would
+    // carry the next room's light in (issue 24: the rooms' partition, the dark room's corner).
+    // It keeps its own irradiance.
+    return ring && s.valid && s.offset == glm::vec3(0.0f);
+}
+
 void blendNestedRings(const std::vector<ProbeVolume>& volumes, const std::vector<int>& parents,
                       const std::vector<SamplerVolume>& views,
                       std::vector<ProbeTexture*>& targets) {
@@ -29,14 +41,7 @@ void blendNestedRings(const std::vector<ProbeVolume>& volumes, const std::vector
         ProbeTexture& tex = *targets[size_t(v)];
         for (int i = 0; i < vol.probeCount(); ++i) {
             glm::ivec3 c = vol.probeCoords(i);
-            bool ring = false;
-            for (int a = 0; a < 3; ++a)
-                ring = ring || c[a] == 0 || c[a] == vol.counts[a] - 1;
-            // A relocated ring probe started in or against geometry: its box face lies in a
-            // wall, where no camera sees a seam, and the parent's coarser probes straddle that
-            // wall - blending would carry the next room's light in (issue 24: the rooms'
-            // partition, the dark room's corner). It keeps its own irradiance.
-            if (!ring || !states[i].valid || states[i].offset != glm::vec3(0.0f)) continue;
+            if (!blendsRing(vol, true, c, states[i])) continue;
             glm::vec3 pos = vol.toWorld(vol.gridLocal(c) + states[i].offset);
             float* tile = tileOrigin(tex, c, kIrradianceTile);
             for (int y = 0; y < kIrradianceInterior; ++y)

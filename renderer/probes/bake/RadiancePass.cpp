@@ -3,6 +3,7 @@
 #include "core/ParallelFor.h"
 #include "probes/Octahedral.h"
 #include "probes/ProbeLayout.h"
+#include "probes/ShIrradiance.h"
 #include "probes/bake/DirectLight.h"
 #include "probes/bake/RayDirections.h"
 
@@ -16,7 +17,9 @@ namespace {
 constexpr int kTexels = kIrradianceInterior * kIrradianceInterior;
 constexpr float kUniformSpherePdf = float(1.0 / (4.0 * M_PI));
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+float luminance(const glm::vec3& c) {
+    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+}
 
 // The interior texels' directions, volume-local (as ProbeConvolution's).
 const std::vector<glm::vec3>& texelDirections() {
@@ -49,6 +52,14 @@ void addToFacingTexels(const glm::vec3& c, const glm::vec3& local, float* rgb, f
     }
 }
 
+// The same light sample's share, projected onto SH: c Y(w) into sh[0..8].
+void addToSh(const glm::vec3& c, const glm::vec3& local, glm::vec3* sh) {
+    float y[kShL2Coefficients];
+    shBasis(local, y);
+    for (int k = 0; k < kShL2Coefficients; ++k)
+        sh[k] += c * y[k];
+}
+
 // Solid-angle density of sampling direction `d` (unit) through emitter triangle k hit at
 // distance t: pdfArea * t^2 / |cos_l|; infinite at grazing angles.
 float emitterPdf(const EmitterTable& table, int k, const glm::vec3& d, float t) {
@@ -78,6 +89,7 @@ void RadianceSlab::reset(std::size_t probes, int rays) {
     slotLitSamples_.assign(probes, 0);
     litY_.assign(probes * kTexels, 0.0f);
     litY2_.assign(probes * kTexels, 0.0f);
+    lightSh_.assign(probes * kShL2Coefficients, glm::vec3(0.0f));
 }
 
 void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& sc,
@@ -200,7 +212,9 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
         ++counters.shadow;
         const float eps = rs.epsilon();
         if (rs.occluded(origin, w, 0.0f, std::max(dist - 2.0f * eps, 0.0f))) continue;
-        addToFacingTexels(tri.radiance / (nPu + float(m) * pdf), toLocal * w, rgb, y1, y2);
+        const glm::vec3 c = tri.radiance / (nPu + float(m) * pdf);
+        addToFacingTexels(c, toLocal * w, rgb, y1, y2);
+        addToSh(c, toLocal * w, lightSh_.data() + slot * kShL2Coefficients);
     }
 }
 
@@ -246,8 +260,9 @@ void RadianceSlab::traceLitSamples(std::size_t slot, const RayScene& rs, const S
         const glm::vec3 e = directIrradiance(rs, sc, lights, s.point, s.normal, counters.shadow);
         if (e == glm::vec3(0.0f)) continue;
         const float pdf = s.pdfArea * dist * dist / cosL;
-        addToFacingTexels(s.albedoOverPi * e / (nPu + float(ml) * pdf), toLocal * w, rgb, y1,
-                          y2);
+        const glm::vec3 c = s.albedoOverPi * e / (nPu + float(ml) * pdf);
+        addToFacingTexels(c, toLocal * w, rgb, y1, y2);
+        addToSh(c, toLocal * w, lightSh_.data() + slot * kShL2Coefficients);
     }
 }
 
@@ -326,6 +341,21 @@ void RadianceSlab::texelVariance(std::size_t slot, const ProbeConvolution& conv,
                    lightY2_.data() + slot * kTexels);
     addSumVariance(slotLitSamples_[slot], litY_.data() + slot * kTexels,
                    litY2_.data() + slot * kTexels);
+}
+
+void RadianceSlab::projectSh(std::size_t slot, const std::vector<glm::vec3>& dirs,
+                             glm::vec3* out) const {
+    const std::size_t first = slot * std::size_t(rays_);
+    const float w = float(4.0 * M_PI) / float(rays_);
+    float y[kShL2Coefficients];
+    for (int k = 0; k < kShL2Coefficients; ++k)
+        out[k] = lightSh_[slot * kShL2Coefficients + std::size_t(k)];
+    for (std::size_t i = 0; i < std::size_t(rays_); ++i) {
+        shBasis(dirs[i], y);
+        const glm::vec3 L = glm::vec3(radiance_[first + i]) * w;
+        for (int k = 0; k < kShL2Coefficients; ++k)
+            out[k] += L * y[k];
+    }
 }
 
 } // namespace pb::probes

@@ -18,11 +18,11 @@
 // cache), then every probe's radiance is finished and convolved (convolve). Each lookup is
 // the same pure function of its hit as in a per-ray loop, so the result is bit for bit the
 // same, for any slab size and thread count.
+#include "probes/ProbeSampler.h"
+#include "probes/Scenario.h"
 #include "probes/bake/LitSurfaces.h"
 #include "probes/bake/ProbeConvolution.h"
-#include "probes/ProbeSampler.h"
 #include "probes/bake/RayScene.h"
-#include "probes/Scenario.h"
 
 #include <cstdint>
 #include <vector>
@@ -56,9 +56,9 @@ struct RayCounters {
 // solid-angle density), and each visible sample adds  albedo/pi E_direct(y) max(0, n_t.omega)
 // / (N p_u + L p_s(omega))  to texel t. E_direct(y) is traced at the sampled point, so both
 // strategies see the same function. (Sampling the reflected indirect light too, through the
-// previous pass's probes, was tried on rooms and did no better: bench/README.md.) Every traced probe takes them: unlike emitters, lit
-// surfaces are rarely a uniform quarter of the sphere, and where they are the balance
-// heuristic leans on the rays.
+// previous pass's probes, was tried on rooms and did no better: bench/README.md.) Every traced
+// probe takes them: unlike emitters, lit surfaces are rarely a uniform quarter of the sphere, and
+// where they are the balance heuristic leans on the rays.
 struct EmitterSampling {
     int samples = 0;
     std::uint64_t stream = 0;
@@ -94,6 +94,12 @@ public:
     // emitter samples. The rays are stratified, so this overestimates: NoiseRounds uses it
     // only to decide whether a second round is worth tracing.
     void texelVariance(std::size_t slot, const ProbeConvolution& conv, float* outVar) const;
+    // After convolve (or finish): the slot's radiance projected onto SH L2 (9 RGB, the
+    // probe's volume-local frame, probes/ShIrradiance.h) by Monte Carlo over the same samples
+    // the irradiance texels convolve: each ray 4 pi / N L(w) Y(w) (the ray set is uniform on
+    // the sphere; L already carries the balance heuristic's weight), each emitter and
+    // lit-surface sample its share c Y(w) (c: what it adds to a texel facing it, over cos).
+    void projectSh(std::size_t slot, const std::vector<glm::vec3>& localDirs, glm::vec3* out) const;
 
 private:
     // trace()'s lit-surface samples (EmitterSampling::litSamples).
@@ -120,6 +126,8 @@ private:
     // variance.
     std::vector<int> slotLitSamples_;
     std::vector<float> litY_, litY2_;
+    // Emitter and lit-surface samples per slot projected onto SH (9 RGB each).
+    std::vector<glm::vec3> lightSh_;
 };
 
 } // namespace pb::probes

@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "core/ParallelFor.h"
 #include "probes/ProbeSampler.h"
+#include "probes/ShIrradiance.h"
 #include "probes/store/SparseLayout.h"
 
 #include <algorithm>
@@ -217,6 +218,12 @@ void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep
         roundTrip(set.visibility[vi], kVisibilityTile);
         for (auto& scenario : set.irradiance)
             roundTrip(scenario[vi], kIrradianceTile);
+        // The SH record keeps stored probes only (ProbeFile.cpp): absent ones read as zeros.
+        for (auto& scenario : set.sh)
+            for (std::size_t p = 0; p < states.size() && vi < scenario.size(); ++p)
+                if (!states[p].stored)
+                    std::fill_n(scenario[vi].begin() + std::ptrdiff_t(p * kShL2Coefficients),
+                                kShL2Coefficients, glm::vec3(0.0f));
     }
 }
 
