@@ -327,7 +327,9 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
     // 3. Surface bias, base probe (unbiased point) and trilinear fractions (biased point).
     const glm::vec3 biased =
         opt.surfaceBias
-            ? p + (kBiasNormalWeight * n + kBiasViewWeight * vdir) * (kBiasScale * f.minCell)
+            ? p + (opt.bakeBias ? kBakeBiasNormalWeight * n + kBakeBiasViewWeight * vdir
+                                : kBiasNormalWeight * n + kBiasViewWeight * vdir) *
+                      (kBiasScale * f.minCell)
             : p;
     glm::ivec3 base;
     glm::vec3 alpha;

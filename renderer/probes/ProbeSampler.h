@@ -21,8 +21,18 @@
 
 namespace pb::probes {
 
-constexpr float kBiasNormalWeight = 0.2f; // surface bias = (0.2 n + 0.8 v) * 0.25 * minCell
-constexpr float kBiasViewWeight = 0.8f;
+// Surface bias of a rendered point = (1.0 n + 0.0 v) * 0.25 * minCell: along the normal only.
+// The view term (RTXGI's 0.8 v) moved a point seen at a grazing angle along the floor instead
+// of off it - 15 degrees above a floor, 0.1 of a cell up instead of 0.25 - and its lookup then
+// read the probe planes near the floor at grazing angles: the lattice printed on floors (issue
+// 24, bench_lattice --elevation 15: Sponza's uniform grid scored 222, the normal-only bias 4.2).
+constexpr float kBiasNormalWeight = 1.0f;
+constexpr float kBiasViewWeight = 0.0f;
+// The bake's own lookups at ray hits (SampleOptions::bakeBias) keep (0.2 n + 0.8 v): there the
+// viewer is the probe, and the normal-only bias made the default placement's error worse on
+// four of five shared scenes (bench_placement, up to +7.8% on Sponza).
+constexpr float kBakeBiasNormalWeight = 0.2f;
+constexpr float kBakeBiasViewWeight = 0.8f;
 constexpr float kBiasScale = 0.25f;
 constexpr float kWrapBias = 0.2f;        // backface weight ((dot(dirToProbe,n)+1)/2)^2 + 0.2
 constexpr float kChebyshevFloor = 0.05f; // lower bound of the (cubed) Chebyshev weight
@@ -91,12 +101,14 @@ inline TileFootprint tileFootprint(float lx, float ly, int tile) {
 
 struct SampleOptions {
     bool edgeFade = true; // the bake turns it off: hits near a root's face keep full weight
-    // The surface bias ((0.2 n + 0.8 v) * 0.25 * minCell) keeps a SURFACE point from reading
+    // The surface bias (kBiasNormalWeight n + kBiasViewWeight v) * 0.25 * minCell keeps a SURFACE point from reading
     // its own wall's shadow. A query at a probe's position (the nesting blend) is no surface:
-    // there it moved the point up to a quarter of the parent's cell - 25 cm in the rooms'
-    // house volume - towards the texel's direction, through the 5 cm partition beside the
+    // there the bias of the time (0.2 n + 0.8 v) moved the point up to a quarter of the
+    // parent's cell - 25 cm in the rooms' house volume - towards the texel's direction, through the 5 cm partition beside the
     // probe, and the dark room's ring probes took the lit room's light (issue 24).
     bool surfaceBias = true;
+    // The bake's bias weights (kBakeBias*) instead of the rendered point's (kBias*).
+    bool bakeBias = false;
 };
 
 // One lookup of a batch (ProbeSampler::sampleBatch).

@@ -5,7 +5,8 @@
 // Steps, in this order:
 // 1. Volume choice and edge fade exactly as ProbeSampler (smallest influencing box; roots
 //    fade over kEdgeFadeCells cells).
-// 2. The same surface bias as DDGI: p + (0.2 n + 0.8 v) * 0.25 * minCell, in local space.
+// 2. The same surface bias as DDGI: p + (kBiasNormalWeight n + kBiasViewWeight v)
+//    * 0.25 * minCell (ProbeSampler.h), in local space.
 // 3. Lattice coordinate g = (p + half) / cell, clamped to [0, counts - 1] per axis (the 3D
 //    texture's texel centres sit on the probes, CLAMP_TO_EDGE); base = min(floor g, counts-2),
 //    fraction f = g - base (axes with one probe: base 0, f 0).

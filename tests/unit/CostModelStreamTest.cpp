@@ -50,7 +50,9 @@ TEST(CostModelStream, TraceTexelsAreTheGlFootprintOfTheReadmeFormulas) {
     const glm::vec3 p = kPos - glm::vec3(2, 1, 2), n = glm::normalize(kNormal);
     const glm::vec3 v = glm::normalize(kView);
     const float minCell = 1.0f; // cells 4/3, 1, 1
-    const glm::vec3 biased = p + (0.2f * n + 0.8f * v) * (probes::kBiasScale * minCell);
+    const glm::vec3 biased =
+        p + (probes::kBiasNormalWeight * n + probes::kBiasViewWeight * v) *
+                (probes::kBiasScale * minCell);
     const glm::vec3 cell{4.0f / 3.0f, 1.0f, 1.0f};
     const glm::ivec3 base = glm::ivec3(glm::floor((p + glm::vec3(2, 1, 2)) / cell));
     for (int corner = 0; corner < 8; ++corner) {

@@ -291,6 +291,7 @@ void RadianceSlab::lookUp(const ProbeSampler& previous, int threads) {
     std::vector<std::vector<IrradianceSample>> results(queries.size());
     SampleOptions noFade;
     noFade.edgeFade = false;
+    noFade.bakeBias = true; // viewed from the probe (ProbeSampler.h)
     parallelFor((total + kChunk - 1) / kChunk, threads, [&](std::size_t chunk, int t) {
         const std::size_t lo = chunk * kChunk, hi = std::min(total, lo + kChunk);
         std::vector<SampleQuery>& q = queries[std::size_t(t)];
