@@ -245,27 +245,6 @@ vec2 ddgiIrrCoord(vec3 dir) {
     return ddgiOctEncode(dir) * u_ddgiIrrOct.xy + u_ddgiIrrOct.zw;
 }
 
-// One corner of GI_LOOPS_FUSED's loop: probe i's weight and weighted irradiance added to the
-// sums. ddgiSample calls it for i = 0..7 written out rather than in a `for`: NIR does not unroll
-// a loop this long, and llvmpipe then runs it as a loop, recomputing per iteration what the
-// unrolled code folds (each corner's offset and trilinear selects, the samplers' set-up):
-// written out, 19% fewer instructions per evaluation (bench/results/2026-11-25-fetch-floor.md).
-// tests/unit/CostModelShaderTest.cpp reads these 8 calls as the fused loop.
-void ddgiFusedCorner(int i, ivec3 base, vec3 cellProbe, vec3 p, hvec3 nh, vec3 biased,
-                     hvec3 alpha, vec2 irrLocal, inout hvec3 sumE, inout hfloat sumW) {
-    ivec3 off = ddgiCorner(i);
-    ivec3 tile;
-#ifdef DDGI_SPARSE_TILES
-    float stateW;
-    hfloat w = ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile, stateW);
-#else
-    hfloat w = ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile);
-#endif
-    hvec3 e = ddgiProbeIrradiance(tile, irrLocal);
-    sumE += w >= 0.0 ? w * e : vec3(0.0); // skipped: < 0 (a select, not a branch)
-    sumW += max(w, 0.0);
-}
-
 // Irradiance at local point `p` (ddgiLocal of the caller's position: the caller has it from the
 // influence test) for surface normal `normal` seen from direction `view` (caller's space;
 // surface -> viewer; need not be unit). rgb = E * fade, a = weight (fade; 0 = no data).
@@ -327,15 +306,19 @@ hvec4 ddgiSample(vec3 p, vec3 normal, vec3 view) {
         sumW += max(weights[i], 0.0);
     }
 #else
-    // The fused loop over corners 0..7, written out (ddgiFusedCorner says why).
-    ddgiFusedCorner(0, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
-    ddgiFusedCorner(1, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
-    ddgiFusedCorner(2, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
-    ddgiFusedCorner(3, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
-    ddgiFusedCorner(4, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
-    ddgiFusedCorner(5, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
-    ddgiFusedCorner(6, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
-    ddgiFusedCorner(7, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
+    for (int i = 0; i < 8; ++i) {
+        ivec3 off = ddgiCorner(i);
+        ivec3 tile;
+#ifdef DDGI_SPARSE_TILES
+        float stateW;
+        hfloat w = ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile, stateW);
+#else
+        hfloat w = ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile);
+#endif
+        hvec3 e = ddgiProbeIrradiance(tile, irrLocal);
+        sumE += w >= 0.0 ? w * e : vec3(0.0); // skipped: < 0 (a select, not a branch)
+        sumW += max(w, 0.0);
+    }
 #endif
 
     // 5. Normalise, then fade.

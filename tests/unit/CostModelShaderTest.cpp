@@ -133,17 +133,6 @@ ParsedVariant parse(const GiVariant& v) {
         rest += body.substr(0, size_t(m.position(0)));
         body = body.substr(end);
     }
-    // The fused loop written out (common_ddgi.glsl, ddgiFusedCorner): 8 calls with the corners
-    // 0..7 in order are one loop whose body is the function's.
-    static const std::regex cornerCall(R"(\bddgiFusedCorner\s*\(\s*(\d+))");
-    std::vector<int> cornerArgs;
-    for (auto it = std::sregex_iterator(body.begin(), body.end(), cornerCall);
-         it != std::sregex_iterator(); ++it)
-        cornerArgs.push_back(std::stoi((*it)[1]));
-    if (!cornerArgs.empty()) {
-        EXPECT_EQ(cornerArgs, (std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}));
-        p.loops.push_back(fetchesIn(functionBody(src, "ddgiFusedCorner"), helpers));
-    }
     p.outsideLoops = fetchesIn(rest + body, helpers);
     // ddgiCorner: return ivec3(<x>, <y>, <z>) with components "i & 1" or "(i >> s) & 1".
     const std::string corner = functionBody(src, "ddgiCorner");
