@@ -8,8 +8,8 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <memory>
 #include <iostream>
+#include <memory>
 
 #include <glad/gl.h>
 

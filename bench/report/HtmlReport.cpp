@@ -38,8 +38,10 @@ void profileTable(std::ostringstream& h, const BenchResult& r) {
     h << "<table id=\"profiles\"><tr><th class=\"l\">profile</th><th>size</th><th>frame ms "
          "median ["
       << htmlEscape(ciLabel(frameCiLevels(r))) << "]</th><th>min</th><th>IQR</th><th>Δ ms vs "
-      << "reference [" << htmlEscape(ciLabel(deltaCiLevels(r))) << "]</th>"
-         "<th>budget ms</th><th>GI ms</th><th>fetch floor ms</th><th>GI / floor</th><th>GI / floor per evaluation</th>"
+      << "reference [" << htmlEscape(ciLabel(deltaCiLevels(r)))
+      << "]</th>"
+         "<th>budget ms</th><th>GI ms</th><th>fetch floor ms</th><th>GI / floor</th>"
+         "<th>GI / floor per evaluation</th>"
          "<th>FLIP mean</th><th>FLIP max</th><th>PSNR dB</th><th>SSIM</th><th>rel. MSE GI</th>"
          "<th>coverage</th><th>GI MiB / budget</th></tr>\n";
     for (const SessionResult& s : r.sessions) {

@@ -57,7 +57,8 @@ std::string floorRatioCell(const VariantResult& p) {
 
 void profileTable(std::ostringstream& out, const BenchResult& r) {
     out << "| profile | size | frame ms median [" << ciLabel(frameCiLevels(r))
-        << "] | Δ ms vs reference [" << ciLabel(deltaCiLevels(r)) << "] | GI ms | "
+        << "] | Δ ms vs reference [" << ciLabel(deltaCiLevels(r))
+        << "] | GI ms | "
            "floor ms | GI / floor per eval. (per texel) | FLIP | PSNR dB | SSIM | rel. MSE GI | "
            "coverage | GI MiB (budget) |\n"
         << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -79,9 +80,9 @@ void profileTable(std::ostringstream& out, const BenchResult& r) {
                    : std::string("(is the reference)"))
             << " | " << (gi.empty() ? "n/a" : fixed(stats::summarize(gi).median, 2)) << " | "
             << (p.fetchFloor ? fixed(p.fetchFloor->ms.median, 2) : std::string("n/a")) << " | "
-            << floorRatioCell(p) << " | " << accuracyCells(p.accuracy) << " | " << fixed(p.coverage.fraction, 4) << " | "
-            << fixed(p.giMemoryMiB, 2) << " (" << fixed(s.session.profile.giMemoryBudgetMiB, 1)
-            << ") |\n";
+            << floorRatioCell(p) << " | " << accuracyCells(p.accuracy) << " | "
+            << fixed(p.coverage.fraction, 4) << " | " << fixed(p.giMemoryMiB, 2) << " ("
+            << fixed(s.session.profile.giMemoryBudgetMiB, 1) << ") |\n";
     }
     out << "\nGI ms: median per frame of " << kGiSectionsText
         << " (every pass that exists for GI; absent passes count 0).\n"

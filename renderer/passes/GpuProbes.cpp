@@ -249,7 +249,8 @@ void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,
     // Per-volume constants of the lookup (common_ddgi.glsl), once per draw instead of per pixel
     // and probe: texel coordinate = tile * TileScale + oct * Oct.xy + Oct.zw.
     using namespace probes;
-    const float irrHalf = 0.5f * float(kIrradianceInterior), visHalf = 0.5f * float(kVisibilityInterior);
+    const float irrHalf = 0.5f * float(kIrradianceInterior),
+                visHalf = 0.5f * float(kVisibilityInterior);
     program.set("u_ddgiIrrTileScale", float(kIrradianceTile) * irrInv);
     program.set("u_ddgiIrrOct", glm::vec4(irrHalf * irrInv, (irrHalf + 1.0f) * irrInv));
     program.set("u_ddgiVisTileScale", float(kVisibilityTile) * visInv);
