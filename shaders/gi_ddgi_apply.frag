@@ -77,13 +77,14 @@ void main() {
     if ((int(texelFetch(u_gbuffer_flags, px, 0).r * 255.0 + 0.5) & 1) != 0) discard;
 #endif
     vec3 rel = giRelPosition(px, depth);
-    if (!ddgiInfluences(ddgiLocal(rel))) discard;
+    vec3 local = ddgiLocal(rel); // once: the influence test and the lookup share it
+    if (!ddgiInfluences(local)) discard;
     vec3 n = octDecode(texelFetch(u_gbuffer_normal, px, 0).xy);
     // The eye is the origin of camera-relative space: the view direction is -rel.
 #ifdef GI_TECHNIQUE_SH
     vec4 gi = shSample(rel, n, -rel); // gi.technique=sh_l1|sh_l2: common_sh.glsl
 #else
-    vec4 gi = ddgiSample(rel, n, -rel);
+    vec4 gi = ddgiSample(local, n, -rel);
 #endif
 #ifdef GI_DEBUG_EXTRA_FETCHES
     // Test-only (passes/GiDebugInjection.h): fetches that cannot change the result (irradiance
