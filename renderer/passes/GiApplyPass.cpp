@@ -103,6 +103,12 @@ void GiApplyPass::execute(FrameContext& frame) {
     stats_.width = spec.width;
     stats_.height = spec.height;
     stats_.counted = countPixels_;
+    const bool countInvocations = countPixels_ && invocations_.supported();
+    stats_.invocationsCounted = countInvocations;
+    stats_.invocationsEarlyTests = !countLate_;
+    stats_.invocationsNote = !countPixels_       ? "not counted: counting is off"
+                             : !countInvocations ? invocations_.unsupportedReason()
+                                                 : "";
     if (countPixels_) {
         stats_.evaluations.assign(size_t(spec.width) * size_t(spec.height), 0);
         stats_.shadedBy.assign(stats_.evaluations.size(), -1);
@@ -114,8 +120,17 @@ void GiApplyPass::execute(FrameContext& frame) {
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | (stencil ? GL_STENCIL_BUFFER_BIT : 0u));
 
-    gl::Defines applyDefines = defines_;
+    gl::Defines applyDefines = defines_, fillDefines = defines_;
     if (countPixels_) applyDefines["GI_COUNT_PIXELS"] = "";
+    if (countInvocations) {
+        for (gl::Defines* defines : {&applyDefines, &fillDefines}) {
+            (*defines)[gl::kGlslEs310Define] = "";
+            (*defines)["GI_COUNT_INVOCATIONS"] = "";
+        }
+        // The apply writes neither depth nor stencil: early tests are what it gets without
+        // the counter. The mark writes stencil after a discard: late in production too.
+        if (!countLate_) applyDefines["GI_COUNT_EARLY_TESTS"] = "";
+    }
     applyDefines.merge(giDebugInjectionDefines()); // test-only, normally empty
     Draw d{frame,
            {gb.width(), gb.height()},
@@ -132,7 +147,7 @@ void GiApplyPass::execute(FrameContext& frame) {
                                  &frame.programs.get("fullscreen.vert", frag, defines)};
         };
         d.apply = pair("gi_ddgi_apply.frag", applyDefines);
-        d.fill = pair("gi_stencil_fill.frag", defines_);
+        d.fill = pair("gi_stencil_fill.frag", fillDefines);
         // The GI target's depth: the depth of the GBuffer pixel each texel stands for.
         TimedSection section(frame.timer, "gi-depth-copy");
         const gl::Program& copy = frame.programs.get("fullscreen.vert", "gi_depth_copy.frag", {});
@@ -171,11 +186,20 @@ void GiApplyPass::execute(FrameContext& frame) {
             const GLfloat zero[4] = {0, 0, 0, 0};
             glClearBufferfv(GL_COLOR, 1, zero);
         }
+        if (countInvocations) {
+            invocations_.reset(2); // slot 0: the apply, slot 1: the mark
+            invocations_.bind(0);
+        }
         if (stencil)
-            drawStencil(d, v, r, k == lastVisible);
+            drawStencil(d, v, r, k == lastVisible, countInvocations);
         else
             drawNaive(d, v);
         if (countPixels_) countEvaluated(int(stats_.volumes.size()) - 1);
+        if (countInvocations) {
+            const std::vector<std::int64_t> n = invocations_.read();
+            stats_.volumes.back().applyInvocations = n[0];
+            stats_.volumes.back().markInvocations = n[1];
+        }
     }
 
     resetState();
@@ -217,7 +241,12 @@ void GiApplyPass::drawNaive(Draw& d, int v) {
 // INVERTed it) shaded every pixel of each box and threw most of the work away: 2.26x the
 // single volume's GI time for 1.00 evaluation per pixel (issue 17). Without writes the test
 // runs first and a taken pixel costs no lookup; only the cheap mark shader runs late.
-void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last) {
+// Counting (GI_COUNT_INVOCATIONS): the counter's atomic write would itself move the tests
+// after the shader (llvmpipe does), so the apply's counting variant declares early tests
+// (GI_COUNT_EARLY_TESTS) - what the production apply gets - and the mark's does not, being
+// late-tested in production too (renderer/README.md "Invocation counter").
+void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last,
+                              bool countInvocations) {
     const bool screen = r.cameraInside && !r.backFacesInFrontOfFar;
     const auto draw = [&](const GiProgramPair& programs) {
         const gl::Program& prog = screen ? *programs.screen : *programs.box;
@@ -245,6 +274,7 @@ void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last
     draw(d.apply);
     if (!last) {
         TimedSection section(d.frame.timer, "gi-fill");
+        if (countInvocations) invocations_.bind(1);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glStencilFunc(GL_ALWAYS, int(kStencilTaken), kStencilTaken);
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
