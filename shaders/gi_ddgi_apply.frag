@@ -7,6 +7,8 @@
 // Target: rgb = E * fade, a = weight; formats without alpha (GI_TARGET_R11G11B10F) get the
 // ambient blended in here instead (see lighting_direct.frag).
 // Variants: GI_RESOLUTION_* (the target is 1, 1/2 or 1/4 of the GBuffer per axis),
+// GI_INFLUENCE_BY_RASTER (stencil, eye inside the box: the back faces' depth test decides the
+// influence, as for the raster mark gi_stencil_mark_raster.frag, so both agree on every pixel),
 // GI_DYNAMIC_SH (dynamic-object pixels are lit by their SH in the lighting: skipped here),
 // GI_COUNT_PIXELS (diagnostics: location 1 marks every pixel this draw evaluated),
 // GI_COUNT_INVOCATIONS (diagnostics, GLSL ES 3.10: an atomic counter counts every invocation;
@@ -82,7 +84,9 @@ void main() {
     if ((int(texelFetch(u_gbuffer_flags, px, 0).r * 255.0 + 0.5) & 1) != 0) discard;
 #endif
     vec3 rel = giRelPosition(px, depth);
+#ifndef GI_INFLUENCE_BY_RASTER
     if (!ddgiInfluences(ddgiLocal(rel))) discard;
+#endif
     vec3 n = octDecode(texelFetch(u_gbuffer_normal, px, 0).xy);
     // The eye is the origin of camera-relative space: the view direction is -rel.
 #ifdef GI_TECHNIQUE_SH

@@ -42,9 +42,19 @@ struct GiApplyPass::Draw {
     int divisor;
     const gl::Program* applyFullscreen;
     GiProgramPair apply, fill; // stencil only
+    // Stencil, eye inside a box drawn with back faces: the raster decides the influence.
+    const gl::Program* applyRaster = nullptr;
+    const gl::Program* markRaster = nullptr;
 };
 
 namespace {
+
+// Stencil: the eye lies inside the box, drawn with its back faces (depth GEQUAL): a surface
+// that passes lies between the eye and the box's exit along its ray, so inside the box. The
+// apply then needs no influence test and the mark no shader work (see drawStencil).
+bool rasterDecides(const GiVolumeRaster& r) {
+    return r.cameraInside && r.backFacesInFrontOfFar && r.eyeInsideBox;
+}
 
 void drawBox(const FrameTargets& targets) {
     glBindVertexArray(targets.emptyVao.id());
@@ -148,6 +158,14 @@ void GiApplyPass::execute(FrameContext& frame) {
         };
         d.apply = pair("gi_ddgi_apply.frag", applyDefines);
         d.fill = pair("gi_stencil_fill.frag", fillDefines);
+        gl::Defines applyRasterDefines = applyDefines, markRasterDefines = fillDefines;
+        applyRasterDefines["GI_INFLUENCE_BY_RASTER"] = "";
+        // The raster mark discards nothing: early tests are its production behaviour.
+        if (countInvocations && !countLate_) markRasterDefines["GI_COUNT_EARLY_TESTS"] = "";
+        d.applyRaster =
+            &frame.programs.get("gi_volume_box.vert", "gi_ddgi_apply.frag", applyRasterDefines);
+        d.markRaster = &frame.programs.get("gi_volume_box.vert", "gi_stencil_mark_raster.frag",
+                                           markRasterDefines);
         // The GI target's depth: the depth of the GBuffer pixel each texel stands for.
         TimedSection section(frame.timer, "gi-depth-copy");
         const gl::Program& copy = frame.programs.get("fullscreen.vert", "gi_depth_copy.frag", {});
@@ -159,7 +177,8 @@ void GiApplyPass::execute(FrameContext& frame) {
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         glDepthMask(GL_FALSE); // the volume draws only test depth
     }
-    for (const gl::Program* p : {d.applyFullscreen, d.apply.box, d.fill.box, d.fill.screen})
+    for (const gl::Program* p :
+         {d.applyFullscreen, d.apply.box, d.fill.box, d.fill.screen, d.applyRaster})
         if (p) setPixelUniforms(*p, frame, div);
 
     std::vector<GiVolumeRaster> rasters;
@@ -180,6 +199,7 @@ void GiApplyPass::execute(FrameContext& frame) {
         vs.cameraInside = stencil && r.cameraInside;
         vs.fillPass = stencil && r.visible && k != lastVisible;
         vs.fullScreen = !stencil || (r.cameraInside && !r.backFacesInFrontOfFar);
+        vs.rasterInfluence = stencil && r.visible && rasterDecides(r);
         stats_.volumes.push_back(vs);
         if (!r.visible) continue;
         if (countPixels_) {
@@ -235,6 +255,13 @@ void GiApplyPass::drawNaive(Draw& d, int v) {
 //   2. mark (gi_stencil_fill.frag: depth and the influence test, no lookup, no colour): sets
 //      'taken' on the pixels inside the influence, so no larger volume draws them again. The
 //      largest volume, drawn last, needs no mark.
+// When the eye lies inside the influence box itself (rasterDecides), both draw that box's back
+// faces without the margin, and the depth test GEQUAL alone is the influence test (the
+// deferred light-volume trick): the apply skips its influence test (GI_INFLUENCE_BY_RASTER),
+// and the mark is an empty shader (gi_stencil_mark_raster.frag) whose tests and stencil write
+// run before it - where the discarding mark ran late on every fragment of its draw. Both use
+// the same raster, so they agree on every pixel; GiStencilTest still finds naive's owners and
+// image exactly.
 // Why the apply writes no stencil: a shader that may discard, drawn with stencil writes, gets
 // its stencil test after the shader on drivers that cannot know the discard's outcome early
 // (llvmpipe among them). The earlier scheme (a fill marking 'current', then an apply that
@@ -248,10 +275,11 @@ void GiApplyPass::drawNaive(Draw& d, int v) {
 void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last,
                               bool countInvocations) {
     const bool screen = r.cameraInside && !r.backFacesInFrontOfFar;
+    const bool byRaster = rasterDecides(r);
     const auto draw = [&](const GiProgramPair& programs) {
         const gl::Program& prog = screen ? *programs.screen : *programs.box;
         prog.use();
-        if (!screen) prog.set("u_clipFromBox", r.clipFromBox);
+        if (!screen) prog.set("u_clipFromBox", byRaster ? r.clipFromInfluence : r.clipFromBox);
         probes_.bindVolume(prog, v, kFirstProbeUnit, d.frame.view.eye, d.frame.preExposure);
         if (screen)
             drawFullscreenTriangle(d.frame.targets);
@@ -271,7 +299,7 @@ void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last
     glStencilFunc(GL_EQUAL, 0, kStencilTaken);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glStencilMask(0u);
-    draw(d.apply);
+    draw(byRaster ? GiProgramPair{d.applyRaster, nullptr} : d.apply);
     if (!last) {
         TimedSection section(d.frame.timer, "gi-fill");
         if (countInvocations) invocations_.bind(1);
@@ -279,7 +307,13 @@ void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last
         glStencilFunc(GL_ALWAYS, int(kStencilTaken), kStencilTaken);
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         glStencilMask(kStencilTaken);
-        draw(d.fill);
+        if (byRaster) {
+            d.markRaster->use();
+            d.markRaster->set("u_clipFromBox", r.clipFromInfluence);
+            drawBox(d.frame.targets);
+        } else {
+            draw(d.fill);
+        }
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
     glStencilMask(0xFFu);

@@ -49,7 +49,8 @@ std::string giVolumeDrawing(const GiVolumeStats& v) {
     const std::string drawn = v.fullScreen     ? "full-screen (inside)"
                               : v.cameraInside ? "back faces (inside)"
                                                : "box";
-    return v.fillPass ? drawn + " + mark" : drawn;
+    if (!v.fillPass) return drawn;
+    return drawn + (v.rasterInfluence ? " + raster mark" : " + mark");
 }
 
 nlohmann::json giPassStatsJson(const GiPassStats& s) {
@@ -70,6 +71,7 @@ nlohmann::json giPassStatsJson(const GiPassStats& s) {
                            {"camera_inside", v.cameraInside},
                            {"fill_pass", v.fillPass},
                            {"full_screen", v.fullScreen},
+                           {"raster_influence", v.rasterInfluence},
                            {"evaluated_pixels", evaluated},
                            {"apply_invocations", apply},
                            {"mark_invocations", mark},

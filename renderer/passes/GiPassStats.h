@@ -20,6 +20,9 @@ struct GiVolumeStats {
     // Drawn as a full-screen triangle (naive; stencil when the camera is inside a box that
     // reaches past the far plane) rather than as the volume's box.
     bool fullScreen = false;
+    // Stencil, eye inside the box: the back faces' depth test decides the influence (the apply
+    // skips its influence test, the mark has an empty shader and early tests).
+    bool rasterInfluence = false;
     // GI target pixels this volume's full lookup evaluated (wrote), -1 when not counted.
     std::int64_t evaluatedPixels = -1;
     // Fragment-shader invocations the device ran (an atomic counter, GLES 3.1), -1 when not
