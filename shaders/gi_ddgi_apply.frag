@@ -78,7 +78,9 @@ void main() {
     GI_COUNT_INVOCATION();
     ivec2 px = giGBufferPixel();
     float depth = texelFetch(u_gbuffer_depth, px, 0).r;
-    if (depth >= 1.0) discard; // sky
+#ifndef GI_INFLUENCE_BY_RASTER
+    if (depth >= 1.0) discard; // sky (the raster's depth test GEQUAL already rejects it)
+#endif
 #ifdef GI_DYNAMIC_SH
     // Early out: the lighting gives dynamic objects their SH (bit 0 of the flags, bits / 255).
     if ((int(texelFetch(u_gbuffer_flags, px, 0).r * 255.0 + 0.5) & 1) != 0) discard;

@@ -45,6 +45,8 @@ struct GiApplyPass::Draw {
     // Stencil, eye inside a box drawn with back faces: the raster decides the influence.
     const gl::Program* applyRaster = nullptr;
     const gl::Program* markRaster = nullptr;
+    // The raster apply has no discard (no GI_DYNAMIC_SH early-out): it can be its own mark.
+    bool rasterApplyMarks = false;
 };
 
 namespace {
@@ -160,6 +162,7 @@ void GiApplyPass::execute(FrameContext& frame) {
         d.fill = pair("gi_stencil_fill.frag", fillDefines);
         gl::Defines applyRasterDefines = applyDefines, markRasterDefines = fillDefines;
         applyRasterDefines["GI_INFLUENCE_BY_RASTER"] = "";
+        d.rasterApplyMarks = !applyRasterDefines.count("GI_DYNAMIC_SH");
         // The raster mark discards nothing: early tests are its production behaviour.
         if (countInvocations && !countLate_) markRasterDefines["GI_COUNT_EARLY_TESTS"] = "";
         d.applyRaster =
@@ -200,6 +203,7 @@ void GiApplyPass::execute(FrameContext& frame) {
         vs.fillPass = stencil && r.visible && k != lastVisible;
         vs.fullScreen = !stencil || (r.cameraInside && !r.backFacesInFrontOfFar);
         vs.rasterInfluence = stencil && r.visible && rasterDecides(r);
+        vs.markInApply = vs.rasterInfluence && vs.fillPass && d.rasterApplyMarks;
         stats_.volumes.push_back(vs);
         if (!r.visible) continue;
         if (countPixels_) {
@@ -261,7 +265,10 @@ void GiApplyPass::drawNaive(Draw& d, int v) {
 // and the mark is an empty shader (gi_stencil_mark_raster.frag) whose tests and stencil write
 // run before it - where the discarding mark ran late on every fragment of its draw. Both use
 // the same raster, so they agree on every pixel; GiStencilTest still finds naive's owners and
-// image exactly.
+// image exactly. Without GI_DYNAMIC_SH (whose early-out discards) the raster apply discards
+// nothing at all (sky fails GEQUAL: back faces lie before the far plane), so it sets 'taken'
+// itself (stencil REPLACE, tests still early) and the mark draw is skipped: on llvmpipe each
+// depth/stencil-tested full-screen draw costs ~10-15 ms at 1280x720 even with an empty shader.
 // Why the apply writes no stencil: a shader that may discard, drawn with stencil writes, gets
 // its stencil test after the shader on drivers that cannot know the discard's outcome early
 // (llvmpipe among them). The earlier scheme (a fill marking 'current', then an apply that
@@ -299,8 +306,16 @@ void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last
     glStencilFunc(GL_EQUAL, 0, kStencilTaken);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glStencilMask(0u);
+    // No discard in the raster apply (sky fails the depth test): it can set 'taken' itself,
+    // with its tests and write still before the shader - one draw instead of two.
+    const bool marksItself = byRaster && !last && d.rasterApplyMarks;
+    if (marksItself) {
+        glStencilFunc(GL_NOTEQUAL, int(kStencilTaken), kStencilTaken);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        glStencilMask(kStencilTaken);
+    }
     draw(byRaster ? GiProgramPair{d.applyRaster, nullptr} : d.apply);
-    if (!last) {
+    if (!last && !marksItself) {
         TimedSection section(d.frame.timer, "gi-fill");
         if (countInvocations) invocations_.bind(1);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);

@@ -50,6 +50,7 @@ std::string giVolumeDrawing(const GiVolumeStats& v) {
                               : v.cameraInside ? "back faces (inside)"
                                                : "box";
     if (!v.fillPass) return drawn;
+    if (v.markInApply) return drawn + ", apply marks";
     return drawn + (v.rasterInfluence ? " + raster mark" : " + mark");
 }
 
@@ -72,6 +73,7 @@ nlohmann::json giPassStatsJson(const GiPassStats& s) {
                            {"fill_pass", v.fillPass},
                            {"full_screen", v.fullScreen},
                            {"raster_influence", v.rasterInfluence},
+                           {"mark_in_apply", v.markInApply},
                            {"evaluated_pixels", evaluated},
                            {"apply_invocations", apply},
                            {"mark_invocations", mark},

@@ -16,13 +16,15 @@ struct GiVolumeStats {
     int fileIndex = 0;         // in the probe set
     bool culled = false;       // outside the view frustum: nothing drawn
     bool cameraInside = false; // stencil: drawn with the box's back faces or full-screen
-    bool fillPass = false;     // stencil: the mark draw ran after the apply (all but the last)
+    bool fillPass = false;     // stencil: the volume marks its pixels (all but the last)
     // Drawn as a full-screen triangle (naive; stencil when the camera is inside a box that
     // reaches past the far plane) rather than as the volume's box.
     bool fullScreen = false;
     // Stencil, eye inside the box: the back faces' depth test decides the influence (the apply
     // skips its influence test, the mark has an empty shader and early tests).
     bool rasterInfluence = false;
+    // ... and the apply sets 'taken' itself (no discard in it): no separate mark draw.
+    bool markInApply = false;
     // GI target pixels this volume's full lookup evaluated (wrote), -1 when not counted.
     std::int64_t evaluatedPixels = -1;
     // Fragment-shader invocations the device ran (an atomic counter, GLES 3.1), -1 when not

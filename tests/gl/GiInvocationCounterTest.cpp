@@ -24,13 +24,17 @@ render::GiApplyPass* applyPass(render::FrameRenderer& r) {
 }
 
 render::GiPassStats renderCounted(const NestedCamera& cam, const std::string& multiVolume,
-                                  const std::string& volumeLod = "", bool lateTests = false) {
+                                  const std::string& volumeLod = "", bool lateTests = false,
+                                  const std::string& dynamic = "") {
     const scene::Scene& s = giTestScene();
     render::GiOptions gi;
     gi.probes = &nestedVolumeProbes();
     gi.profile.applyOverride("gi.multi_volume=" + multiVolume);
     if (!volumeLod.empty()) gi.profile.applyOverride("gi.volume_lod=" + volumeLod);
-    render::FrameRenderer r(s, render::defaultFrameSettings(s), gi);
+    if (!dynamic.empty()) gi.profile.applyOverride("gi.dynamic=" + dynamic);
+    // Build every pass: the test scene has no dynamic objects, and gi.dynamic=sh would
+    // otherwise fall back to per_pixel.
+    render::FrameRenderer r(s, render::defaultFrameSettings(s), gi, render::FrameBuild{false});
     applyPass(r)->setCountPixels(true);
     applyPass(r)->setCountInvocationsWithLateTests(lateTests);
     r.render(render::makeRenderView(cam.view, s.worldBounds(), kW, kH));
@@ -84,46 +88,55 @@ TEST_F(GiInvocationCounterTest, NaiveRunsEveryVolumeOnEveryTexel) {
 }
 
 TEST_F(GiInvocationCounterTest, StencilKeepsTakenTexelsOutOfTheApply) {
-    for (const NestedCamera& cam : nestedCameras()) {
-        SCOPED_TRACE(cam.name);
-        const render::GiPassStats s = renderCounted(cam, "stencil");
-        print("stencil", cam, s);
-        ASSERT_TRUE(s.invocationsCounted);
-        EXPECT_TRUE(s.invocationsEarlyTests);
-        std::int64_t taken = 0; // texels marked by the volumes drawn so far
-        int rasterDecided = 0;
-        for (const auto& v : s.volumes) {
-            if (v.culled) continue;
-            EXPECT_GE(v.applyInvocations, v.evaluatedPixels) << v.name;
-            // The stencil test ran before the shader: at most the untaken texels reach it.
-            EXPECT_LE(v.applyInvocations, std::int64_t(kW) * kH - taken) << v.name;
-            // The mark evaluates the same influence test as the apply: it runs on at least the
-            // texels it marks, and those are the ones the apply evaluated.
-            if (v.fillPass) {
-                EXPECT_GE(v.markInvocations, v.evaluatedPixels) << v.name;
-            } else {
-                EXPECT_EQ(v.markInvocations, 0) << v.name;
-            }
-            // Eye inside the box: the back faces' depth test alone selects the surfaces inside
-            // it, so the apply discards nothing and the device shades exactly what it evaluates.
-            if (v.rasterInfluence) {
-                ++rasterDecided;
-                EXPECT_EQ(v.applyInvocations, v.evaluatedPixels) << v.name;
-                // The first volume drawn: nothing is taken yet, the mark runs early on exactly
-                // the pixels the apply evaluated.
-                if (taken == 0 && v.fillPass) {
-                    EXPECT_EQ(v.markInvocations, v.evaluatedPixels) << v.name;
+    // gi.dynamic=sh: the apply's dynamic-pixel early-out discards, so a raster-decided volume
+    // keeps a separate (empty-shader) mark draw; otherwise its apply marks.
+    for (const char* dynamic : {"per_pixel", "sh"})
+        for (const NestedCamera& cam : nestedCameras()) {
+            SCOPED_TRACE(std::string(cam.name) + " gi.dynamic=" + dynamic);
+            const bool dynamicSh = std::string(dynamic) == "sh";
+            const render::GiPassStats s = renderCounted(cam, "stencil", "", false, dynamic);
+            print("stencil", cam, s);
+            ASSERT_TRUE(s.invocationsCounted);
+            EXPECT_TRUE(s.invocationsEarlyTests);
+            std::int64_t taken = 0; // texels marked by the volumes drawn so far
+            int rasterDecided = 0;
+            for (const auto& v : s.volumes) {
+                if (v.culled) continue;
+                EXPECT_GE(v.applyInvocations, v.evaluatedPixels) << v.name;
+                // The stencil test ran before the shader: at most the untaken texels reach it.
+                EXPECT_LE(v.applyInvocations, std::int64_t(kW) * kH - taken) << v.name;
+                // The mark evaluates the same influence test as the apply: it runs on at least the
+                // texels it marks, and those are the ones the apply evaluated.
+                if (v.fillPass && !v.markInApply) {
+                    EXPECT_GE(v.markInvocations, v.evaluatedPixels) << v.name;
+                } else {
+                    // No mark draw: the last volume, or an apply that sets 'taken' itself.
+                    EXPECT_EQ(v.markInvocations, 0) << v.name;
                 }
+                // Eye inside the box: the back faces' depth test alone selects the surfaces inside
+                // it, so the apply discards nothing and the device shades exactly what it
+                // evaluates.
+                if (v.rasterInfluence) {
+                    ++rasterDecided;
+                    if (!dynamicSh) {
+                        EXPECT_EQ(v.applyInvocations, v.evaluatedPixels) << v.name;
+                    }
+                    // The first volume drawn: nothing is taken yet, the mark runs early on exactly
+                    // the pixels the apply evaluated.
+                    EXPECT_EQ(v.markInApply, v.fillPass && !dynamicSh) << v.name;
+                    if (taken == 0 && v.fillPass && !v.markInApply) {
+                        EXPECT_EQ(v.markInvocations, v.evaluatedPixels) << v.name;
+                    }
+                }
+                taken += v.evaluatedPixels;
             }
-            taken += v.evaluatedPixels;
+            // The cameras inside a volume exercise the raster-decided draws.
+            if (std::string(cam.inside).empty()) {
+                EXPECT_EQ(rasterDecided, 0);
+            } else {
+                EXPECT_GT(rasterDecided, 0);
+            }
         }
-        // The cameras inside a volume exercise the raster-decided draws.
-        if (std::string(cam.inside).empty()) {
-            EXPECT_EQ(rasterDecided, 0);
-        } else {
-            EXPECT_GT(rasterDecided, 0);
-        }
-    }
 }
 
 // What the counter does to the tests when it alone decides (no early_fragment_tests): on
