@@ -61,11 +61,16 @@ GiVolumeRaster volumeRaster(const GpuProbeVolume& v, const RenderView& view,
     const double nearReach =
         double(view.nearPlane) * std::sqrt(1.0 + tanY * tanY * (1.0 + aspect * aspect));
     const glm::dvec3 eyeLocal = glm::dmat3(v.toLocal) * (-centreRel);
+    // An eye on a face counts as inside (a camera in the doorway between two rooms' boxes:
+    // rooms' worst-case view). An eye outside by d lets the back faces take surfaces between it
+    // and the box, all within d of the box: with d below onFace, below the depth test's own
+    // rounding.
+    const double onFace = 1e-5 * (1.0 + double(std::max({influence.x, influence.y, influence.z})));
     r.cameraInside = true;
     r.eyeInsideBox = true;
     for (int a = 0; a < 3; ++a) {
         r.cameraInside = r.cameraInside && std::abs(eyeLocal[a]) <= double(half[a]) + nearReach;
-        r.eyeInsideBox = r.eyeInsideBox && std::abs(eyeLocal[a]) < double(influence[a]);
+        r.eyeInsideBox = r.eyeInsideBox && std::abs(eyeLocal[a]) <= double(influence[a]) + onFace;
     }
 
     // Culling: outside when all 8 corners lie beyond one clip plane (conservative).
