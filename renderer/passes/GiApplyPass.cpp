@@ -171,13 +171,23 @@ void GiApplyPass::execute(FrameContext& frame) {
                                            markRasterDefines);
         // The GI target's depth: the depth of the GBuffer pixel each texel stands for.
         TimedSection section(frame.timer, "gi-depth-copy");
-        const gl::Program& copy = frame.programs.get("fullscreen.vert", "gi_depth_copy.frag", {});
-        setPixelUniforms(copy, frame, div);
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_ALWAYS);
-        drawFullscreenTriangle(frame.targets);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        if (div == 1 && frame.giJitter == glm::ivec2(0)) {
+            // Texel = pixel, and both are DEPTH32F_STENCIL8: a blit copies the same values as
+            // the shader below, without running a fragment shader per pixel.
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, gb.framebuffer().id());
+            glBlitFramebuffer(0, 0, gb.width(), gb.height(), 0, 0, spec.width, spec.height,
+                              GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+            targets_.bind();
+        } else {
+            const gl::Program& copy =
+                frame.programs.get("fullscreen.vert", "gi_depth_copy.frag", {});
+            setPixelUniforms(copy, frame, div);
+            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_ALWAYS);
+            drawFullscreenTriangle(frame.targets);
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        }
         glDepthMask(GL_FALSE); // the volume draws only test depth
     }
     for (const gl::Program* p :
