@@ -7,7 +7,9 @@
 //   stencil: smallest first, one stencil bit ('taken') on a depth-stencil of the GI target's
 //            size, so each pixel is evaluated once, by the smallest volume containing it;
 //            per volume an apply that writes no stencil (so the test runs before the
-//            shader), then a cheap mark draw (renderer/README.md "gi.multi_volume=stencil").
+//            shader), then a cheap mark draw; with the eye inside the box the depth test
+//            decides the influence and the apply marks itself (renderer/README.md
+//            "gi.multi_volume=stencil").
 #include "passes/FrameContext.h"
 #include "passes/GiInvocationCounter.h"
 #include "passes/GiPassStats.h"
