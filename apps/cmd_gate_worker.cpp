@@ -23,6 +23,7 @@ struct WorkerArgs {
     std::string probes, camera, timing = "cpu-time";
     int width = 384, height = 216, warmup = 2;
     std::vector<std::string> callgrindProfiles;
+    bool callgrindFloor = false;
 };
 
 int serve(const WorkerArgs& a) {
@@ -44,7 +45,7 @@ int serve(const WorkerArgs& a) {
         std::vector<profile::PlatformProfile> profiles;
         for (const std::string& n : a.callgrindProfiles)
             profiles.push_back(profile::loadProfile(n, o.search));
-        gate::renderCallgrindFrames(o.inputs, profiles);
+        gate::renderCallgrindFrames(o.inputs, profiles, a.callgrindFloor);
         return 0;
     }
     const gl::GlCaps caps = gl::queryCaps();
@@ -81,6 +82,9 @@ const RegisterCommand reg{
          cmd.add_option("--callgrind-profiles", a->callgrindProfiles,
                         "Render one instrumented frame of each (under valgrind only)")
              ->delimiter(',');
+         cmd.add_flag("--callgrind-floor", a->callgrindFloor,
+                      "With --callgrind-profiles: also dump the GI fetch floor and print the GI "
+                      "pass's evaluations (bench/gi_floor_callgrind.sh)");
          return [a] { return run(*a); };
      }}};
 

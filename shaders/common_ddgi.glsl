@@ -71,6 +71,40 @@ uniform float u_ddgiInvMaxDistance;
 uniform float u_ddgiIrradianceScale; // pre-exposure / storage scale (GpuProbes::bindVolume)
 uniform vec2 u_ddgiIrrInvSize;    // 1 / (width, height) of an irradiance layer
 uniform vec2 u_ddgiVisInvSize;
+// Per-volume constants of the lookup, computed once per draw on the CPU (GpuProbes::bindVolume)
+// instead of per pixel and probe here. Texture coordinate of a tile's texel: the tile's
+// (column, row) times *TileScale, plus the octahedral coordinate in [-1,1]^2 times *Oct.xy,
+// plus *Oct.zw - the same as (tile * TILE + (oct * 0.5 + 0.5) * INTERIOR + 1) / layer size.
+uniform vec2 u_ddgiIrrTileScale;  // DDGI_IRR_TILE * u_ddgiIrrInvSize
+uniform vec4 u_ddgiIrrOct;        // xy: DDGI_IRR_INTERIOR / 2 * inv size; zw: (interior / 2 + 1) * inv size
+uniform vec2 u_ddgiVisTileScale;  // DDGI_VIS_TILE * u_ddgiVisInvSize
+uniform vec4 u_ddgiVisOct;        // as u_ddgiIrrOct for the visibility layers
+uniform vec3 u_ddgiMaxBase;       // max(counts - 2, 0): the base probe's largest coordinate
+uniform vec3 u_ddgiBiasNormal;    // DDGI_BIAS_NORMAL * u_ddgiBiasDistance (x = y = z)
+uniform vec3 u_ddgiBiasView;      // DDGI_BIAS_VIEW * u_ddgiBiasDistance
+
+// The uniforms the 8-probe loops read, copied into registers once per lookup: a uniform read
+// inside the loops costs llvmpipe a per-lane load at each use (common_ddgi_tile.glsl).
+ivec3 ddgiLoopCounts, ddgiLoopLast;
+vec3 ddgiLoopStep;
+vec2 ddgiLoopVisTile, ddgiLoopIrrTile;
+vec4 ddgiLoopVisOct;
+float ddgiLoopInvMaxDistance;
+#ifdef GI_GUARD_EXPOSURE_ON
+float ddgiLoopIrradianceScale;
+#endif
+void ddgiInitLoopConstants() {
+    ddgiLoopCounts = u_ddgiCounts;
+    ddgiLoopLast = u_ddgiCounts - 1;
+    ddgiLoopStep = u_ddgiGridStep;
+    ddgiLoopVisTile = u_ddgiVisTileScale;
+    ddgiLoopIrrTile = u_ddgiIrrTileScale;
+    ddgiLoopVisOct = u_ddgiVisOct;
+    ddgiLoopInvMaxDistance = u_ddgiInvMaxDistance;
+#ifdef GI_GUARD_EXPOSURE_ON
+    ddgiLoopIrradianceScale = u_ddgiIrradianceScale;
+#endif
+}
 
 vec3 ddgiLocal(vec3 pos) { return u_ddgiToLocal * (pos - u_ddgiCenter); }
 
@@ -98,14 +132,12 @@ float ddgiEdgeFade(vec3 p) {
 }
 
 // renderer/probes/Octahedral.h: +Y at the centre, the lower hemisphere folded to the corners.
+// d need not be unit (the L1 norm divides it out), only non-zero.
 vec2 ddgiOctEncode(vec3 d) {
     float l1 = abs(d.x) + abs(d.y) + abs(d.z);
-    vec2 uv = d.xz / l1;
-    if (d.y < 0.0) {
-        vec2 s = vec2(uv.x >= 0.0 ? 1.0 : -1.0, uv.y >= 0.0 ? 1.0 : -1.0);
-        uv = (1.0 - abs(uv.yx)) * s;
-    }
-    return uv;
+    vec2 uv = d.xz * (1.0 / l1); // one division, not two
+    vec2 s = vec2(uv.x >= 0.0 ? 1.0 : -1.0, uv.y >= 0.0 ? 1.0 : -1.0);
+    return d.y < 0.0 ? (1.0 - abs(uv.yx)) * s : uv; // a select: no branch (ddgiProbeWeight)
 }
 
 // Tile-local continuous texel coordinate of `dir` (the 1-texel border included).
@@ -139,94 +171,106 @@ ivec3 ddgiDenseTile(ivec3 q) {
     return ivec3(q.x, q.z, q.y);
 }
 
-// Visibility-and-position weight of probe q (README steps 4a-4d); < 0 when q is skipped
-// (outside the grid, invalid or absent). `tile`: where q's texels are; sparse sets also
-// return the state's w (`stateW`, 1 when skipped), from which ddgiTile finds the tile again.
-hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 p, hvec3 n, vec3 biased, hvec3 alpha,
-                       out ivec3 tile
+// Visibility-and-position weight of probe q = base + off (README steps 4a-4d); < 0 when q is
+// skipped (outside the grid, invalid or absent). `cellProbe`: where probe `base` would sit
+// unrelocated (per lookup), so a corner adds only its constant step. `tile`: where q's texels are;
+// sparse sets also return the state's w (`stateW`, 1 when skipped), from which ddgiTile finds
+// the tile again.
+// Branch-free: llvmpipe runs both sides of a branch whose condition differs between the lanes
+// and pays for the masks besides (a GPU's threads diverge likewise), so every step is computed
+// and selected: a skipped probe is computed on its nearest grid probe and rejected at the end.
+hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 cellProbe, vec3 p, hvec3 n, vec3 biased,
+                       hvec3 alpha, out ivec3 tile
 #ifdef DDGI_SPARSE_TILES
                        , out float stateW
 #endif
 ) {
-    tile = ivec3(0);
+    ivec3 qc = min(q, ddgiLoopLast); // in the grid: q unless an axis has one probe
+    vec4 state = texelFetch(u_ddgiState, ivec3(qc.x, qc.z, qc.y), 0);
+    bool live = all(lessThan(q, ddgiLoopCounts)) && state.w >= 0.5;
 #ifdef DDGI_SPARSE_TILES
-    stateW = 1.0;
-#endif
-    if (any(greaterThanEqual(q, u_ddgiCounts))) return -1.0;
-    vec4 state = texelFetch(u_ddgiState, ivec3(q.x, q.z, q.y), 0);
-    if (state.w < 0.5) return -1.0;
-#ifdef DDGI_SPARSE_TILES
-    stateW = state.w;
-    tile = ddgiTile(state.w); // w >= 1 here
+    stateW = live ? state.w : 1.0;
+    tile = ddgiTile(stateW); // w >= 1 here
 #else
-    tile = ddgiDenseTile(q);
+    tile = ddgiDenseTile(qc);
 #endif
-    vec3 probe = u_ddgiGridOrigin + vec3(q) * u_ddgiGridStep + state.xyz;
+    vec3 probe = cellProbe + vec3(off) * ddgiLoopStep + state.xyz;
 
-    // 4a. Wrap shading: probes behind the surface count less (never zero).
-    vec3 dirToProbe = ddgiSafeNormalize(probe - p, n);
-    hfloat t = (dot(ddgiHalf(dirToProbe), n) + 1.0) * 0.5;
+    // 4a. Wrap shading: probes behind the surface count less (never zero). The cosine of the
+    // direction to the probe (n when the probe sits on the point) without normalising it.
+    vec3 toProbe = probe - p;
+    float len2 = dot(toProbe, toProbe);
+    hfloat t = len2 > 0.0 ? (ddgiHalf(dot(toProbe, vec3(n)) * inversesqrt(len2)) + 1.0) * 0.5
+                          : 1.0;
     hfloat w = t * t + DDGI_WRAP_BIAS;
 
-    // 4b. Chebyshev visibility from the probe towards the biased point.
+    // 4b. Chebyshev visibility from the probe towards the biased point (only where the point
+    // is farther than the mean); the octahedral encoding needs no unit direction (n when the
+    // point sits on the probe).
     vec3 toPoint = biased - probe;
-    float dist = length(toPoint);
-    vec3 dir = dist > 0.0 ? toPoint / dist : vec3(n);
-    vec2 visCoord = (vec2(tile.xy) * DDGI_VIS_TILE + ddgiTileLocal(dir, DDGI_VIS_INTERIOR)) *
-                    u_ddgiVisInvSize;
+    float dist = sqrt(dot(toPoint, toPoint));
+    vec2 visCoord = vec2(tile.xy) * ddgiLoopVisTile +
+                    ddgiOctEncode(dist > 0.0 ? toPoint : vec3(n)) * ddgiLoopVisOct.xy +
+                    ddgiLoopVisOct.zw;
     hvec2 vis = texture(u_ddgiVisibility, vec3(visCoord, float(tile.z))).rg;
-    hfloat d01 = ddgiHalf(dist * u_ddgiInvMaxDistance);
-    if (d01 > vis.x) {
-        hfloat variance = max(vis.y - vis.x * vis.x, DDGI_VARIANCE_FLOOR);
-        hfloat dd = d01 - vis.x;
-        hfloat cheb = variance / (variance + dd * dd);
-        w *= max(cheb * cheb * cheb, DDGI_CHEBYSHEV_FLOOR);
-    }
+    hfloat d01 = ddgiHalf(dist * ddgiLoopInvMaxDistance);
+    hfloat variance = max(vis.y - vis.x * vis.x, DDGI_VARIANCE_FLOOR);
+    hfloat dd = d01 - vis.x;
+    hfloat cheb = variance / (variance + dd * dd);
+    w *= d01 > vis.x ? max(cheb * cheb * cheb, DDGI_CHEBYSHEV_FLOOR) : 1.0;
 
     // 4c. Crush tiny weights.
-    if (w < DDGI_CRUSH_THRESHOLD) w *= (w * w) / (DDGI_CRUSH_THRESHOLD * DDGI_CRUSH_THRESHOLD);
+    w *= w < DDGI_CRUSH_THRESHOLD ? (w * w) * (1.0 / (DDGI_CRUSH_THRESHOLD * DDGI_CRUSH_THRESHOLD))
+                                  : 1.0;
 
     // 4d. Trilinear.
     hfloat tri = (off.x != 0 ? alpha.x : 1.0 - alpha.x) * (off.y != 0 ? alpha.y : 1.0 - alpha.y) *
                  (off.z != 0 ? alpha.z : 1.0 - alpha.z);
-    return w * max(tri, DDGI_MIN_TRILINEAR);
+    return live ? w * max(tri, DDGI_MIN_TRILINEAR) : -1.0;
 }
 
-// Irradiance of the probe whose tile is `tile` (ddgiTile).
-hvec3 ddgiProbeIrradiance(ivec3 tile, vec2 irrLocal) {
-    vec2 c = (vec2(tile.xy) * DDGI_IRR_TILE + irrLocal) * u_ddgiIrrInvSize;
+// Irradiance of the probe whose tile is `tile` (ddgiTile); `irrCoord`: the texture coordinate
+// of the texel in tile (0, 0) (ddgiIrrCoord), the same in every tile.
+hvec3 ddgiProbeIrradiance(ivec3 tile, vec2 irrCoord) {
+    vec2 c = vec2(tile.xy) * ddgiLoopIrrTile + irrCoord;
 #ifdef GI_GUARD_EXPOSURE_ON
-    return ddgiHalf(texture(u_ddgiIrradiance, vec3(c, float(tile.z))).rgb * u_ddgiIrradianceScale);
+    return ddgiHalf(texture(u_ddgiIrradiance, vec3(c, float(tile.z))).rgb * ddgiLoopIrradianceScale);
 #else
     return texture(u_ddgiIrradiance, vec3(c, float(tile.z))).rgb;
 #endif
 }
 
-// Irradiance at `pos` (caller's space) for surface normal `normal` seen from direction `view`
-// (surface -> viewer; need not be unit). rgb = E * fade, a = weight (fade; 0 = no data).
-hvec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
+// ddgiProbeIrradiance's `irrCoord` of unit direction `dir`.
+vec2 ddgiIrrCoord(vec3 dir) {
+    return ddgiOctEncode(dir) * u_ddgiIrrOct.xy + u_ddgiIrrOct.zw;
+}
+
+// Irradiance at local point `p` (ddgiLocal of the caller's position: the caller has it from the
+// influence test) for surface normal `normal` seen from direction `view` (caller's space;
+// surface -> viewer; need not be unit). rgb = E * fade, a = weight (fade; 0 = no data).
+hvec4 ddgiSample(vec3 p, vec3 normal, vec3 view) {
 #ifdef DDGI_SPARSE_TILES
     ddgiInitTileFields();
 #endif
+    ddgiInitLoopConstants();
     // 1. Local frame.
-    vec3 p = ddgiLocal(pos);
     vec3 n = ddgiSafeNormalize(u_ddgiToLocal * normal, vec3(0.0, 1.0, 0.0));
     vec3 v = ddgiSafeNormalize(u_ddgiToLocal * view, n);
 
-    // 2. Edge fade (roots; children have a zero fade width and fade 0 outside the box).
+    // 2. Edge fade (roots; children have a zero fade width and fade 0 outside the box). A
+    // point with no fade is looked up all the same and given 0 at the end (no branch).
     float fade = ddgiEdgeFade(p);
-    if (fade <= 0.0) return vec4(0.0);
 
     // 3. Surface bias; base probe from the unbiased point, fractions from the biased one.
-    vec3 biased = p + (DDGI_BIAS_NORMAL * n + DDGI_BIAS_VIEW * v) * u_ddgiBiasDistance;
-    vec3 g = clamp((p + u_ddgiHalf) * u_ddgiInvCell, vec3(0.0),
-                   vec3(max(u_ddgiCounts - 2, ivec3(0))));
+    vec3 biased = p + (n * u_ddgiBiasNormal + v * u_ddgiBiasView);
+    vec3 g = clamp((p + u_ddgiHalf) * u_ddgiInvCell, vec3(0.0), u_ddgiMaxBase);
     ivec3 base = ivec3(floor(g));
     hvec3 alpha = ddgiHalf(clamp((biased + u_ddgiHalf) * u_ddgiInvCell - vec3(base), 0.0, 1.0));
     hvec3 nh = ddgiHalf(n);
 
     // 4. The 8 surrounding probes.
-    vec2 irrLocal = ddgiTileLocal(n, DDGI_IRR_INTERIOR);
+    vec3 cellProbe = u_ddgiGridOrigin + vec3(base) * u_ddgiGridStep;
+    vec2 irrLocal = ddgiIrrCoord(n);
     hvec3 sumE = vec3(0.0);
     hfloat sumW = 0.0;
 #ifdef GI_LOOPS_SPLIT
@@ -242,22 +286,24 @@ hvec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
     for (int i = 0; i < 8; ++i) {
         ivec3 tile;
 #ifdef DDGI_SPARSE_TILES
-        weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), p, nh, biased, alpha,
+        weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), cellProbe, p, nh,
+                                     biased, alpha,
                                      tile, stateWs[i]);
 #else
-        weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), p, nh, biased, alpha,
+        weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), cellProbe, p, nh,
+                                     biased, alpha,
                                      tile);
 #endif
     }
     for (int i = 0; i < 8; ++i) {
-        if (weights[i] < 0.0) continue;
 #ifdef DDGI_SPARSE_TILES
         ivec3 tile = ddgiTile(stateWs[i]);
 #else
-        ivec3 tile = ddgiDenseTile(base + ddgiCorner(i));
+        ivec3 tile = ddgiDenseTile(min(base + ddgiCorner(i), ddgiLoopLast));
 #endif
-        sumE += weights[i] * ddgiProbeIrradiance(tile, irrLocal);
-        sumW += weights[i];
+        hvec3 e = ddgiProbeIrradiance(tile, irrLocal);
+        sumE += weights[i] >= 0.0 ? weights[i] * e : vec3(0.0); // skipped: < 0
+        sumW += max(weights[i], 0.0);
     }
 #else
     for (int i = 0; i < 8; ++i) {
@@ -265,23 +311,23 @@ hvec4 ddgiSample(vec3 pos, vec3 normal, vec3 view) {
         ivec3 tile;
 #ifdef DDGI_SPARSE_TILES
         float stateW;
-        hfloat w = ddgiProbeWeight(base + off, off, p, nh, biased, alpha, tile, stateW);
+        hfloat w = ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile, stateW);
 #else
-        hfloat w = ddgiProbeWeight(base + off, off, p, nh, biased, alpha, tile);
+        hfloat w = ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile);
 #endif
-        if (w < 0.0) continue;
-        sumE += w * ddgiProbeIrradiance(tile, irrLocal);
-        sumW += w;
+        hvec3 e = ddgiProbeIrradiance(tile, irrLocal);
+        sumE += w >= 0.0 ? w * e : vec3(0.0); // skipped: < 0 (a select, not a branch)
+        sumW += max(w, 0.0);
     }
 #endif
 
     // 5. Normalise, then fade.
-    if (!(sumW > 0.0)) return vec4(0.0);
     hfloat fadeH = ddgiHalf(fade);
 #ifdef GI_GUARD_EXPOSURE_ON
-    return vec4(sumE / sumW * fadeH, fadeH);
+    hvec4 result = vec4(sumE / sumW * fadeH, fadeH);
 #else
     // highp: 1 / the storage scale of a dim scenario (2^-25 at light x1e-4) is not an fp16.
-    return vec4(sumE / sumW * fadeH * u_ddgiIrradianceScale, fadeH);
+    hvec4 result = vec4(sumE / sumW * fadeH * u_ddgiIrradianceScale, fadeH);
 #endif
+    return fade > 0.0 && sumW > 0.0 ? result : vec4(0.0);
 }

@@ -17,7 +17,7 @@ void main() {
     float mean = texture(u_ddgiVisibility, vec3(c, float(v_tile.z))).r;
     out_radiance = vec4(vec3(v_valid >= 0.5 ? mean * u_visibilityScale : 0.0), 1.0);
 #else
-    out_radiance = vec4(ddgiProbeIrradiance(v_tile, ddgiTileLocal(d, DDGI_IRR_INTERIOR)) /
-                            3.14159265358979, 1.0);
+    ddgiInitLoopConstants();
+    out_radiance = vec4(ddgiProbeIrradiance(v_tile, ddgiIrrCoord(d)) / 3.14159265358979, 1.0);
 #endif
 }

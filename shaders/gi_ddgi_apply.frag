@@ -7,8 +7,13 @@
 // Target: rgb = E * fade, a = weight; formats without alpha (GI_TARGET_R11G11B10F) get the
 // ambient blended in here instead (see lighting_direct.frag).
 // Variants: GI_RESOLUTION_* (the target is 1, 1/2 or 1/4 of the GBuffer per axis),
+// GI_INFLUENCE_BY_RASTER (stencil, eye inside the box: the back faces' depth test decides the
+// influence, as for the raster mark gi_stencil_mark_raster.frag, so both agree on every pixel),
 // GI_DYNAMIC_SH (dynamic-object pixels are lit by their SH in the lighting: skipped here),
-// GI_COUNT_PIXELS (diagnostics: location 1 marks every pixel this draw evaluated).
+// GI_COUNT_PIXELS (diagnostics: location 1 marks every pixel this draw evaluated),
+// GI_COUNT_INVOCATIONS (diagnostics, GLSL ES 3.10: an atomic counter counts every invocation;
+// GI_COUNT_EARLY_TESTS keeps the depth/stencil tests before the shader, as without the counter:
+// common_gi_invocations.glsl).
 // Guards: GI_GUARD_EXPOSURE_ON (the output is pre-exposed: common_ddgi.glsl), GI_GUARD_CLAMP_ON
 // (NaN -> 0, overflow -> the target format's largest value, negatives -> 0 before the store).
 #include "common_octahedral.glsl"
@@ -23,6 +28,7 @@
 #ifdef GI_TECHNIQUE_SH
 #include "common_sh.glsl"
 #endif
+#include "common_gi_invocations.glsl"
 layout(location = 0) out vec4 out_gi;
 #ifdef GI_COUNT_PIXELS
 layout(location = 1) out vec4 out_evaluated;
@@ -69,21 +75,27 @@ highp vec3 giDropMantissaBit(highp vec3 v) {
 #endif
 
 void main() {
+    GI_COUNT_INVOCATION();
     ivec2 px = giGBufferPixel();
     float depth = texelFetch(u_gbuffer_depth, px, 0).r;
-    if (depth >= 1.0) discard; // sky
+#ifndef GI_INFLUENCE_BY_RASTER
+    if (depth >= 1.0) discard; // sky (the raster's depth test GEQUAL already rejects it)
+#endif
 #ifdef GI_DYNAMIC_SH
     // Early out: the lighting gives dynamic objects their SH (bit 0 of the flags, bits / 255).
     if ((int(texelFetch(u_gbuffer_flags, px, 0).r * 255.0 + 0.5) & 1) != 0) discard;
 #endif
     vec3 rel = giRelPosition(px, depth);
-    if (!ddgiInfluences(ddgiLocal(rel))) discard;
+    vec3 local = ddgiLocal(rel); // once: the influence test and the lookup share it
+#ifndef GI_INFLUENCE_BY_RASTER
+    if (!ddgiInfluences(local)) discard;
+#endif
     vec3 n = octDecode(texelFetch(u_gbuffer_normal, px, 0).xy);
     // The eye is the origin of camera-relative space: the view direction is -rel.
 #ifdef GI_TECHNIQUE_SH
     vec4 gi = shSample(rel, n, -rel); // gi.technique=sh_l1|sh_l2: common_sh.glsl
 #else
-    vec4 gi = ddgiSample(rel, n, -rel);
+    vec4 gi = ddgiSample(local, n, -rel);
 #endif
 #ifdef GI_DEBUG_EXTRA_FETCHES
     // Test-only (passes/GiDebugInjection.h): fetches that cannot change the result (irradiance

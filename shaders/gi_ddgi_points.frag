@@ -20,12 +20,13 @@ uniform highp sampler2D u_pointView;
 void main() {
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec3 pos = texelFetch(u_pointPosition, px, 0).xyz;
-    if (!ddgiInfluences(ddgiLocal(pos))) discard;
+    vec3 local = ddgiLocal(pos);
+    if (!ddgiInfluences(local)) discard;
 #ifdef GI_TECHNIQUE_SH
     out_gi = shSample(pos, texelFetch(u_pointNormal, px, 0).xyz,
                       texelFetch(u_pointView, px, 0).xyz);
 #else
-    out_gi = ddgiSample(pos, texelFetch(u_pointNormal, px, 0).xyz,
+    out_gi = ddgiSample(local, texelFetch(u_pointNormal, px, 0).xyz,
                         texelFetch(u_pointView, px, 0).xyz);
 #endif
 }

@@ -207,6 +207,24 @@ void compareModelWithGl(const ProfileRecord& now, GateOutcome& out) {
     }
 }
 
+// What the device shaded against what it evaluated, per volume (informational: naive shades
+// every volume full-screen by design). A row says whether they agree and, if not, by how much,
+// so a change that makes the device shade more than the counters say shows up here.
+void compareInvocationsWithPixels(const ProfileRecord& now, GateOutcome& out) {
+    for (const auto& [volume, invocations] : now.glInvocations) {
+        std::int64_t pixels = 0;
+        for (const auto& [name, n] : now.glPixels)
+            if (name == volume) pixels = n;
+        const std::int64_t wasted = invocations - pixels;
+        out.rows.push_back({now.name, "gl-invocations", "apply invocations, " + volume,
+                            "evaluated " + std::to_string(pixels),
+                            "invoked " + std::to_string(invocations), RowStatus::Ok,
+                            wasted == 0 ? "agree"
+                                        : "DISAGREE (informational): " + std::to_string(wasted) +
+                                              " invocations evaluated nothing"});
+    }
+}
+
 } // namespace
 
 const char* rowStatusName(RowStatus s) {
@@ -266,6 +284,7 @@ void compareRecords(const GateRecord& baseline, const GateRecord& now, GateOutco
         const ProfileRecord* b = baseline.profile(p.name);
         compareCounters(b, p, out);
         compareModelWithGl(p, out);
+        compareInvocationsWithPixels(p, out);
         compareAccuracy(b, p, now.suite.tolerance, out);
     }
     for (const ProfileRecord& b : baseline.profiles)

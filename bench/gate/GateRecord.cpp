@@ -172,6 +172,7 @@ json recordJson(const GateRecord& r) {
         json o{{"name", p.name},
                {"counters", countersJson(p.counters)},
                {"gl_evaluated_pixels", countersJson(p.glPixels)},
+               {"gl_apply_invocations", countersJson(p.glInvocations)},
                {"ratio_samples", p.ratioSamples}};
         if (p.accuracy.measured)
             o["accuracy"] = {{"flip_mean", p.accuracy.flipMean},
@@ -191,8 +192,7 @@ json recordJson(const GateRecord& r) {
                            {"cpu", r.environment.cpu}};
     return {{"schema", kGateSchema},      {"suite", suiteJson(r.suite)}, {"recorded", r.recorded},
             {"environment", environment}, {"probes", r.probes},          {"bake", r.bake},
-            {"profiles", profiles},
-            {"callgrind", callgrind}};
+            {"profiles", profiles},       {"callgrind", callgrind}};
 }
 
 GateRecord recordFromJson(const json& j, const std::string& source) {
@@ -223,6 +223,9 @@ GateRecord recordFromJson(const json& j, const std::string& source) {
             if (ps[i].contains("gl_evaluated_pixels"))
                 p.glPixels =
                     countersFrom(ps[i].at("gl_evaluated_pixels"), w + ".gl_evaluated_pixels");
+            if (ps[i].contains("gl_apply_invocations")) // older baselines: none
+                p.glInvocations =
+                    countersFrom(ps[i].at("gl_apply_invocations"), w + ".gl_apply_invocations");
             p.ratioSamples = optionalField(ps[i], "ratio_samples", w, std::vector<double>{});
             if (ps[i].contains("accuracy")) {
                 const json& a = ps[i].at("accuracy");

@@ -75,6 +75,10 @@ struct ProfileRecord {
     // Informational (not compared): the GL pass's evaluated pixels per volume, for the
     // model-vs-GL agreement check.
     Counters glPixels;
+    // Informational (not compared): the apply shader's invocations per volume (the pass's
+    // atomic counter, GiInvocationCounter); empty where the context cannot count. Where they
+    // exceed glPixels the device shaded work that evaluated nothing (gate row gl-invocations).
+    Counters glInvocations;
     AccuracyValues accuracy;          // against the suite's reference (not for the reference)
     std::vector<double> ratioSamples; // per round: profile frame / reference frame
     const std::int64_t* counter(const std::string& key) const;

@@ -2,10 +2,14 @@
 
 #include "WorkerProcess.h"
 #include "bench/gate/CallgrindOutput.h"
+#include "bench/runner/FetchFloorPass.h"
 #include "core/Error.h"
+#include "passes/GiApplyPass.h"
 
 #include <algorithm>
 #include <filesystem>
+#include <iostream>
+#include <memory>
 
 #include <glad/gl.h>
 
@@ -64,22 +68,46 @@ bool callgrindSupported() {
 }
 
 void renderCallgrindFrames(const GateInputs& in,
-                           const std::vector<profile::PlatformProfile>& profiles) {
+                           const std::vector<profile::PlatformProfile>& profiles, bool floor) {
 #if PB_HAVE_CALLGRIND
     if (!RUNNING_ON_VALGRIND)
         throw Error("--callgrind-profiles: run under valgrind --tool=callgrind (the gate does)");
     for (const profile::PlatformProfile& p : profiles) {
         GateRenderer r(in, p); // warm-up frames, uninstrumented
+        std::unique_ptr<bench::FetchFloorPass> floorPass;
+        if (floor) {
+            render::GiApplyPass* gi = r.renderer().giApplyPass();
+            if (!gi) throw Error("--callgrind-floor: profile '" + p.name + "' has no GI pass");
+            // The counted frame comes right after a camera cut, as the gate's (GateMeasure.cpp).
+            r.renderer().resetGiHistory();
+            gi->setCountPixels(true);
+            r.frame();
+            gi->setCountPixels(false);
+            const render::GiPassStats& s = gi->stats();
+            std::cout << "gi-evaluations " << p.name << " " << s.totalEvaluations() << " "
+                      << std::int64_t(s.width) * s.height << std::endl;
+            r.renderer().resetGiHistory();
+            r.frame();
+            floorPass = std::make_unique<bench::FetchFloorPass>(p.switches);
+            floorPass->execute(r.renderer(), r.view()); // compiles its shader, uninstrumented
+            glFinish(); // llvmpipe rasterises queued draws at the next flush: not in a dump
+        }
         CALLGRIND_START_INSTRUMENTATION;
         CALLGRIND_ZERO_STATS;
         CallgrindTimer timer(p.name);
         r.frame(&timer);
+        if (floorPass) {
+            timer.begin("gi-fetch-floor");
+            floorPass->execute(r.renderer(), r.view());
+            timer.end("gi-fetch-floor");
+        }
         timer.dump();
         CALLGRIND_STOP_INSTRUMENTATION;
     }
 #else
     (void)in;
     (void)profiles;
+    (void)floor;
     throw Error("--callgrind: this build has no valgrind/callgrind.h (Debian: valgrind)");
 #endif
 }

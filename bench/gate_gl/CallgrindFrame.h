@@ -7,6 +7,12 @@
 // instrumentation on with callgrind's client requests (valgrind/callgrind.h), renders one
 // frame whose sections each end with glFinish and CALLGRIND_DUMP_STATS_AT("<profile>/<pass>"),
 // and turns it off again: each dump holds exactly one pass of one profile.
+// With `floor` (bench/gi_floor_callgrind.sh, not the gate) the instrumented frame is followed by
+// the GI pass's texture-fetch floor (bench/runner/FetchFloorPass) dumped as
+// "<profile>/gi-fetch-floor", and before it an uninstrumented frame counting the GI pass's
+// evaluations (GiPassStats) prints one line per profile on stdout:
+//   "gi-evaluations <profile> <total evaluations> <GI target texels>"
+// so instructions per evaluation (gi-apply) and per texel (floor) can be compared.
 #include "GateMeasure.h"
 #include "bench/gate/GateRecord.h"
 #include "profile/PlatformProfile.h"
@@ -21,7 +27,8 @@ namespace pb::gate {
 bool callgrindSupported();
 // Worker side; throws pb::Error when not running under valgrind or built without support.
 void renderCallgrindFrames(const GateInputs& in,
-                           const std::vector<profile::PlatformProfile>& profiles);
+                           const std::vector<profile::PlatformProfile>& profiles,
+                           bool floor = false);
 
 // Gate side: runs `workerArgv` (ending in --callgrind-profiles) under callgrind in `outDir`
 // and reads the dumps. The key: this context's GL strings, the compiler of this build and

@@ -5,8 +5,8 @@
 #include "core/Error.h"
 #include "costmodel/CachePresets.h"
 #include "costmodel/CostModel.h"
-#include "profile/GiVolumeLod.h"
 #include "passes/GiApplyPass.h"
+#include "profile/GiVolumeLod.h"
 #include <glad/gl.h>
 
 namespace pb::gate {
@@ -117,6 +117,8 @@ void measureCounters(GateRenderer& r, const GateInputs& in, ModelScenes& scenes,
     std::vector<int> culled;
     for (const render::GiVolumeStats& v : stats.volumes) {
         add(out.glPixels, v.name, v.culled ? 0 : v.evaluatedPixels);
+        if (stats.invocationsCounted)
+            add(out.glInvocations, v.name, v.culled ? 0 : v.applyInvocations);
         if (v.culled) culled.push_back(v.fileIndex);
     }
 
@@ -148,8 +150,8 @@ AccuracyValues measureAccuracy(GateRenderer& profile, GateRenderer& reference,
     s.variants.resize(2);
     s.variants[0].variant = pv;
     s.variants[1].variant = rv;
-    bench::AccuracyInputs ai{
-        in.scene, in.probes, in.view, in.settings, in.width, in.height, 1, 67.0};
+    bench::AccuracyInputs ai{in.scene, in.probes, in.view, in.settings,
+                             in.width, in.height, 1,       67.0};
     bench::captureAccuracy(s, {&profile.renderer(), &reference.renderer()}, ai, nullptr);
     const bench::AccuracyResult& a = s.variants[0].accuracy;
     if (!a.measured) throw Error("gate: the accuracy of '" + pv.id + "' could not be measured");

@@ -8,6 +8,8 @@
 //   model.*, cache.*    the cost model (renderer/costmodel) of the same view with the pass's
 //                       culling: pixels, fetches, bytes, and the profile's cache preset
 //   glPixels            the GL pass's own evaluated pixels per volume (agreement check)
+//   glInvocations       the apply shader's invocations per volume (atomic counter; empty
+//                       where the context has none): what the device shaded
 //   accuracy            FLIP / PSNR / relative MSE of the GI against the reference, as
 //                       `probebench bench` measures it (runner/AccuracyCapture.h)
 #include "bench/gate/GateRecord.h"

@@ -7,6 +7,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -61,6 +63,9 @@ struct VariantResult {
     stats::Summary frameMs;
     std::vector<double> roundMedians;        // frame ms per round (median of its frames)
     std::optional<SectionTiming> fetchFloor; // the GI pass's texture-fetch floor
+    // One counted frame of the GI pass (GiPassStats, with the fetch floor only; 0 = not
+    // counted): its full lookups and its target's texels. The floor does one lookup per texel.
+    std::int64_t giEvaluations = 0, giTexels = 0;
     AccuracyResult accuracy;
     TruthAccuracy vsTruth;
     CoverageResult coverage;

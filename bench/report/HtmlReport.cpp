@@ -9,6 +9,7 @@
 #include "SvgCharts.h"
 #include "TruthSection.h"
 
+#include <cmath>
 #include <sstream>
 
 namespace pb::bench {
@@ -37,8 +38,10 @@ void profileTable(std::ostringstream& h, const BenchResult& r) {
     h << "<table id=\"profiles\"><tr><th class=\"l\">profile</th><th>size</th><th>frame ms "
          "median ["
       << htmlEscape(ciLabel(frameCiLevels(r))) << "]</th><th>min</th><th>IQR</th><th>Δ ms vs "
-      << "reference [" << htmlEscape(ciLabel(deltaCiLevels(r))) << "]</th>"
+      << "reference [" << htmlEscape(ciLabel(deltaCiLevels(r)))
+      << "]</th>"
          "<th>budget ms</th><th>GI ms</th><th>fetch floor ms</th><th>GI / floor</th>"
+         "<th>GI / floor per evaluation</th>"
          "<th>FLIP mean</th><th>FLIP max</th><th>PSNR dB</th><th>SSIM</th><th>rel. MSE GI</th>"
          "<th>coverage</th><th>GI MiB / budget</th></tr>\n";
     for (const SessionResult& s : r.sessions) {
@@ -47,7 +50,7 @@ void profileTable(std::ostringstream& h, const BenchResult& r) {
         h << "<tr>" << cell(prof.name, "l")
           << cell(std::to_string(s.session.width) + "x" + std::to_string(s.session.height));
         if (!p.ok()) {
-            h << "<td class=\"l bad\" colspan=\"15\">not run: " << htmlEscape(p.error)
+            h << "<td class=\"l bad\" colspan=\"16\">not run: " << htmlEscape(p.error)
               << "</td></tr>\n";
             continue;
         }
@@ -59,7 +62,9 @@ void profileTable(std::ostringstream& h, const BenchResult& r) {
           << cell(fixed(prof.frameBudgetMs, 1),
                   p.frameMs.median <= prof.frameBudgetMs ? "good" : "bad")
           << cell(fixed(giMs, 2)) << cell(p.fetchFloor ? fixed(p.fetchFloor->ms.median, 2) : "n/a")
-          << cell(p.fetchFloor ? fixed(giMs / p.fetchFloor->ms.median, 2) : "n/a");
+          << cell(p.fetchFloor ? fixed(giMs / p.fetchFloor->ms.median, 2) : "n/a")
+          << cell(std::isfinite(giOverFloorPerEvaluation(p)) ? fixed(giOverFloorPerEvaluation(p), 2)
+                                                             : "n/a");
         const AccuracyResult& a = p.accuracy;
         h << cell(fixed(a.flipMean, 4)) << cell(fixed(a.flipMax, 3)) << cell(psnrText(a.psnr))
           << cell(fixed(a.ssim, 4)) << cell(scientific(a.relativeMseGi))

@@ -8,6 +8,7 @@
 #include "Spread.h"
 #include "TruthSection.h"
 
+#include <cmath>
 #include <sstream>
 
 namespace pb::bench {
@@ -46,18 +47,28 @@ void spreadTable(std::ostringstream& out, const BenchResult& r) {
     }
 }
 
+// "2.51 (5.03)": GI over the fetch floor per evaluation (per texel); "n/a" where not measured.
+std::string floorRatioCell(const VariantResult& p) {
+    const double perTexel = giOverFloor(p), perEval = giOverFloorPerEvaluation(p);
+    if (!std::isfinite(perTexel)) return "n/a";
+    return (std::isfinite(perEval) ? fixed(perEval, 2) : std::string("n/a")) + " (" +
+           fixed(perTexel, 2) + ")";
+}
+
 void profileTable(std::ostringstream& out, const BenchResult& r) {
     out << "| profile | size | frame ms median [" << ciLabel(frameCiLevels(r))
-        << "] | Δ ms vs reference [" << ciLabel(deltaCiLevels(r)) << "] | GI ms | "
-           "floor ms | FLIP | PSNR dB | SSIM | rel. MSE GI | coverage | GI MiB (budget) |\n"
-        << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        << "] | Δ ms vs reference [" << ciLabel(deltaCiLevels(r))
+        << "] | GI ms | "
+           "floor ms | GI / floor per eval. (per texel) | FLIP | PSNR dB | SSIM | rel. MSE GI | "
+           "coverage | GI MiB (budget) |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const SessionResult& s : r.sessions) {
         const VariantResult& p = s.profile();
         out << "| " << s.session.profile.name << " | " << s.session.width << "x" << s.session.height
             << " | ";
         if (!p.ok()) {
             out << "not run: " << p.error << " |";
-            for (int i = 0; i < 9; ++i)
+            for (int i = 0; i < 10; ++i)
                 out << " - |";
             out << "\n";
             continue;
@@ -69,12 +80,14 @@ void profileTable(std::ostringstream& out, const BenchResult& r) {
                    : std::string("(is the reference)"))
             << " | " << (gi.empty() ? "n/a" : fixed(stats::summarize(gi).median, 2)) << " | "
             << (p.fetchFloor ? fixed(p.fetchFloor->ms.median, 2) : std::string("n/a")) << " | "
-            << accuracyCells(p.accuracy) << " | " << fixed(p.coverage.fraction, 4) << " | "
-            << fixed(p.giMemoryMiB, 2) << " (" << fixed(s.session.profile.giMemoryBudgetMiB, 1)
-            << ") |\n";
+            << floorRatioCell(p) << " | " << accuracyCells(p.accuracy) << " | "
+            << fixed(p.coverage.fraction, 4) << " | " << fixed(p.giMemoryMiB, 2) << " ("
+            << fixed(s.session.profile.giMemoryBudgetMiB, 1) << ") |\n";
     }
     out << "\nGI ms: median per frame of " << kGiSectionsText
         << " (every pass that exists for GI; absent passes count 0).\n"
+        << "GI / floor: GI ms per evaluation (one lookup of one volume, one counted frame) over "
+           "the fetch floor's ms per texel (one lookup's fetches); per texel in parentheses.\n"
         << "GI MiB: " << profile::kGiMemoryDefinition
         << " (what tune's --budget-mib budgets); the budget is the profile's.\n";
     spreadTable(out, r);

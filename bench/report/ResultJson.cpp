@@ -33,6 +33,17 @@ std::vector<double> giPassSamples(const VariantResult& v) {
     return out;
 }
 
+double giOverFloor(const VariantResult& v) {
+    const std::vector<double> gi = giPassSamples(v);
+    if (!v.fetchFloor || gi.empty()) return NAN;
+    return stats::summarize(gi).median / v.fetchFloor->ms.median;
+}
+
+double giOverFloorPerEvaluation(const VariantResult& v) {
+    if (v.giEvaluations <= 0 || v.giTexels <= 0) return NAN;
+    return giOverFloor(v) * double(v.giTexels) / double(v.giEvaluations);
+}
+
 namespace {
 
 nlohmann::json accuracyJson(const AccuracyResult& a) {
@@ -89,8 +100,13 @@ nlohmann::json variantJson(const VariantResult& v, const Session& s) {
         j["fetch_floor_ms"] = summaryJson(v.fetchFloor->ms);
         double giMedian = gi.empty() ? 0.0 : stats::summarize(gi).median;
         j["gi_over_floor"] = finiteOrNull(giMedian / v.fetchFloor->ms.median);
+        j["gi_over_floor_per_evaluation"] = finiteOrNull(giOverFloorPerEvaluation(v));
     } else {
         j["fetch_floor_ms"] = nullptr;
+    }
+    if (v.giEvaluations > 0 && v.giTexels > 0) {
+        j["gi_evaluations"] = v.giEvaluations;
+        j["gi_evaluations_per_texel"] = double(v.giEvaluations) / double(v.giTexels);
     }
     j["accuracy"] = accuracyJson(v.accuracy);
     j["accuracy_vs_truth"] = truthJson(v.vsTruth);

@@ -4,6 +4,7 @@
 #include "FetchFloorPass.h"
 #include "core/Error.h"
 #include "frame/FrameRenderer.h"
+#include "passes/GiApplyPass.h"
 
 #include <algorithm>
 #include <map>
@@ -70,6 +71,20 @@ void timedFloor(LiveVariant& live, SectionTimer& timer, const render::RenderView
         live.floorTimes.push_back(timer.sections().front().second);
         return;
     }
+}
+
+// One frame with the GI pass counting its evaluations (GiPassStats), right after a camera cut
+// as the accuracy frame: for the ratio to the fetch floor per evaluation (ResultJson.h).
+void countEvaluations(VariantResult& v, LiveVariant& live, const render::RenderView& rv) {
+    render::GiApplyPass* gi = live.renderer->giApplyPass();
+    if (!gi) return;
+    live.renderer->resetGiHistory();
+    gi->setCountPixels(true);
+    live.renderer->render(rv);
+    gi->setCountPixels(false);
+    const render::GiPassStats& s = gi->stats();
+    v.giEvaluations = s.totalEvaluations();
+    v.giTexels = std::int64_t(s.width) * s.height;
 }
 
 void summarizeVariant(VariantResult& v, const LiveVariant& live) {
@@ -162,8 +177,10 @@ SessionResult runSession(const Session& session, const RunnerInputs& in, const R
             if (std::string why = glErrorText(in.debug, mark); !why.empty()) fail(v, live[i], why);
         }
     }
-    for (size_t i = 0; i < n; ++i)
+    for (size_t i = 0; i < n; ++i) {
         summarizeVariant(out.variants[i], live[i]);
+        if (out.variants[i].ok() && live[i].floor) countEvaluations(out.variants[i], live[i], rv);
+    }
 
     say("accuracy against " + session.variants[size_t(session.referenceVariant)].id);
     // Accuracy is read from a frame right after a camera cut: on the bench's still camera a

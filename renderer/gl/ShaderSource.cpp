@@ -62,8 +62,13 @@ void expand(const std::string& name, std::vector<std::string>& files, std::ostri
 AssembledSource assembleShader(const std::string& name, const Defines& defines) {
     AssembledSource result;
     std::ostringstream out;
-    out << "#version 300 es\n" << kPrelude;
-    for (const auto& [k, v] : defines) out << "#define " << k << (v.empty() ? "" : " " + v) << "\n";
+    // GLSL_ES_310: the variant uses a GLSL ES 3.10 feature (atomic counters, early-test
+    // layouts). Both stages of a program get the same defines, so both get the same version,
+    // which ES linkers require.
+    out << (defines.count(kGlslEs310Define) ? "#version 310 es\n" : "#version 300 es\n")
+        << kPrelude;
+    for (const auto& [k, v] : defines)
+        out << "#define " << k << (v.empty() ? "" : " " + v) << "\n";
     expand(name, result.files, out, 0);
     result.text = out.str();
     return result;

@@ -42,9 +42,21 @@ struct GiApplyPass::Draw {
     int divisor;
     const gl::Program* applyFullscreen;
     GiProgramPair apply, fill; // stencil only
+    // Stencil, eye inside a box drawn with back faces: the raster decides the influence.
+    const gl::Program* applyRaster = nullptr;
+    const gl::Program* markRaster = nullptr;
+    // The raster apply has no discard (no GI_DYNAMIC_SH early-out): it can be its own mark.
+    bool rasterApplyMarks = false;
 };
 
 namespace {
+
+// Stencil: the eye lies inside the box, drawn with its back faces (depth GEQUAL): a surface
+// that passes lies between the eye and the box's exit along its ray, so inside the box. The
+// apply then needs no influence test and the mark no shader work (see drawStencil).
+bool rasterDecides(const GiVolumeRaster& r) {
+    return r.cameraInside && r.backFacesInFrontOfFar && r.eyeInsideBox;
+}
 
 void drawBox(const FrameTargets& targets) {
     glBindVertexArray(targets.emptyVao.id());
@@ -103,6 +115,12 @@ void GiApplyPass::execute(FrameContext& frame) {
     stats_.width = spec.width;
     stats_.height = spec.height;
     stats_.counted = countPixels_;
+    const bool countInvocations = countPixels_ && invocations_.supported();
+    stats_.invocationsCounted = countInvocations;
+    stats_.invocationsEarlyTests = !countLate_;
+    stats_.invocationsNote = !countPixels_       ? "not counted: counting is off"
+                             : !countInvocations ? invocations_.unsupportedReason()
+                                                 : "";
     if (countPixels_) {
         stats_.evaluations.assign(size_t(spec.width) * size_t(spec.height), 0);
         stats_.shadedBy.assign(stats_.evaluations.size(), -1);
@@ -114,8 +132,17 @@ void GiApplyPass::execute(FrameContext& frame) {
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | (stencil ? GL_STENCIL_BUFFER_BIT : 0u));
 
-    gl::Defines applyDefines = defines_;
+    gl::Defines applyDefines = defines_, fillDefines = defines_;
     if (countPixels_) applyDefines["GI_COUNT_PIXELS"] = "";
+    if (countInvocations) {
+        for (gl::Defines* defines : {&applyDefines, &fillDefines}) {
+            (*defines)[gl::kGlslEs310Define] = "";
+            (*defines)["GI_COUNT_INVOCATIONS"] = "";
+        }
+        // The apply writes neither depth nor stencil: early tests are what it gets without
+        // the counter. The mark writes stencil after a discard: late in production too.
+        if (!countLate_) applyDefines["GI_COUNT_EARLY_TESTS"] = "";
+    }
     applyDefines.merge(giDebugInjectionDefines()); // test-only, normally empty
     Draw d{frame,
            {gb.width(), gb.height()},
@@ -132,19 +159,39 @@ void GiApplyPass::execute(FrameContext& frame) {
                                  &frame.programs.get("fullscreen.vert", frag, defines)};
         };
         d.apply = pair("gi_ddgi_apply.frag", applyDefines);
-        d.fill = pair("gi_stencil_fill.frag", defines_);
+        d.fill = pair("gi_stencil_fill.frag", fillDefines);
+        gl::Defines applyRasterDefines = applyDefines, markRasterDefines = fillDefines;
+        applyRasterDefines["GI_INFLUENCE_BY_RASTER"] = "";
+        d.rasterApplyMarks = !applyRasterDefines.count("GI_DYNAMIC_SH");
+        // The raster mark discards nothing: early tests are its production behaviour.
+        if (countInvocations && !countLate_) markRasterDefines["GI_COUNT_EARLY_TESTS"] = "";
+        d.applyRaster =
+            &frame.programs.get("gi_volume_box.vert", "gi_ddgi_apply.frag", applyRasterDefines);
+        d.markRaster = &frame.programs.get("gi_volume_box.vert", "gi_stencil_mark_raster.frag",
+                                           markRasterDefines);
         // The GI target's depth: the depth of the GBuffer pixel each texel stands for.
         TimedSection section(frame.timer, "gi-depth-copy");
-        const gl::Program& copy = frame.programs.get("fullscreen.vert", "gi_depth_copy.frag", {});
-        setPixelUniforms(copy, frame, div);
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glEnable(GL_DEPTH_TEST);
-        glDepthFunc(GL_ALWAYS);
-        drawFullscreenTriangle(frame.targets);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        if (div == 1 && frame.giJitter == glm::ivec2(0)) {
+            // Texel = pixel, and both are DEPTH32F_STENCIL8: a blit copies the same values as
+            // the shader below, without running a fragment shader per pixel.
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, gb.framebuffer().id());
+            glBlitFramebuffer(0, 0, gb.width(), gb.height(), 0, 0, spec.width, spec.height,
+                              GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+            targets_.bind();
+        } else {
+            const gl::Program& copy =
+                frame.programs.get("fullscreen.vert", "gi_depth_copy.frag", {});
+            setPixelUniforms(copy, frame, div);
+            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+            glEnable(GL_DEPTH_TEST);
+            glDepthFunc(GL_ALWAYS);
+            drawFullscreenTriangle(frame.targets);
+            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        }
         glDepthMask(GL_FALSE); // the volume draws only test depth
     }
-    for (const gl::Program* p : {d.applyFullscreen, d.apply.box, d.fill.box, d.fill.screen})
+    for (const gl::Program* p :
+         {d.applyFullscreen, d.apply.box, d.fill.box, d.fill.screen, d.applyRaster})
         if (p) setPixelUniforms(*p, frame, div);
 
     std::vector<GiVolumeRaster> rasters;
@@ -165,17 +212,28 @@ void GiApplyPass::execute(FrameContext& frame) {
         vs.cameraInside = stencil && r.cameraInside;
         vs.fillPass = stencil && r.visible && k != lastVisible;
         vs.fullScreen = !stencil || (r.cameraInside && !r.backFacesInFrontOfFar);
+        vs.rasterInfluence = stencil && r.visible && rasterDecides(r);
+        vs.markInApply = vs.rasterInfluence && vs.fillPass && d.rasterApplyMarks;
         stats_.volumes.push_back(vs);
         if (!r.visible) continue;
         if (countPixels_) {
             const GLfloat zero[4] = {0, 0, 0, 0};
             glClearBufferfv(GL_COLOR, 1, zero);
         }
+        if (countInvocations) {
+            invocations_.reset(2); // slot 0: the apply, slot 1: the mark
+            invocations_.bind(0);
+        }
         if (stencil)
-            drawStencil(d, v, r, k == lastVisible);
+            drawStencil(d, v, r, k == lastVisible, countInvocations);
         else
             drawNaive(d, v);
         if (countPixels_) countEvaluated(int(stats_.volumes.size()) - 1);
+        if (countInvocations) {
+            const std::vector<std::int64_t> n = invocations_.read();
+            stats_.volumes.back().applyInvocations = n[0];
+            stats_.volumes.back().markInvocations = n[1];
+        }
     }
 
     resetState();
@@ -211,18 +269,34 @@ void GiApplyPass::drawNaive(Draw& d, int v) {
 //   2. mark (gi_stencil_fill.frag: depth and the influence test, no lookup, no colour): sets
 //      'taken' on the pixels inside the influence, so no larger volume draws them again. The
 //      largest volume, drawn last, needs no mark.
+// When the eye lies inside the influence box itself (rasterDecides), both draw that box's back
+// faces without the margin, and the depth test GEQUAL alone is the influence test (the
+// deferred light-volume trick): the apply skips its influence test (GI_INFLUENCE_BY_RASTER),
+// and the mark is an empty shader (gi_stencil_mark_raster.frag) whose tests and stencil write
+// run before it - where the discarding mark ran late on every fragment of its draw. Both use
+// the same raster, so they agree on every pixel; GiStencilTest still finds naive's owners and
+// image exactly. Without GI_DYNAMIC_SH (whose early-out discards) the raster apply discards
+// nothing at all (sky fails GEQUAL: back faces lie before the far plane), so it sets 'taken'
+// itself (stencil REPLACE, tests still early) and the mark draw is skipped: on llvmpipe each
+// depth/stencil-tested full-screen draw costs ~10-15 ms at 1280x720 even with an empty shader.
 // Why the apply writes no stencil: a shader that may discard, drawn with stencil writes, gets
 // its stencil test after the shader on drivers that cannot know the discard's outcome early
 // (llvmpipe among them). The earlier scheme (a fill marking 'current', then an apply that
 // INVERTed it) shaded every pixel of each box and threw most of the work away: 2.26x the
 // single volume's GI time for 1.00 evaluation per pixel (issue 17). Without writes the test
 // runs first and a taken pixel costs no lookup; only the cheap mark shader runs late.
-void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last) {
+// Counting (GI_COUNT_INVOCATIONS): the counter's atomic write would itself move the tests
+// after the shader (llvmpipe does), so the apply's counting variant declares early tests
+// (GI_COUNT_EARLY_TESTS) - what the production apply gets - and the mark's does not, being
+// late-tested in production too (renderer/README.md "Invocation counter").
+void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last,
+                              bool countInvocations) {
     const bool screen = r.cameraInside && !r.backFacesInFrontOfFar;
+    const bool byRaster = rasterDecides(r);
     const auto draw = [&](const GiProgramPair& programs) {
         const gl::Program& prog = screen ? *programs.screen : *programs.box;
         prog.use();
-        if (!screen) prog.set("u_clipFromBox", r.clipFromBox);
+        if (!screen) prog.set("u_clipFromBox", byRaster ? r.clipFromInfluence : r.clipFromBox);
         probes_.bindVolume(prog, v, kFirstProbeUnit, d.frame.view.eye, d.frame.preExposure);
         if (screen)
             drawFullscreenTriangle(d.frame.targets);
@@ -242,14 +316,29 @@ void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last
     glStencilFunc(GL_EQUAL, 0, kStencilTaken);
     glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
     glStencilMask(0u);
-    draw(d.apply);
-    if (!last) {
+    // No discard in the raster apply (sky fails the depth test): it can set 'taken' itself,
+    // with its tests and write still before the shader - one draw instead of two.
+    const bool marksItself = byRaster && !last && d.rasterApplyMarks;
+    if (marksItself) {
+        glStencilFunc(GL_NOTEQUAL, int(kStencilTaken), kStencilTaken);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+        glStencilMask(kStencilTaken);
+    }
+    draw(byRaster ? GiProgramPair{d.applyRaster, nullptr} : d.apply);
+    if (!last && !marksItself) {
         TimedSection section(d.frame.timer, "gi-fill");
+        if (countInvocations) invocations_.bind(1);
         glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
         glStencilFunc(GL_ALWAYS, int(kStencilTaken), kStencilTaken);
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         glStencilMask(kStencilTaken);
-        draw(d.fill);
+        if (byRaster) {
+            d.markRaster->use();
+            d.markRaster->set("u_clipFromBox", r.clipFromInfluence);
+            drawBox(d.frame.targets);
+        } else {
+            draw(d.fill);
+        }
         glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
     glStencilMask(0xFFu);

@@ -7,8 +7,11 @@
 //   stencil: smallest first, one stencil bit ('taken') on a depth-stencil of the GI target's
 //            size, so each pixel is evaluated once, by the smallest volume containing it;
 //            per volume an apply that writes no stencil (so the test runs before the
-//            shader), then a cheap mark draw (renderer/README.md "gi.multi_volume=stencil").
+//            shader), then a cheap mark draw; with the eye inside the box the depth test
+//            decides the influence and the apply marks itself (renderer/README.md
+//            "gi.multi_volume=stencil").
 #include "passes/FrameContext.h"
+#include "passes/GiInvocationCounter.h"
 #include "passes/GiPassStats.h"
 #include "passes/GiTargets.h"
 #include "passes/GiVolumeRaster.h"
@@ -25,7 +28,7 @@ gl::TextureFormat giTargetFormat(profile::GiTargetFormat f);
 
 class GiApplyPass : public Pass {
 public:
-    static constexpr int kFirstProbeUnit = 5; // after the GBuffer's channels and depth
+    static constexpr int kFirstProbeUnit = 5;     // after the GBuffer's channels and depth
     static constexpr unsigned kStencilTaken = 1u; // stencil: a smaller volume shaded the pixel
 
     GiApplyPass(const GpuProbes& probes, const profile::Profile& profile);
@@ -34,20 +37,27 @@ public:
     const gl::Texture* target() const { return targets_.target(); }
     std::size_t targetBytes() const { return targets_.bytes(); }
 
-    // Diagnostics: count the pixels each volume evaluates (a read-back per volume; slow).
+    // Diagnostics: count the pixels each volume evaluates (a read-back per volume; slow), and
+    // where the context has atomic counters the fragment-shader invocations of each volume's
+    // apply and mark draws (GiInvocationCounter; the shaders' GI_COUNT_INVOCATIONS).
     void setCountPixels(bool on) { countPixels_ = on; }
+    // Measurement only: count the apply with the tests the counter forces (no
+    // early_fragment_tests) instead of the production shader's (README "Invocation counter").
+    void setCountInvocationsWithLateTests(bool on) { countLate_ = on; }
     const GiPassStats& stats() const { return stats_; }
 
 private:
     struct Draw; // one frame's shared state (GiApplyPass.cpp)
     void drawNaive(Draw& d, int v);
-    void drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last);
+    void drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last, bool countInvocations);
     void countEvaluated(int statsIndex);
 
     const GpuProbes& probes_;
     profile::Profile profile_;
     gl::Defines defines_;
     bool countPixels_ = false;
+    bool countLate_ = false;
+    GiInvocationCounter invocations_;
     GiTargets targets_;
     GiPassStats stats_;
 };

@@ -45,8 +45,14 @@ GiVolumeRaster volumeRaster(const GpuProbeVolume& v, const RenderView& view,
     for (int a = 0; a < 3; ++a)
         relFromBox[a] = glm::vec4(axes[a] * half[a], 0.0f);
     relFromBox[3] = glm::vec4(glm::vec3(centreRel), 1.0f);
-    r.clipFromBox =
-        giRasterFromCameraClip(gbufferSize, divisor, giSize) * view.clipFromRel * relFromBox;
+    const glm::mat4 clipFromRel =
+        giRasterFromCameraClip(gbufferSize, divisor, giSize) * view.clipFromRel;
+    r.clipFromBox = clipFromRel * relFromBox;
+    const glm::vec3 influence = v.half + v.fadeWidth;
+    glm::mat4 relFromInfluence = relFromBox;
+    for (int a = 0; a < 3; ++a)
+        relFromInfluence[a] = glm::vec4(axes[a] * influence[a], 0.0f);
+    r.clipFromInfluence = clipFromRel * relFromInfluence;
 
     // Inside: the eye's local position within the box grown by the distance from the eye to
     // the near plane's corners (the near plane then cannot clip the box's front faces away).
@@ -55,9 +61,17 @@ GiVolumeRaster volumeRaster(const GpuProbeVolume& v, const RenderView& view,
     const double nearReach =
         double(view.nearPlane) * std::sqrt(1.0 + tanY * tanY * (1.0 + aspect * aspect));
     const glm::dvec3 eyeLocal = glm::dmat3(v.toLocal) * (-centreRel);
+    // An eye on a face counts as inside (a camera in the doorway between two rooms' boxes:
+    // rooms' worst-case view). An eye outside by d lets the back faces take surfaces between it
+    // and the box, all within d of the box: with d below onFace, below the depth test's own
+    // rounding.
+    const double onFace = 1e-5 * (1.0 + double(std::max({influence.x, influence.y, influence.z})));
     r.cameraInside = true;
-    for (int a = 0; a < 3; ++a)
+    r.eyeInsideBox = true;
+    for (int a = 0; a < 3; ++a) {
         r.cameraInside = r.cameraInside && std::abs(eyeLocal[a]) <= double(half[a]) + nearReach;
+        r.eyeInsideBox = r.eyeInsideBox && std::abs(eyeLocal[a]) <= double(influence[a]) + onFace;
+    }
 
     // Culling: outside when all 8 corners lie beyond one clip plane (conservative).
     int outside[6] = {0, 0, 0, 0, 0, 0};

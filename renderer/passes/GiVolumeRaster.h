@@ -23,7 +23,14 @@ struct GiVolumeRaster {
     // Inside only: every point of the box lies in front of the far plane, so its back faces
     // can be depth-tested against the scene (otherwise: a full-screen triangle).
     bool backFacesInFrontOfFar = false;
+    // The eye itself lies inside the influence box (no margin; on a face counts). Then a surface
+    // seen through that box's back faces (depth GEQUAL) is inside it, with no shader test:
+    // along each ray the box is the segment from the eye to the back face (it is convex).
+    bool eyeInsideBox = false;
     glm::mat4 clipFromBox{1.0f}; // unit cube [-1,1]^3 -> clip space of the GI target
+    // The same for the influence box itself, without the margin: where the raster decides
+    // (eyeInsideBox), the margin would hand the band around the box to this volume.
+    glm::mat4 clipFromInfluence{1.0f};
 };
 
 // gbufferSize: the view's pixels; divisor: gi.resolution's (1, 2, 4); giSize: the GI

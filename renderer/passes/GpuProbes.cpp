@@ -242,8 +242,22 @@ void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,
     program.set("u_ddgiIrradianceScale", irradianceScale * g.irradianceDecode);
     if (isShTechnique(technique_)) return; // no DDGI textures
     const gl::TextureDesc &irr = g.irradiance.desc(), &vis = g.visibility.desc();
-    program.set("u_ddgiIrrInvSize", glm::vec2(1.0f / float(irr.width), 1.0f / float(irr.height)));
-    program.set("u_ddgiVisInvSize", glm::vec2(1.0f / float(vis.width), 1.0f / float(vis.height)));
+    const glm::vec2 irrInv(1.0f / float(irr.width), 1.0f / float(irr.height));
+    const glm::vec2 visInv(1.0f / float(vis.width), 1.0f / float(vis.height));
+    program.set("u_ddgiIrrInvSize", irrInv);
+    program.set("u_ddgiVisInvSize", visInv);
+    // Per-volume constants of the lookup (common_ddgi.glsl), once per draw instead of per pixel
+    // and probe: texel coordinate = tile * TileScale + oct * Oct.xy + Oct.zw.
+    using namespace probes;
+    const float irrHalf = 0.5f * float(kIrradianceInterior),
+                visHalf = 0.5f * float(kVisibilityInterior);
+    program.set("u_ddgiIrrTileScale", float(kIrradianceTile) * irrInv);
+    program.set("u_ddgiIrrOct", glm::vec4(irrHalf * irrInv, (irrHalf + 1.0f) * irrInv));
+    program.set("u_ddgiVisTileScale", float(kVisibilityTile) * visInv);
+    program.set("u_ddgiVisOct", glm::vec4(visHalf * visInv, (visHalf + 1.0f) * visInv));
+    program.set("u_ddgiMaxBase", glm::vec3(glm::max(g.counts - 2, glm::ivec3(0))));
+    program.set("u_ddgiBiasNormal", glm::vec3(kBiasNormalWeight * g.biasDistance));
+    program.set("u_ddgiBiasView", glm::vec3(kBiasViewWeight * g.biasDistance));
 }
 
 } // namespace pb::render

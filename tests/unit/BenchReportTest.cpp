@@ -289,6 +289,54 @@ TEST(BenchGiMs, SumsUpsampleDepthCopyStencilFillAndShProjection) {
 namespace pb::test {
 namespace {
 
+// Issue 17: GI over the fetch floor per evaluation as well as per texel. The floor does one
+// lookup per texel; a pass that evaluates 2 lookups per texel costs half as much per lookup.
+TEST(BenchFetchFloor, TheRatioPerEvaluationDividesByTheEvaluationsPerTexel) {
+    BenchResult r = result(); // gi-apply 10/3 ms per frame in the reference's variants
+    for (VariantResult& v : r.sessions[0].variants) {
+        const std::vector<double> floor(6, 10.0 / 3 / 4); // GI / floor = 4 per texel
+        v.fetchFloor = SectionTiming{"gi-fetch-floor", floor, stats::summarize(floor)};
+    }
+    VariantResult& ref = r.sessions[0].variants[size_t(r.sessions[0].session.referenceVariant)];
+    ref.giEvaluations = 2 * 36 * 64 + 36 * 64 / 2; // 2.5 lookups per texel
+    ref.giTexels = 36 * 64;
+    EXPECT_NEAR(giOverFloor(ref), 4.0, 1e-12);
+    EXPECT_NEAR(giOverFloorPerEvaluation(ref), 4.0 / 2.5, 1e-12);
+    VariantResult uncounted = ref;
+    uncounted.giEvaluations = 0;
+    EXPECT_TRUE(std::isnan(giOverFloorPerEvaluation(uncounted)));
+    VariantResult noFloor = ref;
+    noFloor.fetchFloor.reset();
+    EXPECT_TRUE(std::isnan(giOverFloorPerEvaluation(noFloor)));
+
+    const nlohmann::json j = benchJson(r);
+    int counted = 0;
+    for (const auto& v : j["variants"]) {
+        if (!v.contains("gi_evaluations")) {
+            if (v.contains("gi_over_floor_per_evaluation"))
+                EXPECT_TRUE(v["gi_over_floor_per_evaluation"].is_null()) << v.dump();
+            continue;
+        }
+        ++counted;
+        EXPECT_EQ(v["gi_evaluations"], ref.giEvaluations);
+        EXPECT_NEAR(v["gi_evaluations_per_texel"].get<double>(), 2.5, 1e-12);
+        EXPECT_NEAR(v["gi_over_floor"].get<double>(), 4.0, 1e-9);
+        EXPECT_NEAR(v["gi_over_floor_per_evaluation"].get<double>(), 1.6, 1e-9);
+    }
+    EXPECT_EQ(counted, 1);
+
+    const std::string md = markdownSummary(r);
+    const size_t row = md.find("| reference | 64x36 |");
+    ASSERT_NE(row, std::string::npos) << md;
+    const std::string line = md.substr(row, md.find('\n', row) - row);
+    EXPECT_NE(line.find("| 1.60 (4.00) |"), std::string::npos) << line;
+    const std::string low = md.substr(md.find("| low | 64x36 |"));
+    EXPECT_NE(low.substr(0, low.find('\n')).find("| n/a |"), std::string::npos) << low; // no floor
+    const std::string html = htmlReport(r);
+    EXPECT_NE(html.find("<th>GI / floor per evaluation</th>"), std::string::npos);
+    EXPECT_NE(html.find("<td>1.60</td>"), std::string::npos);
+}
+
 // Percentiles and noise flags beside the medians (issue 25, item 4).
 TEST(BenchSpread, PercentilesAndBimodalityFlagTheDelta) {
     std::vector<double> ramp;

@@ -179,7 +179,7 @@ TEST(CostModelShader, TheApplyShaderReadsDepthThenNormalAndLooksUpOnce) {
 TEST(CostModelShader, TheParserSeesAnAddedFetch) {
     // The check above must be able to fail: one more fetch in a loop changes what it parses.
     std::string src = readShader("common_ddgi.glsl");
-    const std::string marker = "vec3 ddgiProbeIrradiance(ivec3 tile, vec2 irrLocal) {";
+    const std::string marker = "vec3 ddgiProbeIrradiance(ivec3 tile, vec2 irrCoord) {";
     ASSERT_NE(src.find(marker), std::string::npos);
     src.insert(src.find(marker) + marker.size(),
                "\n    float extra = texture(u_ddgiVisibility, vec3(0.0)).r;");
