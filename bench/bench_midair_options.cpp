@@ -144,17 +144,37 @@ bool anyFillable(const ProbeSet& s, const glm::vec3& pos) {
     return false;
 }
 
-void run(const char* name) {
-    pb::scene::Scene scene = pb::scene::makeBuiltinScene(name);
-    BakeRequest r;
-    r.volumes.push_back(fitAutoVolume(staticBakeBounds(scene), 0.0f, gMaxProbes).volume);
-    r.scenarios = resolveScenarios({"day"}, {}, scene);
+// The built-in scene's dense bake of one root volume over its static bounds, and the same set
+// stored sparse (what a sparse bake of that grid gives).
+struct DenseAndSparse {
+    pb::scene::Scene scene;
+    BakeRequest request;
+    std::vector<WorldTriangle> tris;
+    ProbeSet dense, sparse;
+};
+
+DenseAndSparse bakeDenseAndSparse(const char* name) {
+    DenseAndSparse b;
+    b.scene = pb::scene::makeBuiltinScene(name);
+    BakeRequest& r = b.request;
+    r.volumes.push_back(fitAutoVolume(staticBakeBounds(b.scene), 0.0f, gMaxProbes).volume);
+    r.scenarios = resolveScenarios({"day"}, {}, b.scene);
     r.settings.raysPerProbe = gRays;
     r.settings.bounces = 2;
-    const ProbeSet dense = bakeProbes(scene, r);
-    const auto tris = staticBakeTriangles(scene);
-    ProbeSet sparse = dense;
-    applySparseStorage(sparse, tris);
+    b.dense = bakeProbes(b.scene, r);
+    b.tris = staticBakeTriangles(b.scene);
+    b.sparse = b.dense;
+    applySparseStorage(b.sparse, b.tris);
+    return b;
+}
+
+void run(const char* name) {
+    DenseAndSparse b = bakeDenseAndSparse(name);
+    const BakeRequest& r = b.request;
+    const pb::scene::Scene& scene = b.scene;
+    const ProbeSet& dense = b.dense;
+    const auto& tris = b.tris;
+    ProbeSet& sparse = b.sparse;
     const ProbeVolume& v = dense.volumes[0];
     std::printf("%s: counts %d %d %d cell %.3f %.3f %.3f\n", name, v.counts.x, v.counts.y,
                 v.counts.z, v.cellSize().x, v.cellSize().y, v.cellSize().z);
@@ -419,16 +439,11 @@ std::vector<int> rankedSources(const ProbeSet& sp, const std::vector<std::uint8_
     return src;
 }
 void fillVariants(const char* name) {
-    pb::scene::Scene scene = pb::scene::makeBuiltinScene(name);
-    BakeRequest r;
-    r.volumes.push_back(fitAutoVolume(staticBakeBounds(scene), 0.0f, gMaxProbes).volume);
-    r.scenarios = resolveScenarios({"day"}, {}, scene);
-    r.settings.raysPerProbe = gRays;
-    r.settings.bounces = 2;
-    const ProbeSet dense = bakeProbes(scene, r);
-    const auto tris = staticBakeTriangles(scene);
-    ProbeSet sparse = dense;
-    applySparseStorage(sparse, tris);
+    DenseAndSparse b = bakeDenseAndSparse(name);
+    const pb::scene::Scene& scene = b.scene;
+    const ProbeSet& dense = b.dense;
+    const auto& tris = b.tris;
+    ProbeSet& sparse = b.sparse;
     const ProbeVolume& v = dense.volumes[0];
     const RayScene rs(scene);
     const ProbeSampler ds(dense, 0), ss(sparse, 0);

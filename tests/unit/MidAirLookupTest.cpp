@@ -2,6 +2,7 @@
 // probes and a coarse lattice through the air, and an absent probe is read as its nearest
 // stored one (probes/AbsentProbeFill.h). Every point inside a volume must then get a lookup
 // close to the dense set's, while lookups whose corners are all stored stay bit for bit.
+#include "DenseAndSparseBake.h"
 #include "probes/AbsentProbeFill.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/Baker.h"
@@ -25,25 +26,8 @@ float luminance(const glm::vec3& c) {
     return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 
-// The dense bake of one root volume over the static bounds, and the same set stored sparse
-// (exactly what a sparse bake of that grid gives: SparseStorageTest).
-struct DenseAndSparse {
-    pb::scene::Scene scene;
-    ProbeSet dense, sparse;
-};
-
-DenseAndSparse bakeBoth(const std::string& name, int maxProbes) {
-    DenseAndSparse b{pb::scene::makeBuiltinScene(name), {}, {}};
-    BakeRequest r;
-    r.volumes.push_back(fitAutoVolume(staticBakeBounds(b.scene), 0.0f, maxProbes).volume);
-    r.scenarios = resolveScenarios({"day"}, {}, b.scene);
-    r.settings.raysPerProbe = 64;
-    r.settings.bounces = 2;
-    b.dense = bakeProbes(b.scene, r);
-    b.sparse = b.dense;
-    applySparseStorage(b.sparse, staticBakeTriangles(b.scene));
-    return b;
-}
+using pb::test::bakeDenseAndSparse;
+using pb::test::DenseAndSparse;
 
 const glm::vec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
 
@@ -157,7 +141,7 @@ class MidAir : public testing::TestWithParam<const char*> {};
 // box's ceiling light and in the rooms' doorway the light changes by 2x within a cell, and a
 // stand-in one cell nearer the light reads that much brighter.
 TEST_P(MidAir, EveryPointIsLitAndWithin15PercentOfTheDenseLightWithinReach) {
-    const DenseAndSparse b = bakeBoth(GetParam(), 1500);
+    const DenseAndSparse b = bakeDenseAndSparse(GetParam(), 1500);
     ASSERT_LT(b.sparse.storedCount(), b.sparse.probeCount()) << "nothing absent: vacuous";
     const MidAirError e = compareMidAir(b, 500);
     std::printf("[ mid-air ] %s: %d of %zu probes stored; %d lookups, %d differ from the dense "

@@ -5,6 +5,7 @@
 // lookups (where absent corners are) of the sparse set against the dense bake of the same
 // grid, per mode, and the same without the fill (absent corners as zeros), which must fail the
 // tolerance - or the test could not catch the bug it guards against.
+#include "DenseAndSparseBake.h"
 #include "probes/ShSampler.h"
 #include "probes/StaticTriangles.h"
 #include "probes/bake/Baker.h"
@@ -32,23 +33,8 @@ double luminance(const glm::vec3& c) {
     return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
 }
 
-struct DenseAndSparse {
-    pb::scene::Scene scene;
-    ProbeSet dense, sparse;
-};
-
-DenseAndSparse bakeBoth(const std::string& name, int maxProbes) {
-    DenseAndSparse b{pb::scene::makeBuiltinScene(name), {}, {}};
-    BakeRequest r;
-    r.volumes.push_back(fitAutoVolume(staticBakeBounds(b.scene), 0.0f, maxProbes).volume);
-    r.scenarios = resolveScenarios({"day"}, {}, b.scene);
-    r.settings.raysPerProbe = 64;
-    r.settings.bounces = 2;
-    b.dense = bakeProbes(b.scene, r);
-    b.sparse = b.dense;
-    applySparseStorage(b.sparse, staticBakeTriangles(b.scene)); // SH of absent probes: zero
-    return b;
-}
+using pb::test::bakeDenseAndSparse;
+using pb::test::DenseAndSparse;
 
 // The sparse set as the sampler saw it before the fill: every absent probe marked stored
 // (so nothing is filled), still invalid and with zero SH.
@@ -116,7 +102,7 @@ Darkening sparseOverDense(const DenseAndSparse& b, const ProbeSet& sparse, ShLea
 class ShSparse : public testing::TestWithParam<const char*> {};
 
 TEST_P(ShSparse, AbsentProbesDoNotDarkenMidAirLookupsInAnyLeakMode) {
-    const DenseAndSparse b = bakeBoth(GetParam(), 1500);
+    const DenseAndSparse b = bakeDenseAndSparse(GetParam(), 1500);
     ASSERT_TRUE(b.sparse.hasSh());
     ASSERT_LT(b.sparse.storedCount(), b.sparse.probeCount()) << "nothing absent: vacuous";
     const Darkening zeros = sparseOverDense(b, withoutFill(b.sparse), ShLeak::None, 300);
