@@ -144,6 +144,31 @@ bool anyFillable(const ProbeSet& s, const glm::vec3& pos) {
     return false;
 }
 
+// The mid-air lookups (500 free-space points x 6 axis normals) whose sparse lookup differs
+// from the dense one at all (stand-ins read, or other probes), and the error floor: a tenth of
+// the scene's mean dense luminance over all of them.
+struct ChangedQueries {
+    std::vector<Q> queries;
+    float floor = 0.0f;
+};
+
+ChangedQueries changedQueries(const RayScene& rs, const ProbeSet& dense, const ProbeSampler& ds,
+                              const ProbeSampler& ss) {
+    ChangedQueries out;
+    double total = 0;
+    std::size_t all = 0;
+    for (const glm::vec3& p : midAirSamples(rs, dense.volumes, 500, dense.volumes[0].minCellSize()))
+        for (const glm::vec3& n : kAxes) {
+            const IrradianceSample d = ds.sample(p, n, n), s = ss.sample(p, n, n);
+            total += lum(d.irradiance);
+            ++all;
+            if (s.filled == 0 && s.probes == d.probes) continue;
+            out.queries.push_back({p, n, lum(d.irradiance)});
+        }
+    out.floor = 0.1f * float(total / double(all));
+    return out;
+}
+
 // The built-in scene's dense bake of one root volume over its static bounds, and the same set
 // stored sparse (what a sparse bake of that grid gives).
 struct DenseAndSparse {
@@ -180,17 +205,9 @@ void run(const char* name) {
                 v.counts.z, v.cellSize().x, v.cellSize().y, v.cellSize().z);
     const RayScene rs(scene);
     const ProbeSampler ds(dense, 0), ss(sparse, 0);
-    std::vector<Q> all, changed;
-    double total = 0;
-    for (const glm::vec3& p : midAirSamples(rs, dense.volumes, 500, v.minCellSize()))
-        for (const glm::vec3& n : kAxes) {
-            const IrradianceSample d = ds.sample(p, n, n), s = ss.sample(p, n, n);
-            total += lum(d.irradiance);
-            all.push_back({p, n, lum(d.irradiance)});
-            if (s.filled == 0 && s.probes == d.probes) continue;
-            changed.push_back(all.back());
-        }
-    const float floor = 0.1f * float(total / all.size());
+    const ChangedQueries cq = changedQueries(rs, dense, ds, ss);
+    const std::vector<Q>& changed = cq.queries;
+    const float floor = cq.floor;
 
     // 1. The 10 worst of the kept option.
     {
@@ -447,17 +464,9 @@ void fillVariants(const char* name) {
     const ProbeVolume& v = dense.volumes[0];
     const RayScene rs(scene);
     const ProbeSampler ds(dense, 0), ss(sparse, 0);
-    std::vector<Q> all, changed;
-    double total = 0;
-    for (const glm::vec3& p : midAirSamples(rs, dense.volumes, 500, v.minCellSize()))
-        for (const glm::vec3& n : kAxes) {
-            const IrradianceSample d = ds.sample(p, n, n), s = ss.sample(p, n, n);
-            total += lum(d.irradiance);
-            all.push_back({p, n, lum(d.irradiance)});
-            if (s.filled == 0 && s.probes == d.probes) continue;
-            changed.push_back(all.back());
-        }
-    const float floor = 0.1f * float(total / all.size());
+    const ChangedQueries cq = changedQueries(rs, dense, ds, ss);
+    const std::vector<Q>& changed = cq.queries;
+    const float floor = cq.floor;
     stats(
         name, "kept: nearest", changed, floor, [&](const Q& q) { return ss.sample(q.p, q.n, q.n); },
         sparse.storedCount(), dense.probeCount());
