@@ -3,6 +3,7 @@
 // together.
 #include "probes/store/ProbeFileParts.h"
 #include "ProbeTestScenes.h"
+#include "SunlitFloorBake.h"
 #include "core/Error.h"
 #include "probes/bake/Baker.h"
 #include "probes/store/ProbeFile.h"
@@ -14,14 +15,7 @@ using namespace pb::probes;
 namespace {
 
 BakeRequest request(const pb::scene::Scene& s, bool sparse) {
-    BakeRequest r;
-    ProbeVolume v;
-    v.name = "v";
-    v.center = {0, 1, 0};
-    v.halfExtents = {2, 0.9f, 2};
-    v.counts = {4, 2, 4};
-    r.volumes = {v};
-    r.scenarios = resolveScenarios({"day", "night"}, {}, s);
+    BakeRequest r = pb::test::sunlitFloorRequest(s);
     r.scenarios.push_back({"dusk", r.scenarios[0].sun, {glm::vec3(0.2f, 0.1f, 0.05f)}});
     r.settings.raysPerProbe = 32;
     r.settings.bounces = 2;

@@ -2,6 +2,7 @@
 // files; storage formats and the memory report's reference figures.
 #include "probes/store/ProbeFile.h"
 #include "ProbeTestScenes.h"
+#include "SunlitFloorBake.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "probes/bake/Baker.h"
@@ -9,8 +10,8 @@
 #include "support/TestEnv.h"
 
 #include <gtest/gtest.h>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 using namespace pb::probes;
 
@@ -18,15 +19,7 @@ namespace {
 
 ProbeSet smallBake(StorageFormat format) {
     const pb::scene::Scene s = pb::test::sunlitFloor();
-    BakeRequest r;
-    ProbeVolume v;
-    v.name = "v";
-    v.center = {0, 1, 0};
-    v.halfExtents = {2, 0.9f, 2};
-    v.counts = {4, 2, 4};
-    r.volumes = {v};
-    r.scenarios = resolveScenarios({"day", "night"}, {}, s);
-    r.settings.raysPerProbe = 64;
+    BakeRequest r = pb::test::sunlitFloorRequest(s);
     r.settings.format = format;
     return bakeProbes(s, r);
 }

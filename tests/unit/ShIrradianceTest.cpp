@@ -3,6 +3,7 @@
 // sampler's leak modes.
 #include "probes/ShIrradiance.h"
 #include "ProbeTestScenes.h"
+#include "SunlitFloorBake.h"
 #include "core/Error.h"
 #include "probes/ShSampler.h"
 #include "probes/bake/Baker.h"
@@ -33,16 +34,7 @@ glm::vec3 clampedCosineUp(const glm::vec3& d) {
 
 ProbeSet smallBake() {
     const pb::scene::Scene s = pb::test::sunlitFloor();
-    BakeRequest r;
-    ProbeVolume v;
-    v.name = "v";
-    v.center = {0, 1, 0};
-    v.halfExtents = {2, 0.9f, 2};
-    v.counts = {4, 2, 4};
-    r.volumes = {v};
-    r.scenarios = resolveScenarios({"day", "night"}, {}, s);
-    r.settings.raysPerProbe = 64;
-    return bakeProbes(s, r);
+    return bakeProbes(s, pb::test::sunlitFloorRequest(s));
 }
 
 // The same file as version 5 wrote it: no SH record, version 5, size and checksum redone.
