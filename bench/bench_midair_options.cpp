@@ -17,13 +17,23 @@
 //     stand-ins ranked with a penalty for surface-corner probes, and a coarse parent volume
 //     over the lattice's points baked and stored dense, read where the sparse child's cell has
 //     absent corners (stored counts: child + parent);
+//   - absent probes outside geometry keeping an irradiance of their own, read at their own
+//     position with visibility weight 1 (bench/results/2026-11-25-absent-sh.md), emulated
+//     through the tile path (absentAsTile): the dense bake's L2 SH (ray projection; plain and
+//     Hanning-windowed), L2/L3/L4 fits of the probe's 8x8 tile, the tile resampled to 2x2 and
+//     4x4 interiors, the tile itself, and the tile next to surface corners with L2 elsewhere;
+//     the 5 worst lookups of the L2 row with their absent corners' tile vs L2 luminance;
 //   - what growing by 1 costs in the default placement (`--volumes auto`, sparse, no lattice
-//     search): probes stored with and without it.
+//     search): probes stored with and without it, and what an L2 SH or an 8x8 irradiance tile
+//     per absent probe would add in bytes.
+// --sh-only: the kept fill, the own-irradiance rows and the costs only.
 //
-// Usage: bench_midair_options [--max-probes N] [--rays R] [SCENE...]  (default: cornell rooms
-//        courtyard)
+// Usage: bench_midair_options [--max-probes N] [--rays R] [--sh-only] [SCENE...]
+//        (default: cornell rooms courtyard)
 #include "probes/AbsentProbeFill.h"
+#include "probes/Octahedral.h"
 #include "probes/ProbeSampler.h"
+#include "probes/ShIrradiance.h"
 #include "probes/bake/Baker.h"
 #include "probes/bake/MidAirSamples.h"
 #include "probes/bake/RayScene.h"
@@ -43,6 +53,7 @@ using namespace pb::probes;
 namespace {
 int gMaxProbes = 1500; // the grid of tests/unit/MidAirLookupTest.cpp
 int gRays = 64;
+bool gShOnly = false; // --sh-only: the kept fill, the own-irradiance rows and the costs
 } // namespace
 
 namespace {
@@ -129,6 +140,148 @@ Coarse makeCoarse(const ProbeSet& set, const std::vector<ProbeState>& st) {
     }
     return c;
 }
+
+// What an absent probe outside geometry keeps, emulated through the DDGI tile path: the dense
+// set, its absent-in-sparse probes outside geometry never occluding (visibility mean far beyond
+// the range: weight 1, as a probe of a free cell needs no visibility) and their irradiance tile
+// replaced by `irradiance(probe, direction)` at its 6x6 interior texel centres (borders
+// refilled); a null function keeps the baked tile. The lookup then filters those texels
+// bilinearly, as it does every tile.
+using AbsentIrradiance = std::function<glm::vec3(int probe, const glm::vec3& dir)>;
+ProbeSet absentAsTile(const ProbeSet& dense, const ProbeSet& sparse, const AbsentIrradiance& fn) {
+    ProbeSet out = dense;
+    const ProbeVolume& v = dense.volumes[0];
+    for (int i = 0; i < v.probeCount(); ++i) {
+        if (!fillable(sparse.states[0][size_t(i)], sparse.settings.backfaceThreshold)) continue;
+        const glm::ivec3 c = v.probeCoords(i);
+        for (int y = 0; y < kVisibilityTile; ++y)
+            for (int x = 0; x < kVisibilityTile; ++x) {
+                float* t =
+                    out.visibility[0].at(c.x * kVisibilityTile + x, c.z * kVisibilityTile + y, c.y);
+                t[0] = 1e4f;
+                t[1] = 1e8f;
+            }
+        if (!fn) continue;
+        float* tile = tileOrigin(out.irradiance[0][0], c, kIrradianceTile);
+        const int pitch = out.irradiance[0][0].shape.width;
+        for (int y = 0; y < kIrradianceInterior; ++y)
+            for (int x = 0; x < kIrradianceInterior; ++x) {
+                const glm::vec3 e = fn(i, octTexelDirection(x, y, kIrradianceInterior));
+                for (int ch = 0; ch < 3; ++ch)
+                    tile[(size_t(y + 1) * size_t(pitch) + size_t(x + 1)) * 4 + size_t(ch)] = e[ch];
+            }
+        fillOctahedralBorder(tile, pitch, 4, kIrradianceInterior);
+    }
+    return out;
+}
+
+// The baked irradiance tile of probe `i` of `set` (volume 0) filtered at `dir`.
+glm::vec3 tileIrradiance(const ProbeSet& set, int i, const glm::vec3& dir) {
+    const glm::ivec3 c = set.volumes[0].probeCoords(i);
+    const glm::vec2 tc = tileCoord(c, dir, kIrradianceInterior);
+    float e[4];
+    bilinearFetch(set.irradiance[0][0], tc.x, tc.y, c.y, e);
+    return {e[0], e[1], e[2]};
+}
+
+// Per probe, a least-squares fit of its baked tile (filtered at 1024 directions) in spherical
+// harmonics up to band `order` - the homogeneous polynomials of degree order and order - 1 span
+// exactly those bands on the sphere, (order + 1)^2 functions - evaluated at `dir`, clamped at
+// 0. Fits are made once per probe, on first use.
+class TileFit {
+public:
+    TileFit(const ProbeSet& set, int order) : set_(set) {
+        for (int deg = std::max(order - 1, 0); deg <= order; ++deg)
+            for (int a = 0; a <= deg; ++a)
+                for (int b = 0; a + b <= deg; ++b)
+                    powers_.push_back({a, b, deg - a - b});
+        coefficients_.resize(std::size_t(set.volumes[0].probeCount()));
+    }
+    glm::vec3 operator()(int i, const glm::vec3& dir) {
+        std::vector<glm::dvec3>& x = coefficients_[std::size_t(i)];
+        if (x.empty()) x = fit(i);
+        const std::vector<double> f = basis(dir);
+        glm::dvec3 e(0.0);
+        for (std::size_t k = 0; k < f.size(); ++k)
+            e += f[k] * x[k];
+        return glm::max(glm::vec3(e), glm::vec3(0.0f));
+    }
+
+private:
+    std::vector<double> basis(const glm::vec3& d) const {
+        std::vector<double> f(powers_.size());
+        for (std::size_t k = 0; k < f.size(); ++k)
+            f[k] = std::pow(double(d.x), powers_[k].x) * std::pow(double(d.y), powers_[k].y) *
+                   std::pow(double(d.z), powers_[k].z);
+        return f;
+    }
+    // Normal equations (A^T A) x = A^T b, Gauss-Jordan with partial pivoting, in double.
+    std::vector<glm::dvec3> fit(int i) const {
+        const std::size_t m = powers_.size();
+        std::vector<double> ata(m * m, 0.0);
+        std::vector<glm::dvec3> atb(m, glm::dvec3(0.0));
+        for (const glm::vec3& d : shProjectionDirections(1024)) {
+            const glm::dvec3 e(tileIrradiance(set_, i, d));
+            const std::vector<double> f = basis(d);
+            for (std::size_t r = 0; r < m; ++r) {
+                for (std::size_t q = 0; q < m; ++q)
+                    ata[r * m + q] += f[r] * f[q];
+                atb[r] += f[r] * e;
+            }
+        }
+        for (std::size_t col = 0; col < m; ++col) {
+            std::size_t piv = col;
+            for (std::size_t r = col + 1; r < m; ++r)
+                if (std::abs(ata[r * m + col]) > std::abs(ata[piv * m + col])) piv = r;
+            for (std::size_t q = 0; q < m; ++q)
+                std::swap(ata[col * m + q], ata[piv * m + q]);
+            std::swap(atb[col], atb[piv]);
+            for (std::size_t r = 0; r < m; ++r) {
+                if (r == col) continue;
+                const double k = ata[r * m + col] / ata[col * m + col];
+                for (std::size_t q = 0; q < m; ++q)
+                    ata[r * m + q] -= k * ata[col * m + q];
+                atb[r] -= k * atb[col];
+            }
+        }
+        for (std::size_t k = 0; k < m; ++k)
+            atb[k] /= ata[k * m + k];
+        return atb;
+    }
+    const ProbeSet& set_;
+    std::vector<glm::ivec3> powers_;
+    std::vector<std::vector<glm::dvec3>> coefficients_;
+};
+
+// Per probe, its baked tile resampled to a coarser octahedral map of `interior`^2 texels (the
+// fine map filtered at the coarse texels' directions), read back bilinearly at `dir`: what a
+// smaller irradiance tile would keep (pessimistic: two filterings).
+class CoarseTile {
+public:
+    CoarseTile(const ProbeSet& set, int interior) : set_(set), interior_(interior) {}
+    glm::vec3 operator()(int i, const glm::vec3& dir) const {
+        const int tile = interior_ + 2;
+        std::vector<float> t(std::size_t(tile * tile * 4), 0.0f);
+        for (int y = 0; y < interior_; ++y)
+            for (int x = 0; x < interior_; ++x) {
+                const glm::vec3 e = tileIrradiance(set_, i, octTexelDirection(x, y, interior_));
+                for (int ch = 0; ch < 3; ++ch)
+                    t[(std::size_t(y + 1) * std::size_t(tile) + std::size_t(x + 1)) * 4 +
+                      std::size_t(ch)] = e[ch];
+            }
+        fillOctahedralBorder(t.data(), tile, 4, interior_);
+        ProbeTexture one = ProbeTexture::make({tile, tile, 1, 4});
+        one.texels = t;
+        const glm::vec2 tc = tileCoord(glm::ivec3(0), dir, interior_);
+        float e[4];
+        bilinearFetch(one, tc.x, tc.y, 0, e);
+        return {e[0], e[1], e[2]};
+    }
+
+private:
+    const ProbeSet& set_;
+    int interior_;
+};
 
 bool anyFillable(const ProbeSet& s, const glm::vec3& pos) {
     const ProbeVolume& v = s.volumes[0];
@@ -261,6 +414,104 @@ void run(const char* name) {
         name, "kept: lattice + nearest", changed, floor,
         [&](const Q& q) { return ss.sample(q.p, q.n, q.n); }, sparse.storedCount(), N);
 
+    // 1b. Absent probes outside geometry keep an irradiance of their own (issue 18's "coarse
+    //     level stored everywhere"), read at their own position with visibility weight 1:
+    //     the dense bake's L2 SH (its ray projection), L2/L3/L4 fits of the probe's 8x8 tile,
+    //     the tile resampled to 4x4 and 2x2 interiors, and the tile itself (absentAsTile).
+    {
+        struct Row {
+            const char* label;
+            AbsentIrradiance fn;
+        };
+        const std::vector<glm::vec3>& sh = dense.sh[0][0];
+        TileFit l2fit(dense, 2), l3(dense, 3), l4(dense, 4);
+        const CoarseTile t4(dense, 4), t2(dense, 2);
+        // Hanning window per band (l = 0, 1, 2: 1, 0.75, 0.25): less ringing, blurrier peaks.
+        auto windowed = [&](int i, const glm::vec3& d) {
+            glm::vec3 c[kShL2Coefficients];
+            for (int k = 0; k < kShL2Coefficients; ++k)
+                c[k] = sh[std::size_t(i) * kShL2Coefficients + std::size_t(k)] * (k == 0  ? 1.0f
+                                                                                  : k < 4 ? 0.75f
+                                                                                          : 0.25f);
+            return shIrradiance(c, d, kShL2Coefficients);
+        };
+        // Mixed: the absent probes next to a surface corner (26-neighbourhood) keep their 8x8
+        // tile, the others their L2 SH.
+        const std::vector<std::uint8_t> surf = surfaceCornerProbes(v, true, tris);
+        std::vector<std::uint8_t> nearSurface(surf.size(), 0);
+        std::size_t nearCount = 0, absentCount = 0;
+        for (int i = 0; i < v.probeCount(); ++i) {
+            if (!fillable(sparse.states[0][size_t(i)], sparse.settings.backfaceThreshold)) continue;
+            ++absentCount;
+            const glm::ivec3 c = v.probeCoords(i);
+            for (int dz = -1; dz <= 1; ++dz)
+                for (int dy = -1; dy <= 1; ++dy)
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const glm::ivec3 q = c + glm::ivec3(dx, dy, dz);
+                        if (glm::all(glm::greaterThanEqual(q, glm::ivec3(0))) &&
+                            glm::all(glm::lessThan(q, v.counts)) && surf[size_t(v.probeIndex(q))])
+                            nearSurface[size_t(i)] = 1;
+                    }
+            nearCount += nearSurface[size_t(i)];
+        }
+        std::printf("[ mixed ] %s: %zu absent probes outside geometry, %zu next to a surface "
+                    "corner\n",
+                    name, absentCount, nearCount);
+        auto l2 = [&](int i, const glm::vec3& d) {
+            return shIrradiance(&sh[std::size_t(i) * kShL2Coefficients], d, kShL2Coefficients);
+        };
+        const std::vector<Row> rows = {
+            {"absent: own L2 SH, the bake's ray projection (9 coefficients)", l2},
+            {"absent: own L2 SH, ray projection, Hanning-windowed", windowed},
+            {"absent: 8x8 tile next to a surface corner, L2 SH (rays) elsewhere",
+             [&](int i, const glm::vec3& d) {
+                 return nearSurface[size_t(i)] ? tileIrradiance(dense, i, d) : l2(i, d);
+             }},
+            {"absent: own tile fitted to band 2 (9 coefficients)", std::ref(l2fit)},
+            {"absent: own tile fitted to band 3 (16 coefficients)", std::ref(l3)},
+            {"absent: own tile fitted to band 4 (25 coefficients)", std::ref(l4)},
+            {"absent: own tile resampled to 2x2 interior (16 texels)", t2},
+            {"absent: own tile resampled to 4x4 interior (36 texels)", t4},
+            {"absent: own 8x8 tile (6x6 interior, 64 texels)", nullptr},
+        };
+        for (const Row& row : rows) {
+            const ProbeSet e = absentAsTile(dense, sparse, row.fn);
+            const ProbeSampler es(e, 0);
+            stats(
+                name, row.label, changed, floor,
+                [&](const Q& q) { return es.sample(q.p, q.n, q.n); }, sparse.storedCount(), N);
+            if (&row != &rows.front()) continue;
+            // The 5 worst lookups of the L2 row, and per absent corner of their cell its own
+            // tile's luminance at the normal against its L2 SH's: where the truncation misses.
+            std::vector<std::pair<float, Q>> w;
+            for (const Q& q : changed)
+                w.push_back({std::abs(lum(es.sample(q.p, q.n, q.n).irradiance) - q.dense) /
+                                 std::max(q.dense, floor),
+                             q});
+            std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.first > b.first; });
+            for (int k = 0; k < 5 && k < int(w.size()); ++k) {
+                const Q& q = w[size_t(k)].second;
+                std::printf("  L2 worst #%d rel %.3f p (%.2f %.2f %.2f) n (%g %g %g) dense %.4f "
+                            "L2 %.4f; absent corners tile/L2:",
+                            k, w[size_t(k)].first, q.p.x, q.p.y, q.p.z, q.n.x, q.n.y, q.n.z,
+                            q.dense, lum(es.sample(q.p, q.n, q.n).irradiance));
+                const glm::vec3 g = (v.toLocal(q.p) + v.halfExtents) / v.cellSize();
+                glm::ivec3 base;
+                for (int a = 0; a < 3; ++a)
+                    base[a] = std::clamp(int(std::floor(g[a])), 0, v.counts[a] - 2);
+                const glm::vec3 ln = glm::transpose(v.localToWorldRotation()) * q.n;
+                for (int c = 0; c < 8; ++c) {
+                    const int i = v.probeIndex(base + glm::ivec3(c & 1, (c >> 1) & 1, c >> 2));
+                    if (!fillable(sparse.states[0][size_t(i)], sparse.settings.backfaceThreshold))
+                        continue;
+                    std::printf(" %.3f/%.3f", lum(tileIrradiance(dense, i, ln)), lum(l2(i, ln)));
+                }
+                std::printf("\n");
+            }
+        }
+    }
+    if (gShOnly) return;
+
     // 2a. Coarse lattice lookup where the fine cell has a fillable corner.
     const Coarse co = makeCoarse(sparse, sparse.states[0]);
     const ProbeSampler cs(
@@ -389,6 +640,18 @@ void placementCost(const char* name) {
                 "placement bytes %zu\n",
                 name, res.volumes.size(), grid, surf, kept, grown,
                 100.0 * (double(grown) / double(kept) - 1.0), res.bytes);
+    // What an irradiance of their own costs the absent probes (all of them: validity is not
+    // known before the bake, so an upper bound), against the kept probes' tiles (rgba16f).
+    const std::size_t absent = grid - kept;
+    const std::size_t keptBytes = kept * bytesPerProbe(StorageFormat::Rgba16f).total();
+    const std::size_t tileBytes = std::size_t(kIrradianceTile * kIrradianceTile) * 8;
+    std::printf("[ cost ] %s absent probes %zu; kept tiles %zu B; absent L2 SH (%zu B each) "
+                "+%zu B (+%.1f%%); absent 8x8 irradiance tiles (%zu B each) +%zu B (+%.1f%%)\n",
+                name, absent, keptBytes, shGpuBytesPerProbe(kShL2Coefficients),
+                absent * shGpuBytesPerProbe(kShL2Coefficients),
+                100.0 * double(absent * shGpuBytesPerProbe(kShL2Coefficients)) / double(keptBytes),
+                tileBytes, absent * tileBytes,
+                100.0 * double(absent * tileBytes) / double(keptBytes));
 }
 } // namespace
 
@@ -491,6 +754,8 @@ int main(int argc, char** argv) {
             gMaxProbes = std::atoi(argv[++i]);
         else if (a == "--rays" && i + 1 < argc)
             gRays = std::atoi(argv[++i]);
+        else if (a == "--sh-only")
+            gShOnly = true;
         else if (a.rfind("--", 0) == 0) {
             std::fprintf(stderr, "bench_midair_options: unknown option %s\n", a.c_str());
             return 2;
@@ -501,7 +766,7 @@ int main(int argc, char** argv) {
     try {
         for (const std::string& s : scenes) {
             run(s.c_str());
-            fillVariants(s.c_str());
+            if (!gShOnly) fillVariants(s.c_str());
             placementCost(s.c_str());
         }
     } catch (const std::exception& e) {
