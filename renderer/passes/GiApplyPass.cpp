@@ -126,11 +126,14 @@ void GiApplyPass::execute(FrameContext& frame) {
         stats_.shadedBy.assign(stats_.evaluations.size(), -1);
     }
 
+    // Stencil at full resolution, unjittered: texel = pixel, and the GI target's depth-stencil
+    // is a copy of the GBuffer's (see below), whose stencil GBufferPass clears to 0.
+    const bool copyDepthStencil = stencil && div == 1 && frame.giJitter == glm::ivec2(0);
     targets_.bind();
     resetState();
     glClearColor(0, 0, 0, 0); // weight 0 = no volume: the lighting falls back to its ambient
     glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | (stencil ? GL_STENCIL_BUFFER_BIT : 0u));
+    glClear(GL_COLOR_BUFFER_BIT | (stencil && !copyDepthStencil ? GL_STENCIL_BUFFER_BIT : 0u));
 
     gl::Defines applyDefines = defines_, fillDefines = defines_;
     if (countPixels_) applyDefines["GI_COUNT_PIXELS"] = "";
@@ -171,12 +174,17 @@ void GiApplyPass::execute(FrameContext& frame) {
                                            markRasterDefines);
         // The GI target's depth: the depth of the GBuffer pixel each texel stands for.
         TimedSection section(frame.timer, "gi-depth-copy");
-        if (div == 1 && frame.giJitter == glm::ivec2(0)) {
-            // Texel = pixel, and both are DEPTH32F_STENCIL8: a blit copies the same values as
-            // the shader below, without running a fragment shader per pixel.
+        if (copyDepthStencil) {
+            // Texel = pixel, and both are DEPTH32F_STENCIL8: a blit copies the same depth as
+            // the shader below, without running a fragment shader per pixel. Depth AND
+            // stencil: Mesa copies a blit of every aspect of one format at one size as
+            // memory (depth alone takes its shader blit): 1.1 ms cpu-time at 1280x720 on
+            // llvmpipe against 5.2 ms, and it brings the GBuffer's stencil,
+            // cleared to 0 and never written (GBufferLayout.h), so 'taken' needs no clear
+            // (2.5 ms more): bench/results/2026-11-25-p3-p1.md.
             glBindFramebuffer(GL_READ_FRAMEBUFFER, gb.framebuffer().id());
             glBlitFramebuffer(0, 0, gb.width(), gb.height(), 0, 0, spec.width, spec.height,
-                              GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+                              GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
             targets_.bind();
         } else {
             const gl::Program& copy =
