@@ -83,6 +83,7 @@ void resetState() {
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
@@ -203,11 +204,13 @@ void GiApplyPass::execute(FrameContext& frame) {
         if (p) setPixelUniforms(*p, frame, div);
 
     std::vector<GiVolumeRaster> rasters;
+    std::vector<bool> drawn;     // in the frustum, and (screenRects_) some texel of it on screen
     std::size_t lastVisible = 0; // stencil: the last volume drawn needs no mark
     for (std::size_t k = 0; k < order.size(); ++k) {
         rasters.push_back(volumeRaster(probes_.volumes()[size_t(order[k])], frame.view,
                                        d.gbufferSize, div, d.giSize));
-        if (rasters.back().visible) lastVisible = k;
+        drawn.push_back(rasters.back().visible && (!screenRects_ || rasters.back().onScreen()));
+        if (drawn.back()) lastVisible = k;
     }
     for (std::size_t k = 0; k < order.size(); ++k) {
         const int v = order[k];
@@ -216,14 +219,18 @@ void GiApplyPass::execute(FrameContext& frame) {
         GiVolumeStats vs;
         vs.name = vol.name;
         vs.fileIndex = vol.fileIndex;
-        vs.culled = !r.visible;
+        vs.culled = !drawn[k];
+        vs.offScreen = r.visible && !drawn[k];
+        const glm::ivec4 rect = screenRects_ ? r.screenRect : glm::ivec4(0, 0, d.giSize);
+        for (int i = 0; i < 4; ++i)
+            vs.screenRect[i] = rect[i];
         vs.cameraInside = stencil && r.cameraInside;
-        vs.fillPass = stencil && r.visible && k != lastVisible;
+        vs.fillPass = stencil && drawn[k] && k != lastVisible;
         vs.fullScreen = !stencil || (r.cameraInside && !r.backFacesInFrontOfFar);
-        vs.rasterInfluence = stencil && r.visible && rasterDecides(r);
+        vs.rasterInfluence = stencil && drawn[k] && rasterDecides(r);
         vs.markInApply = vs.rasterInfluence && vs.fillPass && d.rasterApplyMarks;
         stats_.volumes.push_back(vs);
-        if (!r.visible) continue;
+        if (!drawn[k]) continue;
         if (countPixels_) {
             const GLfloat zero[4] = {0, 0, 0, 0};
             glClearBufferfv(GL_COLOR, 1, zero);
@@ -232,10 +239,18 @@ void GiApplyPass::execute(FrameContext& frame) {
             invocations_.reset(2); // slot 0: the apply, slot 1: the mark
             invocations_.bind(0);
         }
+        // Only texels the box can cover: the naive full-screen draw otherwise pays the depth
+        // fetch and the influence test on every texel it discards (GiVolumeRaster::screenRect).
+        if (screenRects_) {
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(r.screenRect.x, r.screenRect.y, r.screenRect.z - r.screenRect.x,
+                      r.screenRect.w - r.screenRect.y);
+        }
         if (stencil)
             drawStencil(d, v, r, k == lastVisible, countInvocations);
         else
             drawNaive(d, v);
+        glDisable(GL_SCISSOR_TEST);
         if (countPixels_) countEvaluated(int(stats_.volumes.size()) - 1);
         if (countInvocations) {
             const std::vector<std::int64_t> n = invocations_.read();
