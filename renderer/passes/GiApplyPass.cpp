@@ -6,7 +6,6 @@
 #include "profile/SwitchTable.h"
 
 #include <algorithm>
-#include <iterator>
 
 namespace pb::render {
 
@@ -207,12 +206,9 @@ void GiApplyPass::execute(FrameContext& frame) {
         }
         glDepthMask(GL_FALSE); // the volume draws only test depth
     }
-    // Once per program: uncounted, the first volume's apply is naive's (the same defines).
-    const gl::Program* const programs[] = {d.applyFullscreen, d.apply.box,   d.fill.box,
-                                           d.fill.screen,     d.applyRaster, d.applyFirst};
-    for (std::size_t i = 0; i < std::size(programs); ++i)
-        if (programs[i] && std::find(programs, programs + i, programs[i]) == programs + i)
-            setPixelUniforms(*programs[i], frame, div);
+    for (const gl::Program* p :
+         {d.applyFullscreen, d.apply.box, d.fill.box, d.fill.screen, d.applyRaster, d.applyFirst})
+        if (p) setPixelUniforms(*p, frame, div);
 
     std::vector<GiVolumeRaster> rasters;
     std::vector<bool> drawn;     // in the frustum, and (screenRects_) some texel of it on screen
