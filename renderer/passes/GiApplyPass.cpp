@@ -44,8 +44,6 @@ struct GiApplyPass::Draw {
     GiProgramPair apply, fill; // stencil only
     // Stencil, eye inside a box drawn with back faces: the raster decides the influence.
     const gl::Program* applyRaster = nullptr;
-    // Stencil, the first volume drawn: nothing is taken yet (drawFirstStencil).
-    const gl::Program* applyFirst = nullptr;
     const gl::Program* markRaster = nullptr;
     // The raster apply has no discard (no GI_DYNAMIC_SH early-out): it can be its own mark.
     bool rasterApplyMarks = false;
@@ -171,11 +169,6 @@ void GiApplyPass::execute(FrameContext& frame) {
         d.rasterApplyMarks = !applyRasterDefines.count("GI_DYNAMIC_SH");
         // The raster mark discards nothing: early tests are its production behaviour.
         if (countInvocations && !countLate_) markRasterDefines["GI_COUNT_EARLY_TESTS"] = "";
-        // Its stencil write follows a discard: late tests, counted or not.
-        gl::Defines applyFirstDefines = applyDefines;
-        applyFirstDefines.erase("GI_COUNT_EARLY_TESTS");
-        d.applyFirst =
-            &frame.programs.get("fullscreen.vert", "gi_ddgi_apply.frag", applyFirstDefines);
         d.applyRaster =
             &frame.programs.get("gi_volume_box.vert", "gi_ddgi_apply.frag", applyRasterDefines);
         d.markRaster = &frame.programs.get("gi_volume_box.vert", "gi_stencil_mark_raster.frag",
@@ -207,19 +200,17 @@ void GiApplyPass::execute(FrameContext& frame) {
         glDepthMask(GL_FALSE); // the volume draws only test depth
     }
     for (const gl::Program* p :
-         {d.applyFullscreen, d.apply.box, d.fill.box, d.fill.screen, d.applyRaster, d.applyFirst})
+         {d.applyFullscreen, d.apply.box, d.fill.box, d.fill.screen, d.applyRaster})
         if (p) setPixelUniforms(*p, frame, div);
 
     std::vector<GiVolumeRaster> rasters;
     std::vector<bool> drawn;     // in the frustum, and (screenRects_) some texel of it on screen
     std::size_t lastVisible = 0; // stencil: the last volume drawn needs no mark
-    std::size_t firstVisible = order.size(); // stencil: nothing taken before it
     for (std::size_t k = 0; k < order.size(); ++k) {
         rasters.push_back(volumeRaster(probes_.volumes()[size_t(order[k])], frame.view,
                                        d.gbufferSize, div, d.giSize));
         drawn.push_back(rasters.back().visible && (!screenRects_ || rasters.back().onScreen()));
         if (drawn.back()) lastVisible = k;
-        if (drawn.back() && firstVisible == order.size()) firstVisible = k;
     }
     for (std::size_t k = 0; k < order.size(); ++k) {
         const int v = order[k];
@@ -235,10 +226,9 @@ void GiApplyPass::execute(FrameContext& frame) {
             vs.screenRect[i] = rect[i];
         vs.cameraInside = stencil && r.cameraInside;
         vs.fillPass = stencil && drawn[k] && k != lastVisible;
-        const bool first = stencil && k == firstVisible;
-        vs.fullScreen = !stencil || first || (r.cameraInside && !r.backFacesInFrontOfFar);
-        vs.rasterInfluence = stencil && drawn[k] && !first && rasterDecides(r);
-        vs.markInApply = vs.fillPass && (first || (vs.rasterInfluence && d.rasterApplyMarks));
+        vs.fullScreen = !stencil || (r.cameraInside && !r.backFacesInFrontOfFar);
+        vs.rasterInfluence = stencil && drawn[k] && rasterDecides(r);
+        vs.markInApply = vs.rasterInfluence && vs.fillPass && d.rasterApplyMarks;
         stats_.volumes.push_back(vs);
         if (!drawn[k]) continue;
         if (countPixels_) {
@@ -257,8 +247,7 @@ void GiApplyPass::execute(FrameContext& frame) {
                       r.screenRect.w - r.screenRect.y);
         }
         if (stencil)
-            first ? drawFirstStencil(d, v, k == lastVisible)
-                  : drawStencil(d, v, r, k == lastVisible, countInvocations);
+            drawStencil(d, v, r, k == lastVisible, countInvocations);
         else
             drawNaive(d, v);
         glDisable(GL_SCISSOR_TEST);
@@ -379,27 +368,6 @@ void GiApplyPass::drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
-}
-
-// The first volume drawn (the smallest visible): no texel is taken yet, so neither the stencil
-// nor the depth test could reject one. It draws as naive does - a full-screen triangle (within
-// its rectangle), the shader's sky and influence tests discarding - and sets 'taken' on what it
-// keeps (stencil ALWAYS/REPLACE, after the shader since it may discard): one draw, no depth
-// test, no box raster, and the same influence test as naive's, bit for bit. On llvmpipe the
-// raster-decided back-face draw with early depth and stencil tests cost ~7% more than this for
-// the same pixels (bench/results/2026-11-25-p3-p1.md).
-void GiApplyPass::drawFirstStencil(Draw& d, int v, bool last) {
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_STENCIL_TEST);
-    glStencilFunc(GL_ALWAYS, int(kStencilTaken), kStencilTaken);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-    glStencilMask(last ? 0u : kStencilTaken); // alone: nothing after it reads 'taken'
-    d.applyFirst->use();
-    probes_.bindVolume(*d.applyFirst, v, kFirstProbeUnit, d.frame.view.eye, d.frame.preExposure);
-    drawFullscreenTriangle(d.frame.targets);
-    glStencilMask(0xFFu);
-    glDisable(GL_STENCIL_TEST);
 }
 
 // Reads the "evaluated" attachment (cleared before the volume's draws) back and folds it into

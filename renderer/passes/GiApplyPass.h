@@ -54,7 +54,6 @@ private:
     struct Draw; // one frame's shared state (GiApplyPass.cpp)
     void drawNaive(Draw& d, int v);
     void drawStencil(Draw& d, int v, const GiVolumeRaster& r, bool last, bool countInvocations);
-    void drawFirstStencil(Draw& d, int v, bool last);
     void countEvaluated(int statsIndex);
 
     const GpuProbes& probes_;
