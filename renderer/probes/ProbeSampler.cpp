@@ -443,7 +443,7 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
     k.n = n;
     k.alpha = alpha;
     k.fade = fade;
-    const bool rendered = opt.surfaceBias && !opt.bakeBias;
+    const bool rendered = opt.surfaceBias && !opt.bakeBias && opt.behindFade;
     k.behindInvWidth = rendered ? 1.0f / (kBehindRampCells * f.minCell) : 0.0f;
     k.behindFloor = rendered ? kBehindFloor : 0.0f;
     k.done = false;

@@ -126,6 +126,11 @@ struct SampleOptions {
     // with bakeBias or without surfaceBias also keeps behind-surface probes at RTXGI's weight
     // (no kBehindRampCells fade): it is the bake's, not a rendered surface's.
     bool bakeBias = false;
+    // false: no behind-surface fade (kBehindRampCells) either. The placement's lattice search
+    // (PlacementError.cpp) turns it off: its choice of shift is part of the bake, and with the
+    // fade it chose other shifts on the garden and the apartment (bench_lattice's stored
+    // counts 4887 -> 4904, 4746 -> 4758); off, every bake is what it was.
+    bool behindFade = true;
 };
 
 // One lookup of a batch (ProbeSampler::sampleBatch).
