@@ -321,7 +321,7 @@ int main(int argc, char** argv) {
         std::vector<std::vector<double>> varResidual(kVariants * lines.size());
         std::FILE* dump = dumpPath.empty() ? nullptr : std::fopen(dumpPath.c_str(), "w");
         if (dump)
-            std::fprintf(dump, "line,i,x,z,r,truth,lookup,tri,triwrap,tricheb,nocrush"
+            std::fprintf(dump, "line,i,x,y,z,r,truth,lookup,tri,triwrap,tricheb,nocrush"
                                ",w0,w1,w2,w3,wrap0,wrap1,wrap2,wrap3,cheb0,cheb1,cheb2,cheb3"
                                ",e0,e1,e2,e3\n");
         for (std::size_t k = 0; k < points.size(); ++k) {
@@ -351,8 +351,8 @@ int main(int argc, char** argv) {
                 varResidual[std::size_t(var) * lines.size() + line].push_back(l.variant[var] - t);
             }
             if (dump) {
-                std::fprintf(dump, "%zu,%zu,%.4f,%.4f,%.3f,%.5f,%.5f", line, k % kSamplesPerLine,
-                             p.x, p.z, r, t, mine);
+                std::fprintf(dump, "%zu,%zu,%.4f,%.4f,%.4f,%.3f,%.5f,%.5f", line,
+                             k % kSamplesPerLine, p.x, p.y, p.z, r, t, mine);
                 for (int var = 0; var < 4; ++var)
                     std::fprintf(dump, ",%.5f", l.variant[var]);
                 const int up[4] = {2, 3, 6, 7};
