@@ -129,7 +129,8 @@ struct SampleOptions {
     // false: no behind-surface fade (kBehindRampCells) either. The placement's lattice search
     // (PlacementError.cpp) turns it off: its choice of shift is part of the bake, and with the
     // fade it chose other shifts on the garden and the apartment (bench_lattice's stored
-    // counts 4887 -> 4904, 4746 -> 4758); off, every bake is what it was.
+    // counts 4887 -> 4904, 4746 -> 4758); off, every bake is what it was. gi.dynamic=sh's
+    // lookups at an object's centre (DynamicShPass) have it off too: no surface there.
     bool behindFade = true;
 };
 
