@@ -35,6 +35,11 @@ constexpr float kBakeBiasNormalWeight = 0.2f;
 constexpr float kBakeBiasViewWeight = 0.8f;
 constexpr float kBiasScale = 0.25f;
 constexpr float kWrapBias = 0.2f;        // backface weight ((dot(dirToProbe,n)+1)/2)^2 + 0.2
+constexpr float kChebyshevFloor = 0.05f; // lower bound of the (cubed) Chebyshev weight
+constexpr float kVarianceFloor = 1e-3f;  // in normalised distance units (maxDistance^2)
+constexpr float kCrushThreshold = 0.2f;  // w < 0.2 -> w * w^2 / 0.2^2
+constexpr float kMinTrilinear = 1e-3f;   // lower bound of the trilinear weight
+constexpr float kEdgeFadeCells = 0.5f;   // fade width of root volumes, in cells
 // Probes behind a rendered surface fade out: after the Chebyshev test and the crush, a corner's
 // weight is multiplied by max(clamp(1 + h / (kBehindRampCells * minCell), 0, 1), kBehindFloor),
 // h = dot(probe - p, n) the probe's height over the surface's plane (negative behind it). A
@@ -43,18 +48,12 @@ constexpr float kWrapBias = 0.2f;        // backface weight ((dot(dirToProbe,n)+
 // from below, 2 - 10x the floor's irradiance; Chebyshev passed it wherever its visibility
 // texel straddled the floor's edge on the horizon, and those few percent of weight printed the
 // lattice (issue 24, bench_floor_corners; bench_lattice Sponza uniform 3.75 -> 1.18). The
-// height, not the cosine of the direction to the probe: that one turns fast next to a probe,
-// and a ramp on it made the GPU's rounding of the point show (cross-check 1.4e-3). After the
-// crush, which would cube the factor. The floor keeps a lookup whose 8 probes are all behind
-// normalisable. The bake's own lookups (bakeBias, and the nesting blend, which has no
-// surface) keep RTXGI's weight: bakes are unchanged.
+// height, not the cosine of the direction to the probe: it is linear in the position (the
+// cosine turns fast next to a probe). After the crush, which would cube the factor. The floor
+// keeps a lookup whose 8 probes are all behind normalisable. Lookups at no rendered surface
+// keep RTXGI's weight (SampleOptions::behindFade): bakes are unchanged.
 constexpr float kBehindRampCells = 0.2f;
 constexpr float kBehindFloor = 0.05f;
-constexpr float kChebyshevFloor = 0.05f; // lower bound of the (cubed) Chebyshev weight
-constexpr float kVarianceFloor = 1e-3f;  // in normalised distance units (maxDistance^2)
-constexpr float kCrushThreshold = 0.2f;  // w < 0.2 -> w * w^2 / 0.2^2
-constexpr float kMinTrilinear = 1e-3f;   // lower bound of the trilinear weight
-constexpr float kEdgeFadeCells = 0.5f;   // fade width of root volumes, in cells
 
 // One volume as the sampler sees it (the bake points these at its working textures). The
 // sampler copies the textures at construction into a tile-major layout (a probe's tile
