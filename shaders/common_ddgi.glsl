@@ -82,6 +82,7 @@ uniform vec4 u_ddgiVisOct;        // as u_ddgiIrrOct for the visibility layers
 uniform vec3 u_ddgiMaxBase;       // max(counts - 2, 0): the base probe's largest coordinate
 uniform vec3 u_ddgiBiasNormal;    // DDGI_BIAS_NORMAL * u_ddgiBiasDistance (x = y = z)
 uniform vec3 u_ddgiBiasView;      // DDGI_BIAS_VIEW * u_ddgiBiasDistance
+uniform float u_ddgiBehindInvWidth; // 1 / (kBehindRampCells * minCell) (ProbeSampler.h)
 
 // The uniforms the 8-probe loops read, copied into registers once per lookup: a uniform read
 // inside the loops costs llvmpipe a per-lane load at each use (common_ddgi_tile.glsl).
@@ -89,7 +90,7 @@ ivec3 ddgiLoopCounts, ddgiLoopLast;
 vec3 ddgiLoopStep;
 vec2 ddgiLoopVisTile, ddgiLoopIrrTile;
 vec4 ddgiLoopVisOct;
-float ddgiLoopInvMaxDistance;
+float ddgiLoopInvMaxDistance, ddgiLoopBehindInvWidth;
 #ifdef GI_GUARD_EXPOSURE_ON
 float ddgiLoopIrradianceScale;
 #endif
@@ -101,6 +102,7 @@ void ddgiInitLoopConstants() {
     ddgiLoopIrrTile = u_ddgiIrrTileScale;
     ddgiLoopVisOct = u_ddgiVisOct;
     ddgiLoopInvMaxDistance = u_ddgiInvMaxDistance;
+    ddgiLoopBehindInvWidth = u_ddgiBehindInvWidth;
 #ifdef GI_GUARD_EXPOSURE_ON
     ddgiLoopIrradianceScale = u_ddgiIrradianceScale;
 #endif
@@ -200,17 +202,19 @@ hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 cellProbe, vec3 p, hvec3 n, vec3
     // direction to the probe (n when the probe sits on the point) without normalising it.
     vec3 toProbe = probe - p;
     float len2 = dot(toProbe, toProbe);
-    hfloat t = len2 > 0.0 ? (ddgiHalf(dot(toProbe, vec3(n)) * inversesqrt(len2)) + 1.0) * 0.5
-                          : 1.0;
+    float height = dot(toProbe, vec3(n)); // the probe's height over the surface's plane
+    hfloat t = len2 > 0.0 ? (ddgiHalf(height * inversesqrt(len2)) + 1.0) * 0.5 : 1.0;
     hfloat w = t * t + DDGI_WRAP_BIAS;
 
     // 4b. Chebyshev visibility from the probe towards the biased point (only where the point
-    // is farther than the mean); the octahedral encoding needs no unit direction (n when the
-    // point sits on the probe).
+    // is farther than the mean); n when the point sits on the probe. The direction is made unit
+    // as on the CPU: the encoding does not need it, but its rounding without it moved the
+    // texel coordinate enough that a weight on the crushed Chebyshev slope (~cheb^9) differed
+    // from the CPU's by 1.2e-3 once the behind-surface fade (4c') left it dominant.
     vec3 toPoint = biased - probe;
     float dist = sqrt(dot(toPoint, toPoint));
     vec2 visCoord = vec2(tile.xy) * ddgiLoopVisTile +
-                    ddgiOctEncode(dist > 0.0 ? toPoint : vec3(n)) * ddgiLoopVisOct.xy +
+                    ddgiOctEncode(dist > 0.0 ? toPoint / dist : vec3(n)) * ddgiLoopVisOct.xy +
                     ddgiLoopVisOct.zw;
     hvec2 vis = texture(u_ddgiVisibility, vec3(visCoord, float(tile.z))).rg;
     hfloat d01 = ddgiHalf(dist * ddgiLoopInvMaxDistance);
@@ -222,6 +226,8 @@ hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 cellProbe, vec3 p, hvec3 n, vec3
     // 4c. Crush tiny weights.
     w *= w < DDGI_CRUSH_THRESHOLD ? (w * w) * (1.0 / (DDGI_CRUSH_THRESHOLD * DDGI_CRUSH_THRESHOLD))
                                   : 1.0;
+    // 4c'. Probes behind the surface's plane fade out (ProbeSampler.h kBehindRampCells).
+    w *= ddgiHalf(max(clamp(1.0 + height * ddgiLoopBehindInvWidth, 0.0, 1.0), DDGI_BEHIND_FLOOR));
 
     // 4d. Trilinear.
     hfloat tri = (off.x != 0 ? alpha.x : 1.0 - alpha.x) * (off.y != 0 ? alpha.y : 1.0 - alpha.y) *

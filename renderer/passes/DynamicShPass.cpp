@@ -86,6 +86,10 @@ void DynamicShPass::execute(FrameContext& frame) {
     eval.set("u_pointView", 1);
     for (int v : probes_.drawOrder()) { // largest first, overwriting: the smallest one wins
         probes_.bindVolume(eval, v, 2, frame.view.eye, frame.preExposure);
+        // An object's centre is no surface: every probe counts, whichever way the direction
+        // looked up points (no behind-surface fade, ProbeSampler.h kBehindRampCells; with it a
+        // sparse bake left directions with all 8 probes behind unlit).
+        eval.set("u_ddgiBehindInvWidth", 0.0f);
         drawFullscreenTriangle(frame.targets);
     }
 

@@ -118,6 +118,7 @@ gl::Defines ddgiConstantDefines() {
         {"DDGI_BIAS_NORMAL", glslFloat(kBiasNormalWeight)},
         {"DDGI_BIAS_VIEW", glslFloat(kBiasViewWeight)},
         {"DDGI_WRAP_BIAS", glslFloat(kWrapBias)},
+        {"DDGI_BEHIND_FLOOR", glslFloat(kBehindFloor)},
         {"DDGI_CHEBYSHEV_FLOOR", glslFloat(kChebyshevFloor)},
         {"DDGI_VARIANCE_FLOOR", glslFloat(kVarianceFloor)},
         {"DDGI_CRUSH_THRESHOLD", glslFloat(kCrushThreshold)},
@@ -258,6 +259,8 @@ void GpuProbes::bindVolume(const gl::Program& program, int v, int firstUnit,
     program.set("u_ddgiMaxBase", glm::vec3(glm::max(g.counts - 2, glm::ivec3(0))));
     program.set("u_ddgiBiasNormal", glm::vec3(kBiasNormalWeight * g.biasDistance));
     program.set("u_ddgiBiasView", glm::vec3(kBiasViewWeight * g.biasDistance));
+    // ProbeSampler.h kBehindRampCells; biasDistance = kBiasScale * minCell.
+    program.set("u_ddgiBehindInvWidth", kBiasScale / (kBehindRampCells * g.biasDistance));
 }
 
 } // namespace pb::render

@@ -261,6 +261,9 @@ struct ProbeSampler::Lookup {
     glm::vec3 p, n, alpha;
     glm::vec2 irrCoord;
     float fade = 0.0f;
+    // The behind-surface fade (kBehindRampCells): 1 / width (world units) and floor; 0 and 0
+    // turn it off (the factor is then exactly 1).
+    float behindInvWidth = 0.0f, behindFloor = 0.0f;
     alignas(16) float px[8], py[8], pz[8]; // probe position (local)
     alignas(16) float dist[8];             // |biased - probe|
     alignas(16) float vx[8], vy[8];        // visibility tile coordinates
@@ -440,6 +443,9 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
     k.n = n;
     k.alpha = alpha;
     k.fade = fade;
+    const bool rendered = opt.surfaceBias && !opt.bakeBias && opt.behindFade;
+    k.behindInvWidth = rendered ? 1.0f / (kBehindRampCells * f.minCell) : 0.0f;
+    k.behindFloor = rendered ? kBehindFloor : 0.0f;
     k.done = false;
 }
 
@@ -500,6 +506,12 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
         // 4c. Crush tiny weights (keeps a faint leak from dominating once normalised).
         const float crushed = w * ((w * w) / (kCrushThreshold * kCrushThreshold));
         w = w < kCrushThreshold ? crushed : w;
+
+        // 4c'. Rendered points: probes behind the surface's plane fade out over
+        //      kBehindRampCells (the height is finite: `len` 0 gives 0).
+        const float height = qx * n.x + qy * n.y + qz * n.z;
+        const float ramp = std::min(std::max(1.0f + height * k.behindInvWidth, 0.0f), 1.0f);
+        w *= std::max(ramp, k.behindFloor);
 
         // 4d. Trilinear.
         const float tri = ((i & 1) ? alpha.x : 1.0f - alpha.x) *

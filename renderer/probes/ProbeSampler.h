@@ -40,6 +40,20 @@ constexpr float kVarianceFloor = 1e-3f;  // in normalised distance units (maxDis
 constexpr float kCrushThreshold = 0.2f;  // w < 0.2 -> w * w^2 / 0.2^2
 constexpr float kMinTrilinear = 1e-3f;   // lower bound of the trilinear weight
 constexpr float kEdgeFadeCells = 0.5f;   // fade width of root volumes, in cells
+// Probes behind a rendered surface fade out: after the Chebyshev test and the crush, a corner's
+// weight is multiplied by max(clamp(1 + h / (kBehindRampCells * minCell), 0, 1), kBehindFloor),
+// h = dot(probe - p, n) the probe's height over the surface's plane (negative behind it). A
+// probe plane a few tenths of a cell under a floor (Sponza's uniform grid: 0.35 - 0.6 m under
+// the roof and the court, a scene with no inside, so nothing invalidates them) sees the sky
+// from below, 2 - 10x the floor's irradiance; Chebyshev passed it wherever its visibility
+// texel straddled the floor's edge on the horizon, and those few percent of weight printed the
+// lattice (issue 24, bench_floor_corners; bench_lattice Sponza uniform 3.75 -> 1.18). The
+// height, not the cosine of the direction to the probe: it is linear in the position (the
+// cosine turns fast next to a probe). After the crush, which would cube the factor. The floor
+// keeps a lookup whose 8 probes are all behind normalisable. Lookups at no rendered surface
+// keep RTXGI's weight (SampleOptions::behindFade): bakes are unchanged.
+constexpr float kBehindRampCells = 0.2f;
+constexpr float kBehindFloor = 0.05f;
 
 // One volume as the sampler sees it (the bake points these at its working textures). The
 // sampler copies the textures at construction into a tile-major layout (a probe's tile
@@ -107,8 +121,16 @@ struct SampleOptions {
     // parent's cell - 25 cm in the rooms' house volume - towards the texel's direction, through the 5 cm partition beside the
     // probe, and the dark room's ring probes took the lit room's light (issue 24).
     bool surfaceBias = true;
-    // The bake's bias weights (kBakeBias*) instead of the rendered point's (kBias*).
+    // The bake's bias weights (kBakeBias*) instead of the rendered point's (kBias*). A lookup
+    // with bakeBias or without surfaceBias also keeps behind-surface probes at RTXGI's weight
+    // (no kBehindRampCells fade): it is the bake's, not a rendered surface's.
     bool bakeBias = false;
+    // false: no behind-surface fade (kBehindRampCells) either. The placement's lattice search
+    // (PlacementError.cpp) turns it off: its choice of shift is part of the bake, and with the
+    // fade it chose other shifts on the garden and the apartment (bench_lattice's stored
+    // counts 4887 -> 4904, 4746 -> 4758); off, every bake is what it was. gi.dynamic=sh's
+    // lookups at an object's centre (DynamicShPass) have it off too: no surface there.
+    bool behindFade = true;
 };
 
 // One lookup of a batch (ProbeSampler::sampleBatch).

@@ -1,7 +1,10 @@
 // Golden images of `--debug gi_only` where issue 24 saw the DDGI lookup print artifacts, so a
 // change that brings one back is seen (tests/golden/gi_only_<case>.png, 320x180):
 //   - sponza_uniform: Sponza under a uniform grid (`--volumes auto-uniform`, stored dense):
-//     rings under the probes and lines at the cell boundaries on the floor;
+//     rings under the probes and lines at the cell boundaries on the floor, from the probe
+//     plane under the court floor; gone since the behind-surface fade (ProbeSampler.h
+//     kBehindRampCells, 2026-11-25: all three images re-recorded then, the garden's ground
+//     lost the same pattern);
 //   - garden_water: the Japanese garden's default view, the water under the bridge, with the
 //     default placement (adaptive, sparse; the lattice search left out to keep the test short);
 //   - rooms_doorway: `rooms` with bench/volumes/rooms_nested.toml from the doorway view, where

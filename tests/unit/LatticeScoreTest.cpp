@@ -89,3 +89,29 @@ TEST(LatticeScore, FloorLinesStayOnFlatUpwardSurfaces) {
     addInstance(wall, w);
     EXPECT_TRUE(findFloorLines(RayScene(wall), 5, 16, 0.1f).empty());
 }
+
+TEST(LatticeScore, ADoubleSidedFloorWoundDownwardIsAFloorASingleSidedOneIsNot) {
+    // Sponza's court floor: its triangles face down, its material is double-sided, so it is
+    // rendered from above. Wound the same way but single-sided it is a ceiling's underside.
+    for (bool doubleSided : {true, false}) {
+        scene::Scene s = emptyScene();
+        const int m = addMaterial(s, glm::vec3(0.5f));
+        s.materials[size_t(m)].doubleSided = doubleSided;
+        scene::Primitive floor;
+        floor.material = m;
+        addQuad(floor, {-3, 0, -3}, {0, 0, 6}, {6, 0, 0}, {0, -1, 0});
+        addInstance(s, floor);
+        // A post in a corner gives the scene height (starts are drawn within its bounds).
+        addInstance(
+            s, boxPrimitive({2.5f, 0, 2.5f}, {3, 1, 3}, false, addMaterial(s, glm::vec3(0.5f))));
+        const RayScene rs(s);
+        const std::vector<FloorLine> lines = findFloorLines(rs, 10, 16, 0.1f);
+        if (!doubleSided) {
+            EXPECT_TRUE(lines.empty());
+            continue;
+        }
+        ASSERT_GE(lines.size(), 5u);
+        for (const FloorLine& l : lines)
+            EXPECT_LT(std::fabs(l.start.y), 0.01f);
+    }
+}

@@ -13,6 +13,14 @@ RayHit surfaceBelow(const RayScene& rs, const glm::vec3& p, float above) {
     return rs.intersect(p + glm::vec3(0, above, 0), glm::vec3(0, -1, 0));
 }
 
+// A floor seen from above: an upward face, or a double-sided face wound downward (its other
+// side faces up and is rendered; Sponza's court floor, whose missing lines hid the rings of
+// issue 24 from bench_lattice).
+bool facesUp(const RayScene& rs, const RayHit& h) {
+    const float y = rs.faceNormal(h.geomID, h.primID).y;
+    return y > 0.99f || (y < -0.99f && rs.surface(h.geomID).doubleSided);
+}
+
 // Power of the windowed series at `frequency` (a DFT at an arbitrary frequency).
 double powerAt(const std::vector<double>& x, float step, double frequency) {
     double re = 0.0, im = 0.0;
@@ -52,14 +60,14 @@ std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples
         for (int i = 0; i < samples && ok; ++i) {
             const glm::vec3 q = glm::vec3(p.x, height, p.z) + axis * (step * float(i));
             const RayHit h = surfaceBelow(rs, q, clearance);
-            ok = h.hit() && std::fabs(h.t - clearance) <= flat &&
-                 rs.faceNormal(h.geomID, h.primID).y > 0.99f;
+            ok = h.hit() && std::fabs(h.t - clearance) <= flat && facesUp(rs, h);
             // Open above: the first thing straight up is a ceiling's front (or nothing), at
             // least the clearance away; its back would mean the point is inside a solid (a
-            // floor running under a box).
+            // floor running under a box). A double-sided face has no back.
             const RayHit up = rs.intersect(q + glm::vec3(0, lift, 0), glm::vec3(0, 1, 0));
-            ok = ok && (!up.hit() ||
-                        (up.t > clearance && rs.faceNormal(up.geomID, up.primID).y < 0.0f));
+            ok = ok &&
+                 (!up.hit() || (up.t > clearance && (rs.faceNormal(up.geomID, up.primID).y < 0.0f ||
+                                                     rs.surface(up.geomID).doubleSided)));
         }
         if (!ok) continue;
         lines.push_back({glm::vec3(p.x, height + lift, p.z), axis, step, samples});

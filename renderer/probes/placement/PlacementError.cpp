@@ -74,7 +74,11 @@ double PlacementErrorEstimate::relativeError(const std::vector<ProbeVolume>& vol
     for (const GatherPoint& p : points_)
         queries.push_back({p.pos, p.normal, p.normal});
     std::vector<IrradianceSample> samples(queries.size());
-    sampler.sampleBatch(queries.data(), queries.size(), samples.data());
+    // Without the behind-surface fade: the search's choices, hence the bakes, stay as they
+    // were before it (SampleOptions::behindFade).
+    SampleOptions asBefore;
+    asBefore.behindFade = false;
+    sampler.sampleBatch(queries.data(), queries.size(), samples.data(), asBefore);
     std::vector<glm::vec3> values(samples.size());
     for (std::size_t i = 0; i < samples.size(); ++i)
         values[i] = samples[i].irradiance;
