@@ -27,9 +27,24 @@ inline DenseAndSparse bakeDenseAndSparse(const std::string& builtin, int maxProb
     r.settings.bounces = 2;
     b.dense = probes::bakeProbes(b.scene, r);
     b.sparse = b.dense;
-    probes::applySparseStorage(b.sparse,
-                               probes::staticBakeTriangles(b.scene)); // SH of absent probes: zero
+    probes::applySparseStorage(b.sparse, probes::staticBakeTriangles(b.scene));
     return b;
+}
+
+// `sparse` as a probe file from before version 7 reads it: the probes sparse storage left out
+// keep nothing (no irradiance tile, no SH; invalid), so lookups read stand-ins for them
+// (probes/AbsentProbeFill.h, probes/ShAbsentFill.h).
+inline probes::ProbeSet withoutIrradianceOnly(probes::ProbeSet set) {
+    std::vector<std::vector<std::uint8_t>> keep;
+    for (auto& states : set.states) {
+        keep.emplace_back();
+        for (probes::ProbeState& s : states) {
+            keep.back().push_back(s.stored ? 1 : 0);
+            if (!s.stored) s.valid = false; // then storeOnly keeps no irradiance of it
+        }
+    }
+    probes::storeOnly(set, keep); // zeroes their tiles and SH
+    return set;
 }
 
 } // namespace pb::test

@@ -2,6 +2,7 @@
 // surface test keeps, the probe file round trip of a sparse set, and the guarantee that lets
 // sparse storage drop probes at all: no surface point's irradiance changes.
 #include "probes/store/SparseStorage.h"
+#include "DenseAndSparseBake.h"
 #include "ProbeTestScenes.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
@@ -254,11 +255,16 @@ TEST(SparseStorage, BakingOnlyTheKeptProbesGivesTheDenseBakeDropped) {
     for (std::size_t v = 0; v < 2; ++v) {
         for (std::size_t i = 0; i < dense.states[v].size(); ++i) {
             EXPECT_EQ(sparse.states[v][i].stored, dense.states[v][i].stored) << v << "/" << i;
+            EXPECT_EQ(sparse.states[v][i].irradianceOnly, dense.states[v][i].irradianceOnly)
+                << v << "/" << i;
             EXPECT_EQ(sparse.states[v][i].offset, dense.states[v][i].offset) << v << "/" << i;
         }
         EXPECT_EQ(sparse.visibility[v].stored, dense.visibility[v].stored) << v;
         EXPECT_EQ(sparse.irradiance[0][v].stored, dense.irradiance[0][v].stored) << v;
     }
+    // The probes left out were traced in the last pass: their irradiance and SH are the dense
+    // bake's (its earlier passes feed only surface lookups, whose corners are all kept).
+    EXPECT_EQ(sparse.sh, dense.sh);
 }
 
 // The parent exception: a child's ring probe blends towards the parent at its own position,
@@ -307,6 +313,7 @@ TEST(SparseStorage, AbsentProbesReadTheirNearestStoredProbe) {
     const ProbeSet& dense = courtyardDense();
     ProbeSet sparse = dense;
     applySparseStorage(sparse, staticBakeTriangles(pb::scene::makeBuiltinScene("courtyard")));
+    sparse = pb::test::withoutIrradianceOnly(sparse); // a file from before version 7
     const ProbeVolume& v = dense.volumes[0];
     const std::vector<int> source =
         fillSources(v, sparse.states[0], sparse.settings.backfaceThreshold);
@@ -366,10 +373,15 @@ TEST(SparseStorage, FileRoundTripStoresOnlyTheKeptTiles) {
     const std::vector<std::uint8_t> bytes = serializeProbeSet(sparse);
     const ProbeSet back = parseProbeSet(bytes, "sparse.pbp");
     ASSERT_EQ(back.states[0].size(), sparse.states[0].size());
+    std::size_t irradianceOnly = 0;
     for (std::size_t i = 0; i < back.states[0].size(); ++i) {
         EXPECT_EQ(back.states[0][i].stored, sparse.states[0][i].stored);
+        EXPECT_EQ(back.states[0][i].irradianceOnly, sparse.states[0][i].irradianceOnly);
         EXPECT_EQ(back.states[0][i].valid, sparse.states[0][i].valid);
+        irradianceOnly += sparse.states[0][i].irradianceOnly ? 1 : 0;
     }
+    ASSERT_GT(irradianceOnly, 0u) << "no irradiance-only probe: vacuous";
+    EXPECT_EQ(back.sh, sparse.sh);
     EXPECT_EQ(back.visibility[0].texels, sparse.visibility[0].texels);
     EXPECT_EQ(back.visibility[0].stored, sparse.visibility[0].stored);
     EXPECT_EQ(back.irradiance[0][0].texels, sparse.irradiance[0][0].texels);
@@ -379,9 +391,16 @@ TEST(SparseStorage, FileRoundTripStoresOnlyTheKeptTiles) {
     for (ProbeState& p : allStored.states[0])
         p.stored = true;
     const std::size_t denseSize = serializeProbeSet(allStored).size();
-    EXPECT_LT(bytes.size(), denseSize * (sparse.storedCount() + 64) / sparse.probeCount());
+    // An irradiance-only probe costs its irradiance tile: 10x10 rgba16f texels of a stored
+    // probe's 10x10 + 18x18 rg16f, 38%.
+    const double share = 800.0 / (800.0 + 1296.0);
+    EXPECT_LT(double(bytes.size()),
+              double(denseSize) *
+                  (double(sparse.storedCount()) + share * double(irradianceOnly) + 64.0) /
+                  double(sparse.probeCount()));
     const MemoryReport mem = memoryReport(back);
     EXPECT_EQ(mem.total.storedProbes, sparse.storedCount());
+    EXPECT_EQ(mem.total.irradianceOnlyProbes, irradianceOnly);
     EXPECT_EQ(mem.total.indirection, sparse.probeCount() * kStateBytesPerProbe);
     EXPECT_LT(mem.total.storedTotal(), memoryReport(allStored).total.storedTotal());
     // The bake keeps exactly the valid probes among those placement's budget counts.

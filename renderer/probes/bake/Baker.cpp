@@ -208,9 +208,12 @@ struct RadianceMask {
         for (int p : run.parents)
             if (p >= 0) isParent[size_t(p)] = true;
     }
-    bool needed(const ProbeSet& set, int v, int p) const {
+    // A probe sparse storage leaves out is still traced in the last pass: it keeps its
+    // irradiance tile (ProbeState::irradianceOnly). Earlier passes feed only the lookups at
+    // surface hits, whose cells' corners are all kept, so they skip it.
+    bool needed(const ProbeSet& set, int v, int p, bool lastPass) const {
         if (!set.states[size_t(v)][size_t(p)].valid) return false;
-        return keep.empty() || isParent[size_t(v)] || keep[size_t(v)][size_t(p)] != 0;
+        return keep.empty() || isParent[size_t(v)] || lastPass || keep[size_t(v)][size_t(p)] != 0;
     }
 };
 
@@ -278,6 +281,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     ProbeSet& set = run.set;
     const BakeSettings& cfg = run.cfg;
     const Scenario& sc = run.req.scenarios[s];
+    const bool lastPass = pass == run.cfg.bounces;
     std::vector<ProbeTexture> cur;
     run.passSh.clear();
     for (const ProbeVolume& v : set.volumes) {
@@ -321,7 +325,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
         for (int y = 0; y < kIrradianceTile; ++y)
             for (int x = 0; x < kIrradianceTile; ++x)
                 tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
-        if (!mask.needed(set, v, p)) return;
+        if (!mask.needed(set, v, p, lastPass)) return;
         float* out = irr[size_t(t)].data();
         run.slab.convolve(i, conv, out);
         run.slab.projectSh(i, dirs, &run.passSh[size_t(v)][size_t(p) * kShL2Coefficients]);
@@ -345,7 +349,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
                 auto [v, p] = run.locate(first + i);
                 const ProbeVolume& vol = set.volumes[size_t(v)];
                 const ProbeState& st = set.states[size_t(v)][size_t(p)];
-                if (mask.needed(set, v, p)) {
+                if (mask.needed(set, v, p, lastPass)) {
                     glm::ivec3 c = vol.probeCoords(p);
                     run.slab.trace(i, run.rs, sc, run.scene.lights, vol.localToWorldRotation(),
                                    vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
@@ -519,7 +523,8 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     std::vector<QuantisationError> errors = quantiseSet(run.set, req.settings.format, threads);
     // Invalid as baked, before sparse storage marks its absent probes invalid too.
     std::vector<std::size_t> bakedInvalid = invalidPerVolume(run.set);
-    if (req.sparse) storeOnly(run.set, mask.keep); // zeroes the absent probes' SH too
+    // Left-out valid probes keep irradiance and SH (irradiance-only); their visibility goes.
+    if (req.sparse) storeOnly(run.set, mask.keep);
 
     if (statsOut) {
         BakeStats st = countStats(run, std::move(bakedInvalid));

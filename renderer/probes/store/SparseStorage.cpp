@@ -204,24 +204,29 @@ void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep
         const ProbeVolume& v = set.volumes[vi];
         std::vector<ProbeState>& states = set.states[vi];
         if (keep[vi].size() != states.size()) throw Error("storeOnly: one flag per probe");
+        // A valid probe left out keeps its irradiance (ProbeState::irradianceOnly): it lies
+        // outside geometry, and only free cells read it. An invalid one is dropped whole.
         for (std::size_t i = 0; i < states.size(); ++i) {
-            states[i].stored = states[i].valid && keep[vi][i];
-            states[i].valid = states[i].stored;
+            const bool valid = states[i].valid;
+            states[i].stored = valid && keep[vi][i];
+            states[i].irradianceOnly = valid && !keep[vi][i];
+            states[i].valid = valid;
         }
         // Zero what is not stored the way the file's round trip does: pack, then unpack.
-        const std::vector<int> slots = packedSlots(states);
-        const glm::ivec3 packed = packedCounts(storedCount(states), v.counts);
-        auto roundTrip = [&](ProbeTexture& t, int tile) {
+        auto roundTrip = [&](ProbeTexture& t, int tile, const std::vector<int>& slots) {
+            const glm::ivec3 packed = packedCounts(
+                std::size_t(std::count_if(slots.begin(), slots.end(), [](int s) { return s >= 0; })),
+                v.counts);
             t = unpackTiles(packTiles(t, slots, v.counts, packed, tile, set.format()), slots,
                             v.counts, packed, tile, set.format());
         };
-        roundTrip(set.visibility[vi], kVisibilityTile);
+        roundTrip(set.visibility[vi], kVisibilityTile, packedSlots(states));
         for (auto& scenario : set.irradiance)
-            roundTrip(scenario[vi], kIrradianceTile);
-        // The SH record keeps stored probes only (ProbeFile.cpp): absent ones read as zeros.
+            roundTrip(scenario[vi], kIrradianceTile, irradianceSlots(states));
+        // The SH record keeps the probes with irradiance (ProbeFile.cpp): the rest read zeros.
         for (auto& scenario : set.sh)
             for (std::size_t p = 0; p < states.size() && vi < scenario.size(); ++p)
-                if (!states[p].stored)
+                if (!ownsIrradiance(states[p]))
                     std::fill_n(scenario[vi].begin() + std::ptrdiff_t(p * kShL2Coefficients),
                                 kShL2Coefficients, glm::vec3(0.0f));
     }
