@@ -394,11 +394,12 @@ std::string probeCountsText(const ProbeCounts& c, std::size_t volumes) {
     if (c.notStored() == 0)
         s << "all stored, " << *c.invalid << " invalid (inside geometry)";
     else if (c.absent && c.invalid)
-        s << c.stored << " stored, " << *c.absent << " absent (not stored: no surface nearby), "
+        s << c.stored << " stored, " << *c.absent
+          << " absent (no surface nearby: irradiance only, no visibility), "
           << *c.invalid << " invalid (inside geometry, not stored)";
     else
         s << c.stored << " stored, " << c.notStored() << " not stored (absent or invalid: a "
-          << "file read back does not tell which; --force re-bakes)";
+          << "file from before version 7 does not tell which; --force re-bakes)";
     return s.str();
 }
 
