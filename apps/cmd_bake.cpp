@@ -12,6 +12,7 @@
 #include "probes/store/ProbeFile.h"
 #include "probes/store/ProbeFileParts.h"
 #include "probes/bake/RayScene.h"
+#include "probes/store/SparseLayout.h"
 #include "probes/store/SparseStorage.h"
 #include "probes/store/VolumeFile.h"
 
@@ -417,8 +418,19 @@ std::size_t freeSpaceProbes(const ProbeSet& set, const scene::Scene& s) {
     return freeSpaceOnlyProbes(set, staticBakeTriangles(s));
 }
 
+// The bytes the irradiance-only probes' tiles add (one scenario, in the file's format): what
+// the memory report counts beyond the stored tiles.
+std::size_t irradianceOnlyBytes(const ProbeSet& set) {
+    const MemoryReport with = memoryReport(set);
+    std::vector<std::size_t> stored;
+    for (const auto& states : set.states) stored.push_back(probes::storedCount(states));
+    const MemoryReport without = memoryReport(set.volumes, set.format(), &stored);
+    return with.total.stored.total() - std::min(with.total.stored.total(),
+                                                without.total.stored.total());
+}
+
 // `freeSpace`: the stored probes only the free-space lattice keeps (freeSpaceOnlyProbes), the
-// cost of lighting the air between surfaces (issue 18).
+// cost of lighting the air between surfaces (issue 18), with the irradiance-only probes.
 void printSummary(const BakeArgs& a, const PlacementSummary& placement, const ProbeSet& set,
                   const BakeStats* st, bool upToDate, std::size_t freeSpace,
                   const CommandTimes& times) {
@@ -451,7 +463,9 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
         if (set.storedCount() < set.probeCount())
             j["free_space"] = {{"lattice_probes", freeSpace},
                                {"lattice_bytes", freeSpaceBytes},
-                               {"lattice_step", kFreeSpaceLatticeStep}};
+                               {"lattice_step", kFreeSpaceLatticeStep},
+                               {"irradiance_only_probes", mem.total.irradianceOnlyProbes},
+                               {"irradiance_only_bytes", irradianceOnlyBytes(set)}};
         nlohmann::json sc = nlohmann::json::array();
         nlohmann::json scales = nlohmann::json::object();
         for (std::size_t i = 0; i < set.scenarios.size(); ++i) {
@@ -550,8 +564,9 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
                   << formatName(set.format()) << " with the indirection\n"
                   << "free space: " << freeSpace << " of the stored probes ("
                   << formatBytes(freeSpaceBytes) << ") are kept only as the free-space lattice "
-                  << "(every " << kFreeSpaceLatticeStep
-                  << "nd probe per axis); absent probes are read as their nearest stored one\n";
+                  << "(every " << kFreeSpaceLatticeStep << "nd probe per axis); "
+                  << mem.total.irradianceOnlyProbes << " absent probes keep their irradiance ("
+                  << formatBytes(irradianceOnlyBytes(set)) << ", no visibility)\n";
     else
         std::cout << "sparse-storage candidates: " << mem.total.sparse.far
                   << " probe(s) far from every surface, " << mem.total.sparse.invalid
@@ -749,9 +764,10 @@ const RegisterCommand reg{{
         cmd.add_flag("--sparse", a->sparse,
                      "Sparse storage: store only valid probes at the corners of grid cells that "
                      "static surface passes through, and a coarse lattice through free space "
-                     "(every 2nd probe per axis); absent probes read as their nearest stored "
-                     "one (no surface's lighting changes; dynamic objects in the air stay "
-                     "lit); --probe-budget-mib then counts "
+                     "(every 2nd probe per axis); the other valid probes keep only their "
+                     "irradiance, read without visibility (no surface's lighting changes; "
+                     "dynamic objects in the air get the dense bake's light); "
+                     "--probe-budget-mib then counts "
                      "only what is stored, so auto placement fits a finer spacing. The default "
                      "for --volumes auto; for auto-uniform and volumes files add it");
         cmd.add_flag("--dense", a->dense,
