@@ -120,15 +120,15 @@ vec3 ddgiSafeNormalize(vec3 v, vec3 fallback) {
 
 // Edge fade at local point p: 1 inside the box, linear to 0 across a root's fade width per
 // axis; a child (zero fade width) is 0 outside its box. Shared by DDGI and the SH volume.
+// Selects, not an `if`: llvmpipe runs a branch's body under an execution mask whatever the
+// lanes decide (as ddgiProbeWeight). The same values as the branch: unselected lanes' divisions
+// by a zero width never reach the result.
 float ddgiEdgeFade(vec3 p) {
-    float fade = 1.0;
-    for (int a = 0; a < 3; ++a) {
-        float outside = abs(p[a]) - u_ddgiHalf[a];
-        if (outside > 0.0)
-            fade *= u_ddgiFadeWidth[a] > 0.0
-                        ? clamp(1.0 - outside / u_ddgiFadeWidth[a], 0.0, 1.0) : 0.0;
-    }
-    return fade;
+    vec3 outside = abs(p) - u_ddgiHalf;
+    vec3 ramp = clamp(1.0 - outside / u_ddgiFadeWidth, 0.0, 1.0);
+    vec3 f = mix(vec3(1.0), mix(vec3(0.0), ramp, greaterThan(u_ddgiFadeWidth, vec3(0.0))),
+                 greaterThan(outside, vec3(0.0)));
+    return f.x * f.y * f.z;
 }
 
 // renderer/probes/Octahedral.h: +Y at the centre, the lower hemisphere folded to the corners.

@@ -32,6 +32,8 @@ inline constexpr std::array<GBufferChannel, 4> kGBufferChannels = {{
     {"flags", gl::TextureFormat::R8, ChannelEncoding::Flags,
      "bit 0: dynamic object, bits 1-7: its number (DynamicObjects.h); stored as bits/255"},
 }};
+// Its stencil is cleared to 0 by GBufferPass and written by nothing: GiApplyPass's stencil path
+// copies depth and stencil together (a plain copy) and uses that 0 as its cleared 'taken' bit.
 inline constexpr gl::TextureFormat kGBufferDepthFormat = gl::TextureFormat::Depth32FStencil8;
 
 // Flag bits written to the `flags` channel.

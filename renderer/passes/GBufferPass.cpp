@@ -14,7 +14,8 @@ void GBufferPass::execute(FrameContext& frame) {
     gb.framebuffer().bind();
     glClearColor(0, 0, 0, 0);
     glClearDepthf(1.0f);
-    glClearStencil(0);
+    glClearStencil(0); // kept 0 all frame: GiApplyPass copies it as its cleared stencil
+    glStencilMask(0xFFu);
     glDepthMask(GL_TRUE);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glEnable(GL_DEPTH_TEST);

@@ -83,6 +83,7 @@ void resetState() {
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
     glStencilMask(0xFF);
@@ -126,11 +127,14 @@ void GiApplyPass::execute(FrameContext& frame) {
         stats_.shadedBy.assign(stats_.evaluations.size(), -1);
     }
 
+    // Stencil at full resolution, unjittered: texel = pixel, and the GI target's depth-stencil
+    // is a copy of the GBuffer's (see below), whose stencil GBufferPass clears to 0.
+    const bool copyDepthStencil = stencil && div == 1 && frame.giJitter == glm::ivec2(0);
     targets_.bind();
     resetState();
     glClearColor(0, 0, 0, 0); // weight 0 = no volume: the lighting falls back to its ambient
     glClearStencil(0);
-    glClear(GL_COLOR_BUFFER_BIT | (stencil ? GL_STENCIL_BUFFER_BIT : 0u));
+    glClear(GL_COLOR_BUFFER_BIT | (stencil && !copyDepthStencil ? GL_STENCIL_BUFFER_BIT : 0u));
 
     gl::Defines applyDefines = defines_, fillDefines = defines_;
     if (countPixels_) applyDefines["GI_COUNT_PIXELS"] = "";
@@ -171,12 +175,17 @@ void GiApplyPass::execute(FrameContext& frame) {
                                            markRasterDefines);
         // The GI target's depth: the depth of the GBuffer pixel each texel stands for.
         TimedSection section(frame.timer, "gi-depth-copy");
-        if (div == 1 && frame.giJitter == glm::ivec2(0)) {
-            // Texel = pixel, and both are DEPTH32F_STENCIL8: a blit copies the same values as
-            // the shader below, without running a fragment shader per pixel.
+        if (copyDepthStencil) {
+            // Texel = pixel, and both are DEPTH32F_STENCIL8: a blit copies the same depth as
+            // the shader below, without running a fragment shader per pixel. Depth AND
+            // stencil: Mesa copies a blit of every aspect of one format at one size as
+            // memory (depth alone takes its shader blit): 1.1 ms cpu-time at 1280x720 on
+            // llvmpipe against 5.2 ms, and it brings the GBuffer's stencil,
+            // cleared to 0 and never written (GBufferLayout.h), so 'taken' needs no clear
+            // (2.5 ms more): bench/results/2026-11-25-p3-p1.md.
             glBindFramebuffer(GL_READ_FRAMEBUFFER, gb.framebuffer().id());
             glBlitFramebuffer(0, 0, gb.width(), gb.height(), 0, 0, spec.width, spec.height,
-                              GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+                              GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
             targets_.bind();
         } else {
             const gl::Program& copy =
@@ -195,11 +204,13 @@ void GiApplyPass::execute(FrameContext& frame) {
         if (p) setPixelUniforms(*p, frame, div);
 
     std::vector<GiVolumeRaster> rasters;
+    std::vector<bool> drawn;     // in the frustum, and (screenRects_) some texel of it on screen
     std::size_t lastVisible = 0; // stencil: the last volume drawn needs no mark
     for (std::size_t k = 0; k < order.size(); ++k) {
         rasters.push_back(volumeRaster(probes_.volumes()[size_t(order[k])], frame.view,
                                        d.gbufferSize, div, d.giSize));
-        if (rasters.back().visible) lastVisible = k;
+        drawn.push_back(rasters.back().visible && (!screenRects_ || rasters.back().onScreen()));
+        if (drawn.back()) lastVisible = k;
     }
     for (std::size_t k = 0; k < order.size(); ++k) {
         const int v = order[k];
@@ -208,14 +219,18 @@ void GiApplyPass::execute(FrameContext& frame) {
         GiVolumeStats vs;
         vs.name = vol.name;
         vs.fileIndex = vol.fileIndex;
-        vs.culled = !r.visible;
+        vs.culled = !drawn[k];
+        vs.offScreen = r.visible && !drawn[k];
+        const glm::ivec4 rect = screenRects_ ? r.screenRect : glm::ivec4(0, 0, d.giSize);
+        for (int i = 0; i < 4; ++i)
+            vs.screenRect[i] = rect[i];
         vs.cameraInside = stencil && r.cameraInside;
-        vs.fillPass = stencil && r.visible && k != lastVisible;
+        vs.fillPass = stencil && drawn[k] && k != lastVisible;
         vs.fullScreen = !stencil || (r.cameraInside && !r.backFacesInFrontOfFar);
-        vs.rasterInfluence = stencil && r.visible && rasterDecides(r);
+        vs.rasterInfluence = stencil && drawn[k] && rasterDecides(r);
         vs.markInApply = vs.rasterInfluence && vs.fillPass && d.rasterApplyMarks;
         stats_.volumes.push_back(vs);
-        if (!r.visible) continue;
+        if (!drawn[k]) continue;
         if (countPixels_) {
             const GLfloat zero[4] = {0, 0, 0, 0};
             glClearBufferfv(GL_COLOR, 1, zero);
@@ -224,10 +239,18 @@ void GiApplyPass::execute(FrameContext& frame) {
             invocations_.reset(2); // slot 0: the apply, slot 1: the mark
             invocations_.bind(0);
         }
+        // Only texels the box can cover: the naive full-screen draw otherwise pays the depth
+        // fetch and the influence test on every texel it discards (GiVolumeRaster::screenRect).
+        if (screenRects_) {
+            glEnable(GL_SCISSOR_TEST);
+            glScissor(r.screenRect.x, r.screenRect.y, r.screenRect.z - r.screenRect.x,
+                      r.screenRect.w - r.screenRect.y);
+        }
         if (stencil)
             drawStencil(d, v, r, k == lastVisible, countInvocations);
         else
             drawNaive(d, v);
+        glDisable(GL_SCISSOR_TEST);
         if (countPixels_) countEvaluated(int(stats_.volumes.size()) - 1);
         if (countInvocations) {
             const std::vector<std::int64_t> n = invocations_.read();

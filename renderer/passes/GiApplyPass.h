@@ -44,6 +44,10 @@ public:
     // Measurement only: count the apply with the tests the counter forces (no
     // early_fragment_tests) instead of the production shader's (README "Invocation counter").
     void setCountInvocationsWithLateTests(bool on) { countLate_ = on; }
+    // Test-only: off draws every volume in the frustum over the whole target, as before the
+    // draws were scissored to their box's rectangle and an off-screen box skipped
+    // (GiVolumeRaster::screenRect; GiScreenRectTest compares the two).
+    void setScreenRects(bool on) { screenRects_ = on; }
     const GiPassStats& stats() const { return stats_; }
 
 private:
@@ -57,6 +61,7 @@ private:
     gl::Defines defines_;
     bool countPixels_ = false;
     bool countLate_ = false;
+    bool screenRects_ = true;
     GiInvocationCounter invocations_;
     GiTargets targets_;
     GiPassStats stats_;

@@ -13,8 +13,14 @@ namespace pb::render {
 
 struct GiVolumeStats {
     std::string name;
-    int fileIndex = 0;         // in the probe set
-    bool culled = false;       // outside the view frustum: nothing drawn
+    int fileIndex = 0;   // in the probe set
+    bool culled = false; // outside the view frustum: nothing drawn
+    // ... of which: the corner test kept it, but no part of its box lies in the frustum
+    // (GiVolumeRaster::screenRect is empty).
+    bool offScreen = false;
+    // GI target texels the volume's draws were scissored to (x0, y0, x1, y1: x1, y1 exclusive;
+    // GiVolumeRaster::screenRect); the whole target when not scissored.
+    int screenRect[4] = {0, 0, 0, 0};
     bool cameraInside = false; // stencil: drawn with the box's back faces or full-screen
     bool fillPass = false;     // stencil: the volume marks its pixels (all but the last)
     // Drawn as a full-screen triangle (naive; stencil when the camera is inside a box that

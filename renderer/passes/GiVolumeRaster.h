@@ -31,7 +31,20 @@ struct GiVolumeRaster {
     // The same for the influence box itself, without the margin: where the raster decides
     // (eyeInsideBox), the margin would hand the band around the box to this volume.
     glm::mat4 clipFromInfluence{1.0f};
+    // The GI target texels the box (with its margin) can cover: its faces clipped to the
+    // near and side planes, projected, widened by one texel; x0, y0 inclusive, x1, y1
+    // exclusive (glScissor's rectangle). Every texel whose surface lies in the influence is
+    // inside it (the surface point lies in the box and in the view); empty (x0 >= x1 or
+    // y0 >= y1) when no part of the box lies inside the frustum's near and side planes, though
+    // the corner test above may keep it (a box beside the eye: rooms' dark room seen from the
+    // doorway). The pass scissors each volume's draws to it and skips an empty one.
+    glm::ivec4 screenRect{0, 0, 0, 0};
+    bool onScreen() const { return screenRect.x < screenRect.z && screenRect.y < screenRect.w; }
 };
+
+// The texels of a giSize target that the unit cube [-1,1]^3 mapped by clipFromBox can cover
+// (GiVolumeRaster::screenRect).
+glm::ivec4 boxScreenRect(const glm::mat4& clipFromBox, const glm::ivec2& giSize);
 
 // gbufferSize: the view's pixels; divisor: gi.resolution's (1, 2, 4); giSize: the GI
 // target's texels (max(1, gbuffer / divisor) per axis).
