@@ -323,9 +323,9 @@ ChangedQueries changedQueries(const RayScene& rs, const ProbeSet& dense, const P
 }
 
 // The built-in scene's dense bake of one root volume over its static bounds, and the same set
-// stored sparse: `irradianceOnly` as a sparse bake of that grid gives it now (the probes left
-// out keep their irradiance), `sparse` as before probe file version 7 (they keep nothing and
-// are read as stand-ins) - the storage every option below is weighed against.
+// stored sparse: `sparse` as a default sparse bake of that grid gives it (the probes left out
+// keep nothing and are read as stand-ins: the storage every option below is weighed against),
+// `irradianceOnly` as `bake --free-space-irradiance` does (they keep their irradiance).
 struct DenseAndSparse {
     pb::scene::Scene scene;
     BakeRequest request;
@@ -343,15 +343,9 @@ DenseAndSparse bakeDenseAndSparse(const char* name) {
     r.settings.bounces = 2;
     b.dense = bakeProbes(b.scene, r);
     b.tris = staticBakeTriangles(b.scene);
-    b.irradianceOnly = b.dense;
-    applySparseStorage(b.irradianceOnly, b.tris);
-    b.sparse = b.irradianceOnly;
-    std::vector<std::vector<std::uint8_t>> keep(1);
-    for (ProbeState& s : b.sparse.states[0]) {
-        keep[0].push_back(s.stored ? 1 : 0);
-        if (!s.stored) s.valid = false; // storeOnly then keeps nothing of it
-    }
-    storeOnly(b.sparse, keep);
+    b.irradianceOnly = b.sparse = b.dense;
+    applySparseStorage(b.irradianceOnly, b.tris, FreeSpace::Irradiance);
+    applySparseStorage(b.sparse, b.tris);
     return b;
 }
 
@@ -420,12 +414,12 @@ void run(const char* name) {
     const std::size_t N = dense.probeCount();
     std::printf("| option | scene | stored / grid | lookups | mean | p90 | p99 | worst | |\n");
     stats(
-        name, "before version 7: lattice + nearest", changed, floor,
+        name, "default: lattice + nearest", changed, floor,
         [&](const Q& q) { return ss.sample(q.p, q.n, q.n); }, sparse.storedCount(), N);
     {
         const ProbeSampler is(b.irradianceOnly, 0);
         stats(
-            name, "kept: lattice + irradiance-only probes", changed, floor,
+            name, "--free-space-irradiance: lattice + irradiance-only", changed, floor,
             [&](const Q& q) { return is.sample(q.p, q.n, q.n); }, sparse.storedCount(), N);
     }
 
@@ -746,7 +740,7 @@ void fillVariants(const char* name) {
     const std::vector<Q>& changed = cq.queries;
     const float floor = cq.floor;
     stats(
-        name, "before version 7: nearest", changed, floor, [&](const Q& q) { return ss.sample(q.p, q.n, q.n); },
+        name, "default: nearest", changed, floor, [&](const Q& q) { return ss.sample(q.p, q.n, q.n); },
         sparse.storedCount(), dense.probeCount());
     const std::vector<std::uint8_t> surf = surfaceCornerProbes(v, true, tris);
     for (float pen : {0.01f, 0.5f, 1.0f}) {

@@ -43,24 +43,22 @@ const probes::ProbeSet& sparseProbes() {
 // Every `every`-th probe stored (every = 4: enough left-out probes that some lookups meet
 // nothing else; rooms has few probes far from a surface), or with every = 0 all but probe 1
 // of each volume (its packed grid then has the dense grid's shape). The valid probes left out
-// keep their irradiance (irradiance-only); `keepIrradiance` = false: they keep nothing, as a
-// probe file from before version 7 reads them, and lookups read stand-ins for them.
-probes::ProbeSet storedEvery(int every, bool keepIrradiance = true) {
+// keep nothing (lookups read stand-ins for them) or their irradiance (irradiance-only).
+probes::ProbeSet storedEvery(int every,
+                             probes::FreeSpace freeSpace = probes::FreeSpace::StandIns) {
     probes::ProbeSet s = giTestProbes(probes::StorageFormat::Rgba16f);
     if (every == 0) // exactly one probe absent: the marked-invalid probes (texels intact) back
         for (auto& states : s.states)
             for (auto& p : states)
                 p.valid = true;
     std::vector<std::vector<std::uint8_t>> keep;
-    for (auto& states : s.states) {
+    for (const auto& states : s.states) {
         keep.emplace_back(states.size(), every == 0 ? 1 : 0);
         if (every == 0) keep.back()[1] = 0;
         for (std::size_t i = 0; every > 0 && i < states.size(); i += std::size_t(every))
             keep.back()[i] = 1;
-        for (std::size_t i = 0; i < states.size() && !keepIrradiance; ++i)
-            if (!keep.back()[i]) states[i].valid = false; // storeOnly then drops it whole
     }
-    probes::storeOnly(s, keep);
+    probes::storeOnly(s, keep, freeSpace);
     return s;
 }
 
@@ -160,7 +158,7 @@ Difference againstCpu(const probes::ProbeSet& sparse, int& standIns, int* irradi
 // Irradiance-only probes (issue 18): their tiles packed after the stored ones, their code
 // flagged, no visibility read - as the CPU sampler does.
 TEST_F(GiSparseTest, IrradianceOnlyProbesAreReadWithoutVisibilityLikeTheCpuDoes) {
-    const probes::ProbeSet quarter = storedEvery(4);
+    const probes::ProbeSet quarter = storedEvery(4, probes::FreeSpace::Irradiance);
     const render::GpuProbes gpu(quarter, 0);
     int shorter = 0; // the visibility texture ends with the stored tiles
     for (const auto& v : gpu.volumes()) {
@@ -178,10 +176,10 @@ TEST_F(GiSparseTest, IrradianceOnlyProbesAreReadWithoutVisibilityLikeTheCpuDoes)
     EXPECT_LE(d.maxRel, 1e-3);
 }
 
-// A probe file from before version 7: the probes left out have nothing, and both the GPU and
-// the CPU read their nearest stored probe in their place.
-TEST_F(GiSparseTest, AbsentProbesOfOldFilesAreReadAsTheirStandInsLikeTheCpuDoes) {
-    const probes::ProbeSet quarter = storedEvery(4, false);
+// The default storage: the probes left out keep nothing, and both the GPU and the CPU read
+// their nearest stored probe in their place.
+TEST_F(GiSparseTest, AbsentProbesAreReadAsTheirStandInsLikeTheCpuDoes) {
+    const probes::ProbeSet quarter = storedEvery(4);
     int standIns = 0;
     const Difference d = againstCpu(quarter, standIns);
     std::printf("[ sparse ] every 4th stored, no irradiance kept: %zu of %zu values not "

@@ -1,6 +1,6 @@
 #pragma once
 // A built-in scene's dense bake of one root volume over its static bounds (64 rays, 2 bounces,
-// the "day" scenario), and the same set stored sparse - exactly what a sparse bake of that grid
+// the "day" scenario), and the same set stored sparse with `freeSpace` - exactly what a sparse bake of that grid
 // gives (SparseStorageTest). The mid-air tests compare lookups of the two.
 #include "probes/StaticTriangles.h"
 #include "probes/bake/Baker.h"
@@ -17,7 +17,8 @@ struct DenseAndSparse {
     probes::ProbeSet dense, sparse;
 };
 
-inline DenseAndSparse bakeDenseAndSparse(const std::string& builtin, int maxProbes) {
+inline DenseAndSparse bakeDenseAndSparse(const std::string& builtin, int maxProbes,
+                                         probes::FreeSpace freeSpace) {
     DenseAndSparse b{pb::scene::makeBuiltinScene(builtin), {}, {}};
     probes::BakeRequest r;
     r.volumes.push_back(
@@ -27,24 +28,8 @@ inline DenseAndSparse bakeDenseAndSparse(const std::string& builtin, int maxProb
     r.settings.bounces = 2;
     b.dense = probes::bakeProbes(b.scene, r);
     b.sparse = b.dense;
-    probes::applySparseStorage(b.sparse, probes::staticBakeTriangles(b.scene));
+    probes::applySparseStorage(b.sparse, probes::staticBakeTriangles(b.scene), freeSpace);
     return b;
-}
-
-// `sparse` as a probe file from before version 7 reads it: the probes sparse storage left out
-// keep nothing (no irradiance tile, no SH; invalid), so lookups read stand-ins for them
-// (probes/AbsentProbeFill.h, probes/ShAbsentFill.h).
-inline probes::ProbeSet withoutIrradianceOnly(probes::ProbeSet set) {
-    std::vector<std::vector<std::uint8_t>> keep;
-    for (auto& states : set.states) {
-        keep.emplace_back();
-        for (probes::ProbeState& s : states) {
-            keep.back().push_back(s.stored ? 1 : 0);
-            if (!s.stored) s.valid = false; // then storeOnly keeps no irradiance of it
-        }
-    }
-    probes::storeOnly(set, keep); // zeroes their tiles and SH
-    return set;
 }
 
 } // namespace pb::test

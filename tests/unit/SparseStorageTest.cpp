@@ -2,7 +2,6 @@
 // surface test keeps, the probe file round trip of a sparse set, and the guarantee that lets
 // sparse storage drop probes at all: no surface point's irradiance changes.
 #include "probes/store/SparseStorage.h"
-#include "DenseAndSparseBake.h"
 #include "ProbeTestScenes.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
@@ -39,7 +38,8 @@ ProbeTexture randomTexture(const TextureShape& shape, StorageFormat f, unsigned 
 }
 
 // A small bake of a built-in scene: one root volume over the static bounds.
-ProbeSet bakeBuiltin(const std::string& name, int maxProbes, bool sparse) {
+ProbeSet bakeBuiltin(const std::string& name, int maxProbes, bool sparse,
+                     FreeSpace freeSpace = FreeSpace::StandIns) {
     const pb::scene::Scene s = pb::scene::makeBuiltinScene(name);
     BakeRequest r;
     r.volumes.push_back(fitAutoVolume(staticBakeBounds(s), 0.0f, maxProbes).volume);
@@ -47,6 +47,7 @@ ProbeSet bakeBuiltin(const std::string& name, int maxProbes, bool sparse) {
     r.settings.raysPerProbe = 32;
     r.settings.bounces = 1;
     r.sparse = sparse;
+    r.freeSpace = freeSpace;
     return bakeProbes(s, r);
 }
 
@@ -247,9 +248,16 @@ TEST(SparseStorage, BakingOnlyTheKeptProbesGivesTheDenseBakeDropped) {
     r.scenarios = resolveScenarios({"day"}, {}, s);
     r.settings.raysPerProbe = 32;
     r.settings.bounces = 2;
-    ProbeSet dense = bakeProbes(s, r);
-    applySparseStorage(dense, staticBakeTriangles(s));
+    const ProbeSet denseBake = bakeProbes(s, r);
+    // Both storages of the probes left out: dropped (stand-ins), or their irradiance kept
+    // (traced in the last pass: the earlier passes feed only surface lookups, whose corners
+    // are all kept, so their irradiance and SH are the dense bake's).
+    for (FreeSpace mode : {FreeSpace::StandIns, FreeSpace::Irradiance}) {
+    SCOPED_TRACE(mode == FreeSpace::Irradiance ? "irradiance" : "stand-ins");
+    ProbeSet dense = denseBake;
+    applySparseStorage(dense, staticBakeTriangles(s), mode);
     r.sparse = true;
+    r.freeSpace = mode;
     const ProbeSet sparse = bakeProbes(s, r);
     ASSERT_LT(sparse.storedCount(), sparse.probeCount()) << "nothing dropped: vacuous";
     for (std::size_t v = 0; v < 2; ++v) {
@@ -262,9 +270,8 @@ TEST(SparseStorage, BakingOnlyTheKeptProbesGivesTheDenseBakeDropped) {
         EXPECT_EQ(sparse.visibility[v].stored, dense.visibility[v].stored) << v;
         EXPECT_EQ(sparse.irradiance[0][v].stored, dense.irradiance[0][v].stored) << v;
     }
-    // The probes left out were traced in the last pass: their irradiance and SH are the dense
-    // bake's (its earlier passes feed only surface lookups, whose corners are all kept).
     EXPECT_EQ(sparse.sh, dense.sh);
+    }
 }
 
 // The parent exception: a child's ring probe blends towards the parent at its own position,
@@ -313,7 +320,6 @@ TEST(SparseStorage, AbsentProbesReadTheirNearestStoredProbe) {
     const ProbeSet& dense = courtyardDense();
     ProbeSet sparse = dense;
     applySparseStorage(sparse, staticBakeTriangles(pb::scene::makeBuiltinScene("courtyard")));
-    sparse = pb::test::withoutIrradianceOnly(sparse); // a file from before version 7
     const ProbeVolume& v = dense.volumes[0];
     const std::vector<int> source =
         fillSources(v, sparse.states[0], sparse.settings.backfaceThreshold);
@@ -368,7 +374,7 @@ TEST(SparseStorage, KeepsTheFreeSpaceLatticeEverywhere) {
 }
 
 TEST(SparseStorage, FileRoundTripStoresOnlyTheKeptTiles) {
-    ProbeSet sparse = bakeBuiltin("courtyard", 1500, true);
+    ProbeSet sparse = bakeBuiltin("courtyard", 1500, true, FreeSpace::Irradiance);
     ASSERT_LT(sparse.storedCount(), sparse.probeCount());
     const std::vector<std::uint8_t> bytes = serializeProbeSet(sparse);
     const ProbeSet back = parseProbeSet(bytes, "sparse.pbp");

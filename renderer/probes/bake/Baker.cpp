@@ -198,8 +198,11 @@ void bakeGeometry(BakeRun& run) {
 struct RadianceMask {
     std::vector<std::vector<std::uint8_t>> keep; // sparse only: per volume, per probe
     std::vector<bool> isParent;
+    bool irradianceOnly = false; // the left-out probes keep their irradiance (FreeSpace)
 
-    explicit RadianceMask(const BakeRun& run) : isParent(run.set.volumes.size(), false) {
+    explicit RadianceMask(const BakeRun& run)
+        : isParent(run.set.volumes.size(), false),
+          irradianceOnly(run.req.freeSpace == FreeSpace::Irradiance) {
         if (run.req.sparse) {
             const std::vector<WorldTriangle> triangles = staticBakeTriangles(run.scene);
             for (size_t v = 0; v < run.set.volumes.size(); ++v)
@@ -208,12 +211,13 @@ struct RadianceMask {
         for (int p : run.parents)
             if (p >= 0) isParent[size_t(p)] = true;
     }
-    // A probe sparse storage leaves out is still traced in the last pass: it keeps its
-    // irradiance tile (ProbeState::irradianceOnly). Earlier passes feed only the lookups at
+    // With FreeSpace::Irradiance a probe sparse storage leaves out is still traced in the last
+    // pass: it keeps its irradiance tile (ProbeState::irradianceOnly). Earlier passes feed only the lookups at
     // surface hits, whose cells' corners are all kept, so they skip it.
     bool needed(const ProbeSet& set, int v, int p, bool lastPass) const {
         if (!set.states[size_t(v)][size_t(p)].valid) return false;
-        return keep.empty() || isParent[size_t(v)] || lastPass || keep[size_t(v)][size_t(p)] != 0;
+        return keep.empty() || isParent[size_t(v)] || (lastPass && irradianceOnly) ||
+               keep[size_t(v)][size_t(p)] != 0;
     }
 };
 
@@ -523,8 +527,8 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     std::vector<QuantisationError> errors = quantiseSet(run.set, req.settings.format, threads);
     // Invalid as baked, before sparse storage marks its absent probes invalid too.
     std::vector<std::size_t> bakedInvalid = invalidPerVolume(run.set);
-    // Left-out valid probes keep irradiance and SH (irradiance-only); their visibility goes.
-    if (req.sparse) storeOnly(run.set, mask.keep);
+    // Left-out valid probes keep nothing, or (FreeSpace::Irradiance) irradiance and SH.
+    if (req.sparse) storeOnly(run.set, mask.keep, req.freeSpace);
 
     if (statsOut) {
         BakeStats st = countStats(run, std::move(bakedInvalid));

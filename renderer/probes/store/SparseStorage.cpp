@@ -190,27 +190,31 @@ std::vector<std::size_t> sparseProbeCounts(const std::vector<ProbeVolume>& volum
     return out;
 }
 
-void applySparseStorage(ProbeSet& set, const std::vector<WorldTriangle>& triangles) {
+void applySparseStorage(ProbeSet& set, const std::vector<WorldTriangle>& triangles,
+                        FreeSpace freeSpace) {
     const std::vector<int> parents = validateVolumes(set.volumes, "sparse storage");
     std::vector<std::vector<std::uint8_t>> keep;
     for (std::size_t vi = 0; vi < set.volumes.size(); ++vi)
         keep.push_back(sparseKeptProbes(set.volumes[vi], parents[vi] < 0, triangles));
-    storeOnly(set, keep);
+    storeOnly(set, keep, freeSpace);
 }
 
-void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep) {
+void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep,
+               FreeSpace freeSpace) {
     if (keep.size() != set.volumes.size()) throw Error("storeOnly: one mask per volume");
     for (std::size_t vi = 0; vi < set.volumes.size(); ++vi) {
         const ProbeVolume& v = set.volumes[vi];
         std::vector<ProbeState>& states = set.states[vi];
         if (keep[vi].size() != states.size()) throw Error("storeOnly: one flag per probe");
-        // A valid probe left out keeps its irradiance (ProbeState::irradianceOnly): it lies
-        // outside geometry, and only free cells read it. An invalid one is dropped whole.
+        // FreeSpace::Irradiance: a valid probe left out keeps its irradiance
+        // (ProbeState::irradianceOnly): it lies outside geometry, and only free cells read it.
+        // Otherwise, and for an invalid probe, it is dropped whole.
+        const bool irradiance = freeSpace == FreeSpace::Irradiance;
         for (std::size_t i = 0; i < states.size(); ++i) {
             const bool valid = states[i].valid;
             states[i].stored = valid && keep[vi][i];
-            states[i].irradianceOnly = valid && !keep[vi][i];
-            states[i].valid = valid;
+            states[i].irradianceOnly = irradiance && valid && !keep[vi][i];
+            states[i].valid = states[i].stored || states[i].irradianceOnly;
         }
         // Zero what is not stored the way the file's round trip does: pack, then unpack.
         auto roundTrip = [&](ProbeTexture& t, int tile, const std::vector<int>& slots) {
