@@ -69,7 +69,7 @@ LookupFound lookupFound(const ProbeSet& set, const ProbeSampler& sampler,
             continue;
         }
         const ProbeState& st = set.states[size_t(r.volume)][size_t(v.probeIndex(c.probe))];
-        if (!st.stored) ++f.notStored;
+        if (!ownsIrradiance(st)) ++f.notStored;
         else if (!st.valid) ++f.invalid;
     }
     f.reason = "none of the 8 probes around the point in volume '" + v.name + "' holds light (" +
@@ -111,7 +111,8 @@ int run(const ProbeArgs& a) {
                          {"weight", r.weight},
                          {"volume", r.volume >= 0 ? nlohmann::json(volume) : nlohmann::json()},
                          {"probes_used", r.probes},
-                         {"stand_ins", r.filled}};
+                         {"stand_ins", r.filled},
+                         {"irradiance_only", r.irradianceOnly}};
         if (!found.found)
             j["not_found"] = {{"reason", found.reason},
                               {"corners_not_stored", found.notStored},
@@ -131,6 +132,9 @@ int run(const ProbeArgs& a) {
         if (r.filled > 0)
             std::printf(" (%d of them stand-ins for absent probes: their nearest stored probe)",
                         r.filled);
+        if (r.irradianceOnly > 0)
+            std::printf(" (%d of them irradiance-only: no surface nearby, read without visibility)",
+                        r.irradianceOnly);
         std::printf(", scenario '%s'\n", set.scenarios[size_t(scenario)].name.c_str());
     }
     return 0;

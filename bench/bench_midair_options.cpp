@@ -323,12 +323,14 @@ ChangedQueries changedQueries(const RayScene& rs, const ProbeSet& dense, const P
 }
 
 // The built-in scene's dense bake of one root volume over its static bounds, and the same set
-// stored sparse (what a sparse bake of that grid gives).
+// stored sparse: `sparse` as a default sparse bake of that grid gives it (the probes left out
+// keep nothing and are read as stand-ins: the storage every option below is weighed against),
+// `irradianceOnly` as `bake --free-space-irradiance` does (they keep their irradiance).
 struct DenseAndSparse {
     pb::scene::Scene scene;
     BakeRequest request;
     std::vector<WorldTriangle> tris;
-    ProbeSet dense, sparse;
+    ProbeSet dense, sparse, irradianceOnly;
 };
 
 DenseAndSparse bakeDenseAndSparse(const char* name) {
@@ -341,7 +343,8 @@ DenseAndSparse bakeDenseAndSparse(const char* name) {
     r.settings.bounces = 2;
     b.dense = bakeProbes(b.scene, r);
     b.tris = staticBakeTriangles(b.scene);
-    b.sparse = b.dense;
+    b.irradianceOnly = b.sparse = b.dense;
+    applySparseStorage(b.irradianceOnly, b.tris, FreeSpace::Irradiance);
     applySparseStorage(b.sparse, b.tris);
     return b;
 }
@@ -411,8 +414,14 @@ void run(const char* name) {
     const std::size_t N = dense.probeCount();
     std::printf("| option | scene | stored / grid | lookups | mean | p90 | p99 | worst | |\n");
     stats(
-        name, "kept: lattice + nearest", changed, floor,
+        name, "default: lattice + nearest", changed, floor,
         [&](const Q& q) { return ss.sample(q.p, q.n, q.n); }, sparse.storedCount(), N);
+    {
+        const ProbeSampler is(b.irradianceOnly, 0);
+        stats(
+            name, "--free-space-irradiance: lattice + irradiance-only", changed, floor,
+            [&](const Q& q) { return is.sample(q.p, q.n, q.n); }, sparse.storedCount(), N);
+    }
 
     // 1b. Absent probes outside geometry keep an irradiance of their own (issue 18's "coarse
     //     level stored everywhere"), read at their own position with visibility weight 1:
@@ -731,7 +740,7 @@ void fillVariants(const char* name) {
     const std::vector<Q>& changed = cq.queries;
     const float floor = cq.floor;
     stats(
-        name, "kept: nearest", changed, floor, [&](const Q& q) { return ss.sample(q.p, q.n, q.n); },
+        name, "default: nearest", changed, floor, [&](const Q& q) { return ss.sample(q.p, q.n, q.n); },
         sparse.storedCount(), dense.probeCount());
     const std::vector<std::uint8_t> surf = surfaceCornerProbes(v, true, tris);
     for (float pen : {0.01f, 0.5f, 1.0f}) {

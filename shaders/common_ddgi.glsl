@@ -221,7 +221,15 @@ hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 cellProbe, vec3 p, hvec3 n, vec3
     hfloat variance = max(vis.y - vis.x * vis.x, DDGI_VARIANCE_FLOOR);
     hfloat dd = d01 - vis.x;
     hfloat cheb = variance / (variance + dd * dd);
-    w *= d01 > vis.x ? max(cheb * cheb * cheb, DDGI_CHEBYSHEV_FLOOR) : 1.0;
+#ifdef DDGI_SPARSE_TILES
+    // An irradiance-only probe (the code's bit 23 set, SparseLayout.h kNoVisibilityFlag) has no
+    // visibility tile: only cells free of geometry read it, so it counts as seen (its fetch
+    // above read some other tile and is ignored).
+    bool ownVis = stateW <= 8388608.0; // code + 1 <= 2^23: no flag
+#else
+    bool ownVis = true;
+#endif
+    w *= d01 > vis.x && ownVis ? max(cheb * cheb * cheb, DDGI_CHEBYSHEV_FLOOR) : 1.0;
 
     // 4c. Crush tiny weights.
     w *= w < DDGI_CRUSH_THRESHOLD ? (w * w) * (1.0 / (DDGI_CRUSH_THRESHOLD * DDGI_CRUSH_THRESHOLD))

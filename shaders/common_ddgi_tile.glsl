@@ -20,7 +20,7 @@ void ddgiInitTileFields() {
 
 // `magnitude` = |w| of a probe that owns a tile (an integer >= 1).
 ivec3 ddgiTile(float magnitude) {
-    int code = int(magnitude) - 1;
+    int code = (int(magnitude) - 1) & 0x7FFFFF; // without kNoVisibilityFlag (bit 23)
     return ivec3(code & ddgiTileFields.x, (code >> ddgiTileFields.y) & ddgiTileFields.z,
                  code >> ddgiTileFields.w);
 }

@@ -46,7 +46,8 @@ TextureTable makeTextureTable(int gbufferWidth, int gbufferHeight, const probes:
             volume, set.states[size_t(v)],
             probes::fillSources(volume, set.states[size_t(v)], set.settings.backfaceThreshold));
         const probes::TextureShape irr = probes::irradianceShape(vol.tiles.packedCounts);
-        const probes::TextureShape vis = probes::visibilityShape(vol.tiles.packedCounts);
+        const probes::TextureShape vis =
+            probes::visibilityShape(vol.tiles.visibilityPackedCounts);
         vol.irradiance = add(irr.width, irr.height, irr.layers, fmt.blockDim, fmt.irradianceBytes);
         vol.visibility = add(vis.width, vis.height, vis.layers, fmt.blockDim, fmt.visibilityBytes);
         vol.state = add(n.x, n.z, n.y, 1, 16); // texel (i, k) of layer j, like the tiles
@@ -80,8 +81,12 @@ void appendProbeFetches(const probes::SampleTrace& trace, const VariantStructure
                 }
                 // The shader's weight < 0 (invalid or absent): no further fetch of this probe.
                 if (!c.valid || tile.z < 0) break;
+                // An irradiance-only probe's tile lies past the visibility texture's layers:
+                // the shader's fetch still runs (its result unused) and GL clamps the layer.
                 if (kinds[k] == FetchKind::Visibility)
-                    out.push_back({kinds[k], tex.visibility, vis.x, vis.y, tile.z, true, slot});
+                    out.push_back({kinds[k], tex.visibility, vis.x, vis.y,
+                                   std::min(tile.z, tex.tiles.visibilityPackedCounts.y - 1), true,
+                                   slot});
                 else if (kinds[k] == FetchKind::Irradiance)
                     out.push_back({kinds[k], tex.irradiance, irr.x, irr.y, tile.z, true, slot});
             }

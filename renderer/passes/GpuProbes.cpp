@@ -162,6 +162,8 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
         if (set.states[size_t(vi)].size() != size_t(v.probeCount()))
             throw Error(what + ": probe state count does not match its grid");
         // Sparse volumes upload only their stored tiles, packed; dense ones as they are. The
+        // irradiance texture holds the irradiance-only probes' tiles after the stored ones; the
+        // visibility texture ends with the stored ones (SparseLayout.h irradianceSlots). The
         // cost model replays the same layout (costmodel/FetchStream.cpp).
         // Absent probes outside geometry read their nearest stored probe's tile and position
         // (probes/AbsentProbeFill.h), as the CPU sampler does.
@@ -172,10 +174,14 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
         g.packedCounts = tiles.packedCounts;
         g.tileBits = glm::ivec2(tiles.code.columnBits, tiles.code.rowBits);
         probes::ProbeTexture scratch;
+        const std::vector<int> visibilitySlots = probes::packedSlots(set.states[size_t(vi)]);
         auto packed = [&](const probes::ProbeTexture& t, int tile) -> const probes::ProbeTexture& {
             if (!tiles.sparse) return t;
-            scratch =
-                probes::packTiles(t, tiles.slots, v.counts, tiles.packedCounts, tile, format_);
+            const bool irradiance = tile == probes::kIrradianceTile;
+            scratch = probes::packTiles(t, irradiance ? tiles.slots : visibilitySlots, v.counts,
+                                        irradiance ? tiles.packedCounts
+                                                   : tiles.visibilityPackedCounts,
+                                        tile, format_);
             return scratch;
         };
         g.irradiance = uploadProbeTexture(

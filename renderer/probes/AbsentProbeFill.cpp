@@ -9,7 +9,7 @@ namespace pb::probes {
 
 bool fillable(const ProbeState& s, float backfaceThreshold) {
     // The geometry pass's own test (GeometryPass.cpp): valid = !(ratio > threshold).
-    return !s.stored && !(s.backfaceRatio > backfaceThreshold);
+    return !s.stored && !s.irradianceOnly && !(s.backfaceRatio > backfaceThreshold);
 }
 
 std::vector<int> fillSources(const ProbeVolume& v, const std::vector<ProbeState>& states,

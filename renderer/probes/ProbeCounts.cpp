@@ -11,14 +11,22 @@ std::vector<ProbeCounts> volumeProbeCounts(const ProbeSet& set,
     if (bakedInvalid && bakedInvalid->size() != set.states.size())
         throw Error("probe counts: " + std::to_string(bakedInvalid->size()) +
                     " invalid counts for " + std::to_string(set.states.size()) + " volumes");
+    // Since probe file version 7 every valid probe sparse storage leaves out is irradiance-only,
+    // so the states tell absent from invalid; an older file's absent probes are just invalid.
+    bool statesTell = false;
+    for (const auto& states : set.states)
+        for (const ProbeState& p : states)
+            statesTell = statesTell || p.irradianceOnly;
     std::vector<ProbeCounts> out;
     for (std::size_t v = 0; v < set.states.size(); ++v) {
         ProbeCounts c;
         std::size_t invalidStored = 0; // dense files keep invalid probes with their tiles
+        std::size_t irradianceOnly = 0;
         for (const ProbeState& p : set.states[v]) {
             ++c.probes;
             c.stored += p.stored ? 1 : 0;
             invalidStored += p.stored && !p.valid ? 1 : 0;
+            irradianceOnly += p.irradianceOnly ? 1 : 0;
         }
         if (c.notStored() == 0) { // every probe stored: the states say all
             c.absent = 0;
@@ -31,6 +39,9 @@ std::vector<ProbeCounts> volumeProbeCounts(const ProbeSet& set,
                             std::to_string(invalid) + " invalid probes do not fit its states");
             c.invalid = invalid;
             c.absent = c.notStored() - (invalid - invalidStored);
+        } else if (statesTell) {
+            c.absent = irradianceOnly;
+            c.invalid = invalidStored + (c.notStored() - irradianceOnly);
         }
         out.push_back(c);
     }

@@ -2,9 +2,10 @@
 // What a baked probe set holds, per volume and in all, as the bake summary reports it: stored
 // probes, absent ones (sparse storage left them out: no surface nearby, SparseStorage.h) and
 // invalid ones (inside geometry, as the bake classified them; sparse storage stores none).
-// In memory an absent probe is invalid too (ProbeSet.h), so the split needs the bake's own
-// count of invalid probes (BakeStats::invalidPerVolume); the probe file keeps no validity for
-// absent probes, so a sparse set read back from a file cannot be split.
+// Since probe file version 7 an absent probe keeps its irradiance (ProbeState::irradianceOnly,
+// valid), so the states tell it from an invalid one. Before, an absent probe was invalid in
+// memory and in the file: the split then needs the bake's own count of invalid probes
+// (BakeStats::invalidPerVolume), and an older sparse file read back cannot be split.
 #include "probes/ProbeSet.h"
 
 #include <cstddef>

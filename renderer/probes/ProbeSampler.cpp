@@ -276,6 +276,7 @@ struct ProbeSampler::Lookup {
     const float* irrTile[8];
     bool live[8];
     bool filled[8]; // live and a stand-in for an absent probe
+    bool ownVis[8]; // the corner has a visibility tile (not ProbeState::irradianceOnly)
 };
 
 IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const glm::vec3& normal,
@@ -384,6 +385,7 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
     for (int corner = 0; corner < 8; ++corner) {
         const ProbeState& state = st[index[corner]];
         k.live[corner] = inside[corner] != 0 && state.valid;
+        k.ownVis[corner] = !state.irradianceOnly;
         k.filled[corner] = k.live[corner] && !f.fillSource.empty() &&
                            f.fillSource[std::size_t(index[corner])] != index[corner];
         if (trace && inside[corner]) {
@@ -501,7 +503,8 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
         const float dd = d01 - mean[i];
         const float cheb = variance / (variance + dd * dd);
         const float chebW = std::max(cheb * cheb * cheb, kChebyshevFloor);
-        w = d01 > mean[i] ? w * chebW : w;
+        // An irradiance-only corner has no visibility: only free cells read it (ProbeState).
+        w = d01 > mean[i] && k.ownVis[i] ? w * chebW : w;
 
         // 4c. Crush tiny weights (keeps a faint leak from dominating once normalised).
         const float crushed = w * ((w * w) / (kCrushThreshold * kCrushThreshold));
@@ -530,6 +533,7 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
         sumW += w;
         ++out.probes;
         out.filled += k.filled[i] ? 1 : 0;
+        out.irradianceOnly += k.ownVis[i] ? 0 : 1;
     }
     const glm::vec3 sumE(sum4[0], sum4[1], sum4[2]);
 
@@ -537,6 +541,7 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
     if (!(sumW > 0.0f)) {
         out.probes = 0;
         out.filled = 0;
+        out.irradianceOnly = 0;
         return out;
     }
     out.irradiance = sumE / sumW * k.fade;

@@ -78,6 +78,7 @@ struct IrradianceSample {
     int volume = -1;            // the volume used, -1 outside all
     int probes = 0;             // probes that contributed (valid, inside the grid)
     int filled = 0;             // of those, stand-ins for absent probes (AbsentProbeFill.h)
+    int irradianceOnly = 0;     // of those, read without visibility (ProbeState::irradianceOnly)
 };
 
 // What one lookup reads, for the texture-cache model (renderer/costmodel): sampleVolume fills

@@ -51,14 +51,22 @@ struct ProbeState {
     glm::vec3 offset{0.0f};  // relocation, world units along the volume's LOCAL axes
     bool valid = true;       // false: inside geometry (excluded by the sampler)
     float backfaceRatio = 0; // diagnostic: share of rays that hit single-sided back faces
-    // false: sparse storage left the probe out (SparseLayout.h); it is then invalid too, with
-    // zero texels, and owns no tile in the file or on the GPU.
+    // false: sparse storage left the probe out (SparseLayout.h); it then owns no visibility
+    // tile, and no irradiance tile either unless `irradianceOnly`.
     bool stored = true;
+    // Sparse storage kept only the probe's irradiance tile, no visibility tile (issue 18): it
+    // is no corner of a surface cell, so every point that reads it lies in a cell free of
+    // geometry and sees it unoccluded; lookups give it visibility weight 1. Then `stored` is
+    // false and `valid` true. A third of a stored probe's bytes (rgba16f: 512 of 1536).
+    bool irradianceOnly = false;
     // The lattice point itself is inside geometry (back-face ratio above the threshold before
     // relocation moved the probe out). The SH technique looks probes up at their lattice points,
     // so for it such a probe is invalid (ShIrradiance.h shProbeValid). Stored in the SH record.
     bool insideAtLattice = false;
 };
+
+// The probe has an irradiance tile (and SH): stored, or irradiance-only.
+inline bool ownsIrradiance(const ProbeState& s) { return s.stored || s.irradianceOnly; }
 
 struct ProbeSet {
     std::uint64_t inputHash = 0;

@@ -81,7 +81,7 @@ std::vector<glm::vec3> projectIrradianceTexture(const ProbeVolume& v,
                                                 const ProbeTexture& irradiance) {
     std::vector<glm::vec3> out(size_t(v.probeCount()) * kShL2Coefficients, glm::vec3(0.0f));
     for (int p = 0; p < v.probeCount(); ++p) {
-        if (!states[size_t(p)].stored) continue;
+        if (!ownsIrradiance(states[size_t(p)])) continue;
         const ShCoefficients sh = projectIrradianceTile(v.probeCoords(p), irradiance);
         std::copy(sh.begin(), sh.end(), out.begin() + std::ptrdiff_t(p) * kShL2Coefficients);
     }

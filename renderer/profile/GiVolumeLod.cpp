@@ -19,9 +19,12 @@ std::size_t gpuVolumeBytes(const probes::ProbeSet& set, std::size_t v) {
     const probes::ProbeVolume& vol = set.volumes[v];
     if (v >= set.states.size() || !probes::isSparse(set.states[v]))
         return gpuVolumeBytes(vol, set.format());
-    const glm::ivec3 tiles = probes::tileLayout(vol, set.states[v]).packedCounts;
-    return probes::storedBytes(probes::irradianceShape(tiles), set.format()) +
-           probes::storedBytes(probes::visibilityShape(tiles), set.format()) +
+    // As GpuProbes allocates: irradiance for the stored and irradiance-only tiles, visibility
+    // for the stored ones.
+    const probes::TileLayout tiles = probes::tileLayout(vol, set.states[v]);
+    return probes::storedBytes(probes::irradianceShape(tiles.packedCounts), set.format()) +
+           probes::storedBytes(probes::visibilityShape(tiles.visibilityPackedCounts),
+                               set.format()) +
            std::size_t(vol.probeCount()) * probes::kStateBytesPerProbe;
 }
 

@@ -73,3 +73,54 @@ TEST(ProbeFoundCli, AMidRoomPointOfASparseBakeIsLitThroughStandIns) {
     EXPECT_EQ(dense["stand_ins"].get<int>(), 0) << dense.dump();
     EXPECT_GT(dense["irradiance"][1].get<double>(), 0.0) << dense.dump();
 }
+
+// Issue 18, `bake --free-space-irradiance`: the probes sparse storage leaves out keep their
+// irradiance (irradiance-only), so a mid-room point reads them instead of stand-ins and gets
+// the dense bake's light (15% is the issue's bound); the summary and a file read back say so.
+TEST(ProbeFoundCli, FreeSpaceIrradianceLightsAMidRoomPointLikeTheDenseBake) {
+    const fs::path dir = outputDir();
+    const fs::path file = dir / "rooms-irradiance.pbp";
+    auto bake = [&](bool force) {
+        std::vector<std::string> args{"bake",  "--scene",    "rooms",    "--volumes",
+                                      "auto-uniform", "--spacing", "0.4", "--sparse",
+                                      "--free-space-irradiance", "--rays", "32", "--bounces",
+                                      "1", "--out", file.string()};
+        if (force) args.push_back("--force");
+        const CommandResult r = runProbebench(args);
+        EXPECT_EQ(r.exitCode, 0) << r.output;
+        return r.output;
+    };
+    for (bool force : {true, false}) { // baked, then read back: both split the probes
+        const std::string out = bake(force);
+        EXPECT_NE(out.find(" absent (no surface nearby: irradiance only, no visibility), "),
+                  std::string::npos)
+            << out;
+        EXPECT_NE(out.find("absent probes keep their irradiance"), std::string::npos) << out;
+    }
+    const std::string midAir = "-2,1.5,0";
+    const nlohmann::json j = probeJson(file, midAir);
+    ASSERT_FALSE(j.is_discarded());
+    EXPECT_EQ(j["found"], true) << j.dump();
+    EXPECT_GT(j["irradiance_only"].get<int>(), 0) << j.dump();
+    EXPECT_EQ(j["stand_ins"].get<int>(), 0) << j.dump();
+    const CommandResult text =
+        runProbebench({"probe", "--probes", file.string(), "--at", midAir, "--normal", "0,1,0"});
+    EXPECT_NE(text.output.find("irradiance-only: no surface nearby"), std::string::npos)
+        << text.output;
+
+    const nlohmann::json dense = probeJson(bakeRooms(dir, "dense"), midAir);
+    const double d = dense["irradiance"][1].get<double>(), s = j["irradiance"][1].get<double>();
+    EXPECT_GT(d, 0.0) << dense.dump();
+    EXPECT_NEAR(s, d, 0.15 * d) << "sparse " << j.dump() << "\ndense " << dense.dump();
+
+    // Without sparse storage there is nothing to keep: a one-line error, no file.
+    const fs::path none = dir / "rooms-irradiance-dense.pbp";
+    fs::remove(none);
+    const CommandResult bad = runProbebench({"bake", "--scene", "rooms", "--volumes",
+                                             "auto-uniform", "--free-space-irradiance", "--out",
+                                             none.string()});
+    EXPECT_NE(bad.exitCode, 0) << bad.output;
+    EXPECT_EQ(bad.output.rfind("probebench: error: --free-space-irradiance", 0), 0u) << bad.output;
+    EXPECT_EQ(bad.output.find('\n'), bad.output.size() - 1) << bad.output;
+    EXPECT_FALSE(fs::exists(none));
+}

@@ -40,10 +40,12 @@ const probes::ProbeSet& sparseProbes() {
     return set;
 }
 
-// Every `every`-th probe stored (every = 4: enough absent probes that some lookups meet
+// Every `every`-th probe stored (every = 4: enough left-out probes that some lookups meet
 // nothing else; rooms has few probes far from a surface), or with every = 0 all but probe 1
-// of each volume (its packed grid then has the dense grid's shape).
-probes::ProbeSet storedEvery(int every) {
+// of each volume (its packed grid then has the dense grid's shape). The valid probes left out
+// keep nothing (lookups read stand-ins for them) or their irradiance (irradiance-only).
+probes::ProbeSet storedEvery(int every,
+                             probes::FreeSpace freeSpace = probes::FreeSpace::StandIns) {
     probes::ProbeSet s = giTestProbes(probes::StorageFormat::Rgba16f);
     if (every == 0) // exactly one probe absent: the marked-invalid probes (texels intact) back
         for (auto& states : s.states)
@@ -56,7 +58,7 @@ probes::ProbeSet storedEvery(int every) {
         for (std::size_t i = 0; every > 0 && i < states.size(); i += std::size_t(every))
             keep.back()[i] = 1;
     }
-    probes::storeOnly(s, keep);
+    probes::storeOnly(s, keep, freeSpace);
     return s;
 }
 
@@ -121,8 +123,9 @@ TEST_F(GiSparseTest, SparseSetRendersTheDenseImage) {
 
 // GPU lookups anywhere in the root box (surfaces, empty air where stand-ins are read, the
 // child) of `sparse` against the CPU sampler of the same set (GiCrossCheckTest's metric);
-// `standIns`: the points whose CPU lookup read a stand-in for an absent probe.
-Difference againstCpu(const probes::ProbeSet& sparse, int& standIns) {
+// `standIns`: the points whose CPU lookup read a stand-in for an absent probe;
+// `irradianceOnly`: those that read an irradiance-only probe.
+Difference againstCpu(const probes::ProbeSet& sparse, int& standIns, int* irradianceOnly = nullptr) {
     const probes::ProbeVolume& root = sparse.volumes[0];
     std::mt19937 rng(11);
     std::uniform_real_distribution<float> u(-1.0f, 1.0f);
@@ -142,20 +145,45 @@ Difference againstCpu(const probes::ProbeSet& sparse, int& standIns) {
         a.insert(a.end(), {v.x, v.y, v.z, v.w});
     const probes::ProbeSampler cpu(sparse, 0);
     standIns = 0;
+    if (irradianceOnly) *irradianceOnly = 0;
     for (const render::GiPoint& p : pts) {
         const probes::IrradianceSample c = cpu.sample(p.position, p.normal, p.view);
         b.insert(b.end(), {c.irradiance.x, c.irradiance.y, c.irradiance.z, c.weight});
         standIns += c.filled > 0 ? 1 : 0;
+        if (irradianceOnly) *irradianceOnly += c.irradianceOnly > 0 ? 1 : 0;
     }
     return compare(a, b);
 }
 
+// Irradiance-only probes (issue 18): their tiles packed after the stored ones, their code
+// flagged, no visibility read - as the CPU sampler does.
+TEST_F(GiSparseTest, IrradianceOnlyProbesAreReadWithoutVisibilityLikeTheCpuDoes) {
+    const probes::ProbeSet quarter = storedEvery(4, probes::FreeSpace::Irradiance);
+    const render::GpuProbes gpu(quarter, 0);
+    int shorter = 0; // the visibility texture ends with the stored tiles
+    for (const auto& v : gpu.volumes()) {
+        EXPECT_LE(v.visibility.desc().layers, v.irradiance.desc().layers) << v.name;
+        shorter += v.visibility.desc().layers < v.irradiance.desc().layers ? 1 : 0;
+    }
+    EXPECT_GT(shorter, 0) << "no visibility texture is smaller than its irradiance texture";
+    int standIns = 0, irradianceOnly = 0;
+    const Difference d = againstCpu(quarter, standIns, &irradianceOnly);
+    std::printf("[ sparse ] every 4th stored: %zu of %zu values not bit-identical, max rel %.3g, "
+                "%d of 4000 points read irradiance-only probes\n",
+                d.differing, d.values, d.maxRel, irradianceOnly);
+    EXPECT_EQ(standIns, 0) << "a probe with irradiance read a stand-in";
+    EXPECT_GT(irradianceOnly, 1000) << "too few points read an irradiance-only probe";
+    EXPECT_LE(d.maxRel, 1e-3);
+}
+
+// The default storage: the probes left out keep nothing, and both the GPU and the CPU read
+// their nearest stored probe in their place.
 TEST_F(GiSparseTest, AbsentProbesAreReadAsTheirStandInsLikeTheCpuDoes) {
     const probes::ProbeSet quarter = storedEvery(4);
     int standIns = 0;
     const Difference d = againstCpu(quarter, standIns);
-    std::printf("[ sparse ] every 4th stored: %zu of %zu values not bit-identical, max rel %.3g, "
-                "%d of 4000 points read stand-ins\n",
+    std::printf("[ sparse ] every 4th stored, no irradiance kept: %zu of %zu values not "
+                "bit-identical, max rel %.3g, %d of 4000 points read stand-ins\n",
                 d.differing, d.values, d.maxRel, standIns);
     EXPECT_GT(standIns, 1000) << "too few points read a stand-in";
     EXPECT_LE(d.maxRel, 1e-3);

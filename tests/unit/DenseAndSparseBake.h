@@ -1,6 +1,6 @@
 #pragma once
 // A built-in scene's dense bake of one root volume over its static bounds (64 rays, 2 bounces,
-// the "day" scenario), and the same set stored sparse - exactly what a sparse bake of that grid
+// the "day" scenario), and the same set stored sparse with `freeSpace` - exactly what a sparse bake of that grid
 // gives (SparseStorageTest). The mid-air tests compare lookups of the two.
 #include "probes/StaticTriangles.h"
 #include "probes/bake/Baker.h"
@@ -17,7 +17,8 @@ struct DenseAndSparse {
     probes::ProbeSet dense, sparse;
 };
 
-inline DenseAndSparse bakeDenseAndSparse(const std::string& builtin, int maxProbes) {
+inline DenseAndSparse bakeDenseAndSparse(const std::string& builtin, int maxProbes,
+                                         probes::FreeSpace freeSpace) {
     DenseAndSparse b{pb::scene::makeBuiltinScene(builtin), {}, {}};
     probes::BakeRequest r;
     r.volumes.push_back(
@@ -27,8 +28,7 @@ inline DenseAndSparse bakeDenseAndSparse(const std::string& builtin, int maxProb
     r.settings.bounces = 2;
     b.dense = probes::bakeProbes(b.scene, r);
     b.sparse = b.dense;
-    probes::applySparseStorage(b.sparse,
-                               probes::staticBakeTriangles(b.scene)); // SH of absent probes: zero
+    probes::applySparseStorage(b.sparse, probes::staticBakeTriangles(b.scene), freeSpace);
     return b;
 }
 

@@ -77,3 +77,25 @@ TEST(ProbeCounts, CountsThatDoNotFitTheStatesAreAnError) {
     EXPECT_THROW(volumeProbeCounts(s, &oneTooMany), pb::Error); // 9 > the 8 not stored
     EXPECT_THROW(volumeProbeCounts(s, &wrongSize), pb::Error);
 }
+
+// Since probe file version 7 an absent probe keeps its irradiance (irradiance-only, valid):
+// the states alone split a sparse set read back from a file.
+TEST(ProbeCounts, IrradianceOnlyProbesTellAbsentFromInvalidWithoutBakeCounts) {
+    ProbeSet s = setOf({{12, 3, 5}, {6, 0, 0}}, true);
+    // Volume 0: probes 3..7 are the absent ones (setOf): irradiance-only and valid.
+    for (std::size_t i = 0; i < s.states[0].size(); ++i) {
+        ProbeState& p = s.states[0][i];
+        p.valid = i >= 3;
+        p.irradianceOnly = i >= 3 && i < 8;
+    }
+    const std::vector<ProbeCounts> file = volumeProbeCounts(s, nullptr);
+    EXPECT_EQ(file[0].stored, 4u);
+    EXPECT_EQ(file[0].absent, 5u);
+    EXPECT_EQ(file[0].invalid, 3u);
+    EXPECT_EQ(file[1].absent, 0u);
+    const ProbeCounts t = totalProbeCounts(file);
+    EXPECT_EQ(t.stored + *t.absent + *t.invalid, t.probes);
+    // The bake's own count agrees with the states.
+    const std::vector<std::size_t> baked{3, 0};
+    EXPECT_EQ(volumeProbeCounts(s, &baked)[0].absent, 5u);
+}

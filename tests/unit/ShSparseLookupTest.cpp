@@ -1,10 +1,12 @@
-// Sparse bakes under the SH technique (issue 19): sparse storage keeps no SH for the probes it
-// leaves out, and a lookup must not read that absence as black in any gi.sh_leak mode - in
-// particular not under `none`, which ignores validity. The SH sampler reads an absent probe as
-// its nearest stored one (probes/ShAbsentFill.h). Measured here: the mean luminance of mid-air
-// lookups (where absent corners are) of the sparse set against the dense bake of the same
-// grid, per mode, and the same without the fill (absent corners as zeros), which must fail the
-// tolerance - or the test could not catch the bug it guards against.
+// Sparse bakes under the SH technique (issue 19). By default sparse storage keeps no SH for the
+// probes it leaves out, and a lookup must not read that absence as black in any gi.sh_leak
+// mode - in particular not under `none`, which ignores validity. The SH sampler reads an absent
+// probe as its nearest stored one (probes/ShAbsentFill.h). Measured here: the mean luminance
+// of mid-air lookups (where absent corners are) of the sparse set against the dense bake of the
+// same grid, per mode, and the same without the fill (absent corners as zeros), which must fail
+// the tolerance - or the test could not catch the bug it guards against. With
+// FreeSpace::Irradiance the probes left out keep their SH (irradiance-only probes): lookups
+// equal the dense set's.
 #include "DenseAndSparseBake.h"
 #include "probes/ShSampler.h"
 #include "probes/StaticTriangles.h"
@@ -101,8 +103,34 @@ Darkening sparseOverDense(const DenseAndSparse& b, const ProbeSet& sparse, ShLea
 
 class ShSparse : public testing::TestWithParam<const char*> {};
 
+// The leak modes that weigh validity: there the probes sparse storage drops whole (inside
+// geometry) count for nothing in both sets. (Under `none` such a probe's SH still counts: the
+// dense set has it, the sparse set reads a stand-in.)
+TEST_P(ShSparse, IrradianceOnlyProbesKeepTheDenseSh) {
+    const DenseAndSparse b = bakeDenseAndSparse(GetParam(), 1500, FreeSpace::Irradiance);
+    ASSERT_TRUE(b.sparse.hasSh());
+    ASSERT_GT(b.sparse.probeCount() - b.sparse.storedCount() - b.sparse.invalidCount(), 0u)
+        << "no irradiance-only probe: vacuous";
+    const RayScene rs(b.scene);
+    const ShSampler d(b.dense, 0, "dense"), s(b.sparse, 0, "sparse");
+    int lookups = 0;
+    for (ShLeak leak : {ShLeak::Weight, ShLeak::ValidityMask}) {
+        ShSampleOptions o;
+        o.coefficients = kShL2Coefficients;
+        o.leak = leak;
+        for (const glm::vec3& p :
+             midAirSamples(rs, b.dense.volumes, 200, b.dense.volumes[0].minCellSize()))
+            for (const glm::vec3& a : kAxes) {
+                EXPECT_EQ(s.sample(p, a, a, o).irradiance, d.sample(p, a, a, o).irradiance)
+                    << "leak mode #" << int(leak);
+                ++lookups;
+            }
+    }
+    EXPECT_GT(lookups, 100);
+}
+
 TEST_P(ShSparse, AbsentProbesDoNotDarkenMidAirLookupsInAnyLeakMode) {
-    const DenseAndSparse b = bakeDenseAndSparse(GetParam(), 1500);
+    const DenseAndSparse b = bakeDenseAndSparse(GetParam(), 1500, FreeSpace::StandIns);
     ASSERT_TRUE(b.sparse.hasSh());
     ASSERT_LT(b.sparse.storedCount(), b.sparse.probeCount()) << "nothing absent: vacuous";
     const Darkening zeros = sparseOverDense(b, withoutFill(b.sparse), ShLeak::None, 300);

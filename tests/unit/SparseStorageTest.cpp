@@ -38,7 +38,8 @@ ProbeTexture randomTexture(const TextureShape& shape, StorageFormat f, unsigned 
 }
 
 // A small bake of a built-in scene: one root volume over the static bounds.
-ProbeSet bakeBuiltin(const std::string& name, int maxProbes, bool sparse) {
+ProbeSet bakeBuiltin(const std::string& name, int maxProbes, bool sparse,
+                     FreeSpace freeSpace = FreeSpace::StandIns) {
     const pb::scene::Scene s = pb::scene::makeBuiltinScene(name);
     BakeRequest r;
     r.volumes.push_back(fitAutoVolume(staticBakeBounds(s), 0.0f, maxProbes).volume);
@@ -46,6 +47,7 @@ ProbeSet bakeBuiltin(const std::string& name, int maxProbes, bool sparse) {
     r.settings.raysPerProbe = 32;
     r.settings.bounces = 1;
     r.sparse = sparse;
+    r.freeSpace = freeSpace;
     return bakeProbes(s, r);
 }
 
@@ -246,18 +248,29 @@ TEST(SparseStorage, BakingOnlyTheKeptProbesGivesTheDenseBakeDropped) {
     r.scenarios = resolveScenarios({"day"}, {}, s);
     r.settings.raysPerProbe = 32;
     r.settings.bounces = 2;
-    ProbeSet dense = bakeProbes(s, r);
-    applySparseStorage(dense, staticBakeTriangles(s));
+    const ProbeSet denseBake = bakeProbes(s, r);
+    // Both storages of the probes left out: dropped (stand-ins), or their irradiance kept
+    // (traced in the last pass: the earlier passes feed only surface lookups, whose corners
+    // are all kept, so their irradiance and SH are the dense bake's).
+    for (FreeSpace mode : {FreeSpace::StandIns, FreeSpace::Irradiance}) {
+    SCOPED_TRACE(mode == FreeSpace::Irradiance ? "irradiance" : "stand-ins");
+    ProbeSet dense = denseBake;
+    applySparseStorage(dense, staticBakeTriangles(s), mode);
     r.sparse = true;
+    r.freeSpace = mode;
     const ProbeSet sparse = bakeProbes(s, r);
     ASSERT_LT(sparse.storedCount(), sparse.probeCount()) << "nothing dropped: vacuous";
     for (std::size_t v = 0; v < 2; ++v) {
         for (std::size_t i = 0; i < dense.states[v].size(); ++i) {
             EXPECT_EQ(sparse.states[v][i].stored, dense.states[v][i].stored) << v << "/" << i;
+            EXPECT_EQ(sparse.states[v][i].irradianceOnly, dense.states[v][i].irradianceOnly)
+                << v << "/" << i;
             EXPECT_EQ(sparse.states[v][i].offset, dense.states[v][i].offset) << v << "/" << i;
         }
         EXPECT_EQ(sparse.visibility[v].stored, dense.visibility[v].stored) << v;
         EXPECT_EQ(sparse.irradiance[0][v].stored, dense.irradiance[0][v].stored) << v;
+    }
+    EXPECT_EQ(sparse.sh, dense.sh);
     }
 }
 
@@ -361,15 +374,20 @@ TEST(SparseStorage, KeepsTheFreeSpaceLatticeEverywhere) {
 }
 
 TEST(SparseStorage, FileRoundTripStoresOnlyTheKeptTiles) {
-    ProbeSet sparse = bakeBuiltin("courtyard", 1500, true);
+    ProbeSet sparse = bakeBuiltin("courtyard", 1500, true, FreeSpace::Irradiance);
     ASSERT_LT(sparse.storedCount(), sparse.probeCount());
     const std::vector<std::uint8_t> bytes = serializeProbeSet(sparse);
     const ProbeSet back = parseProbeSet(bytes, "sparse.pbp");
     ASSERT_EQ(back.states[0].size(), sparse.states[0].size());
+    std::size_t irradianceOnly = 0;
     for (std::size_t i = 0; i < back.states[0].size(); ++i) {
         EXPECT_EQ(back.states[0][i].stored, sparse.states[0][i].stored);
+        EXPECT_EQ(back.states[0][i].irradianceOnly, sparse.states[0][i].irradianceOnly);
         EXPECT_EQ(back.states[0][i].valid, sparse.states[0][i].valid);
+        irradianceOnly += sparse.states[0][i].irradianceOnly ? 1 : 0;
     }
+    ASSERT_GT(irradianceOnly, 0u) << "no irradiance-only probe: vacuous";
+    EXPECT_EQ(back.sh, sparse.sh);
     EXPECT_EQ(back.visibility[0].texels, sparse.visibility[0].texels);
     EXPECT_EQ(back.visibility[0].stored, sparse.visibility[0].stored);
     EXPECT_EQ(back.irradiance[0][0].texels, sparse.irradiance[0][0].texels);
@@ -379,9 +397,16 @@ TEST(SparseStorage, FileRoundTripStoresOnlyTheKeptTiles) {
     for (ProbeState& p : allStored.states[0])
         p.stored = true;
     const std::size_t denseSize = serializeProbeSet(allStored).size();
-    EXPECT_LT(bytes.size(), denseSize * (sparse.storedCount() + 64) / sparse.probeCount());
+    // An irradiance-only probe costs its irradiance tile: 8x8 rgba16f texels of a stored
+    // probe's 8x8 + 16x16 rg16f, a third.
+    const double share = 512.0 / (512.0 + 1024.0);
+    EXPECT_LT(double(bytes.size()),
+              double(denseSize) *
+                  (double(sparse.storedCount()) + share * double(irradianceOnly) + 64.0) /
+                  double(sparse.probeCount()));
     const MemoryReport mem = memoryReport(back);
     EXPECT_EQ(mem.total.storedProbes, sparse.storedCount());
+    EXPECT_EQ(mem.total.irradianceOnlyProbes, irradianceOnly);
     EXPECT_EQ(mem.total.indirection, sparse.probeCount() * kStateBytesPerProbe);
     EXPECT_LT(mem.total.storedTotal(), memoryReport(allStored).total.storedTotal());
     // The bake keeps exactly the valid probes among those placement's budget counts.

@@ -1,7 +1,8 @@
 // The tile code in the probe state's w (probes/store/SparseLayout.h TileCode, decoded by ddgiTile in
 // shaders/common_ddgi_tile.glsl): column, row and layer as bit fields, exact in the RGBA32F
-// state texture up to 24 bits, a clear error beyond, and the one encoding GpuProbes uploads
-// and the cost model's tile layout agree on.
+// state texture up to 24 bits (23 for the fields, the top bit flags an irradiance-only probe),
+// a clear error beyond, and the one encoding GpuProbes uploads and the cost model's tile layout
+// agree on.
 #include "core/Error.h"
 #include "probes/ProbeVolume.h"
 #include "probes/store/SparseLayout.h"
@@ -15,13 +16,16 @@ namespace {
 // Encodes then decodes as the shader does, and checks that w is the integer code + 1 with the
 // validity as its sign.
 void expectRoundTrip(const TileCode& c, const glm::ivec3& tile) {
-    for (bool valid : {true, false}) {
-        const float w = c.encode(tile, valid);
-        EXPECT_EQ(w > 0.0f, valid);
-        EXPECT_GE(std::abs(w), 1.0f) << "w = 0 is an absent probe";
-        EXPECT_EQ(std::abs(w), std::floor(std::abs(w))) << "not an integer";
-        EXPECT_EQ(c.decode(w), tile) << tile.x << "," << tile.y << "," << tile.z;
-    }
+    for (bool valid : {true, false})
+        for (bool ownVisibility : {true, false}) {
+            const float w = c.encode(tile, valid, ownVisibility);
+            EXPECT_EQ(w > 0.0f, valid);
+            EXPECT_GE(std::abs(w), 1.0f) << "w = 0 is an absent probe";
+            EXPECT_LE(std::abs(w), 16777216.0f) << "beyond the floats' exact integers";
+            EXPECT_EQ(std::abs(w), std::floor(std::abs(w))) << "not an integer";
+            EXPECT_EQ(c.decode(w), tile) << tile.x << "," << tile.y << "," << tile.z;
+            EXPECT_EQ(TileCode::ownsVisibility(w), ownVisibility);
+        }
 }
 
 } // namespace
@@ -41,22 +45,23 @@ TEST(SparseTileCode, FieldsAreAsWideAsTheGridNeeds) {
                 expectRoundTrip(c, {x, y, z});
 }
 
-TEST(SparseTileCode, ExactAtTheTwentyFourBitLimit) {
-    // 256 x 256 x 256 tiles: 24 bits; the last tile's w is 2^24, the largest float integer
-    // below which every integer is exact, and its neighbour 2^24 - 1 stays distinct.
-    const TileCode c = tileCode({256, 256, 256}, "v");
-    EXPECT_EQ(c.columnBits + c.rowBits + c.layerBits, kTileCodeBits);
-    EXPECT_EQ(c.encode({255, 255, 255}, true), 16777216.0f);
-    EXPECT_EQ(c.encode({254, 255, 255}, false), -16777215.0f);
-    for (glm::ivec3 t : {glm::ivec3(255, 255, 255), glm::ivec3(254, 255, 255),
-                         glm::ivec3(0, 0, 255), glm::ivec3(255, 0, 0), glm::ivec3(0, 255, 0),
-                         glm::ivec3(0, 0, 0), glm::ivec3(128, 127, 129)})
+TEST(SparseTileCode, ExactAtTheTwentyThreeBitLimit) {
+    // 256 x 128 x 256 tiles: 23 bits; the last flagged tile's w is 2^24, the largest float
+    // integer below which every integer is exact, and its neighbour 2^24 - 1 stays distinct.
+    const TileCode c = tileCode({256, 128, 256}, "v");
+    EXPECT_EQ(c.columnBits + c.rowBits + c.layerBits, kTileCodeBits - 1);
+    EXPECT_EQ(c.encode({255, 255, 127}, true, false), 16777216.0f);
+    EXPECT_EQ(c.encode({254, 255, 127}, false, false), -16777215.0f);
+    EXPECT_EQ(c.encode({255, 255, 127}, true), 8388608.0f);
+    for (glm::ivec3 t : {glm::ivec3(255, 255, 127), glm::ivec3(254, 255, 127),
+                         glm::ivec3(0, 0, 127), glm::ivec3(255, 0, 0), glm::ivec3(0, 255, 0),
+                         glm::ivec3(0, 0, 0), glm::ivec3(128, 127, 64)})
         expectRoundTrip(c, t);
     // Lopsided grids at the limit: every field still decodes at its extremes.
     for (glm::ivec3 grid :
-         {glm::ivec3(1 << 12, 1, 1 << 12), glm::ivec3(2, 1 << 22, 2), glm::ivec3(1024, 1024, 16)}) {
+         {glm::ivec3(1 << 12, 1, 1 << 11), glm::ivec3(2, 1 << 21, 2), glm::ivec3(1024, 512, 16)}) {
         const TileCode l = tileCode(grid, "v");
-        EXPECT_EQ(l.columnBits + l.rowBits + l.layerBits, kTileCodeBits);
+        EXPECT_EQ(l.columnBits + l.rowBits + l.layerBits, kTileCodeBits - 1);
         const glm::ivec3 last(grid.x - 1, grid.z - 1, grid.y - 1); // column, row, layer
         expectRoundTrip(l, last);
         expectRoundTrip(l, {last.x, 0, last.z});
@@ -64,17 +69,17 @@ TEST(SparseTileCode, ExactAtTheTwentyFourBitLimit) {
     }
 }
 
-TEST(SparseTileCode, BeyondTwentyFourBitsIsAClearError) {
+TEST(SparseTileCode, BeyondTwentyThreeBitsIsAClearError) {
     for (glm::ivec3 grid :
-         {glm::ivec3(257, 256, 256), glm::ivec3(256, 257, 256), glm::ivec3(256, 256, 257),
-          glm::ivec3(1 << 24, 2, 1), glm::ivec3(1024, 1024, 1024)}) {
+         {glm::ivec3(257, 128, 256), glm::ivec3(256, 129, 256), glm::ivec3(256, 128, 257),
+          glm::ivec3(256, 256, 256), glm::ivec3(1 << 23, 2, 1), glm::ivec3(1024, 1024, 1024)}) {
         try {
             tileCode(grid, "probe volume 'big'");
             ADD_FAILURE() << "no error for " << grid.x << "x" << grid.y << "x" << grid.z;
         } catch (const pb::Error& e) {
             const std::string m = e.what();
             EXPECT_NE(m.find("probe volume 'big'"), std::string::npos) << m;
-            EXPECT_NE(m.find("24"), std::string::npos) << m;
+            EXPECT_NE(m.find("23"), std::string::npos) << m;
             EXPECT_NE(m.find("RGBA32F"), std::string::npos) << m;
         }
     }
@@ -96,7 +101,7 @@ TEST(SparseTileCode, EveryVolumeWithinTheGridLimitsFits) {
                 const TileCode code = tileCode(n, "v");
                 widest = std::max(widest, code.columnBits + code.rowBits + code.layerBits);
             }
-    EXPECT_LE(widest, kTileCodeBits);
+    EXPECT_LE(widest, kTileCodeBits - 1); // the flag keeps the top bit
     EXPECT_GE(widest, 18); // the loop did reach large grids
 }
 

@@ -84,6 +84,9 @@ std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& r) {
     // from before it lack the lattice and must be re-baked. Dense bakes (the gate's committed
     // file among them) keep their hash.
     if (r.sparse) h.pod(std::uint32_t(kFreeSpaceLatticeStep));
+    // ... and what the probes it leaves out keep (only hashed when they keep their irradiance,
+    // so the default sparse files keep their hash).
+    if (r.sparse && r.freeSpace == FreeSpace::Irradiance) h.pod(std::uint32_t(2));
     // Only set by the update engine's sample bakes: every other bake keeps its hash.
     if (r.geometryRays > 0) h.pod(std::int32_t(r.geometryRays));
     return h.value();

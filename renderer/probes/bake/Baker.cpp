@@ -198,8 +198,11 @@ void bakeGeometry(BakeRun& run) {
 struct RadianceMask {
     std::vector<std::vector<std::uint8_t>> keep; // sparse only: per volume, per probe
     std::vector<bool> isParent;
+    bool irradianceOnly = false; // the left-out probes keep their irradiance (FreeSpace)
 
-    explicit RadianceMask(const BakeRun& run) : isParent(run.set.volumes.size(), false) {
+    explicit RadianceMask(const BakeRun& run)
+        : isParent(run.set.volumes.size(), false),
+          irradianceOnly(run.req.freeSpace == FreeSpace::Irradiance) {
         if (run.req.sparse) {
             const std::vector<WorldTriangle> triangles = staticBakeTriangles(run.scene);
             for (size_t v = 0; v < run.set.volumes.size(); ++v)
@@ -208,9 +211,13 @@ struct RadianceMask {
         for (int p : run.parents)
             if (p >= 0) isParent[size_t(p)] = true;
     }
-    bool needed(const ProbeSet& set, int v, int p) const {
+    // With FreeSpace::Irradiance a probe sparse storage leaves out is still traced in the last
+    // pass: it keeps its irradiance tile (ProbeState::irradianceOnly). Earlier passes feed only the lookups at
+    // surface hits, whose cells' corners are all kept, so they skip it.
+    bool needed(const ProbeSet& set, int v, int p, bool lastPass) const {
         if (!set.states[size_t(v)][size_t(p)].valid) return false;
-        return keep.empty() || isParent[size_t(v)] || keep[size_t(v)][size_t(p)] != 0;
+        return keep.empty() || isParent[size_t(v)] || (lastPass && irradianceOnly) ||
+               keep[size_t(v)][size_t(p)] != 0;
     }
 };
 
@@ -278,6 +285,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     ProbeSet& set = run.set;
     const BakeSettings& cfg = run.cfg;
     const Scenario& sc = run.req.scenarios[s];
+    const bool lastPass = pass == run.cfg.bounces;
     std::vector<ProbeTexture> cur;
     run.passSh.clear();
     for (const ProbeVolume& v : set.volumes) {
@@ -321,7 +329,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
         for (int y = 0; y < kIrradianceTile; ++y)
             for (int x = 0; x < kIrradianceTile; ++x)
                 tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
-        if (!mask.needed(set, v, p)) return;
+        if (!mask.needed(set, v, p, lastPass)) return;
         float* out = irr[size_t(t)].data();
         run.slab.convolve(i, conv, out);
         run.slab.projectSh(i, dirs, &run.passSh[size_t(v)][size_t(p) * kShL2Coefficients]);
@@ -345,7 +353,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
                 auto [v, p] = run.locate(first + i);
                 const ProbeVolume& vol = set.volumes[size_t(v)];
                 const ProbeState& st = set.states[size_t(v)][size_t(p)];
-                if (mask.needed(set, v, p)) {
+                if (mask.needed(set, v, p, lastPass)) {
                     glm::ivec3 c = vol.probeCoords(p);
                     run.slab.trace(i, run.rs, sc, run.scene.lights, vol.localToWorldRotation(),
                                    vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
@@ -519,7 +527,8 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     std::vector<QuantisationError> errors = quantiseSet(run.set, req.settings.format, threads);
     // Invalid as baked, before sparse storage marks its absent probes invalid too.
     std::vector<std::size_t> bakedInvalid = invalidPerVolume(run.set);
-    if (req.sparse) storeOnly(run.set, mask.keep); // zeroes the absent probes' SH too
+    // Left-out valid probes keep nothing, or (FreeSpace::Irradiance) irradiance and SH.
+    if (req.sparse) storeOnly(run.set, mask.keep, req.freeSpace);
 
     if (statsOut) {
         BakeStats st = countStats(run, std::move(bakedInvalid));

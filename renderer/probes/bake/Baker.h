@@ -8,6 +8,7 @@
 //   3. quantise to the storage format (the sampler then sees what the GPU will sample)
 #include "probes/ProbeSet.h"
 #include "probes/bake/RayScene.h"
+#include "probes/store/SparseStorage.h"
 #include "scene/Scene.h"
 
 #include <functional>
@@ -23,6 +24,9 @@ struct BakeRequest {
     // Sparse storage (SparseStorage.h): after the bake, only valid probes at the corners of
     // cells with static surface stay stored. Part of the input hash.
     bool sparse = false;
+    // With `sparse`: what the valid probes left out keep (SparseStorage.h FreeSpace). Part of
+    // the input hash when Irradiance (the default files keep their hash).
+    FreeSpace freeSpace = FreeSpace::StandIns;
     // Probes traced before their indirect lookups are sorted and done (RadiancePass.h);
     // 0 = about 2^18 rays per slab. Memory and speed only: never changes the result.
     int slabProbes = 0;

@@ -115,8 +115,15 @@ private:
     // What the bake will store of these volumes, as the memory report counts it.
     std::size_t storedBytes(const std::vector<ProbeVolume>& volumes) const {
         if (!req_.sparse) return memoryReport(volumes, req_.format).total.storedTotal();
+        // With free-space irradiance every probe left out keeps an irradiance tile unless it
+        // bakes inside geometry, which is not known yet: all count (an upper bound).
         const std::vector<std::size_t> kept = sparseProbeCounts(volumes, triangles_);
-        return memoryReport(volumes, req_.format, &kept).total.storedTotal();
+        std::vector<std::size_t> rest;
+        for (std::size_t v = 0; v < volumes.size(); ++v)
+            rest.push_back(req_.freeSpaceIrradiance
+                               ? std::size_t(volumes[v].probeCount()) - kept[v]
+                               : 0);
+        return memoryReport(volumes, req_.format, &kept, &rest).total.storedTotal();
     }
 
     // levels 0 = one uniform volume.

@@ -41,6 +41,9 @@ struct AutoPlacementRequest {
     // The bake stores sparse (`bake --sparse`, SparseStorage.h): the budget counts only the
     // probes at surface cells (+ the indirection), so a finer spacing fits the same memory.
     bool sparse = false;
+    // With `sparse`: the probes it leaves out keep their irradiance tile, which the budget
+    // then counts (SparseStorage.h FreeSpace::Irradiance).
+    bool freeSpaceIrradiance = false;
     // `auto` under a budget (the default one included) ends with a measured search of where
     // its lattice sits (LatticeShiftSearch.h): up to 25 one-bounce trial bakes of the chosen
     // placement. false: keep the lattice as placed (`bake --no-lattice-search`).

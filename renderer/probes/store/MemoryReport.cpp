@@ -16,6 +16,15 @@ ProbeBytes bytesOf(const glm::ivec3& c, StorageFormat f) {
     return {storedBytes(irradianceShape(c), f), storedBytes(visibilityShape(c), f)};
 }
 
+// A sparse volume's textures: irradiance for the stored and irradiance-only tiles, visibility
+// for the stored ones (SparseLayout.h), as GpuProbes allocates them.
+ProbeBytes sparseBytesOf(std::size_t stored, std::size_t irradianceOnly, const glm::ivec3& counts,
+                         StorageFormat f) {
+    const glm::ivec3 irr = packedCounts(stored + irradianceOnly, counts);
+    return {storedBytes(irradianceShape(irr), f),
+            storedBytes(visibilityShape(visibilityPackedCounts(stored, irr)), f)};
+}
+
 void add(ProbeBytes& a, const ProbeBytes& b) {
     a.irradiance += b.irradiance;
     a.visibility += b.visibility;
@@ -36,6 +45,7 @@ nlohmann::json volumeJson(const VolumeMemory& v, bool sparse) {
                         {"bc6h", bytesJson(v.bc6h, v.storedProbes)},
                         {"stored", bytesJson(v.stored, v.storedProbes)},
                         {"stored_probes", v.storedProbes},
+                        {"irradiance_only_probes", v.irradianceOnlyProbes},
                         {"indirection", v.indirection},
                         {"stored_total", v.storedTotal()}};
     if (sparse)
@@ -64,7 +74,8 @@ std::string formatBytes(std::size_t bytes) {
 }
 
 MemoryReport memoryReport(const std::vector<ProbeVolume>& volumes, StorageFormat format,
-                          const std::vector<std::size_t>* storedProbes) {
+                          const std::vector<std::size_t>* storedProbes,
+                          const std::vector<std::size_t>* irradianceOnlyProbes) {
     MemoryReport r;
     r.format = format;
     r.total.name = "total";
@@ -75,14 +86,21 @@ MemoryReport memoryReport(const std::vector<ProbeVolume>& volumes, StorageFormat
         m.counts = v.counts;
         m.probes = std::size_t(v.probeCount());
         m.storedProbes = storedProbes ? std::min((*storedProbes)[i], m.probes) : m.probes;
+        m.irradianceOnlyProbes =
+            irradianceOnlyProbes ? std::min((*irradianceOnlyProbes)[i], m.probes - m.storedProbes)
+                                 : 0;
         const bool sparse = m.storedProbes < m.probes;
-        const glm::ivec3 tiles = sparse ? packedCounts(m.storedProbes, v.counts) : v.counts;
-        m.uncompressed = bytesOf(tiles, StorageFormat::Rgba16f);
-        m.bc6h = bytesOf(tiles, StorageFormat::Bc6h);
-        m.stored = bytesOf(tiles, format);
+        auto bytes = [&](StorageFormat f) {
+            return sparse ? sparseBytesOf(m.storedProbes, m.irradianceOnlyProbes, v.counts, f)
+                          : bytesOf(v.counts, f);
+        };
+        m.uncompressed = bytes(StorageFormat::Rgba16f);
+        m.bc6h = bytes(StorageFormat::Bc6h);
+        m.stored = bytes(format);
         m.indirection = sparse ? m.probes * kStateBytesPerProbe : 0;
         r.total.probes += m.probes;
         r.total.storedProbes += m.storedProbes;
+        r.total.irradianceOnlyProbes += m.irradianceOnlyProbes;
         r.total.indirection += m.indirection;
         add(r.total.uncompressed, m.uncompressed);
         add(r.total.bc6h, m.bc6h);
@@ -93,10 +111,12 @@ MemoryReport memoryReport(const std::vector<ProbeVolume>& volumes, StorageFormat
 }
 
 MemoryReport memoryReport(const ProbeSet& set) {
-    std::vector<std::size_t> stored;
-    for (const auto& states : set.states)
+    std::vector<std::size_t> stored, irradianceOnly;
+    for (const auto& states : set.states) {
         stored.push_back(storedCount(states));
-    MemoryReport r = memoryReport(set.volumes, set.format(), &stored);
+        irradianceOnly.push_back(irradianceOnlyCount(states));
+    }
+    MemoryReport r = memoryReport(set.volumes, set.format(), &stored, &irradianceOnly);
     std::vector<SparseCounts> sparse = countSparseCandidates(set);
     for (std::size_t v = 0; v < r.volumes.size(); ++v) {
         r.volumes[v].sparse = sparse[v];
@@ -163,7 +183,12 @@ std::string formatMemoryReport(const MemoryReport& r) {
           << "\n";
     if (r.total.storedProbes < r.total.probes)
         s << "sparse storage: " << r.total.storedProbes << " of " << r.total.probes
-          << " grid probes stored (packed tiles above) + " << formatBytes(r.total.indirection)
+          << " grid probes stored (packed tiles above)"
+          << (r.total.irradianceOnlyProbes
+                  ? ", " + std::to_string(r.total.irradianceOnlyProbes) +
+                        " more irradiance only (free space: an irradiance tile, no visibility)"
+                  : std::string())
+          << " + " << formatBytes(r.total.indirection)
           << " indirection (probe state, 16 B per grid probe) = "
           << formatBytes(r.total.storedTotal()) << " as " << formatName(r.format) << "\n";
     if (r.hasSparse && r.total.storedProbes == r.total.probes) {

@@ -22,6 +22,9 @@ struct VolumeMemory {
     ProbeBytes stored;            // in `format`
     SparseCounts sparse;          // probes a sparse layout would not store (from a baked set only)
     std::size_t storedProbes = 0; // probes that own a tile (= probes unless sparse)
+    // Sparse: probes left out that keep an irradiance tile (ProbeState::irradianceOnly),
+    // counted in the irradiance bytes.
+    std::size_t irradianceOnlyProbes = 0;
     std::size_t indirection = 0;  // sparse volumes: bytes of the probe -> tile state texture
     // What the budget counts: the stored textures plus the indirection.
     std::size_t storedTotal() const { return stored.total() + indirection; }
@@ -35,10 +38,12 @@ struct MemoryReport {
 };
 
 // `storedProbes` (optional, one entry per volume): how many probes each volume stores; a
-// volume storing fewer than all is sparse (packed tiles + indirection).
+// volume storing fewer than all is sparse (packed tiles + indirection). `irradianceOnlyProbes`
+// (optional): how many of the others keep an irradiance tile (SparseLayout.h).
 MemoryReport memoryReport(const std::vector<ProbeVolume>& volumes,
                           StorageFormat format = StorageFormat::Rgba16f,
-                          const std::vector<std::size_t>* storedProbes = nullptr);
+                          const std::vector<std::size_t>* storedProbes = nullptr,
+                          const std::vector<std::size_t>* irradianceOnlyProbes = nullptr);
 // The same for a baked set, plus the sparse-storage candidates (SparseCandidates.h).
 MemoryReport memoryReport(const ProbeSet& set);
 // "32x8x32" -> counts; throws pb::Error naming --grid otherwise.

@@ -134,23 +134,59 @@ void readTexture(ByteReader& r, ProbeTexture& t, const TextureShape& shape, Stor
 // u8 layout (0 dense, 1 sparse); sparse: u32 stored count + a presence bitmap, bit i (byte
 // i / 8, least significant bit first) = probe i owns a tile. A sparse volume's textures are
 // then its stored tiles packed in probe order (SparseLayout.h); absent probes are invalid.
+// Version 7 adds, after the presence bitmap, u32 + a bitmap of the same kind for the
+// irradiance-only probes (ProbeState::irradianceOnly): valid, with an irradiance tile packed
+// after the stored ones (irradianceSlots) and no visibility tile.
+
+void writeBitmap(ByteWriter& w, const std::vector<ProbeState>& states, bool (*has)(const ProbeState&)) {
+    std::vector<std::uint8_t> bits((states.size() + 7) / 8, 0);
+    std::uint32_t count = 0;
+    for (std::size_t i = 0; i < states.size(); ++i)
+        if (has(states[i])) {
+            bits[i / 8] |= std::uint8_t(1u << (i % 8));
+            ++count;
+        }
+    w.pod(count);
+    w.raw(bits.data(), bits.size());
+}
 
 void writeStorageRecord(ByteWriter& w, const ProbeSet& set) {
     for (const auto& states : set.states) {
         const bool sparse = isSparse(states);
         w.pod(std::uint8_t(sparse ? 1 : 0));
         if (!sparse) continue;
-        w.pod(std::uint32_t(storedCount(states)));
-        std::vector<std::uint8_t> bits((states.size() + 7) / 8, 0);
-        for (std::size_t i = 0; i < states.size(); ++i)
-            if (states[i].stored) bits[i / 8] |= std::uint8_t(1u << (i % 8));
-        w.raw(bits.data(), bits.size());
+        writeBitmap(w, states, [](const ProbeState& p) { return p.stored; });
+        writeBitmap(w, states, [](const ProbeState& p) { return p.irradianceOnly && !p.stored; });
     }
+}
+
+// Reads a count + bitmap; calls set(i, bit) per probe; throws on bits past the end or a count
+// that does not match.
+template <typename Set>
+void readBitmap(ByteReader& r, std::size_t n, const std::string& what, const char* name,
+                const std::string& path, Set set) {
+    const auto count = r.pod<std::uint32_t>(name);
+    const std::size_t bytes = (n + 7) / 8;
+    const std::uint8_t* bits = r.take(bytes, name);
+    std::size_t present = 0;
+    for (std::size_t i = 0; i < bytes * 8; ++i) {
+        const bool bit = (bits[i / 8] >> (i % 8)) & 1u;
+        if (i >= n) {
+            if (bit) throw fileError(path, "corrupt " + what + " (bits past the last probe)");
+            continue;
+        }
+        set(i, bit);
+        present += bit ? 1 : 0;
+    }
+    if (present != count)
+        throw fileError(path, "corrupt " + what + " (" + std::to_string(count) + " " + name +
+                                  " declared, " + std::to_string(present) + " present)");
 }
 
 // Marks the absent probes of every sparse volume (stored = valid = false); returns which
 // volumes are sparse.
-std::vector<bool> readStorageRecord(ByteReader& r, ProbeSet& set, const std::string& path) {
+std::vector<bool> readStorageRecord(ByteReader& r, ProbeSet& set, const std::string& path,
+                                    std::uint32_t version) {
     std::vector<bool> sparse;
     for (std::size_t v = 0; v < set.volumes.size(); ++v) {
         const std::string what = "storage of volume '" + set.volumes[v].name + "'";
@@ -160,24 +196,19 @@ std::vector<bool> readStorageRecord(ByteReader& r, ProbeSet& set, const std::str
         sparse.push_back(layout == 1);
         if (layout == 0) continue;
         std::vector<ProbeState>& states = set.states[v];
-        const auto count = r.pod<std::uint32_t>("stored probe count");
-        const std::size_t n = states.size(), bytes = (n + 7) / 8;
-        const std::uint8_t* bits = r.take(bytes, "presence bitmap");
-        std::size_t present = 0;
-        for (std::size_t i = 0; i < bytes * 8; ++i) {
-            const bool bit = (bits[i / 8] >> (i % 8)) & 1u;
-            if (i >= n) {
-                if (bit) throw fileError(path, "corrupt " + what + " (bits past the last probe)");
-                continue;
-            }
+        readBitmap(r, states.size(), what, "stored probes", path, [&](std::size_t i, bool bit) {
             states[i].stored = bit;
-            if (!bit) states[i].valid = false;
-            present += bit ? 1 : 0;
-        }
-        if (present != count)
-            throw fileError(path, "corrupt " + what + " (" + std::to_string(count) +
-                                      " stored probes declared, " + std::to_string(present) +
-                                      " present)");
+        });
+        if (version >= 7)
+            readBitmap(r, states.size(), what, "irradiance-only probes", path,
+                       [&](std::size_t i, bool bit) {
+                           if (bit && states[i].stored)
+                               throw fileError(path, "corrupt " + what +
+                                                         " (a probe both stored and irradiance-only)");
+                           states[i].irradianceOnly = bit;
+                       });
+        for (ProbeState& s : states)
+            if (!s.stored && !s.irradianceOnly) s.valid = false;
     }
     return sparse;
 }
@@ -193,22 +224,28 @@ void readVolumeTexture(ByteReader& r, ProbeTexture& t, const ProbeVolume& v,
         return irradiance ? irradianceShape(c) : visibilityShape(c);
     };
     if (!sparse) return readTexture(r, t, shapeOf(v.counts), f, path, what, storageScale);
-    const glm::ivec3 packed = packedCounts(storedCount(states), v.counts);
+    // Irradiance: the stored tiles, then the irradiance-only ones (irradianceSlots).
+    const std::vector<int> slots = irradiance ? irradianceSlots(states) : packedSlots(states);
+    const glm::ivec3 packed = packedCounts(
+        storedCount(states) + (irradiance ? irradianceOnlyCount(states) : 0), v.counts);
     ProbeTexture p;
     readTexture(r, p, shapeOf(packed), f, path, what, storageScale);
-    t = unpackTiles(p, packedSlots(states), v.counts, packed, tile, f);
+    t = unpackTiles(p, slots, v.counts, packed, tile, f);
 }
 
 void writeVolumeTexture(ByteWriter& w, const ProbeTexture& t, const ProbeVolume& v,
                         const std::vector<ProbeState>& states, bool irradiance, StorageFormat f) {
     if (!isSparse(states)) return writeTexture(w, t);
-    const glm::ivec3 packed = packedCounts(storedCount(states), v.counts);
-    writeTexture(w, packTiles(t, packedSlots(states), v.counts, packed,
+    const std::vector<int> slots = irradiance ? irradianceSlots(states) : packedSlots(states);
+    const glm::ivec3 packed = packedCounts(
+        storedCount(states) + (irradiance ? irradianceOnlyCount(states) : 0), v.counts);
+    writeTexture(w, packTiles(t, slots, v.counts, packed,
                               irradiance ? kIrradianceTile : kVisibilityTile, f));
 }
 
 // --- SH record (version 6): u8 present; then per volume and probe u8 insideAtLattice; then
-// per scenario, per volume and STORED probe 9 RGB f32 (absent probes read as zeros).
+// per scenario, per volume and probe with irradiance (ownsIrradiance) 9 RGB f32 (the others
+// read as zeros).
 void writeShRecord(ByteWriter& w, const ProbeSet& set) {
     w.pod(std::uint8_t(set.hasSh()));
     if (!set.hasSh()) return;
@@ -222,9 +259,9 @@ void writeShRecord(ByteWriter& w, const ProbeSet& set) {
             if (sc.at(v).size() != std::size_t(set.volumes[v].probeCount()) * 9)
                 throw Error("probe set: SH of volume '" + set.volumes[v].name + "' has " +
                             std::to_string(sc[v].size()) + " coefficients");
-            // Sparse storage's absent probes hold zeros: only stored probes are written.
+            // Sparse storage's absent probes hold zeros: only probes with irradiance are written.
             for (std::size_t p = 0; p < set.states[v].size(); ++p)
-                if (set.states[v][p].stored)
+                if (ownsIrradiance(set.states[v][p]))
                     for (int k = 0; k < 9; ++k) w.pod(sc[v][p * 9 + std::size_t(k)]);
         }
 }
@@ -242,14 +279,14 @@ void readShRecord(ByteReader& body, ProbeSet& set, const std::string& path) {
             const std::size_t n = std::size_t(v.probeCount()) * 9;
             std::size_t stored = 0;
             for (const ProbeState& p : set.states[std::size_t(&v - set.volumes.data())])
-                stored += p.stored ? 1 : 0;
+                stored += ownsIrradiance(p) ? 1 : 0;
             if (stored * 9 > body.remaining() / sizeof(glm::vec3))
                 throw fileError(path, "file is truncated or corrupt (SH of volume '" + v.name +
                                           "')");
             std::vector<glm::vec3> c(n, glm::vec3(0.0f));
             const auto& states = set.states[std::size_t(&v - set.volumes.data())];
             for (std::size_t i = 0; i < n; ++i) {
-                if (!states[i / 9].stored) continue;
+                if (!ownsIrradiance(states[i / 9])) continue;
                 glm::vec3& x = c[i];
                 x = body.pod<glm::vec3>("SH coefficient");
                 if (!finite(x))
@@ -423,7 +460,7 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
         checkStates(v, states, path);
         set.states.push_back(std::move(states));
     }
-    const std::vector<bool> sparse = version >= 3 ? readStorageRecord(body, set, path)
+    const std::vector<bool> sparse = version >= 3 ? readStorageRecord(body, set, path, version)
                                                   : std::vector<bool>(set.volumes.size(), false);
     for (std::size_t v = 0; v < set.volumes.size(); ++v) {
         set.visibility.emplace_back();

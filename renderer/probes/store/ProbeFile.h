@@ -27,7 +27,9 @@ inline constexpr char kProbeFileMagic[8] = {'P', 'B', 'P', 'R', 'O', 'B', 'E', '
 // 6: the SH probes (ShIrradiance.h) after the irradiance: u8 present, then per volume and
 //    probe u8 insideAtLattice, then per scenario, volume and stored probe 9 x RGB f32 (older
 //    files read with no SH).
-inline constexpr std::uint32_t kProbeFileVersion = 6;
+// 7: sparse volumes' irradiance-only probes (issue 18): a second bitmap after the presence
+//    bitmap, their irradiance tiles packed after the stored ones, their SH kept.
+inline constexpr std::uint32_t kProbeFileVersion = 7;
 inline constexpr std::uint32_t kProbeFileFirstVersion = 1; // oldest version still read
 
 std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set);

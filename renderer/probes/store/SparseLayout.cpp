@@ -71,6 +71,26 @@ std::size_t storedCount(const std::vector<ProbeState>& states) {
         std::count_if(states.begin(), states.end(), [](const ProbeState& p) { return p.stored; }));
 }
 
+std::size_t irradianceOnlyCount(const std::vector<ProbeState>& states) {
+    return std::size_t(std::count_if(states.begin(), states.end(),
+                                     [](const ProbeState& p) { return p.irradianceOnly; }));
+}
+
+std::vector<int> irradianceSlots(const std::vector<ProbeState>& states) {
+    std::vector<int> slots = packedSlots(states);
+    int next = int(storedCount(states));
+    for (std::size_t i = 0; i < states.size(); ++i)
+        if (states[i].irradianceOnly && !states[i].stored) slots[i] = next++;
+    return slots;
+}
+
+glm::ivec3 visibilityPackedCounts(std::size_t stored, const glm::ivec3& irradiancePacked) {
+    const std::size_t perLayer = std::size_t(irradiancePacked.x) * std::size_t(irradiancePacked.z);
+    const std::size_t layers = std::max<std::size_t>(1, (stored + perLayer - 1) / perLayer);
+    return {irradiancePacked.x, int(std::min<std::size_t>(layers, std::size_t(irradiancePacked.y))),
+            irradiancePacked.z};
+}
+
 bool isSparse(const std::vector<ProbeState>& states) {
     return storedCount(states) != states.size();
 }
@@ -96,17 +116,18 @@ TileCode tileCode(const glm::ivec3& tileGrid, const std::string& what) {
     c.rowBits = fieldBits(tileGrid.z);
     c.layerBits = fieldBits(tileGrid.y);
     const int bits = c.columnBits + c.rowBits + c.layerBits;
-    if (bits > kTileCodeBits)
+    if (bits > kTileCodeBits - 1) // the top bit is kNoVisibilityFlag
         throw Error(what + ": a tile grid of " + std::to_string(tileGrid.x) + " columns, " +
                     std::to_string(tileGrid.z) + " rows and " + std::to_string(tileGrid.y) +
                     " layers needs a " + std::to_string(bits) + "-bit tile code; the state " +
-                    "texture (RGBA32F) holds " + std::to_string(kTileCodeBits) + " bits exactly");
+                    "texture (RGBA32F) holds " + std::to_string(kTileCodeBits - 1) + " bits exactly beside its flag");
     return c;
 }
 
-float TileCode::encode(const glm::ivec3& tile, bool valid) const {
+float TileCode::encode(const glm::ivec3& tile, bool valid, bool ownVisibility) const {
     const std::uint32_t code = std::uint32_t(tile.x) | std::uint32_t(tile.y) << columnBits |
-                               std::uint32_t(tile.z) << (columnBits + rowBits);
+                               std::uint32_t(tile.z) << (columnBits + rowBits) |
+                               (ownVisibility ? 0u : kNoVisibilityFlag);
     const float w = float(code + 1); // exact: code < 2^kTileCodeBits
     return valid ? w : -w;
 }
@@ -114,8 +135,12 @@ float TileCode::encode(const glm::ivec3& tile, bool valid) const {
 glm::ivec3 TileCode::decode(float w) const {
     // ddgiInitTileFields and ddgiTile, step by step.
     const glm::ivec4 f((1 << columnBits) - 1, columnBits, (1 << rowBits) - 1, columnBits + rowBits);
-    const int code = int(std::abs(w)) - 1;
+    const int code = (int(std::abs(w)) - 1) & int(kNoVisibilityFlag - 1);
     return {code & f.x, (code >> f.y) & f.z, code >> f.w};
+}
+
+bool TileCode::ownsVisibility(float w) {
+    return std::abs(w) <= float(kNoVisibilityFlag); // code + 1 <= 2^23 (integers, exact)
 }
 
 TileLayout tileLayout(const ProbeVolume& v, const std::vector<ProbeState>& states,
@@ -125,9 +150,15 @@ TileLayout tileLayout(const ProbeVolume& v, const std::vector<ProbeState>& state
         throw Error(what + ": probe state count does not match its grid");
     TileLayout t;
     t.counts = t.packedCounts = v.counts;
-    t.slots = packedSlots(states);
+    t.slots = irradianceSlots(states);
     t.sparse = isSparse(states);
-    if (t.sparse) t.packedCounts = packedCounts(storedCount(states), v.counts);
+    t.storedSlots = int(storedCount(states));
+    if (t.sparse)
+        t.packedCounts =
+            packedCounts(std::size_t(t.storedSlots) + irradianceOnlyCount(states), v.counts);
+    t.visibilityPackedCounts = t.sparse
+                                   ? visibilityPackedCounts(std::size_t(t.storedSlots), t.packedCounts)
+                                   : t.packedCounts;
     t.code = tileCode(t.packedCounts, what);
     if (fillSource.size() == states.size()) t.fillSource = fillSource;
     return t;
@@ -148,7 +179,8 @@ int TileLayout::slotRead(std::size_t index) const {
 float TileLayout::stateW(std::size_t index, bool valid) const {
     // Dense: slot = index and packedCounts = counts, so this is tile (i, k, layer j) too.
     const int slot = slotRead(index);
-    return slot < 0 ? 0.0f : code.encode(packedTile(slot, packedCounts), valid);
+    return slot < 0 ? 0.0f
+                    : code.encode(packedTile(slot, packedCounts), valid, slot < storedSlots);
 }
 
 ProbeTexture packTiles(const ProbeTexture& dense, const std::vector<int>& slots,

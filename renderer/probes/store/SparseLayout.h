@@ -28,6 +28,16 @@ glm::ivec3 packedCounts(std::size_t stored, const glm::ivec3& dense);
 // Per probe of `states`: its packed slot, or -1 when it is not stored.
 std::vector<int> packedSlots(const std::vector<ProbeState>& states);
 std::size_t storedCount(const std::vector<ProbeState>& states);
+// Probes that own an irradiance tile but no visibility tile (ProbeState::irradianceOnly).
+std::size_t irradianceOnlyCount(const std::vector<ProbeState>& states);
+// Per probe: its slot in the packed IRRADIANCE texture: the stored probes first, with their
+// packedSlots, then the irradiance-only probes in probe order; -1 for the rest. A stored
+// probe's tile therefore sits at the same place in the irradiance and the visibility texture,
+// and the visibility texture simply ends after the stored slots (visibilityPackedCounts).
+std::vector<int> irradianceSlots(const std::vector<ProbeState>& states);
+// The packed visibility grid that holds `stored` slots with the same columns and rows as
+// `irradiancePacked` (so packedTile agrees in both), and only the layers they fill (at least 1).
+glm::ivec3 visibilityPackedCounts(std::size_t stored, const glm::ivec3& irradiancePacked);
 // True when some probe of the volume is absent (the volume uses a packed layout).
 bool isSparse(const std::vector<ProbeState>& states);
 
@@ -46,12 +56,20 @@ glm::ivec3 packedTile(int slot, const glm::ivec3& packed);
 // use 24 bits (code + 1 <= 2^24). A volume within volumeProblem's limits (1024 probes per axis,
 // 2^18 per volume) needs at most 20: sum ceil(log2 n) < log2(product) + 3 <= 21.
 constexpr int kTileCodeBits = 24;
+// The code's top bit: the probe owns an irradiance tile only (ProbeState::irradianceOnly), so
+// a lookup gives it visibility weight 1 and reads no visibility texel of it. The fields then
+// get kTileCodeBits - 1 bits (a volume within volumeProblem's limits needs at most 21).
+constexpr std::uint32_t kNoVisibilityFlag = 1u << (kTileCodeBits - 1);
 struct TileCode {
     int columnBits = 0, rowBits = 0, layerBits = 0; // the shader gets (columnBits, rowBits)
-    // The state's w for a probe owning `tile` (column, row, layer); valid = false: negative.
-    float encode(const glm::ivec3& tile, bool valid) const;
-    // The tile from w (its sign ignored), with the shader's operations: for tests and tools.
+    // The state's w for a probe owning `tile` (column, row, layer); valid = false: negative;
+    // ownVisibility = false: kNoVisibilityFlag set.
+    float encode(const glm::ivec3& tile, bool valid, bool ownVisibility = true) const;
+    // The tile from w (its sign and the flag ignored), with the shader's operations: for tests
+    // and tools.
     glm::ivec3 decode(float w) const;
+    // False when w carries kNoVisibilityFlag (the shader's test: w > 2^23).
+    static bool ownsVisibility(float w);
 };
 // The code for a texture of `tileGrid` tiles (as packedCounts: x columns, y layers, z rows).
 // Throws pb::Error naming `what` when its fields need more than kTileCodeBits bits.
@@ -66,8 +84,11 @@ TileCode tileCode(const glm::ivec3& tileGrid, const std::string& what);
 struct TileLayout {
     bool sparse = false;
     glm::ivec3 counts{1};       // the probe grid
-    glm::ivec3 packedCounts{1}; // the tile grid of the textures (= counts unless sparse)
-    std::vector<int> slots;     // per probe: its slot (dense: its index), -1 = absent
+    glm::ivec3 packedCounts{1}; // the irradiance texture's tile grid (= counts unless sparse)
+    // The visibility texture's: packedCounts' columns and rows, the stored slots' layers only.
+    glm::ivec3 visibilityPackedCounts{1};
+    std::vector<int> slots; // per probe: its irradiance slot (irradianceSlots), -1 = absent
+    int storedSlots = 0;    // slots below this own a visibility tile too
     // Per probe: the probe whose tile a lookup reads (AbsentProbeFill.h: an absent probe
     // outside geometry reads its nearest stored one); empty: each its own.
     std::vector<int> fillSource;
@@ -76,7 +97,8 @@ struct TileLayout {
     // (-1, -1, -1) when it reads none.
     glm::ivec3 tileOf(const glm::ivec3& q) const;
     // The state texel's w of probe `index` (probe index order): the code of the tile it reads,
-    // signed by `valid`; 0 when it reads none (absent, not filled).
+    // signed by `valid`, flagged when that tile has no visibility (kNoVisibilityFlag); 0 when it
+    // reads none (absent, not filled).
     float stateW(std::size_t index, bool valid) const;
     // The packed slot probe `index` reads (through fillSource); -1 none.
     int slotRead(std::size_t index) const;

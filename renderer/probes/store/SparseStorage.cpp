@@ -190,38 +190,47 @@ std::vector<std::size_t> sparseProbeCounts(const std::vector<ProbeVolume>& volum
     return out;
 }
 
-void applySparseStorage(ProbeSet& set, const std::vector<WorldTriangle>& triangles) {
+void applySparseStorage(ProbeSet& set, const std::vector<WorldTriangle>& triangles,
+                        FreeSpace freeSpace) {
     const std::vector<int> parents = validateVolumes(set.volumes, "sparse storage");
     std::vector<std::vector<std::uint8_t>> keep;
     for (std::size_t vi = 0; vi < set.volumes.size(); ++vi)
         keep.push_back(sparseKeptProbes(set.volumes[vi], parents[vi] < 0, triangles));
-    storeOnly(set, keep);
+    storeOnly(set, keep, freeSpace);
 }
 
-void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep) {
+void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep,
+               FreeSpace freeSpace) {
     if (keep.size() != set.volumes.size()) throw Error("storeOnly: one mask per volume");
     for (std::size_t vi = 0; vi < set.volumes.size(); ++vi) {
         const ProbeVolume& v = set.volumes[vi];
         std::vector<ProbeState>& states = set.states[vi];
         if (keep[vi].size() != states.size()) throw Error("storeOnly: one flag per probe");
+        // FreeSpace::Irradiance: a valid probe left out keeps its irradiance
+        // (ProbeState::irradianceOnly): it lies outside geometry, and only free cells read it.
+        // Otherwise, and for an invalid probe, it is dropped whole.
+        const bool irradiance = freeSpace == FreeSpace::Irradiance;
         for (std::size_t i = 0; i < states.size(); ++i) {
-            states[i].stored = states[i].valid && keep[vi][i];
-            states[i].valid = states[i].stored;
+            const bool valid = states[i].valid;
+            states[i].stored = valid && keep[vi][i];
+            states[i].irradianceOnly = irradiance && valid && !keep[vi][i];
+            states[i].valid = states[i].stored || states[i].irradianceOnly;
         }
         // Zero what is not stored the way the file's round trip does: pack, then unpack.
-        const std::vector<int> slots = packedSlots(states);
-        const glm::ivec3 packed = packedCounts(storedCount(states), v.counts);
-        auto roundTrip = [&](ProbeTexture& t, int tile) {
+        auto roundTrip = [&](ProbeTexture& t, int tile, const std::vector<int>& slots) {
+            const glm::ivec3 packed = packedCounts(
+                std::size_t(std::count_if(slots.begin(), slots.end(), [](int s) { return s >= 0; })),
+                v.counts);
             t = unpackTiles(packTiles(t, slots, v.counts, packed, tile, set.format()), slots,
                             v.counts, packed, tile, set.format());
         };
-        roundTrip(set.visibility[vi], kVisibilityTile);
+        roundTrip(set.visibility[vi], kVisibilityTile, packedSlots(states));
         for (auto& scenario : set.irradiance)
-            roundTrip(scenario[vi], kIrradianceTile);
-        // The SH record keeps stored probes only (ProbeFile.cpp): absent ones read as zeros.
+            roundTrip(scenario[vi], kIrradianceTile, irradianceSlots(states));
+        // The SH record keeps the probes with irradiance (ProbeFile.cpp): the rest read zeros.
         for (auto& scenario : set.sh)
             for (std::size_t p = 0; p < states.size() && vi < scenario.size(); ++p)
-                if (!states[p].stored)
+                if (!ownsIrradiance(states[p]))
                     std::fill_n(scenario[vi].begin() + std::ptrdiff_t(p * kShL2Coefficients),
                                 kShL2Coefficients, glm::vec3(0.0f));
     }

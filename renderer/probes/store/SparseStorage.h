@@ -53,12 +53,23 @@ std::vector<std::size_t> sparseProbeCounts(const std::vector<ProbeVolume>& volum
 std::size_t freeSpaceOnlyProbes(const ProbeSet& set,
                                 const std::vector<WorldTriangle>& triangles);
 
-// Marks every probe that is invalid or no surface corner as not stored (and invalid) and
-// zeroes its tiles, exactly as writing and reading the file would.
-void applySparseStorage(ProbeSet& set, const std::vector<WorldTriangle>& triangles);
+// What sparse storage keeps of the valid probes it leaves out (issue 18):
+// - StandIns: nothing (they become invalid; lookups read their nearest stored probe,
+//   AbsentProbeFill.h). The default.
+// - Irradiance: their irradiance tile and SH, no visibility (ProbeState::irradianceOnly): a
+//   mid-air lookup then gives the dense bake's light, for a third of a stored probe's bytes
+//   each (`bake --free-space-irradiance`).
+enum class FreeSpace { StandIns, Irradiance };
+
+// Marks every probe that is invalid or no surface corner as not stored (and invalid, or
+// irradiance-only) and zeroes what it no longer holds, exactly as writing and reading the
+// file would.
+void applySparseStorage(ProbeSet& set, const std::vector<WorldTriangle>& triangles,
+                        FreeSpace freeSpace = FreeSpace::StandIns);
 
 // The same for any choice: keep[volume][probe] != 0 and valid stays stored, the rest becomes
 // absent. Sizes must match the set's volumes.
-void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep);
+void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep,
+               FreeSpace freeSpace = FreeSpace::StandIns);
 
 } // namespace pb::probes
