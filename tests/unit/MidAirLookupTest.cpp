@@ -131,6 +131,25 @@ MidAirError compareMidAir(const DenseAndSparse& b, int points) {
     return e;
 }
 
+// Bakes `scene` dense and sparse with `freeSpace`, compares them at 500 mid-air points and
+// prints the figures; every point must be lit and read something other than stored probes
+// often enough for the comparison to mean anything.
+MidAirError measureMidAir(const char* scene, FreeSpace freeSpace) {
+    const DenseAndSparse b = bakeDenseAndSparse(scene, 1500, freeSpace);
+    EXPECT_LT(b.sparse.storedCount(), b.sparse.probeCount()) << "nothing absent: vacuous";
+    const MidAirError e = compareMidAir(b, 500);
+    std::printf("[ mid-air ] %s, %s: %d of %zu probes stored; %d lookups, %d differ from the "
+                "dense one: relative luminance error mean %.4f, p90 %.4f, worst %.4f; %d unlit; "
+                "worst beyond the dense light within reach %.4f\n",
+                scene, freeSpace == FreeSpace::Irradiance ? "irradiance-only" : "stand-ins",
+                int(b.sparse.storedCount()), b.sparse.probeCount(), e.lookups, e.changed, e.mean,
+                e.p90, e.worst, e.unlit, e.worstBeyondReach);
+    EXPECT_EQ(e.unlit, 0) << "a point the dense set lights got no lookup";
+    EXPECT_GT(e.changed, e.lookups / 10)
+        << "too few lookups read an absent probe's stand-in or irradiance: vacuous";
+    return e;
+}
+
 } // namespace
 
 class MidAir : public testing::TestWithParam<const char*> {};
@@ -143,16 +162,7 @@ class MidAir : public testing::TestWithParam<const char*> {};
 // the light changes by 2x within a cell, and a stand-in one cell nearer the light reads that
 // much brighter (bench/results/2026-11-25-mid-air-worst.md).
 TEST_P(MidAir, StandInsLightEveryPointWithin15PercentOfTheDenseLightWithinReach) {
-    const DenseAndSparse b = bakeDenseAndSparse(GetParam(), 1500, FreeSpace::StandIns);
-    ASSERT_LT(b.sparse.storedCount(), b.sparse.probeCount()) << "nothing absent: vacuous";
-    const MidAirError e = compareMidAir(b, 500);
-    std::printf("[ mid-air ] %s stand-ins: %d of %zu probes stored; %d lookups, %d differ: "
-                "relative luminance error mean %.4f, p90 %.4f, worst %.4f; %d unlit; worst "
-                "beyond the dense light within reach %.4f\n",
-                GetParam(), int(b.sparse.storedCount()), b.sparse.probeCount(), e.lookups,
-                e.changed, e.mean, e.p90, e.worst, e.unlit, e.worstBeyondReach);
-    EXPECT_EQ(e.unlit, 0) << "a point the dense set lights got no lookup";
-    EXPECT_GT(e.changed, e.lookups / 10) << "too few lookups read stand-ins: the test is vacuous";
+    const MidAirError e = measureMidAir(GetParam(), FreeSpace::StandIns);
     EXPECT_LE(e.mean, 0.15f);
     EXPECT_EQ(e.outsideReach, 0)
         << "a lookup is off by more than 15% beyond the dense light within reach (worst "
@@ -163,17 +173,7 @@ TEST_P(MidAir, StandInsLightEveryPointWithin15PercentOfTheDenseLightWithinReach)
 // --free-space-irradiance`): every lookup that differs from the dense one at all is within 15%
 // of it, under the Cornell light and in the rooms' doorway too.
 TEST_P(MidAir, IrradianceOnlyProbesLightEveryPointWithin15PercentOfTheDenseLookup) {
-    const DenseAndSparse b = bakeDenseAndSparse(GetParam(), 1500, FreeSpace::Irradiance);
-    ASSERT_LT(b.sparse.storedCount(), b.sparse.probeCount()) << "nothing absent: vacuous";
-    const MidAirError e = compareMidAir(b, 500);
-    std::printf("[ mid-air ] %s: %d of %zu probes stored; %d lookups, %d differ from the dense "
-                "one: relative luminance error mean %.4f, p90 %.4f, worst %.4f; %d unlit; "
-                "worst beyond the dense light within reach %.4f\n",
-                GetParam(), int(b.sparse.storedCount()), b.sparse.probeCount(), e.lookups,
-                e.changed, e.mean, e.p90, e.worst, e.unlit, e.worstBeyondReach);
-    EXPECT_EQ(e.unlit, 0) << "a point the dense set lights got no lookup";
-    EXPECT_GT(e.changed, e.lookups / 10)
-        << "too few lookups read irradiance-only probes: the test is vacuous";
+    const MidAirError e = measureMidAir(GetParam(), FreeSpace::Irradiance);
     EXPECT_LE(e.worst, 0.15f) << "a mid-air lookup is more than 15% off the dense one";
     EXPECT_EQ(e.outsideReach, 0)
         << "a lookup is off by more than 15% beyond the dense light within reach (worst "
