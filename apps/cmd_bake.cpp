@@ -424,9 +424,9 @@ std::size_t freeSpaceProbes(const ProbeSet& set, const scene::Scene& s) {
 }
 
 // The bytes the irradiance-only probes' tiles add (one scenario, in the file's format): what
-// the memory report counts beyond the stored tiles.
-std::size_t irradianceOnlyBytes(const ProbeSet& set) {
-    const MemoryReport with = memoryReport(set);
+// `with` (the set's memory report) counts beyond the stored tiles. 0 when there are none.
+std::size_t irradianceOnlyBytes(const ProbeSet& set, const MemoryReport& with) {
+    if (with.total.irradianceOnlyProbes == 0) return 0;
     std::vector<std::size_t> stored;
     for (const auto& states : set.states) stored.push_back(probes::storedCount(states));
     const MemoryReport without = memoryReport(set.volumes, set.format(), &stored);
@@ -446,6 +446,7 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
                                 : 0.0;
     MemoryReport mem = memoryReport(set);
     const std::size_t freeSpaceBytes = freeSpace * bytesPerProbe(set.format()).total();
+    const std::size_t irradianceOnly = irradianceOnlyBytes(set, mem);
     const std::vector<ProbeCounts> counts =
         volumeProbeCounts(set, st ? &st->invalidPerVolume : nullptr);
     const ProbeCounts total = totalProbeCounts(counts);
@@ -470,7 +471,7 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
                                {"lattice_bytes", freeSpaceBytes},
                                {"lattice_step", kFreeSpaceLatticeStep},
                                {"irradiance_only_probes", mem.total.irradianceOnlyProbes},
-                               {"irradiance_only_bytes", irradianceOnlyBytes(set)}};
+                               {"irradiance_only_bytes", irradianceOnly}};
         nlohmann::json sc = nlohmann::json::array();
         nlohmann::json scales = nlohmann::json::object();
         for (std::size_t i = 0; i < set.scenarios.size(); ++i) {
@@ -573,7 +574,7 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
                   << (mem.total.irradianceOnlyProbes
                           ? std::to_string(mem.total.irradianceOnlyProbes) +
                                 " absent probes keep their irradiance (" +
-                                formatBytes(irradianceOnlyBytes(set)) + ", no visibility)\n"
+                                formatBytes(irradianceOnly) + ", no visibility)\n"
                           : std::string("absent probes are read as their nearest stored one\n"));
     else
         std::cout << "sparse-storage candidates: " << mem.total.sparse.far
