@@ -44,6 +44,13 @@ void bakeRow(const GateRecord& baseline, const GateRecord& now, GateOutcome& out
 
 } // namespace
 
+bool otherMachine(const GateRecord& baseline, const GateRecord& now) {
+    const GateEnvironment& b = baseline.environment;
+    const GateEnvironment& n = now.environment;
+    if (b.cpu.empty() || b.embreeIsa.empty()) return false; // an older baseline: strict
+    return b.cpu != n.cpu || b.embreeIsa != n.embreeIsa;
+}
+
 void compareEnvironment(const GateRecord& baseline, const GateRecord& now, GateOutcome& out) {
     const bool hasBaseline = !baseline.probes.empty(); // not a new suite's --update
     const GateEnvironment& b = baseline.environment;

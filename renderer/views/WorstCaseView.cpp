@@ -136,13 +136,21 @@ struct PrimaryHit {
 struct PrimaryRays {
     const probes::RayScene& statics;
     const probes::RayScene* dynamics; // null: the scene has none
+    // Hit distances from RayScene::portableDistance: the same on every CPU (the gate's model
+    // counters and the worst-case view search must not depend on Embree's rounding).
     PrimaryHit intersect(const glm::vec3& eye, const glm::vec3& d) const {
-        PrimaryHit h{statics.intersect(eye, d), &statics, false};
+        PrimaryHit h{portable(statics, eye, d), &statics, false};
         if (dynamics) {
-            const probes::RayHit dh = dynamics->intersect(eye, d);
+            const probes::RayHit dh = portable(*dynamics, eye, d);
             if (dh.hit() && (!h.hit.hit() || dh.t < h.hit.t)) h = {dh, dynamics, true};
         }
         return h;
+    }
+    static probes::RayHit portable(const probes::RayScene& s, const glm::vec3& eye,
+                                   const glm::vec3& d) {
+        probes::RayHit hit = s.intersect(eye, d);
+        hit.t = s.portableDistance(eye, d, hit);
+        return hit;
     }
 };
 

@@ -226,6 +226,17 @@ RayHit RayScene::intersect(const glm::vec3& o, const glm::vec3& d, float tnear, 
     return out;
 }
 
+float RayScene::portableDistance(const glm::vec3& o, const glm::vec3& d, const RayHit& h) const {
+    if (!h.hit()) return h.t;
+    glm::vec3 a, b, c;
+    triangleCorners(h.geomID, h.primID, a, b, c);
+    const glm::dvec3 da(a), n = glm::cross(glm::dvec3(b) - da, glm::dvec3(c) - da);
+    const double den = glm::dot(glm::dvec3(d), n);
+    if (!(std::abs(den) > 0.0)) return h.t;
+    const double t = glm::dot(da - glm::dvec3(o), n) / den;
+    return std::isfinite(t) && t >= 0.0 ? float(t) : h.t;
+}
+
 bool RayScene::occluded(const glm::vec3& o, const glm::vec3& d, float tnear, float tfar) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);

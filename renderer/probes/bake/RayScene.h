@@ -64,6 +64,14 @@ public:
     RayHit intersect(const glm::vec3& o, const glm::vec3& d, float tnear = 0.0f,
                      float tfar = std::numeric_limits<float>::infinity()) const;
     bool occluded(const glm::vec3& o, const glm::vec3& d, float tnear, float tfar) const;
+    // The distance of hit `h` of the ray o + t*d recomputed in double precision against its
+    // triangle's plane, rounded to float; Embree's own t when the ray runs along the plane.
+    // Embree divides with an approximate reciprocal (rcpps/rcp14 and a Newton step) whose last
+    // bits differ between CPU vendors, and one ulp of t moved the gate's cache counters by up
+    // to 1900 lines (a floor on a probe plane); this t is the same on every x86-64 CPU. For
+    // figures that must hold on another machine (the cost model's and the coverage's primary
+    // hits, views/WorstCaseView.cpp); the bake keeps Embree's t.
+    float portableDistance(const glm::vec3& o, const glm::vec3& d, const RayHit& h) const;
     const SurfaceInfo& surface(unsigned geomID) const { return surfaces_[geomID]; }
     // Unit face normal of a triangle, on its front side (glTF: counter-clockwise, flipped for
     // instances whose transform mirrors).
