@@ -121,7 +121,7 @@ void sampleAll(Candidate& c, const std::vector<GatherPoint>& pts,
     c.midAirWeights.clear();
     for (const glm::vec3& p : midAir)
         for (const glm::vec3& n : kAxes) {
-            const IrradianceSample e = sampler.sample(p, n, n);
+            const IrradianceSample e = sampler.sample(p, n, n, midAirLookup());
             c.midAirValues.push_back(e.irradiance);
             c.midAirWeights.push_back(e.weight);
         }

@@ -91,6 +91,14 @@ vec3 ddgiLoopStep;
 vec2 ddgiLoopVisTile, ddgiLoopIrrTile;
 vec4 ddgiLoopVisOct;
 float ddgiLoopInvMaxDistance, ddgiLoopBehindInvWidth;
+// 1: the behind-surface fade (4c') applies; 0: the caller's point is no static surface (a
+// dynamic object's pixel, GI_DYNAMIC_UNFADED in gi_ddgi_apply.frag): RTXGI's weights.
+#ifdef GI_DYNAMIC_UNFADED
+float ddgiBehindFadeScale = 1.0;
+#define DDGI_BEHIND_INV_WIDTH (u_ddgiBehindInvWidth * ddgiBehindFadeScale)
+#else
+#define DDGI_BEHIND_INV_WIDTH u_ddgiBehindInvWidth
+#endif
 #ifdef GI_GUARD_EXPOSURE_ON
 float ddgiLoopIrradianceScale;
 #endif
@@ -102,7 +110,7 @@ void ddgiInitLoopConstants() {
     ddgiLoopIrrTile = u_ddgiIrrTileScale;
     ddgiLoopVisOct = u_ddgiVisOct;
     ddgiLoopInvMaxDistance = u_ddgiInvMaxDistance;
-    ddgiLoopBehindInvWidth = u_ddgiBehindInvWidth;
+    ddgiLoopBehindInvWidth = DDGI_BEHIND_INV_WIDTH;
 #ifdef GI_GUARD_EXPOSURE_ON
     ddgiLoopIrradianceScale = u_ddgiIrradianceScale;
 #endif

@@ -10,6 +10,8 @@
 // GI_INFLUENCE_BY_RASTER (stencil, eye inside the box: the back faces' depth test decides the
 // influence, as for the raster mark gi_stencil_mark_raster.frag, so both agree on every pixel),
 // GI_DYNAMIC_SH (dynamic-object pixels are lit by their SH in the lighting: skipped here),
+// GI_DYNAMIC_UNFADED (gi.dynamic=per_pixel in a scene with dynamic objects: their pixels keep
+// the probes behind their surface, which is no baked surface: ProbeSampler.h kBehindRampCells),
 // GI_COUNT_PIXELS (diagnostics: location 1 marks every pixel this draw evaluated),
 // GI_COUNT_INVOCATIONS (diagnostics, GLSL ES 3.10: an atomic counter counts every invocation;
 // GI_COUNT_EARLY_TESTS keeps the depth/stencil tests before the shader, as without the counter:
@@ -36,6 +38,12 @@ layout(location = 1) out vec4 out_evaluated;
 uniform highp sampler2D u_gbuffer_normal;
 uniform highp sampler2D u_gbuffer_depth;
 #ifdef GI_DYNAMIC_SH
+#define GI_READS_FLAGS
+#endif
+#ifdef GI_DYNAMIC_UNFADED
+#define GI_READS_FLAGS
+#endif
+#ifdef GI_READS_FLAGS
 uniform highp sampler2D u_gbuffer_flags;
 #endif
 uniform vec3 u_ambientUp;  // GI_TARGET_R11G11B10F only
@@ -84,6 +92,11 @@ void main() {
 #ifdef GI_DYNAMIC_SH
     // Early out: the lighting gives dynamic objects their SH (bit 0 of the flags, bits / 255).
     if ((int(texelFetch(u_gbuffer_flags, px, 0).r * 255.0 + 0.5) & 1) != 0) discard;
+#endif
+#ifdef GI_DYNAMIC_UNFADED
+    // A dynamic object's pixel (bit 0) is looked up as a mid-air point: no behind-surface fade.
+    if ((int(texelFetch(u_gbuffer_flags, px, 0).r * 255.0 + 0.5) & 1) != 0)
+        ddgiBehindFadeScale = 0.0;
 #endif
     vec3 rel = giRelPosition(px, depth);
     vec3 local = ddgiLocal(rel); // once: the influence test and the lookup share it

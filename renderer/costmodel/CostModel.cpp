@@ -45,7 +45,7 @@ struct Lookup {
 };
 
 void countLookup(const Lookup& l, const std::vector<Fetch>& fetches, const TextureTable& table,
-                 bool shFlags, VolumeCounters& c) {
+                 bool flagsRead, VolumeCounters& c) {
     if (l.stage == Lookup::Skipped) return;
     ++c.fragments;
     ++c.depthFetches;
@@ -53,7 +53,9 @@ void countLookup(const Lookup& l, const std::vector<Fetch>& fetches, const Textu
         ++c.skySkipped;
         return;
     }
-    c.flagsFetches += shFlags; // gi_ddgi_apply.frag: the SH early-out before the influence test
+    // gi_ddgi_apply.frag, before the influence test: the SH early-out (GI_DYNAMIC_SH) or the
+    // dynamic pixels' unfaded lookup (GI_DYNAMIC_UNFADED).
+    c.flagsFetches += flagsRead;
     if (l.stage == Lookup::Outside) {
         ++c.outsideSkipped;
         return;
@@ -163,6 +165,13 @@ void describeTarget(const CostModelOptions& o, GiPassCounters& c) {
     c.targetPixels = std::uint64_t(c.targetWidth) * std::uint64_t(c.targetHeight);
 }
 
+// Whether the apply reads the GBuffer flags (GiApplyPass): gi.dynamic=sh always, per_pixel
+// DDGI only in a scene with dynamic objects (GI_DYNAMIC_UNFADED).
+bool flagsRead(const profile::Profile& p, bool dynamicObjects) {
+    if (p.gi.dynamic == profile::GiDynamic::Sh) return true;
+    return dynamicObjects && shCoefficientTextures(p.gi.technique) == 0;
+}
+
 // One run of the model as the pass's steps: the kept volumes in draw order, the target's
 // pixels in shading order and their surface points, then per volume and chunk of pixels the
 // lookups, their counters and every (variant, cache) replay, then the totals.
@@ -174,7 +183,7 @@ public:
         : view_(view), o_(o), set_(tester.probes()), caches_(caches), c_(c),
           kept_(profile::selectVolumes(set_, profile::parseVolumeLod(o.profile.gi.volumeLod))),
           stencil_(o.profile.gi.multiVolume == profile::GiMultiVolume::Stencil),
-          shFlags_(o.profile.gi.dynamic == profile::GiDynamic::Sh),
+          flagsRead_(flagsRead(o.profile, tester.hasDynamicObjects())),
           shTextures_(shCoefficientTextures(o.profile.gi.technique)), sampler_(set_, o.scenario),
           table_(makeTextureTable(o.width, o.height, set_, kept_, o.layout, shTextures_)) {
         const size_t group = size_t(o.warpPixels) * size_t(o.warpsInFlight);
@@ -342,7 +351,7 @@ private:
                 covered_[start + i] = 1;
                 winner_[start + i] = d;
             }
-            countLookup(lookups_[i], fetches, table_, shFlags_, vc);
+            countLookup(lookups_[i], fetches, table_, flagsRead_, vc);
         }
     }
 
@@ -364,7 +373,7 @@ private:
     const std::vector<CacheConfig>& caches_;
     GiPassCounters& c_;
     const std::vector<int> kept_;
-    const bool stencil_, shFlags_;
+    const bool stencil_, flagsRead_;
     const int shTextures_; // gi.technique=sh_*: coefficient textures per volume; 0: DDGI
     const probes::ProbeSampler sampler_;
     std::optional<probes::ShSampler> shSampler_;

@@ -5,6 +5,7 @@
 #include "frame/Readback.h"
 #include "passes/CompositePass.h"
 #include "passes/DirectLightingPass.h"
+#include "passes/DynamicObjects.h"
 #include "passes/DynamicShPass.h"
 #include "passes/GBufferPass.h"
 #include "passes/GiApplyPass.h"
@@ -64,7 +65,8 @@ FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& set
             dynamicSh_ = sh.get();
             passes_.push_back(std::move(sh));
         }
-        auto apply = std::make_unique<GiApplyPass>(*probes_, prof);
+        auto apply = std::make_unique<GiApplyPass>(*probes_, prof,
+                                                   !findDynamicObjects(scene).objects.empty());
         giApply_ = apply.get();
         giApply_->setCountPixels(gi.debugView == GiDebugView::VolumeCoverage);
         passes_.push_back(std::move(apply));

@@ -31,7 +31,11 @@ public:
     static constexpr int kFirstProbeUnit = 5;     // after the GBuffer's channels and depth
     static constexpr unsigned kStencilTaken = 1u; // stencil: a smaller volume shaded the pixel
 
-    GiApplyPass(const GpuProbes& probes, const profile::Profile& profile);
+    // dynamicObjects: the scene has dynamic objects. With gi.dynamic=per_pixel their pixels are
+    // then looked up without the behind-surface fade (GI_DYNAMIC_UNFADED: one flags fetch per
+    // pixel, so scenes without them keep the shader as it was).
+    GiApplyPass(const GpuProbes& probes, const profile::Profile& profile,
+                bool dynamicObjects = false);
     const char* name() const override { return "gi-apply"; }
     void execute(FrameContext& frame) override;
     const gl::Texture* target() const { return targets_.target(); }

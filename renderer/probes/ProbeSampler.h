@@ -130,9 +130,21 @@ struct SampleOptions {
     // (PlacementError.cpp) turns it off: its choice of shift is part of the bake, and with the
     // fade it chose other shifts on the garden and the apartment (bench_lattice's stored
     // counts 4887 -> 4904, 4746 -> 4758); off, every bake is what it was. gi.dynamic=sh's
-    // lookups at an object's centre (DynamicShPass) have it off too: no surface there.
+    // lookups at an object's centre (DynamicShPass) and mid-air lookups (midAirLookup(),
+    // below) have it off too: no baked surface there.
     bool behindFade = true;
 };
+
+// The options of a lookup at no baked surface: a point on a dynamic object, a mid-air point
+// (bench_placement's "air err", the mid-air tests). RTXGI's weights, no behind-surface fade: the
+// probes behind such a point's tangent plane are not behind anything baked, and fading them
+// drops light that is there (issue 24: the fade cost the default bake's mid-air error 2 - 10%
+// on every shared scene). The renderer does the same for dynamic pixels (GI_DYNAMIC_UNFADED).
+inline SampleOptions midAirLookup() {
+    SampleOptions o;
+    o.behindFade = false;
+    return o;
+}
 
 // One lookup of a batch (ProbeSampler::sampleBatch).
 struct SampleQuery {

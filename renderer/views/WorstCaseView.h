@@ -62,6 +62,7 @@ public:
     bool eyeIsClear(const glm::vec3& eye) const;
     const probes::ProbeSet& probes() const { return probes_; }
     const std::vector<scene::View>& sceneViews() const { return views_; }
+    bool hasDynamicObjects() const { return dynamicRays_ != nullptr; }
 
 private:
     const probes::ProbeSet& probes_;

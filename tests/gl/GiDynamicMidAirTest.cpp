@@ -10,6 +10,7 @@
 //   three objects are three draws of the lookup error, not hundreds; the mid-air lookups' p90
 //   is 0.18-0.23 on the built-in scenes (MidAirLookupTest's printout), measured here 0.18.
 // Plus a golden image of the scene lit by the sparse bake.
+#include "gl/GBufferSurfaces.h"
 #include "gl/GlTestFixture.h"
 #include "gl/GoldenCheck.h"
 #include "gl/LambertIrradiance.h"
@@ -17,9 +18,10 @@
 #include "frame/FrameRenderer.h"
 #include "frame/Readback.h"
 #include "passes/GiApplyPass.h"
+#include "probes/ProbeSampler.h"
 #include "probes/bake/Baker.h"
-#include "probes/placement/AutoVolume.h"
 #include "probes/bake/RayScene.h"
+#include "probes/placement/AutoVolume.h"
 #include "probes/store/SparseStorage.h"
 #include "scene/SceneLoader.h"
 #include "support/ImageCompare.h"
@@ -97,6 +99,13 @@ float luminance(const glm::vec3& c) {
 }
 
 class GiDynamicMidAirTest : public GlTest, public ::testing::WithParamInterface<const char*> {};
+class GiDynamicPerPixelTest : public GlTest {};
+
+const gl::Texture* giTarget(const render::FrameRenderer& r) {
+    for (const auto& p : r.passes())
+        if (auto* pass = dynamic_cast<const render::GiApplyPass*>(p.get())) return pass->target();
+    return nullptr;
+}
 
 TEST_P(GiDynamicMidAirTest, SparseBakeLightsDynamicObjectsLikeTheDenseOne) {
     const Bakes& b = bakes();
@@ -125,6 +134,55 @@ TEST_P(GiDynamicMidAirTest, SparseBakeLightsDynamicObjectsLikeTheDenseOne) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, GiDynamicMidAirTest, ::testing::Values("per_pixel", "sh"));
+
+// gi.dynamic=per_pixel (the default): a dynamic object's pixel is a mid-air lookup, without the
+// behind-surface fade that static pixels get (GI_DYNAMIC_UNFADED; ProbeSampler.h
+// midAirLookup()). The apply pass's GI target against the CPU sampler at every pixel's GBuffer
+// surface, each with its own options; and the fade must matter on enough dynamic pixels for
+// the comparison to tell the two apart.
+TEST_F(GiDynamicPerPixelTest, PerPixelDynamicPixelsSkipTheBehindFadeAsTheCpuDoes) {
+    const scene::Scene& s = dynamicScene();
+    render::GiOptions gi;
+    gi.probes = &bakes().dense;
+    gi.profile.applyOverride("gi.target_format=rgba32f");
+    render::FrameRenderer r(s, render::defaultFrameSettings(s), gi);
+    const render::RenderView view =
+        render::makeRenderView(*s.findView("dynamic"), s.worldBounds(), kW, kH);
+    r.render(view);
+    checkNoGlErrors("rendering");
+    const std::vector<GBufferSurface> surfaces = gbufferSurfaces(r, view);
+    ASSERT_NE(giTarget(r), nullptr) << "no GI apply pass";
+    const image::ImageF target = render::readFloat(*giTarget(r));
+    const probes::ProbeSampler cpu(bakes().dense, 0);
+    int dynamic = 0, fadeMatters = 0, worse = 0, surface = 0;
+    for (int y = 0; y < kH; ++y)
+        for (int x = 0; x < kW; ++x) {
+            const GBufferSurface& px = surfaces[std::size_t(y) * kW + std::size_t(x)];
+            if (px.sky) continue;
+            ++surface;
+            const bool isDynamic = (px.flags & 1u) != 0;
+            const probes::IrradianceSample faded = cpu.sample(px.world, px.normal, -px.rel);
+            const probes::IrradianceSample expected =
+                isDynamic ? cpu.sample(px.world, px.normal, -px.rel, probes::midAirLookup())
+                          : faded;
+            double rel = std::abs(double(target.at(x, y, 3)) - expected.weight);
+            for (int k = 0; k < 3; ++k)
+                rel = std::max(rel, std::abs(double(target.at(x, y, k)) - expected.irradiance[k]) /
+                                        std::max(double(expected.irradiance[k]), 1e-3));
+            worse += rel > 1e-3 ? 1 : 0;
+            if (!isDynamic) continue;
+            ++dynamic;
+            const float lf = luminance(faded.irradiance), le = luminance(expected.irradiance);
+            fadeMatters += std::abs(lf - le) > 0.01f * std::max(le, 1e-3f) ? 1 : 0;
+        }
+    std::printf("[ dynamic unfaded ] %d surface pixels, %d dynamic (%d where the fade would move "
+                "E by > 1%%); %d pixels off the CPU's lookup by > 1e-3\n",
+                surface, dynamic, fadeMatters, worse);
+    ASSERT_GT(dynamic, 300) << "the view must show the dynamic boxes";
+    EXPECT_GT(fadeMatters, dynamic / 10) << "the fade changes too few pixels: vacuous";
+    // Depth reconstruction may put a pixel on a cell boundary's other side (GiFrameTest).
+    EXPECT_LE(worse, surface / 1000);
+}
 
 // The scene lit by its sparse bake by default (gi.dynamic's default), against
 // tests/golden/rooms_dynamic_dynamic_gi.png with the golden tolerance (tests/README.md). The

@@ -2,6 +2,7 @@
 // the CPU reference at the GBuffer's surface points, math-identical switches giving the same
 // image, lossy switches reporting their error, gi.volume_lod allocating nothing for omitted
 // volumes, and no GI resource at all without probes.
+#include "gl/GBufferSurfaces.h"
 #include "gl/GiTestProbes.h"
 #include "gl/GlTestFixture.h"
 
@@ -14,7 +15,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 
 namespace pb::test {
 namespace {
@@ -42,17 +42,6 @@ const gl::Texture* giTarget(const render::FrameRenderer& r) {
     return nullptr;
 }
 
-// The GBuffer's octahedral normal decode (shaders/common_octahedral.glsl, +Z at the centre).
-glm::vec3 gbufferNormal(float ex, float ey) {
-    glm::vec3 n(ex, ey, 1.0f - std::abs(ex) - std::abs(ey));
-    if (n.z < 0.0f) {
-        float x = (1.0f - std::abs(n.y)) * (n.x >= 0.0f ? 1.0f : -1.0f);
-        float y = (1.0f - std::abs(n.x)) * (n.y >= 0.0f ? 1.0f : -1.0f);
-        n.x = x, n.y = y;
-    }
-    return glm::normalize(n);
-}
-
 // max and mean of |a - b| / max(|b|, 1e-3 * max|b|) over the RGB of two images.
 std::pair<double, double> relativeError(const image::ImageF& a, const image::ImageF& b) {
     float largest = 0;
@@ -78,28 +67,19 @@ TEST_F(GiFrameTest, ApplyPassMatchesCpuAtGBufferPixels) {
     auto r = makeRenderer(&set, {"gi.target_format=rgba32f"});
     render::RenderView view = testView();
     r->render(view);
-    std::filesystem::path dir = std::filesystem::path(PB_TEST_OUTPUT_DIR) / "gi_frame_gbuffer";
-    r->dumpGBuffer(dir.string());
-    image::ImageF depth = image::readPfm((dir / "depth.pfm").string());
-    image::ImageF normal = render::readFloat(r->targets()->gbuffer.channel(1));
+    const std::vector<GBufferSurface> surfaces = gbufferSurfaces(*r, view);
     image::ImageF gi = render::readFloat(*giTarget(*r));
     probes::ProbeSampler cpu(set, 0);
     int covered = 0, sky = 0, worse = 0;
     double maxRel = 0;
     for (int y = 0; y < kH; ++y)
         for (int x = 0; x < kW; ++x) {
-            float d = depth.at(x, y, 1);
-            if (d >= 1.0f) {
+            const GBufferSurface& px = surfaces[std::size_t(y) * kW + std::size_t(x)];
+            if (px.sky) {
                 ++sky;
                 continue;
             }
-            int glRow = kH - 1 - y;
-            glm::vec4 clip((x + 0.5f) / kW * 2 - 1, (glRow + 0.5f) / kH * 2 - 1, d * 2 - 1, 1);
-            glm::vec4 relH = view.relFromClip * clip;
-            glm::vec3 rel = glm::vec3(relH) / relH.w;
-            glm::vec3 world = glm::vec3(glm::dvec3(rel) + view.eye);
-            glm::vec3 n = gbufferNormal(normal.at(x, y, 0), normal.at(x, y, 1));
-            probes::IrradianceSample c = cpu.sample(world, n, -rel);
+            probes::IrradianceSample c = cpu.sample(px.world, px.normal, -px.rel);
             double rel3 = 0;
             for (int k = 0; k < 3; ++k)
                 rel3 = std::max(rel3, std::abs(double(gi.at(x, y, k)) - c.irradiance[k]) /

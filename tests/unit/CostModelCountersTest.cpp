@@ -165,4 +165,32 @@ TEST(CostModelCounters, BadOptionsAreErrors) {
     EXPECT_THROW(runOn(set, o), Error);
 }
 
+// The apply reads the GBuffer flags of every non-sky fragment (before the influence test) when
+// it needs them: gi.dynamic=sh always (its early-out), per_pixel only in a scene with dynamic
+// objects (GI_DYNAMIC_UNFADED: their pixels skip the behind-surface fade), never otherwise.
+TEST(CostModelCounters, FlagsAreFetchedWhereTheApplyNeedsThem) {
+    const probes::ProbeSet set = setOf({box("root", {-10, -1, -10}, {10, 1, 10})});
+    scene::Scene withDynamic = floorScene();
+    scene::Primitive quad;
+    quad.material = 0;
+    addQuad(quad, {20, 0, 20}, {1, 0, 0}, {0, 0, 1}, {0, 1, 0}); // out of view: counts only
+    addInstance(withDynamic, std::move(quad));
+    withDynamic.instances.back().dynamic = true;
+    withDynamic.instances.back().nodeName = "ball";
+    const scene::Scene plain = floorScene();
+    const auto flags = [&](const scene::Scene& s, const char* dynamic) {
+        costmodel::CostModelOptions o = small();
+        o.profile.set("gi.dynamic", dynamic);
+        const views::CoverageTester tester(s, set);
+        const costmodel::VolumeCounters v =
+            costmodel::runCostModel(tester, downView(), o).counters.volumes.at(0);
+        EXPECT_EQ(v.fragments - v.skySkipped, 64u * 36u);
+        return v.flagsFetches;
+    };
+    EXPECT_EQ(flags(plain, "per_pixel"), 0u);
+    EXPECT_EQ(flags(withDynamic, "per_pixel"), 64u * 36u);
+    EXPECT_EQ(flags(plain, "sh"), 64u * 36u);
+    EXPECT_EQ(flags(withDynamic, "sh"), 64u * 36u);
+}
+
 } // namespace pb::test

@@ -72,7 +72,7 @@ Range denseRange(const ProbeSampler& dense, const std::vector<glm::vec3>& points
                  const glm::vec3& n) {
     Range r{std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()};
     for (const glm::vec3& q : points) {
-        const IrradianceSample d = dense.sample(q, n, n);
+        const IrradianceSample d = dense.sample(q, n, n, midAirLookup());
         if (!(d.weight > 0.0f)) continue;
         r.lo = std::min(r.lo, luminance(d.irradiance));
         r.hi = std::max(r.hi, luminance(d.irradiance));
@@ -94,7 +94,8 @@ MidAirError compareMidAir(const DenseAndSparse& b, int points) {
          midAirSamples(rs, b.dense.volumes, points, b.dense.volumes[0].minCellSize())) {
         std::vector<glm::vec3> around; // computed for the first lookup that needs it
         for (const glm::vec3& n : kAxes) {
-            const IrradianceSample d = dense.sample(p, n, n), s = sparse.sample(p, n, n);
+            const IrradianceSample d = dense.sample(p, n, n, midAirLookup()),
+                                   s = sparse.sample(p, n, n, midAirLookup());
             ++e.lookups;
             total += luminance(d.irradiance);
             if (d.weight > 0.0f && !(s.weight > 0.0f)) ++e.unlit;
