@@ -2,7 +2,8 @@
 // "Across machines"): the environment and the bake's identity round-trip through the baseline
 // JSON, an older file without them still reads; a bake that differs on another CPU or Embree
 // ISA is a note while every counter stays exact (they are measured with the committed probe
-// file); a bake that differs on the recording CPU fails. And PB_EMBREE_ISA: a name Embree would silently replace
+// file) but the cache replay's lines and hits, which pass within 0.05% there; a bake that
+// differs on the recording CPU fails. And PB_EMBREE_ISA: a name Embree would silently replace
 // by SSE2 is an error, and the gate's pin is what the process then traces with.
 #include "bench/gate/GateOutcome.h"
 #include "bench/gate/GateRecord.h"
