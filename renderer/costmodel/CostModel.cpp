@@ -9,6 +9,7 @@
 #include "probes/ProbeSampler.h"
 #include "probes/ShIrradiance.h"
 #include "probes/ShSampler.h"
+#include "profile/GiDynamicReads.h"
 #include "profile/GiVolumeLod.h"
 
 #include <algorithm>
@@ -165,13 +166,6 @@ void describeTarget(const CostModelOptions& o, GiPassCounters& c) {
     c.targetPixels = std::uint64_t(c.targetWidth) * std::uint64_t(c.targetHeight);
 }
 
-// Whether the apply reads the GBuffer flags (GiApplyPass): gi.dynamic=sh always, per_pixel
-// DDGI only in a scene with dynamic objects (GI_DYNAMIC_UNFADED).
-bool flagsRead(const profile::Profile& p, bool dynamicObjects) {
-    if (p.gi.dynamic == profile::GiDynamic::Sh) return true;
-    return dynamicObjects && shCoefficientTextures(p.gi.technique) == 0;
-}
-
 // One run of the model as the pass's steps: the kept volumes in draw order, the target's
 // pixels in shading order and their surface points, then per volume and chunk of pixels the
 // lookups, their counters and every (variant, cache) replay, then the totals.
@@ -183,7 +177,7 @@ public:
         : view_(view), o_(o), set_(tester.probes()), caches_(caches), c_(c),
           kept_(profile::selectVolumes(set_, profile::parseVolumeLod(o.profile.gi.volumeLod))),
           stencil_(o.profile.gi.multiVolume == profile::GiMultiVolume::Stencil),
-          flagsRead_(flagsRead(o.profile, tester.hasDynamicObjects())),
+          flagsRead_(profile::applyReadsFlags(o.profile, tester.hasDynamicObjects())),
           shTextures_(shCoefficientTextures(o.profile.gi.technique)), sampler_(set_, o.scenario),
           table_(makeTextureTable(o.width, o.height, set_, kept_, o.layout, shTextures_)) {
         const size_t group = size_t(o.warpPixels) * size_t(o.warpsInFlight);

@@ -3,7 +3,7 @@
 #include "core/Error.h"
 #include "passes/GiDebugInjection.h"
 #include "passes/GiVolumeRaster.h"
-#include "passes/GpuShTextures.h"
+#include "profile/GiDynamicReads.h"
 #include "profile/SwitchTable.h"
 
 #include <algorithm>
@@ -98,10 +98,7 @@ void resetState() {
 GiApplyPass::GiApplyPass(const GpuProbes& probes, const profile::Profile& profile,
                          bool dynamicObjects)
     : probes_(probes), profile_(profile), defines_(giShaderDefines(profile, &probes)) {
-    // Only the DDGI lookup has the fade (the SH technique's common_sh.glsl has none).
-    if (dynamicObjects && profile.gi.dynamic == profile::GiDynamic::PerPixel &&
-        !isShTechnique(profile.gi.technique))
-        defines_["GI_DYNAMIC_UNFADED"] = "";
+    if (profile::dynamicPixelsUnfaded(profile, dynamicObjects)) defines_["GI_DYNAMIC_UNFADED"] = "";
 }
 
 void GiApplyPass::execute(FrameContext& frame) {
