@@ -1,11 +1,12 @@
 #pragma once
 // The surface behind every pixel of a rendered frame, rebuilt from its GBuffer as the GI shaders
 // rebuild it (common_gi_pixel.glsl): window depth -> camera-relative point through relFromClip,
-// the octahedral normal, and the flags. Shared by the tests that hold the apply pass's GI target
-// against the CPU sampler at the same points.
+// the octahedral normal, and the flags; and the apply pass's GI target. Shared by the tests
+// that hold that target against the CPU sampler at the same points.
 #include "frame/DepthReadback.h"
 #include "frame/FrameRenderer.h"
 #include "frame/Readback.h"
+#include "passes/GiApplyPass.h"
 
 #include <cmath>
 #include <glm/glm.hpp>
@@ -29,6 +30,13 @@ inline glm::vec3 gbufferNormal(float ex, float ey) {
         n.x = x, n.y = y;
     }
     return glm::normalize(n);
+}
+
+// The GI apply pass's evaluation target of `r`; null when the frame has no GI pass.
+inline const gl::Texture* giTarget(const render::FrameRenderer& r) {
+    for (const auto& p : r.passes())
+        if (auto* gi = dynamic_cast<const render::GiApplyPass*>(p.get())) return gi->target();
+    return nullptr;
 }
 
 // Row-major, rows top to bottom (as the read-backs), of the frame `r` last rendered with `view`.

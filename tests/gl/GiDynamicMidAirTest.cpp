@@ -101,12 +101,6 @@ float luminance(const glm::vec3& c) {
 class GiDynamicMidAirTest : public GlTest, public ::testing::WithParamInterface<const char*> {};
 class GiDynamicPerPixelTest : public GlTest {};
 
-const gl::Texture* giTarget(const render::FrameRenderer& r) {
-    for (const auto& p : r.passes())
-        if (auto* pass = dynamic_cast<const render::GiApplyPass*>(p.get())) return pass->target();
-    return nullptr;
-}
-
 TEST_P(GiDynamicMidAirTest, SparseBakeLightsDynamicObjectsLikeTheDenseOne) {
     const Bakes& b = bakes();
     ASSERT_LT(b.sparse.storedCount(), b.sparse.probeCount()) << "nothing absent: vacuous";

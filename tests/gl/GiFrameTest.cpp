@@ -36,12 +36,6 @@ std::unique_ptr<render::FrameRenderer> makeRenderer(const probes::ProbeSet* set,
     return std::make_unique<render::FrameRenderer>(s, render::defaultFrameSettings(s), gi);
 }
 
-const gl::Texture* giTarget(const render::FrameRenderer& r) {
-    for (const auto& p : r.passes())
-        if (auto* gi = dynamic_cast<const render::GiApplyPass*>(p.get())) return gi->target();
-    return nullptr;
-}
-
 // max and mean of |a - b| / max(|b|, 1e-3 * max|b|) over the RGB of two images.
 std::pair<double, double> relativeError(const image::ImageF& a, const image::ImageF& b) {
     float largest = 0;
