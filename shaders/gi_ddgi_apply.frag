@@ -89,14 +89,15 @@ void main() {
 #ifndef GI_INFLUENCE_BY_RASTER
     if (depth >= 1.0) discard; // sky (the raster's depth test GEQUAL already rejects it)
 #endif
+#ifdef GI_READS_FLAGS
+    // A dynamic object's pixel: bit 0 of the flags (stored as bits / 255).
+    bool dynamicPixel = (int(texelFetch(u_gbuffer_flags, px, 0).r * 255.0 + 0.5) & 1) != 0;
 #ifdef GI_DYNAMIC_SH
-    // Early out: the lighting gives dynamic objects their SH (bit 0 of the flags, bits / 255).
-    if ((int(texelFetch(u_gbuffer_flags, px, 0).r * 255.0 + 0.5) & 1) != 0) discard;
+    if (dynamicPixel) discard; // early out: the lighting gives dynamic objects their SH
+#else
+    // GI_DYNAMIC_UNFADED: looked up as a mid-air point, without the behind-surface fade.
+    if (dynamicPixel) ddgiBehindFadeScale = 0.0;
 #endif
-#ifdef GI_DYNAMIC_UNFADED
-    // A dynamic object's pixel (bit 0) is looked up as a mid-air point: no behind-surface fade.
-    if ((int(texelFetch(u_gbuffer_flags, px, 0).r * 255.0 + 0.5) & 1) != 0)
-        ddgiBehindFadeScale = 0.0;
 #endif
     vec3 rel = giRelPosition(px, depth);
     vec3 local = ddgiLocal(rel); // once: the influence test and the lookup share it
