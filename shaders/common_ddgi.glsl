@@ -267,6 +267,59 @@ vec2 ddgiIrrCoord(vec3 dir) {
     return ddgiOctEncode(dir) * u_ddgiIrrOct.xy + u_ddgiIrrOct.zw;
 }
 
+// The irradiance of the probe whose tile is `tile` (ddgiProbeIrradiance), at weight `w` (< 0:
+// skipped, a select rather than a branch), added to the sums.
+void ddgiAddProbe(ivec3 tile, hfloat w, vec2 irrLocal, inout hvec3 sumE, inout hfloat sumW) {
+    hvec3 e = ddgiProbeIrradiance(tile, irrLocal);
+    sumE += w >= 0.0 ? w * e : vec3(0.0);
+    sumW += max(w, 0.0);
+}
+
+// One corner of GI_LOOPS_FUSED's loop: probe i's weight and weighted irradiance added to the
+// sums. ddgiSample calls it for i = 0..7 written out rather than in a `for`: NIR does not unroll
+// a loop this long, and llvmpipe then runs it as a loop, recomputing per iteration what the
+// unrolled code folds (each corner's offset and trilinear selects, the samplers' set-up):
+// written out, 19% fewer instructions per evaluation (bench/results/2026-11-25-fetch-floor.md).
+// tests/unit/CostModelShaderTest.cpp reads these 8 calls as the fused loop.
+void ddgiFusedCorner(int i, ivec3 base, vec3 cellProbe, vec3 p, hvec3 nh, vec3 biased,
+                     hvec3 alpha, vec2 irrLocal, inout hvec3 sumE, inout hfloat sumW) {
+    ivec3 off = ddgiCorner(i);
+    ivec3 tile;
+#ifdef DDGI_SPARSE_TILES
+    float stateW;
+    hfloat w = ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile, stateW);
+#else
+    hfloat w = ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile);
+#endif
+    ddgiAddProbe(tile, w, irrLocal, sumE, sumW);
+}
+
+// GI_LOOPS_SPLIT's first loop, corner i: probe i's weight (ddgiProbeWeight; < 0 = skipped).
+// `stateW`: sparse sets, the probe's state w, which ddgiSplitTile decodes again in the second
+// loop; dense sets, 0 (their tile is recomputed from the corner).
+hfloat ddgiSplitWeight(int i, ivec3 base, vec3 cellProbe, vec3 p, hvec3 nh, vec3 biased,
+                       hvec3 alpha, out float stateW) {
+    ivec3 tile;
+#ifdef DDGI_SPARSE_TILES
+    return ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), cellProbe, p, nh, biased, alpha,
+                           tile, stateW);
+#else
+    stateW = 0.0;
+    return ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), cellProbe, p, nh, biased, alpha,
+                           tile);
+#endif
+}
+
+// GI_LOOPS_SPLIT's second loop: corner i's tile, from ddgiSplitWeight's `stateW` (sparse) or
+// the corner (dense).
+ivec3 ddgiSplitTile(int i, ivec3 base, float stateW) {
+#ifdef DDGI_SPARSE_TILES
+    return ddgiTile(stateW);
+#else
+    return ddgiDenseTile(min(base + ddgiCorner(i), ddgiLoopLast));
+#endif
+}
+
 // Irradiance at local point `p` (ddgiLocal of the caller's position: the caller has it from the
 // influence test) for surface normal `normal` seen from direction `view` (caller's space;
 // surface -> viewer; need not be unit). rgb = E * fade, a = weight (fade; 0 = no data).
@@ -302,45 +355,34 @@ hvec4 ddgiSample(vec3 p, vec3 normal, vec3 view) {
     // w (a float[8]) and decode it again: 7% fewer GI instructions than an ivec3[8] of tiles
     // (pc-high, bench/README.md "Probe placement").
     hfloat weights[8];
-#ifdef DDGI_SPARSE_TILES
-    float stateWs[8];
-#endif
-    for (int i = 0; i < 8; ++i) {
-        ivec3 tile;
-#ifdef DDGI_SPARSE_TILES
-        weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), cellProbe, p, nh,
-                                     biased, alpha,
-                                     tile, stateWs[i]);
+    float states[8]; // sparse: each probe's state w; dense: unused (ddgiSplitWeight)
+    // Both loops written out, as the fused one (ddgiFusedCorner says why).
+    weights[0] = ddgiSplitWeight(0, base, cellProbe, p, nh, biased, alpha, states[0]);
+    weights[1] = ddgiSplitWeight(1, base, cellProbe, p, nh, biased, alpha, states[1]);
+    weights[2] = ddgiSplitWeight(2, base, cellProbe, p, nh, biased, alpha, states[2]);
+    weights[3] = ddgiSplitWeight(3, base, cellProbe, p, nh, biased, alpha, states[3]);
+    weights[4] = ddgiSplitWeight(4, base, cellProbe, p, nh, biased, alpha, states[4]);
+    weights[5] = ddgiSplitWeight(5, base, cellProbe, p, nh, biased, alpha, states[5]);
+    weights[6] = ddgiSplitWeight(6, base, cellProbe, p, nh, biased, alpha, states[6]);
+    weights[7] = ddgiSplitWeight(7, base, cellProbe, p, nh, biased, alpha, states[7]);
+    ddgiAddProbe(ddgiSplitTile(0, base, states[0]), weights[0], irrLocal, sumE, sumW);
+    ddgiAddProbe(ddgiSplitTile(1, base, states[1]), weights[1], irrLocal, sumE, sumW);
+    ddgiAddProbe(ddgiSplitTile(2, base, states[2]), weights[2], irrLocal, sumE, sumW);
+    ddgiAddProbe(ddgiSplitTile(3, base, states[3]), weights[3], irrLocal, sumE, sumW);
+    ddgiAddProbe(ddgiSplitTile(4, base, states[4]), weights[4], irrLocal, sumE, sumW);
+    ddgiAddProbe(ddgiSplitTile(5, base, states[5]), weights[5], irrLocal, sumE, sumW);
+    ddgiAddProbe(ddgiSplitTile(6, base, states[6]), weights[6], irrLocal, sumE, sumW);
+    ddgiAddProbe(ddgiSplitTile(7, base, states[7]), weights[7], irrLocal, sumE, sumW);
 #else
-        weights[i] = ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), cellProbe, p, nh,
-                                     biased, alpha,
-                                     tile);
-#endif
-    }
-    for (int i = 0; i < 8; ++i) {
-#ifdef DDGI_SPARSE_TILES
-        ivec3 tile = ddgiTile(stateWs[i]);
-#else
-        ivec3 tile = ddgiDenseTile(min(base + ddgiCorner(i), ddgiLoopLast));
-#endif
-        hvec3 e = ddgiProbeIrradiance(tile, irrLocal);
-        sumE += weights[i] >= 0.0 ? weights[i] * e : vec3(0.0); // skipped: < 0
-        sumW += max(weights[i], 0.0);
-    }
-#else
-    for (int i = 0; i < 8; ++i) {
-        ivec3 off = ddgiCorner(i);
-        ivec3 tile;
-#ifdef DDGI_SPARSE_TILES
-        float stateW;
-        hfloat w = ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile, stateW);
-#else
-        hfloat w = ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile);
-#endif
-        hvec3 e = ddgiProbeIrradiance(tile, irrLocal);
-        sumE += w >= 0.0 ? w * e : vec3(0.0); // skipped: < 0 (a select, not a branch)
-        sumW += max(w, 0.0);
-    }
+    // The fused loop over corners 0..7, written out (ddgiFusedCorner says why).
+    ddgiFusedCorner(0, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
+    ddgiFusedCorner(1, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
+    ddgiFusedCorner(2, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
+    ddgiFusedCorner(3, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
+    ddgiFusedCorner(4, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
+    ddgiFusedCorner(5, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
+    ddgiFusedCorner(6, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
+    ddgiFusedCorner(7, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);
 #endif
 
     // 5. Normalise, then fade.

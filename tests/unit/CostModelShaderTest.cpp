@@ -133,6 +133,47 @@ ParsedVariant parse(const GiVariant& v) {
         rest += body.substr(0, size_t(m.position(0)));
         body = body.substr(end);
     }
+    // Loops written out (common_ddgi.glsl, ddgiFusedCorner says why): 8 consecutive statements
+    // that differ only in their corner, the first argument of a ddgi* call, 0..7 in order, are
+    // one loop whose fetches are those of one statement.
+    for (const char* fn : {"ddgiAddProbe", "ddgiFusedCorner", "ddgiSplitWeight", "ddgiSplitTile"})
+        helpers[fn] = fetchesIn(functionBody(src, fn), helpers);
+    static const std::regex cornerCall(R"(\bddgi\w+\s*\(\s*(\d)\s*,)");
+    static const std::regex cornerDigit(R"(\b[0-7]\b)");
+    std::string shape;
+    std::vector<std::string> group;
+    std::vector<int> groupCorners;
+    const auto flush = [&] {
+        if (group.size() == 8 && groupCorners == std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7}) {
+            p.loops.push_back(fetchesIn(group.front(), helpers));
+        } else {
+            EXPECT_TRUE(group.empty()) << "statements with corners 0..7 not a loop: " << group.front();
+            for (const std::string& st : group)
+                rest += st + ";";
+        }
+        group.clear();
+        groupCorners.clear();
+        shape.clear();
+    };
+    size_t from = 0;
+    for (size_t semi; (semi = body.find(';', from)) != std::string::npos; from = semi + 1) {
+        std::string statement = body.substr(from, semi - from);
+        const size_t first = statement.find_first_not_of(" \n\t");
+        statement = first == std::string::npos ? std::string() : statement.substr(first);
+        std::smatch c;
+        if (!std::regex_search(statement, c, cornerCall)) {
+            flush();
+            rest += statement + ";";
+            continue;
+        }
+        const std::string its = std::regex_replace(statement, cornerDigit, "K");
+        if (its != shape) flush();
+        shape = its;
+        group.push_back(statement);
+        groupCorners.push_back(std::stoi(c[1]));
+    }
+    flush();
+    body = body.substr(from);
     p.outsideLoops = fetchesIn(rest + body, helpers);
     // ddgiCorner: return ivec3(<x>, <y>, <z>) with components "i & 1" or "(i >> s) & 1".
     const std::string corner = functionBody(src, "ddgiCorner");
