@@ -43,6 +43,7 @@ struct GateArgs {
     JsonOption json;
     std::string baseline, against, cacheDir;
     bool quick = false, update = false, callgrind = false, noTiming = false;
+    bool keepProbes = false; // --update --keep-probes: measure with the committed probe data
     platform::PlatformOptions platform;
     GateSuiteArgs suite;
 };
@@ -73,9 +74,9 @@ struct GateProbes {
 
 // This machine's bake of the suite (now.bake), and the probe data every figure is measured
 // with (now.probes): the file committed beside the baseline, decompressed into the probe
-// cache, so that no counter depends on the CPU that baked (GateEnvironment.h). With --update,
-// or for a baseline that has no committed file yet, this machine's bake itself (--update then
-// commits it).
+// cache, so that no counter depends on the CPU that baked (GateEnvironment.h). With --update
+// (unless --keep-probes), or for a baseline that has no committed file yet, this machine's bake
+// itself (--update then commits it).
 GateProbes gateProbes(const GateArgs& a, const gate::GateSuite& s, const scene::Scene& scene,
                       gate::GateRecord& now) {
     const std::string cacheDir = a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir;
@@ -85,7 +86,7 @@ GateProbes gateProbes(const GateArgs& a, const gate::GateSuite& s, const scene::
     now.bake = probeIdentity(out.set, out.file);
     now.probes = now.bake;
     const std::string committed = gate::committedProbesPath(a.baseline);
-    if (a.update || !fs::exists(committed)) return out;
+    if ((a.update && !a.keepProbes) || !fs::exists(committed)) return out;
     const std::vector<unsigned char> gz = readFileBytes(committed);
     const std::uint64_t h = probes::fnv1a64(gz.data(), gz.size()); // its cache name
     char name[64];
@@ -293,7 +294,8 @@ void callgrindStage(const GateArgs& a, const std::string& probesFile, const gl::
 }
 
 // --update: the baseline rewritten from this run (callgrind counts of other toolchains kept),
-// with the probe data it was measured with committed beside it.
+// with the probe data it was measured with committed beside it (already there with
+// --keep-probes).
 void updateBaseline(const GateArgs& a, const std::optional<gate::GateRecord>& base,
                     const gate::GateRecord& now, const std::string& probesFile) {
     gate::GateRecord out = now;
@@ -302,9 +304,11 @@ void updateBaseline(const GateArgs& a, const std::optional<gate::GateRecord>& ba
         for (const gate::CallgrindRecord& c : base->callgrind)
             if (!(c.key == now.callgrind.front().key)) out.callgrind.push_back(c);
     const std::string committed = gate::committedProbesPath(a.baseline);
-    const std::vector<unsigned char> bytes = readFileBytes(probesFile);
-    const std::vector<unsigned char> gz = gzipCompress(bytes.data(), bytes.size());
-    writeFileAtomic(committed, gz.data(), gz.size());
+    if (!a.keepProbes) { // --keep-probes: measured with the committed file, left as it is
+        const std::vector<unsigned char> bytes = readFileBytes(probesFile);
+        const std::vector<unsigned char> gz = gzipCompress(bytes.data(), bytes.size());
+        writeFileAtomic(committed, gz.data(), gz.size());
+    }
     gate::writeGateRecord(a.baseline, out);
     std::cout << "updated " << a.baseline << " and " << committed
               << " (review `git diff` of it and commit it with the change that explains it)\n";
@@ -312,6 +316,12 @@ void updateBaseline(const GateArgs& a, const std::optional<gate::GateRecord>& ba
 
 int run(GateArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
+    if (a.keepProbes && !a.update)
+        throw Error("--keep-probes: only with --update (the gate always measures with the "
+                    "committed probe data)");
+    if (a.keepProbes && !fs::exists(gate::committedProbesPath(a.baseline)))
+        throw fileError(gate::committedProbesPath(a.baseline),
+                        "no committed probe data to keep (--keep-probes)");
     const std::optional<gate::GateRecord> base = loadBaseline(a);
     gate::GateRecord now;
     now.suite = resolveGateSuite(a.suite, a.update, base ? &base->suite : nullptr,
@@ -386,6 +396,10 @@ const RegisterCommand reg{
          cmd.add_flag("--update", a->update,
                       "Rewrite the baseline with this run's measurements (on purpose: review and "
                       "commit it); exit 0. With the suite options it creates or changes the suite");
+         cmd.add_flag("--keep-probes", a->keepProbes,
+                      "With --update: measure with the probe data committed beside the baseline "
+                      "and keep it, instead of this machine's bake (for a change that moves "
+                      "timing or instruction counts but not the bake)");
          cmd.add_option("--against", a->against,
                         "Time this binary against another probebench binary (same profiles, "
                         "interleaved rounds in two worker processes) instead of the "

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -90,6 +91,44 @@ TEST(GateCli, UpdateWritesABaselineThatTheNextRunPassesWithIdenticalCounters) {
     // Stable across runs: the second run measured exactly the baseline's counters.
     for (size_t i = 0; i < 3; ++i)
         EXPECT_EQ(out["measured"]["profiles"][i]["counters"], base["profiles"][i]["counters"]);
+}
+
+namespace {
+std::string fileBytes(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+} // namespace
+
+// --update --keep-probes re-records with the probe data committed beside the baseline, not this
+// machine's bake: a committed file that differs from the bake (here one baked with fewer rays)
+// stays byte for byte, and the baseline's `probes` names it while `bake` names the bake.
+TEST(GateCli, UpdateWithKeepProbesKeepsTheCommittedProbeData) {
+    const fs::path dir = outputDir();
+    const fs::path b = tinyBaseline(dir);
+    const fs::path committed = dir / "tiny.probes.gz";
+    auto k = runProbebench({"bake", "--scene", "cornell", "--volumes", "auto", "--rays", "32",
+                            "--out", (dir / "other.pbp").string()});
+    ASSERT_EQ(k.exitCode, 0) << k.output;
+    ASSERT_EQ(runCommand({"sh", "-c", "gzip -c '" + (dir / "other.pbp").string() + "' > '" +
+                                          committed.string() + "'"})
+                  .exitCode,
+              0);
+    const std::string other = fileBytes(committed);
+
+    auto r = runProbebench(gate(b, {"--update", "--keep-probes", "--no-timing"}));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fileBytes(committed) == other) << "--keep-probes rewrote the committed probe data";
+    const nlohmann::json kept = readJson(b);
+    EXPECT_NE(kept["probes"], kept["bake"]) << "measured with this machine's bake";
+    EXPECT_EQ(runProbebench(gate(b, {"--no-timing"})).exitCode, 0);
+
+    // Without it, --update commits this machine's bake.
+    r = runProbebench(gate(b, {"--update", "--no-timing"}));
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_FALSE(fileBytes(committed) == other) << "--update kept the committed probe data";
+    const nlohmann::json rebaked = readJson(b);
+    EXPECT_EQ(rebaked["probes"], rebaked["bake"]);
 }
 
 TEST(GateCli, AChangedCounterFailsUntilTheBaselineIsUpdated) {
@@ -289,6 +328,19 @@ TEST(GateCli, ErrorsAreOneLine) {
     r = runProbebench(gate(b, {"--width", "32", "--height", "32"}));
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_TRUE(firstLineIsTheError(r, "--width: only with --update (the suite is the baseline's)"))
+        << r.output;
+
+    r = runProbebench(gate(b, {"--keep-probes"}));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_TRUE(firstLineIsTheError(r, "--keep-probes: only with --update (the gate always "
+                                       "measures with the committed probe data)"))
+        << r.output;
+    const fs::path lone = dir / "lone.json";
+    fs::copy_file(b, lone, fs::copy_options::overwrite_existing);
+    r = runProbebench(gate(lone, {"--update", "--keep-probes"}));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_TRUE(firstLineIsTheError(r, (dir / "lone.probes.gz").string() +
+                                           ": no committed probe data to keep (--keep-probes)"))
         << r.output;
 
     r = runProbebench(gate(b, {"--against", (dir / "no-such-binary").string()}));
