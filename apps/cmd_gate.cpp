@@ -310,7 +310,8 @@ void updateBaseline(const GateArgs& a, const std::optional<gate::GateRecord>& ba
         writeFileAtomic(committed, gz.data(), gz.size());
     }
     gate::writeGateRecord(a.baseline, out);
-    std::cout << "updated " << a.baseline << " and " << committed
+    std::cout << "updated " << a.baseline << (a.keepProbes ? " (probe data kept: " : " and ")
+              << committed << (a.keepProbes ? ")" : "")
               << " (review `git diff` of it and commit it with the change that explains it)\n";
 }
 
