@@ -279,7 +279,8 @@ void ddgiAddProbe(ivec3 tile, hfloat w, vec2 irrLocal, inout hvec3 sumE, inout h
 // sums. ddgiSample calls it for i = 0..7 written out rather than in a `for`: NIR does not unroll
 // a loop this long, and llvmpipe then runs it as a loop, recomputing per iteration what the
 // unrolled code folds (each corner's offset and trilinear selects, the samplers' set-up):
-// written out, 19% fewer instructions per evaluation (bench/results/2026-11-25-fetch-floor.md).
+// written out, 27% fewer instructions per evaluation and GI / floor 2.17 -> 1.83 on an AMD EPYC
+// (bench/results/2026-11-29-p1-written-out-loops.md).
 // tests/unit/CostModelShaderTest.cpp reads these 8 calls as the fused loop.
 void ddgiFusedCorner(int i, ivec3 base, vec3 cellProbe, vec3 p, hvec3 nh, vec3 biased,
                      hvec3 alpha, vec2 irrLocal, inout hvec3 sumE, inout hfloat sumW) {
