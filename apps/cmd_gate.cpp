@@ -320,6 +320,11 @@ int run(GateArgs& a) {
     if (a.keepProbes && !a.update)
         throw Error("--keep-probes: only with --update (the gate always measures with the "
                     "committed probe data)");
+    for (const CLI::Option* o : a.suite.options) // the committed data is of the suite's bake
+        if (a.keepProbes && o->count() > 0 &&
+            (o->get_name() == "--scene" || o->get_name() == "--volumes"))
+            throw Error(o->get_name() + ": not with --keep-probes (another scene or other "
+                                        "volumes need their own bake)");
     if (a.keepProbes && !fs::exists(gate::committedProbesPath(a.baseline)))
         throw fileError(gate::committedProbesPath(a.baseline),
                         "no committed probe data to keep (--keep-probes)");

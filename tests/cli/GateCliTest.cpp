@@ -335,6 +335,11 @@ TEST(GateCli, ErrorsAreOneLine) {
     EXPECT_TRUE(firstLineIsTheError(r, "--keep-probes: only with --update (the gate always "
                                        "measures with the committed probe data)"))
         << r.output;
+    r = runProbebench(gate(b, {"--update", "--keep-probes", "--volumes", "auto-uniform"}));
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_TRUE(firstLineIsTheError(r, "--volumes: not with --keep-probes (another scene or other "
+                                       "volumes need their own bake)"))
+        << r.output;
     const fs::path lone = dir / "lone.json";
     fs::copy_file(b, lone, fs::copy_options::overwrite_existing);
     r = runProbebench(gate(lone, {"--update", "--keep-probes"}));
