@@ -275,6 +275,19 @@ void ddgiAddProbe(ivec3 tile, hfloat w, vec2 irrLocal, inout hvec3 sumE, inout h
     sumW += max(w, 0.0);
 }
 
+// Corner i's probe weight (ddgiProbeWeight; < 0 = skipped) and its tile. `stateW`: sparse sets,
+// the probe's state w (ddgiSplitTile decodes it again); dense sets, 0.
+hfloat ddgiCornerWeight(int i, ivec3 base, vec3 cellProbe, vec3 p, hvec3 nh, vec3 biased,
+                        hvec3 alpha, out ivec3 tile, out float stateW) {
+    ivec3 off = ddgiCorner(i);
+#ifdef DDGI_SPARSE_TILES
+    return ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile, stateW);
+#else
+    stateW = 0.0;
+    return ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile);
+#endif
+}
+
 // One corner of GI_LOOPS_FUSED's loop: probe i's weight and weighted irradiance added to the
 // sums. ddgiSample calls it for i = 0..7 written out rather than in a `for`: NIR does not unroll
 // a loop this long, and llvmpipe then runs it as a loop, recomputing per iteration what the
@@ -284,31 +297,18 @@ void ddgiAddProbe(ivec3 tile, hfloat w, vec2 irrLocal, inout hvec3 sumE, inout h
 // tests/unit/CostModelShaderTest.cpp reads these 8 calls as the fused loop.
 void ddgiFusedCorner(int i, ivec3 base, vec3 cellProbe, vec3 p, hvec3 nh, vec3 biased,
                      hvec3 alpha, vec2 irrLocal, inout hvec3 sumE, inout hfloat sumW) {
-    ivec3 off = ddgiCorner(i);
     ivec3 tile;
-#ifdef DDGI_SPARSE_TILES
     float stateW;
-    hfloat w = ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile, stateW);
-#else
-    hfloat w = ddgiProbeWeight(base + off, off, cellProbe, p, nh, biased, alpha, tile);
-#endif
+    hfloat w = ddgiCornerWeight(i, base, cellProbe, p, nh, biased, alpha, tile, stateW);
     ddgiAddProbe(tile, w, irrLocal, sumE, sumW);
 }
 
-// GI_LOOPS_SPLIT's first loop, corner i: probe i's weight (ddgiProbeWeight; < 0 = skipped).
-// `stateW`: sparse sets, the probe's state w, which ddgiSplitTile decodes again in the second
-// loop; dense sets, 0 (their tile is recomputed from the corner).
+// GI_LOOPS_SPLIT's first loop, corner i: ddgiCornerWeight without the tile, which the second
+// loop gets from `stateW` or the corner again (ddgiSplitTile).
 hfloat ddgiSplitWeight(int i, ivec3 base, vec3 cellProbe, vec3 p, hvec3 nh, vec3 biased,
                        hvec3 alpha, out float stateW) {
     ivec3 tile;
-#ifdef DDGI_SPARSE_TILES
-    return ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), cellProbe, p, nh, biased, alpha,
-                           tile, stateW);
-#else
-    stateW = 0.0;
-    return ddgiProbeWeight(base + ddgiCorner(i), ddgiCorner(i), cellProbe, p, nh, biased, alpha,
-                           tile);
-#endif
+    return ddgiCornerWeight(i, base, cellProbe, p, nh, biased, alpha, tile, stateW);
 }
 
 // GI_LOOPS_SPLIT's second loop: corner i's tile, from ddgiSplitWeight's `stateW` (sparse) or

@@ -136,7 +136,8 @@ ParsedVariant parse(const GiVariant& v) {
     // Loops written out (common_ddgi.glsl, ddgiFusedCorner says why): 8 consecutive statements
     // that differ only in their corner, the first argument of a ddgi* call, 0..7 in order, are
     // one loop whose fetches are those of one statement.
-    for (const char* fn : {"ddgiAddProbe", "ddgiFusedCorner", "ddgiSplitWeight", "ddgiSplitTile"})
+    for (const char* fn : {"ddgiAddProbe", "ddgiCornerWeight", "ddgiFusedCorner", "ddgiSplitWeight",
+                           "ddgiSplitTile"})
         helpers[fn] = fetchesIn(functionBody(src, fn), helpers);
     static const std::regex cornerCall(R"(\bddgi\w+\s*\(\s*(\d)\s*,)");
     static const std::regex cornerDigit(R"(\b[0-7]\b)");
