@@ -59,20 +59,23 @@ TEST(LatticeShiftSearch, FindsABowlsMinimumAndMovesEveryVolume) {
 }
 
 TEST(LatticeShiftSearch, GainsUnderTheMarginAreNotTaken) {
-    // 4% better half a cell along x: within the estimate's noise, so the lattice stays.
-    auto almostFlat = [&](const std::vector<ProbeVolume>& v) {
-        return std::abs(shiftOf(v).x - 0.4f) < 1e-3f ? 0.96 : 1.0;
+    // Half the margin better, 0.4 of a cell along x: within the estimate's noise, so the
+    // lattice stays.
+    auto betterAtXBy = [&](double gain) {
+        return [gain](const std::vector<ProbeVolume>& v) {
+            return std::abs(shiftOf(v).x - 0.4f) < 1e-3f ? 1.0 - gain : 1.0;
+        };
     };
     std::vector<ProbeVolume> v = nested();
-    const LatticeShift s = searchLatticeShift(v, kCell, almostFlat, fitsAll);
+    const LatticeShift s = searchLatticeShift(v, kCell, betterAtXBy(0.5 * kLatticeShiftMargin),
+                                              fitsAll);
     EXPECT_EQ(s.cells, glm::vec3(0.0f));
     EXPECT_EQ(v[0].center, nested()[0].center);
     EXPECT_EQ(s.errorAfter, s.errorBefore);
-    // 6% better is taken.
-    auto clearer = [&](const std::vector<ProbeVolume>& w) {
-        return std::abs(shiftOf(w).x - 0.4f) < 1e-3f ? 0.94 : 1.0;
-    };
-    EXPECT_NEAR(searchLatticeShift(v, kCell, clearer, fitsAll).cells.x, 0.4f, 1e-5f);
+    // 1.5 times the margin better is taken.
+    EXPECT_NEAR(searchLatticeShift(v, kCell, betterAtXBy(1.5 * kLatticeShiftMargin), fitsAll)
+                    .cells.x,
+                0.4f, 1e-5f);
 }
 
 TEST(LatticeShiftSearch, ShiftsThatDoNotFitAreNeverTried) {
