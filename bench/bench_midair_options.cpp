@@ -27,16 +27,21 @@
 //     search): probes stored with and without it, and what an L2 SH or an 8x8 irradiance tile
 //     per absent probe would add in bytes.
 // --sh-only: the kept fill, the own-irradiance rows and the costs only.
+// --slack: only irradiance-only tiles chosen after the bake for the left-out probes whose
+// stand-in is furthest off, as many as a budget's slack buys (slackVariants).
 //
-// Usage: bench_midair_options [--max-probes N] [--rays R] [--sh-only] [SCENE...]
+// Usage: bench_midair_options [--max-probes N] [--rays R] [--sh-only | --slack] [SCENE...]
 //        (default: cornell rooms courtyard)
+#include "core/Error.h"
 #include "probes/AbsentProbeFill.h"
 #include "probes/Octahedral.h"
 #include "probes/ProbeSampler.h"
 #include "probes/ShIrradiance.h"
+#include "probes/StorageFormat.h"
 #include "probes/bake/Baker.h"
 #include "probes/bake/MidAirSamples.h"
 #include "probes/bake/RayScene.h"
+#include "probes/placement/AutoPlacement.h"
 #include "probes/placement/AutoVolume.h"
 #include "probes/store/SparseLayout.h"
 #include "probes/store/SparseStorage.h"
@@ -54,6 +59,11 @@ namespace {
 int gMaxProbes = 1500; // the grid of tests/unit/MidAirLookupTest.cpp
 int gRays = 64;
 bool gShOnly = false; // --sh-only: the kept fill, the own-irradiance rows and the costs
+bool gSlack = false;  // --slack: irradiance-only tiles chosen after the bake, only
+// --default-placement: the volume `bake --volumes auto` places by default (sparse, lattice
+// search) instead of the test's grid; its budget slack is reported (one volume only).
+bool gDefaultPlacement = false;
+double gPlacementSlack = -1.0; // of the last default placement: 1 - bytes / budget
 } // namespace
 
 namespace {
@@ -337,7 +347,18 @@ DenseAndSparse bakeDenseAndSparse(const char* name) {
     DenseAndSparse b;
     b.scene = pb::scene::makeBuiltinScene(name);
     BakeRequest& r = b.request;
-    r.volumes.push_back(fitAutoVolume(staticBakeBounds(b.scene), 0.0f, gMaxProbes).volume);
+    if (gDefaultPlacement) {
+        AutoPlacementRequest req;
+        req.sparse = true;
+        const AutoPlacementResult a = placeAutoVolumes(b.scene, req);
+        if (a.volumes.size() != 1)
+            throw pb::Error(std::string(name) + ": the default placement has " +
+                            std::to_string(a.volumes.size()) + " volumes (one only here)");
+        r.volumes = a.volumes;
+        gPlacementSlack = 1.0 - double(a.bytes) / a.budgetBytes;
+    } else {
+        r.volumes.push_back(fitAutoVolume(staticBakeBounds(b.scene), 0.0f, gMaxProbes).volume);
+    }
     r.scenarios = resolveScenarios({"day"}, {}, b.scene);
     r.settings.raysPerProbe = gRays;
     r.settings.bounces = 2;
@@ -603,7 +624,6 @@ void run(const char* name) {
 
 } // namespace
 
-#include "probes/placement/AutoPlacement.h"
 namespace {
 std::vector<std::uint8_t> grownKeep(const ProbeVolume& v, bool root,
                                     const std::vector<WorldTriangle>& tris, int grow) {
@@ -753,6 +773,99 @@ void fillVariants(const char* name) {
             sparse.storedCount(), dense.probeCount());
     }
 }
+
+// Irradiance-only tiles chosen after the bake (--slack; bench/results/
+// 2026-11-29-irradiance-only-half-tiles.md): the probes sparse storage leaves out (valid,
+// outside geometry) ranked by how far their stand-in's light is from their own (the largest
+// relative luminance difference over the 6 axis directions, floored as the lookups are); the
+// first K keep their irradiance tile (irradiance-only, visibility weight 1), the rest read
+// their stand-in. Per scene: the mid-air lookups' mean and worst error against the dense
+// lookup (midAirLookup(): no fade, as the test) for K = 0, for the K that 1%, 3% and 12% of
+// budget slack buy (512 B per tile, slack = what the placement leaves of its budget), and the
+// smallest K found (bisection) that brings the worst to <= 15%, with what it costs in bytes.
+void slackVariants(const char* name) {
+    DenseAndSparse b = bakeDenseAndSparse(name);
+    const ProbeVolume& v = b.dense.volumes[0];
+    const RayScene rs(b.scene);
+    const ProbeSampler ds(b.dense, 0), ss(b.sparse, 0);
+    const ChangedQueries cq = changedQueries(rs, b.dense, ds, ss);
+    std::vector<float> dense;
+    for (const Q& q : cq.queries)
+        dense.push_back(lum(ds.sample(q.p, q.n, q.n, midAirLookup()).irradiance));
+    const std::vector<int> src =
+        fillSources(v, b.sparse.states[0], b.sparse.settings.backfaceThreshold);
+    const glm::mat3 toLocal = glm::transpose(v.localToWorldRotation());
+    std::vector<std::pair<float, int>> ranked;
+    for (int i = 0; i < v.probeCount(); ++i) {
+        if (!b.irradianceOnly.states[0][size_t(i)].irradianceOnly) continue;
+        const int from = src.empty() ? -1 : src[size_t(i)];
+        float err = 0.0f;
+        for (const glm::vec3& n : kAxes) {
+            const float own = lum(tileIrradiance(b.dense, i, toLocal * n));
+            const float in = from >= 0 ? lum(tileIrradiance(b.dense, from, toLocal * n)) : 0.0f;
+            err = std::max(err, std::abs(in - own) / std::max(own, cq.floor));
+        }
+        ranked.push_back({err, i});
+    }
+    std::sort(ranked.begin(), ranked.end(),
+              [](const auto& a, const auto& c) { return a.first > c.first || (a.first == c.first && a.second < c.second); });
+    struct Err {
+        double mean = 0, worst = 0;
+    };
+    auto withTiles = [&](std::size_t k) {
+        ProbeSet h = b.irradianceOnly;
+        for (std::size_t r = k; r < ranked.size(); ++r) {
+            ProbeState& st = h.states[0][size_t(ranked[r].second)];
+            st.irradianceOnly = false;
+            st.valid = false;
+        }
+        const ProbeSampler hs(h, 0);
+        Err e;
+        for (std::size_t j = 0; j < cq.queries.size(); ++j) {
+            const Q& q = cq.queries[j];
+            const double d =
+                std::abs(lum(hs.sample(q.p, q.n, q.n, midAirLookup()).irradiance) - dense[j]) /
+                std::max(dense[j], cq.floor);
+            e.mean += d;
+            e.worst = std::max(e.worst, d);
+        }
+        e.mean /= double(std::max<std::size_t>(cq.queries.size(), 1));
+        return e;
+    };
+    const double storedBytes = double(b.sparse.storedCount()) *
+                                   double(bytesPerProbe(StorageFormat::Rgba16f).total()) +
+                               16.0 * double(v.probeCount());
+    const double tileBytes = double(bytesPerProbe(StorageFormat::Rgba16f).irradiance);
+    std::printf("[ slack ] %s: %zu stored, %zu left out outside geometry, %zu mid-air lookups "
+                "changed; stored %.0f KiB\n",
+                name, b.sparse.storedCount(), ranked.size(), cq.queries.size(), storedBytes / 1024);
+    auto row = [&](const char* label, std::size_t k) {
+        const Err e = withTiles(k);
+        std::printf("| %s | %s | %zu tiles (%.1f%% of the stored bytes) | mean %.4f | worst %.4f |\n",
+                    name, label, k, 100.0 * double(k) * tileBytes / storedBytes, e.mean, e.worst);
+    };
+    row("stand-ins only", 0);
+    std::vector<double> slacks = {0.01, 0.03, 0.12};
+    if (gDefaultPlacement) slacks.push_back(gPlacementSlack);
+    for (double slack : slacks) {
+        char label[48];
+        std::snprintf(label, sizeof label, "slack %.1f%%", 100 * slack);
+        row(label, std::min(ranked.size(),
+                            std::size_t(storedBytes * slack / (1 - slack) / tileBytes)));
+    }
+    std::size_t lo = 0, hi = ranked.size();
+    if (withTiles(hi).worst <= 0.15) {
+        while (lo < hi) {
+            const std::size_t mid = (lo + hi) / 2;
+            if (withTiles(mid).worst <= 0.15)
+                hi = mid;
+            else
+                lo = mid + 1;
+        }
+        row("smallest K with worst <= 15%", hi);
+    }
+    row("every left-out probe", ranked.size());
+}
 } // namespace
 
 int main(int argc, char** argv) {
@@ -765,6 +878,10 @@ int main(int argc, char** argv) {
             gRays = std::atoi(argv[++i]);
         else if (a == "--sh-only")
             gShOnly = true;
+        else if (a == "--slack")
+            gSlack = true;
+        else if (a == "--default-placement")
+            gDefaultPlacement = true;
         else if (a.rfind("--", 0) == 0) {
             std::fprintf(stderr, "bench_midair_options: unknown option %s\n", a.c_str());
             return 2;
@@ -774,6 +891,10 @@ int main(int argc, char** argv) {
     if (scenes.empty()) scenes = {"cornell", "rooms", "courtyard"};
     try {
         for (const std::string& s : scenes) {
+            if (gSlack) {
+                slackVariants(s.c_str());
+                continue;
+            }
             run(s.c_str());
             if (!gShOnly) fillVariants(s.c_str());
             placementCost(s.c_str());
