@@ -30,7 +30,8 @@
 // --slack: only irradiance-only tiles chosen after the bake for the left-out probes whose
 // stand-in is furthest off, as many as a budget's slack buys (slackVariants).
 //
-// Usage: bench_midair_options [--max-probes N] [--rays R] [--sh-only | --slack] [SCENE...]
+// Usage: bench_midair_options [--max-probes N] [--rays R] [--sh-only | --slack]
+//                             [--default-placement] [SCENE...]
 //        (default: cornell rooms courtyard)
 #include "core/Error.h"
 #include "probes/AbsentProbeFill.h"
@@ -807,8 +808,9 @@ void slackVariants(const char* name) {
         }
         ranked.push_back({err, i});
     }
-    std::sort(ranked.begin(), ranked.end(),
-              [](const auto& a, const auto& c) { return a.first > c.first || (a.first == c.first && a.second < c.second); });
+    std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& c) {
+        return a.first > c.first || (a.first == c.first && a.second < c.second);
+    });
     struct Err {
         double mean = 0, worst = 0;
     };
@@ -832,17 +834,18 @@ void slackVariants(const char* name) {
         e.mean /= double(std::max<std::size_t>(cq.queries.size(), 1));
         return e;
     };
-    const double storedBytes = double(b.sparse.storedCount()) *
-                                   double(bytesPerProbe(StorageFormat::Rgba16f).total()) +
-                               16.0 * double(v.probeCount());
+    const double storedBytes =
+        double(b.sparse.storedCount()) * double(bytesPerProbe(StorageFormat::Rgba16f).total()) +
+        16.0 * double(v.probeCount());
     const double tileBytes = double(bytesPerProbe(StorageFormat::Rgba16f).irradiance);
     std::printf("[ slack ] %s: %zu stored, %zu left out outside geometry, %zu mid-air lookups "
                 "changed; stored %.0f KiB\n",
                 name, b.sparse.storedCount(), ranked.size(), cq.queries.size(), storedBytes / 1024);
     auto row = [&](const char* label, std::size_t k) {
         const Err e = withTiles(k);
-        std::printf("| %s | %s | %zu tiles (%.1f%% of the stored bytes) | mean %.4f | worst %.4f |\n",
-                    name, label, k, 100.0 * double(k) * tileBytes / storedBytes, e.mean, e.worst);
+        std::printf(
+            "| %s | %s | %zu tiles (%.1f%% of the stored bytes) | mean %.4f | worst %.4f |\n", name,
+            label, k, 100.0 * double(k) * tileBytes / storedBytes, e.mean, e.worst);
     };
     row("stand-ins only", 0);
     std::vector<double> slacks = {0.01, 0.03, 0.12};
@@ -850,8 +853,8 @@ void slackVariants(const char* name) {
     for (double slack : slacks) {
         char label[48];
         std::snprintf(label, sizeof label, "slack %.1f%%", 100 * slack);
-        row(label, std::min(ranked.size(),
-                            std::size_t(storedBytes * slack / (1 - slack) / tileBytes)));
+        row(label,
+            std::min(ranked.size(), std::size_t(storedBytes * slack / (1 - slack) / tileBytes)));
     }
     std::size_t lo = 0, hi = ranked.size();
     if (withTiles(hi).worst <= 0.15) {
