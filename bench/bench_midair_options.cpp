@@ -44,6 +44,7 @@
 #include "probes/bake/RayScene.h"
 #include "probes/placement/AutoPlacement.h"
 #include "probes/placement/AutoVolume.h"
+#include "probes/store/MemoryReport.h"
 #include "probes/store/SparseLayout.h"
 #include "probes/store/SparseStorage.h"
 #include "scene/SceneLoader.h"
@@ -64,7 +65,6 @@ bool gSlack = false;  // --slack: irradiance-only tiles chosen after the bake, o
 // --default-placement: the volume `bake --volumes auto` places by default (sparse, lattice
 // search) instead of the test's grid; its budget slack is reported (one volume only).
 bool gDefaultPlacement = false;
-double gPlacementSlack = -1.0; // of the last default placement: 1 - bytes / budget
 } // namespace
 
 namespace {
@@ -342,6 +342,7 @@ struct DenseAndSparse {
     BakeRequest request;
     std::vector<WorldTriangle> tris;
     ProbeSet dense, sparse, irradianceOnly;
+    double placementSlack = -1.0; // --default-placement: 1 - the placement's bytes / its budget
 };
 
 DenseAndSparse bakeDenseAndSparse(const char* name) {
@@ -356,7 +357,7 @@ DenseAndSparse bakeDenseAndSparse(const char* name) {
             throw pb::Error(std::string(name) + ": the default placement has " +
                             std::to_string(a.volumes.size()) + " volumes (one only here)");
         r.volumes = a.volumes;
-        gPlacementSlack = 1.0 - double(a.bytes) / a.budgetBytes;
+        b.placementSlack = 1.0 - double(a.bytes) / a.budgetBytes;
     } else {
         r.volumes.push_back(fitAutoVolume(staticBakeBounds(b.scene), 0.0f, gMaxProbes).volume);
     }
@@ -834,10 +835,9 @@ void slackVariants(const char* name) {
         e.mean /= double(std::max<std::size_t>(cq.queries.size(), 1));
         return e;
     };
-    const double storedBytes =
-        double(b.sparse.storedCount()) * double(bytesPerProbe(StorageFormat::Rgba16f).total()) +
-        16.0 * double(v.probeCount());
-    const double tileBytes = double(bytesPerProbe(StorageFormat::Rgba16f).irradiance);
+    // As the placement's budget counts them (packed tiles and the indirection).
+    const double storedBytes = double(memoryReport(b.sparse).total.storedTotal());
+    const double tileBytes = double(bytesPerProbe(b.sparse.format()).irradiance);
     std::printf("[ slack ] %s: %zu stored, %zu left out outside geometry, %zu mid-air lookups "
                 "changed; stored %.0f KiB\n",
                 name, b.sparse.storedCount(), ranked.size(), cq.queries.size(), storedBytes / 1024);
@@ -849,7 +849,7 @@ void slackVariants(const char* name) {
     };
     row("stand-ins only", 0);
     std::vector<double> slacks = {0.01, 0.03, 0.12};
-    if (gDefaultPlacement) slacks.push_back(gPlacementSlack);
+    if (gDefaultPlacement) slacks.push_back(b.placementSlack);
     for (double slack : slacks) {
         char label[48];
         std::snprintf(label, sizeof label, "slack %.1f%%", 100 * slack);
