@@ -8,6 +8,7 @@
 #include "probes/placement/PlacementKey.h"
 #include "probes/bake/Baker.h"
 #include "probes/store/MemoryReport.h"
+#include "probes/AbsentProbeFill.h"
 #include "probes/ProbeCounts.h"
 #include "probes/store/ProbeFile.h"
 #include "probes/store/ProbeFileParts.h"
@@ -51,7 +52,9 @@ struct BakeArgs {
     JsonOption json;
     bool force = false, noRelocate = false, sparse = false, dense = false;
     bool noLatticeSearch = false;
-    bool freeSpaceIrradiance = false; // --free-space-irradiance (issue 18)
+    std::string freeSpace = "ranked";   // --free-space (issue 18)
+    bool freeSpaceIrradiance = false;   // --free-space-irradiance: --free-space all
+    const CLI::Option *freeSpaceOption = nullptr, *freeSpaceIrradianceOption = nullptr;
     float backfaceThreshold = 0.25f;
     std::string split, part; // --split scenario --part I/N: one part of a split bake
 };
@@ -257,6 +260,15 @@ std::string placementText(const PlacementSummary& summary) {
     return s.str();
 }
 
+// What the probes sparse storage leaves out keep (--free-space, --free-space-irradiance).
+FreeSpace freeSpaceOf(const BakeArgs& a) {
+    if (a.freeSpaceIrradiance) return FreeSpace::Irradiance;
+    FreeSpace f = FreeSpace::Ranked;
+    if (!parseFreeSpace(a.freeSpace, f))
+        throw Error("--free-space: '" + a.freeSpace + "' is not one of stand-ins, ranked, all");
+    return f;
+}
+
 // The automatic placement request of these options (its key decides the placement cache).
 AutoPlacementRequest autoPlacementRequest(const BakeArgs& a, const scene::Scene& s,
                                           AutoMode mode) {
@@ -269,7 +281,7 @@ AutoPlacementRequest autoPlacementRequest(const BakeArgs& a, const scene::Scene&
     req.budgetBytes = a.budgetMib * 1024.0 * 1024.0;
     req.format = parseStorageFormat(a.format);
     req.sparse = storesSparse(a);
-    req.freeSpaceIrradiance = req.sparse && a.freeSpaceIrradiance;
+    req.freeSpace = req.sparse ? freeSpaceOf(a) : FreeSpace::StandIns;
     // The lattice search bakes trials as this bake will be baked, under its first scenario.
     req.latticeSearch = !a.noLatticeSearch;
     req.lighting = resolveScenarios(a.scenarios, {}, s).front();
@@ -292,7 +304,9 @@ void setBakeSettings(const BakeArgs& a, const scene::Scene& s,
     r.settings.backfaceThreshold = a.backfaceThreshold;
     r.threads = a.threads;
     r.sparse = storesSparse(a);
-    r.freeSpace = r.sparse && a.freeSpaceIrradiance ? FreeSpace::Irradiance : FreeSpace::StandIns;
+    r.freeSpace = r.sparse ? freeSpaceOf(a) : FreeSpace::StandIns;
+    // Ranked tiles fill the budget; automatic placement sets its own (the default one too).
+    r.freeSpaceBudgetBytes = a.budgetMib * 1024.0 * 1024.0;
 }
 
 // The number of scenarios the request will hold, without placing: a volumes file may add its
@@ -337,6 +351,8 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
                         std::to_string(a.budgetMib));
     }
     setBakeSettings(a, s, fileScenarios, r);
+    // Automatic placement's budget, the default one included, is what the tiles fill.
+    if (placement.result.budgetBytes > 0.0) r.freeSpaceBudgetBytes = placement.result.budgetBytes;
     return r;
 }
 
@@ -360,6 +376,7 @@ std::optional<std::pair<ProbeSet, nlohmann::json>> upToDateByPlacementCache(
     BakeRequest r;
     r.volumes = set->volumes;
     setBakeSettings(a, s, {}, r);
+    r.freeSpaceBudgetBytes = cached->placement.value("budget_bytes", 0.0);
     if (set->inputHash != cached->inputHash || bakeInputHash(s, r) != set->inputHash)
         return std::nullopt;
     return std::make_pair(std::move(*set), cached->placement);
@@ -392,16 +409,19 @@ nlohmann::json volumesJson(const ProbeSet& set, const std::vector<ProbeCounts>& 
 }
 
 // "probes: N in V volume(s), ..." : stored / absent / invalid (ProbeCounts.h).
-// `irradianceOnly`: the absent probes kept their irradiance (--free-space-irradiance).
-std::string probeCountsText(const ProbeCounts& c, std::size_t volumes, bool irradianceOnly) {
+// `irradianceOnly`: how many absent probes kept their irradiance (--free-space).
+std::string probeCountsText(const ProbeCounts& c, std::size_t volumes, std::size_t irradianceOnly) {
     std::ostringstream s;
     s << "probes: " << c.probes << " in " << volumes << " volume(s), ";
     if (c.notStored() == 0)
         s << "all stored, " << *c.invalid << " invalid (inside geometry)";
     else if (c.absent && c.invalid)
         s << c.stored << " stored, " << *c.absent
-          << (irradianceOnly ? " absent (no surface nearby: irradiance only, no visibility), "
-                             : " absent (not stored: no surface nearby), ")
+          << (irradianceOnly == 0 ? " absent (not stored: no surface nearby), "
+              : irradianceOnly == *c.absent
+                  ? " absent (no surface nearby: irradiance only, no visibility), "
+                  : " absent (no surface nearby; " + std::to_string(irradianceOnly) +
+                        " of them keep their irradiance, no visibility), ")
           << *c.invalid << " invalid (inside geometry, not stored)";
     else
         s << c.stored << " stored, " << c.notStored() << " not stored (absent or invalid: a "
@@ -434,6 +454,22 @@ std::size_t irradianceOnlyBytes(const ProbeSet& set, const MemoryReport& with) {
                                                 without.total.stored.total());
 }
 
+// The end of the summary's "free space:" line: what the absent probes keep (--free-space).
+std::string freeSpaceText(std::size_t tiles, const std::string& tileBytes, std::size_t standIns,
+                          const BakeStats* st) {
+    if (tiles == 0) return "absent probes are read as their nearest stored one";
+    std::ostringstream s;
+    s << tiles << " absent probes keep their irradiance (" << tileBytes << ", no visibility)";
+    if (standIns == 0) return s.str();
+    s << ": the ones whose nearest stored probe is furthest from their own light; the other "
+      << standIns << " are read as it";
+    if (st && st->freeSpaceCandidates > 0) {
+        s.precision(3);
+        s << " (largest difference left " << 100.0 * st->freeSpaceWorstLeft << "%)";
+    }
+    return s.str();
+}
+
 // `freeSpace`: the stored probes only the free-space lattice keeps (freeSpaceOnlyProbes), the
 // cost of lighting the air between surfaces (issue 18), with the irradiance-only probes.
 void printSummary(const BakeArgs& a, const PlacementSummary& placement, const ProbeSet& set,
@@ -447,6 +483,11 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
     MemoryReport mem = memoryReport(set);
     const std::size_t freeSpaceBytes = freeSpace * bytesPerProbe(set.format()).total();
     const std::size_t irradianceOnly = irradianceOnlyBytes(set, mem);
+    // Absent probes lookups read their nearest stored probe for.
+    std::size_t standIns = 0;
+    for (const auto& states : set.states)
+        for (const ProbeState& p : states)
+            standIns += fillable(p, set.settings.backfaceThreshold) ? 1 : 0;
     const std::vector<ProbeCounts> counts =
         volumeProbeCounts(set, st ? &st->invalidPerVolume : nullptr);
     const ProbeCounts total = totalProbeCounts(counts);
@@ -471,7 +512,12 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
                                {"lattice_bytes", freeSpaceBytes},
                                {"lattice_step", kFreeSpaceLatticeStep},
                                {"irradiance_only_probes", mem.total.irradianceOnlyProbes},
-                               {"irradiance_only_bytes", irradianceOnly}};
+                               {"irradiance_only_bytes", irradianceOnly},
+                               {"stand_in_probes", standIns}};
+        if (st && st->freeSpaceCandidates > 0) {
+            j["free_space"]["tile_candidates"] = st->freeSpaceCandidates;
+            j["free_space"]["worst_stand_in_difference"] = st->freeSpaceWorstLeft;
+        }
         nlohmann::json sc = nlohmann::json::array();
         nlohmann::json scales = nlohmann::json::object();
         for (std::size_t i = 0; i < set.scenarios.size(); ++i) {
@@ -518,7 +564,7 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
         return;
     }
     if (upToDate) std::cout << a.out << ": up to date (input hash matches; --force re-bakes)\n";
-    std::cout << probeCountsText(total, set.volumes.size(), mem.total.irradianceOnlyProbes > 0);
+    std::cout << probeCountsText(total, set.volumes.size(), mem.total.irradianceOnlyProbes);
     if (st) std::cout << ", " << st->relocatedProbes << " relocated";
     std::cout << "\n";
     if (st) {
@@ -571,11 +617,9 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
                   << "free space: " << freeSpace << " of the stored probes ("
                   << formatBytes(freeSpaceBytes) << ") are kept only as the free-space lattice "
                   << "(every " << kFreeSpaceLatticeStep << "nd probe per axis); "
-                  << (mem.total.irradianceOnlyProbes
-                          ? std::to_string(mem.total.irradianceOnlyProbes) +
-                                " absent probes keep their irradiance (" +
-                                formatBytes(irradianceOnly) + ", no visibility)\n"
-                          : std::string("absent probes are read as their nearest stored one\n"));
+                  << freeSpaceText(mem.total.irradianceOnlyProbes, formatBytes(irradianceOnly),
+                                   standIns, st)
+                  << "\n";
     else
         std::cout << "sparse-storage candidates: " << mem.total.sparse.far
                   << " probe(s) far from every surface, " << mem.total.sparse.invalid
@@ -591,9 +635,14 @@ int run(const BakeArgs& a) {
     if (!(a.budgetMib >= 0.0) || !std::isfinite(a.budgetMib))
         throw Error("--probe-budget-mib: must be a positive number");
     if (a.sparse && a.dense) throw Error("--dense: excludes --sparse (pick one storage)");
-    if (a.freeSpaceIrradiance && !storesSparse(a))
-        throw Error("--free-space-irradiance: needs sparse storage (--volumes auto without "
-                    "--dense, or --sparse)");
+    for (const CLI::Option* o : {a.freeSpaceOption, a.freeSpaceIrradianceOption})
+        if (o && o->count() > 0 && !storesSparse(a))
+            throw Error(o->get_name() + ": needs sparse storage (--volumes auto without "
+                        "--dense, or --sparse)");
+    if (a.freeSpaceIrradiance && a.freeSpaceOption && a.freeSpaceOption->count() > 0 &&
+        a.freeSpace != "all")
+        throw Error("--free-space-irradiance: is --free-space all, not " + a.freeSpace);
+    if (storesSparse(a)) freeSpaceOf(a); // a bad name is refused before the placement runs
     AutoMode mode = AutoMode::Uniform;
     const bool adaptive = parseAutoMode(a.volumes, mode) && mode == AutoMode::Adaptive;
     for (const CLI::Option* o : {a.levelsOption, a.childrenOption})
@@ -781,13 +830,20 @@ const RegisterCommand reg{{
                      "lit); --probe-budget-mib then counts "
                      "only what is stored, so auto placement fits a finer spacing. The default "
                      "for --volumes auto; for auto-uniform and volumes files add it");
-        cmd.add_flag("--free-space-irradiance", a->freeSpaceIrradiance,
-                     "With sparse storage: the valid probes it leaves out keep their irradiance "
-                     "tile (a third of a probe's bytes, no visibility) instead of being read as "
-                     "their nearest stored probe, so a point in the air gets the dense bake's "
-                     "light (within 0.1% on the built-in scenes, against up to 147% off); the "
-                     "budget counts those tiles, so auto placement picks a coarser spacing "
-                     "(bench/README.md \"Mid-air options\")");
+        a->freeSpaceOption =
+            cmd.add_option(
+                   "--free-space", a->freeSpace,
+                   "With sparse storage, what the valid probes it leaves out (no surface "
+                   "nearby) keep. ranked: the ones whose stand-in (the nearest stored probe, "
+                   "which lookups read instead) is furthest from their own light keep their "
+                   "irradiance tile (a third of a probe's bytes, no visibility), as many as "
+                   "the memory budget allows: auto placement leaves at least 5% of its budget "
+                   "to them (without a budget they add 5% of the whole). stand-ins: none do. "
+                   "all: every one does, and the budget counts them all, so auto placement "
+                   "picks a coarser spacing (bench/README.md \"Mid-air options\")")
+                ->capture_default_str();
+        a->freeSpaceIrradianceOption = cmd.add_flag(
+            "--free-space-irradiance", a->freeSpaceIrradiance, "Same as --free-space all");
         cmd.add_flag("--dense", a->dense,
                      "Dense storage: store every grid probe (the default for auto-uniform and "
                      "volumes files; with --volumes auto it turns sparse storage off)");

@@ -44,6 +44,7 @@
 #include "probes/bake/RayScene.h"
 #include "probes/placement/AutoPlacement.h"
 #include "probes/placement/AutoVolume.h"
+#include "probes/store/FreeSpaceTiles.h"
 #include "probes/store/MemoryReport.h"
 #include "probes/store/SparseLayout.h"
 #include "probes/store/SparseStorage.h"
@@ -336,7 +337,7 @@ ChangedQueries changedQueries(const RayScene& rs, const ProbeSet& dense, const P
 // The built-in scene's dense bake of one root volume over its static bounds, and the same set
 // stored sparse: `sparse` as a default sparse bake of that grid gives it (the probes left out
 // keep nothing and are read as stand-ins: the storage every option below is weighed against),
-// `irradianceOnly` as `bake --free-space-irradiance` does (they keep their irradiance).
+// `irradianceOnly` as `bake --free-space all` does (they keep their irradiance).
 struct DenseAndSparse {
     pb::scene::Scene scene;
     BakeRequest request;
@@ -352,6 +353,7 @@ DenseAndSparse bakeDenseAndSparse(const char* name) {
     if (gDefaultPlacement) {
         AutoPlacementRequest req;
         req.sparse = true;
+        req.freeSpace = FreeSpace::Ranked; // as `bake` places: the slack includes the tiles' share
         const AutoPlacementResult a = placeAutoVolumes(b.scene, req);
         if (a.volumes.size() != 1)
             throw pb::Error(std::string(name) + ": the default placement has " +
@@ -437,12 +439,12 @@ void run(const char* name) {
     const std::size_t N = dense.probeCount();
     std::printf("| option | scene | stored / grid | lookups | mean | p90 | p99 | worst | |\n");
     stats(
-        name, "default: lattice + nearest", changed, floor,
+        name, "stand-ins: lattice + nearest", changed, floor,
         [&](const Q& q) { return ss.sample(q.p, q.n, q.n); }, sparse.storedCount(), N);
     {
         const ProbeSampler is(b.irradianceOnly, 0);
         stats(
-            name, "--free-space-irradiance: lattice + irradiance-only", changed, floor,
+            name, "--free-space all: lattice + irradiance-only", changed, floor,
             [&](const Q& q) { return is.sample(q.p, q.n, q.n); }, sparse.storedCount(), N);
     }
 
@@ -778,9 +780,8 @@ void fillVariants(const char* name) {
 
 // Irradiance-only tiles chosen after the bake (--slack; bench/results/
 // 2026-11-29-irradiance-only-half-tiles.md): the probes sparse storage leaves out (valid,
-// outside geometry) ranked by how far their stand-in's light is from their own (the largest
-// relative luminance difference over the 6 axis directions, floored as the lookups are); the
-// first K keep their irradiance tile (irradiance-only, visibility weight 1), the rest read
+// outside geometry) ranked by how far their stand-in's light is from their own, as the bake's
+// default free space ranks them (FreeSpaceTiles.h standInErrors); the first K keep their irradiance tile (irradiance-only, visibility weight 1), the rest read
 // their stand-in. Per scene: the mid-air lookups' mean and worst error against the dense
 // lookup (midAirLookup(): no fade, as the test) for K = 0, for the K that 1%, 3% and 12% of
 // budget slack buy (512 B per tile, slack = what the placement leaves of its budget), and the
@@ -794,21 +795,13 @@ void slackVariants(const char* name) {
     std::vector<float> dense;
     for (const Q& q : cq.queries)
         dense.push_back(lum(ds.sample(q.p, q.n, q.n, midAirLookup()).irradiance));
-    const std::vector<int> src =
-        fillSources(v, b.sparse.states[0], b.sparse.settings.backfaceThreshold);
-    const glm::mat3 toLocal = glm::transpose(v.localToWorldRotation());
+    // The bake's own score (FreeSpaceTiles.h standInErrors).
+    const std::vector<std::vector<float>> scores =
+        standInErrors(b.dense, {sparseKeptProbes(v, true, b.tris)});
     std::vector<std::pair<float, int>> ranked;
-    for (int i = 0; i < v.probeCount(); ++i) {
-        if (!b.irradianceOnly.states[0][size_t(i)].irradianceOnly) continue;
-        const int from = src.empty() ? -1 : src[size_t(i)];
-        float err = 0.0f;
-        for (const glm::vec3& n : kAxes) {
-            const float own = lum(tileIrradiance(b.dense, i, toLocal * n));
-            const float in = from >= 0 ? lum(tileIrradiance(b.dense, from, toLocal * n)) : 0.0f;
-            err = std::max(err, std::abs(in - own) / std::max(own, cq.floor));
-        }
-        ranked.push_back({err, i});
-    }
+    for (int i = 0; i < v.probeCount(); ++i)
+        if (b.irradianceOnly.states[0][size_t(i)].irradianceOnly)
+            ranked.push_back({scores[0][size_t(i)], i});
     std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& c) {
         return a.first > c.first || (a.first == c.first && a.second < c.second);
     });

@@ -12,7 +12,9 @@
 //              memory;
 //   uniform/2 sparse, adaptive: the same two stored sparse (`--volumes auto`'s default,
 //              `auto-uniform --sparse`: only probes at surface cells stored; the budget counts
-//              stored tiles + the indirection).
+//              stored tiles + the indirection), with `bake`'s default free space (ranked: the
+//              placement leaves 5% of the budget to the irradiance tiles of the left-out probes
+//              whose stand-ins are furthest off, FreeSpaceTiles.h).
 //   adaptive unshifted  `adaptive` without its measured lattice search
 //              (`--no-lattice-search`, LatticeShiftSearch.h): what the search bought. The
 //              search scores shifts on its own surface samples (another seed), never on these.
@@ -89,6 +91,7 @@ struct Candidate {
     std::vector<ProbeVolume> volumes;
     int rays = 64, bounces = 2;
     bool sparse = false;
+    double budget = 0.0; // sparse: what the free-space tiles fill (FreeSpace::Ranked)
     ProbeSet set;
     double bakeSeconds = 0.0;
     std::vector<glm::vec3> values; // per point
@@ -109,6 +112,8 @@ void bake(const pb::scene::Scene& s, Candidate& c, int threads) {
     req.settings.bounces = c.bounces;
     req.threads = threads;
     req.sparse = c.sparse;
+    req.freeSpace = c.sparse ? FreeSpace::Ranked : FreeSpace::StandIns;
+    req.freeSpaceBudgetBytes = c.budget;
     auto t0 = Clock::now();
     c.set = bakeProbes(s, req);
     c.bakeSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -173,16 +178,20 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
 
     // The same two under the same budget, stored sparse (`--volumes auto`'s default).
     uniformReq.sparse = true;
+    uniformReq.freeSpace = FreeSpace::Ranked;
     Candidate uniformHalfSparse;
     uniformHalfSparse.name = "uniform/2 sparse";
     uniformHalfSparse.rays = o.rays;
     uniformHalfSparse.sparse = true;
+    uniformHalfSparse.budget = half;
     uniformHalfSparse.volumes = placeAutoVolumes(s, uniformReq).volumes;
     adaptiveReq.sparse = true;
+    adaptiveReq.freeSpace = FreeSpace::Ranked;
     Candidate adaptive;
     adaptive.name = "adaptive";
     adaptive.rays = o.rays;
     adaptive.sparse = true;
+    adaptive.budget = half;
     AutoPlacementResult as = placeAutoVolumes(s, adaptiveReq);
     adaptive.volumes = as.volumes;
     // The same without the measured lattice search (LatticeShiftSearch.h): what it bought.

@@ -21,8 +21,8 @@
 namespace pb::probes {
 
 // True when sparse storage left the probe out although it lies outside geometry, and kept no
-// irradiance of it (a file from before version 7: since then such probes are irradiance-only,
-// ProbeState::irradianceOnly, and read as themselves): a lookup reads a stand-in for it. `backfaceThreshold` is the bake's (BakeSettings).
+// irradiance tile of it (an irradiance-only probe, ProbeState::irradianceOnly, is read as
+// itself): a lookup reads a stand-in for it. `backfaceThreshold` is the bake's (BakeSettings).
 bool fillable(const ProbeState& s, float backfaceThreshold);
 
 // Per probe of `v`: the probe a lookup reads in its place. Itself when stored or inside

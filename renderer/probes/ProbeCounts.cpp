@@ -1,6 +1,7 @@
 #include "probes/ProbeCounts.h"
 
 #include "core/Error.h"
+#include "probes/AbsentProbeFill.h"
 
 #include <string>
 
@@ -11,22 +12,17 @@ std::vector<ProbeCounts> volumeProbeCounts(const ProbeSet& set,
     if (bakedInvalid && bakedInvalid->size() != set.states.size())
         throw Error("probe counts: " + std::to_string(bakedInvalid->size()) +
                     " invalid counts for " + std::to_string(set.states.size()) + " volumes");
-    // Since probe file version 7 every valid probe sparse storage leaves out is irradiance-only,
-    // so the states tell absent from invalid; an older file's absent probes are just invalid.
-    bool statesTell = false;
-    for (const auto& states : set.states)
-        for (const ProbeState& p : states)
-            statesTell = statesTell || p.irradianceOnly;
     std::vector<ProbeCounts> out;
     for (std::size_t v = 0; v < set.states.size(); ++v) {
         ProbeCounts c;
         std::size_t invalidStored = 0; // dense files keep invalid probes with their tiles
-        std::size_t irradianceOnly = 0;
+        std::size_t irradianceOnly = 0, fillableCount = 0;
         for (const ProbeState& p : set.states[v]) {
             ++c.probes;
             c.stored += p.stored ? 1 : 0;
             invalidStored += p.stored && !p.valid ? 1 : 0;
             irradianceOnly += p.irradianceOnly ? 1 : 0;
+            fillableCount += fillable(p, set.settings.backfaceThreshold) ? 1 : 0;
         }
         if (c.notStored() == 0) { // every probe stored: the states say all
             c.absent = 0;
@@ -39,9 +35,13 @@ std::vector<ProbeCounts> volumeProbeCounts(const ProbeSet& set,
                             std::to_string(invalid) + " invalid probes do not fit its states");
             c.invalid = invalid;
             c.absent = c.notStored() - (invalid - invalidStored);
-        } else if (statesTell) {
-            c.absent = irradianceOnly;
-            c.invalid = invalidStored + (c.notStored() - irradianceOnly);
+        } else {
+            // A file read back: a probe not stored is absent when lookups read it - its own
+            // irradiance tile, or a stand-in for it because its back-face ratio puts it outside
+            // geometry (AbsentProbeFill.h fillable) - and invalid otherwise.
+            const std::size_t absent = irradianceOnly + fillableCount;
+            c.absent = absent;
+            c.invalid = invalidStored + (c.notStored() - absent);
         }
         out.push_back(c);
     }

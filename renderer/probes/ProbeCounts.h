@@ -2,10 +2,10 @@
 // What a baked probe set holds, per volume and in all, as the bake summary reports it: stored
 // probes, absent ones (sparse storage left them out: no surface nearby, SparseStorage.h) and
 // invalid ones (inside geometry, as the bake classified them; sparse storage stores none).
-// Since probe file version 7 an absent probe keeps its irradiance (ProbeState::irradianceOnly,
-// valid), so the states tell it from an invalid one. Before, an absent probe was invalid in
-// memory and in the file: the split then needs the bake's own count of invalid probes
-// (BakeStats::invalidPerVolume), and an older sparse file read back cannot be split.
+// The bake knows its invalid count (BakeStats::invalidPerVolume). A set read back from a file
+// tells them apart by the states, as lookups do: a probe not stored is absent when it keeps its
+// irradiance (ProbeState::irradianceOnly) or its back-face ratio puts it outside geometry (a
+// stand-in is read for it, AbsentProbeFill.h), and invalid otherwise.
 #include "probes/ProbeSet.h"
 
 #include <cstddef>
@@ -16,7 +16,7 @@ namespace pb::probes {
 
 struct ProbeCounts {
     std::size_t probes = 0, stored = 0;
-    // Unknown (nullopt) only for a volume with probes not stored and no bake counts.
+    // Always set by volumeProbeCounts; unknown (nullopt) in a total over unknown counts.
     std::optional<std::size_t> absent, invalid;
     std::size_t notStored() const { return probes - stored; }
 };

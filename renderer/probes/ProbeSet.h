@@ -68,9 +68,25 @@ struct ProbeState {
 // The probe has an irradiance tile (and SH): stored, or irradiance-only.
 inline bool ownsIrradiance(const ProbeState& s) { return s.stored || s.irradianceOnly; }
 
+// What sparse storage keeps of the valid probes it leaves out (issue 18; SparseStorage.h):
+// - StandIns: nothing (they become invalid; lookups read their nearest stored probe,
+//   AbsentProbeFill.h).
+// - Ranked: the ones whose stand-in is furthest from their own light keep their irradiance
+//   tile (as Irradiance), as many as a memory budget allows; the rest are read as stand-ins
+//   (store/FreeSpaceTiles.h). The default of `bake`.
+// - Irradiance: every one keeps its irradiance tile and SH, no visibility
+//   (ProbeState::irradianceOnly): a mid-air lookup then gives the dense bake's light, for a
+//   third of a stored probe's bytes each (`bake --free-space all`).
+enum class FreeSpace : std::uint8_t { StandIns, Ranked, Irradiance };
+
 struct ProbeSet {
     std::uint64_t inputHash = 0;
     BakeSettings settings;
+    // Sparse sets: the free-space choice the bake made and Ranked's budget (0: the default
+    // share), as the bake request had them (part of the input hash; the file's free-space
+    // record). Dense sets: StandIns, 0.
+    FreeSpace freeSpace = FreeSpace::StandIns;
+    double freeSpaceBudgetBytes = 0.0;
     std::vector<ProbeVolume> volumes;
     std::vector<std::vector<ProbeState>> states; // [volume][probe]
     std::vector<ProbeTexture> visibility;        // [volume]

@@ -95,8 +95,9 @@ TEST(BakeSparseCli, SparseAndDenseTogetherIsAOneLineError) {
 
 // The summary tells stored, absent (not stored: no surface nearby) and invalid (inside
 // geometry) probes apart: a sparse bake's invalid probes are those of the same bake stored
-// dense, and the three add up, per volume and in all. A file read back cannot split the
-// probes it does not store (it keeps no validity for them) and says so.
+// dense, and the three add up, per volume and in all. A file read back splits them the same
+// way from the states (an absent probe keeps its irradiance or lies outside geometry by its
+// back-face ratio), and the text says how many absent probes keep a tile (ranked free space).
 TEST(BakeSparseCli, SummarySplitsStoredAbsentAndInvalid) {
     const std::string f = (outputDir() / "bake_sparse_counts.pbp").string();
     fs::remove(f);
@@ -130,8 +131,11 @@ TEST(BakeSparseCli, SummarySplitsStoredAbsentAndInvalid) {
     const nlohmann::json again = bake("auto-uniform", f, sparse);
     EXPECT_TRUE(again["up_to_date"].get<bool>());
     EXPECT_EQ(again["stored_probes"].get<long long>(), stored);
-    EXPECT_TRUE(again["absent_probes"].is_null());
-    EXPECT_TRUE(again["invalid_probes"].is_null());
+    EXPECT_EQ(again["absent_probes"].get<long long>(), absent);
+    EXPECT_EQ(again["invalid_probes"].get<long long>(), invalid);
+    const long long tiles = s["free_space"]["irradiance_only_probes"].get<long long>();
+    ASSERT_GT(tiles, 0) << "no absent probe kept a tile (ranked free space)";
+    ASSERT_LT(tiles, absent) << "every absent probe kept a tile: not the ranked mix";
 
     auto bakeText = [&](bool force) { // the human summary
         std::vector<std::string> args{"bake",   "--scene", "courtyard", "--volumes", "auto-uniform",
@@ -144,12 +148,11 @@ TEST(BakeSparseCli, SummarySplitsStoredAbsentAndInvalid) {
         return r.output;
     };
     const std::string baked = bakeText(true);
-    EXPECT_NE(baked.find(std::to_string(stored) + " stored, " + std::to_string(absent) +
-                         " absent (not stored: no surface nearby), " + std::to_string(invalid) +
-                         " invalid (inside geometry"),
-              std::string::npos)
-        << baked;
+    const std::string split = std::to_string(stored) + " stored, " + std::to_string(absent) +
+                              " absent (no surface nearby; " + std::to_string(tiles) +
+                              " of them keep their irradiance, no visibility), " +
+                              std::to_string(invalid) + " invalid (inside geometry";
+    EXPECT_NE(baked.find(split), std::string::npos) << baked;
     const std::string readBack = bakeText(false);
-    EXPECT_NE(readBack.find(std::to_string(absent + invalid) + " not stored"), std::string::npos)
-        << readBack;
+    EXPECT_NE(readBack.find(split), std::string::npos) << readBack;
 }

@@ -5,6 +5,7 @@
 #include "support/RunCommand.h"
 #include "support/TestEnv.h"
 
+#include <fstream>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -12,15 +13,19 @@ namespace fs = std::filesystem;
 using namespace pb::test;
 
 namespace {
-// dir: the test's outputDir(), taken once (each call empties it).
+// dir: the test's outputDir(), taken once (each call empties it). `storage`: "dense",
+// "sparse" (the default free space: ranked tiles) or "stand-ins" (sparse, no tiles).
 fs::path bakeRooms(const fs::path& dir, const std::string& storage) {
     const fs::path file = dir / ("rooms-" + storage + ".pbp");
-    const CommandResult r = runProbebench({"bake", "--scene", "rooms", "--volumes",
-                                           "auto-uniform", "--spacing", "0.4", "--" + storage,
-                                           "--rays", "32", "--bounces", "1", "--out",
-                                           file.string()});
+    std::vector<std::string> args{"bake", "--scene", "rooms", "--volumes", "auto-uniform",
+                                  "--spacing", "0.4", "--rays", "32", "--bounces", "1", "--out",
+                                  file.string()};
+    if (storage == "dense") args.push_back("--dense");
+    if (storage != "dense") args.push_back("--sparse");
+    if (storage == "stand-ins") args.insert(args.end(), {"--free-space", "stand-ins"});
+    const CommandResult r = runProbebench(args);
     EXPECT_EQ(r.exitCode, 0) << r.output;
-    if (storage == "sparse") EXPECT_NE(r.output.find("free space: "), std::string::npos) << r.output;
+    if (storage != "dense") EXPECT_NE(r.output.find("free space: "), std::string::npos) << r.output;
     return file;
 }
 
@@ -53,7 +58,7 @@ TEST(ProbeFoundCli, OutsideEveryVolumeIsSaidNotPrintedAsDarkness) {
 
 TEST(ProbeFoundCli, AMidRoomPointOfASparseBakeIsLitThroughStandIns) {
     const fs::path dir = outputDir();
-    const fs::path sparse = bakeRooms(dir, "sparse");
+    const fs::path sparse = bakeRooms(dir, "stand-ins");
     const std::string midAir = "-2,1.5,0"; // the sunlit room's centre: far from every surface
     const nlohmann::json j = probeJson(sparse, midAir);
     ASSERT_FALSE(j.is_discarded());
@@ -123,4 +128,78 @@ TEST(ProbeFoundCli, FreeSpaceIrradianceLightsAMidRoomPointLikeTheDenseBake) {
     EXPECT_EQ(bad.output.rfind("probebench: error: --free-space-irradiance", 0), 0u) << bad.output;
     EXPECT_EQ(bad.output.find('\n'), bad.output.size() - 1) << bad.output;
     EXPECT_FALSE(fs::exists(none));
+}
+
+// The default free space (`--free-space ranked`): the left-out probes whose stand-ins are
+// furthest off keep their irradiance within the budget (here none: 5% over the stored bytes),
+// the others are read as stand-ins; the summary and the JSON say how many of each, and a
+// mid-room point gets the dense bake's light within 15%.
+TEST(ProbeFoundCli, TheDefaultFreeSpaceKeepsTheWorstStandInsTiles) {
+    const fs::path dir = outputDir();
+    const fs::path file = dir / "rooms-ranked.pbp";
+    const fs::path json = dir / "rooms-ranked.json";
+    const CommandResult r = runProbebench(
+        {"bake", "--scene", "rooms", "--volumes", "auto-uniform", "--spacing", "0.4", "--sparse",
+         "--rays", "32", "--bounces", "1", "--out", file.string(), "--json", json.string()});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    const nlohmann::json j = nlohmann::json::parse(std::ifstream(json), nullptr, false);
+    ASSERT_FALSE(j.is_discarded());
+    const auto& f = j["free_space"];
+    const auto tiles = f["irradiance_only_probes"].get<std::size_t>();
+    const auto standIns = f["stand_in_probes"].get<std::size_t>();
+    EXPECT_GT(tiles, 0u) << f.dump();
+    EXPECT_GT(standIns, 0u) << f.dump() << ": every left-out probe got a tile; not ranked";
+    EXPECT_EQ(f["tile_candidates"].get<std::size_t>(), tiles + standIns) << f.dump();
+    EXPECT_EQ(j["absent_probes"].get<std::size_t>(), tiles + standIns) << j.dump();
+    // What the tiles leave to stand-ins is near the probes' own light (15%: issue 18's bound).
+    EXPECT_LE(f["worst_stand_in_difference"].get<double>(), 0.15) << f.dump();
+    EXPECT_GE(f["worst_stand_in_difference"].get<double>(), 0.0) << f.dump();
+    // Within the default allowance: the tiles add at most 5% of the whole.
+    EXPECT_LE(double(f["irradiance_only_bytes"].get<std::size_t>()),
+              0.05 * double(j["memory"]["total"]["stored_total"].get<std::size_t>()) + 1.0)
+        << j.dump();
+
+    // Read back (up to date), the text says the same split.
+    const CommandResult again = runProbebench(
+        {"bake", "--scene", "rooms", "--volumes", "auto-uniform", "--spacing", "0.4", "--sparse",
+         "--rays", "32", "--bounces", "1", "--out", file.string()});
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    EXPECT_NE(again.output.find("up to date"), std::string::npos) << again.output;
+    EXPECT_NE(again.output.find(std::to_string(tiles) + " of them keep their irradiance"),
+              std::string::npos)
+        << again.output;
+    EXPECT_NE(again.output.find("the other " + std::to_string(standIns) + " are read as it"),
+              std::string::npos)
+        << again.output;
+
+    const std::string midAir = "-2,1.5,0";
+    const nlohmann::json s = probeJson(file, midAir);
+    const nlohmann::json dense = probeJson(bakeRooms(dir, "dense"), midAir);
+    const double d = dense["irradiance"][1].get<double>(), e = s["irradiance"][1].get<double>();
+    EXPECT_GT(d, 0.0) << dense.dump();
+    EXPECT_NEAR(e, d, 0.15 * d) << "sparse " << s.dump() << "\ndense " << dense.dump();
+}
+
+TEST(ProbeFoundCli, AFreeSpaceChoiceIsCheckedBeforeAnythingIsPlaced) {
+    const fs::path dir = outputDir();
+    const fs::path out = dir / "never.pbp";
+    struct Case {
+        std::vector<std::string> args;
+        std::string error;
+    };
+    const std::vector<Case> cases = {
+        {{"--free-space", "some"}, "--free-space: 'some' is not one of stand-ins, ranked, all"},
+        {{"--free-space", "ranked", "--dense"}, "--free-space: needs sparse storage"},
+        {{"--free-space", "stand-ins", "--free-space-irradiance"},
+         "--free-space-irradiance: is --free-space all, not stand-ins"},
+    };
+    for (const Case& c : cases) {
+        std::vector<std::string> args{"bake", "--scene", "rooms", "--out", out.string()};
+        args.insert(args.end(), c.args.begin(), c.args.end());
+        const CommandResult r = runProbebench(args);
+        EXPECT_NE(r.exitCode, 0) << r.output;
+        EXPECT_EQ(r.output.rfind("probebench: error: " + c.error, 0), 0u) << r.output;
+        EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
+        EXPECT_FALSE(fs::exists(out));
+    }
 }

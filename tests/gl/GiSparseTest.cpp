@@ -176,6 +176,21 @@ TEST_F(GiSparseTest, IrradianceOnlyProbesAreReadWithoutVisibilityLikeTheCpuDoes)
     EXPECT_LE(d.maxRel, 1e-3);
 }
 
+// The default bake's mix (FreeSpace::Ranked, the default budget): some left-out probes keep a
+// tile, the rest are read as stand-ins - on the GPU as on the CPU.
+TEST_F(GiSparseTest, ARankedMixOfTilesAndStandInsIsReadLikeTheCpuDoes) {
+    const probes::ProbeSet quarter = storedEvery(4, probes::FreeSpace::Ranked);
+    int standIns = 0, irradianceOnly = 0;
+    const Difference d = againstCpu(quarter, standIns, &irradianceOnly);
+    std::printf("[ sparse ] every 4th stored, ranked tiles: %zu of %zu values not "
+                "bit-identical, max rel %.3g, of 4000 points %d read stand-ins and %d "
+                "irradiance-only probes\n",
+                d.differing, d.values, d.maxRel, standIns, irradianceOnly);
+    EXPECT_GT(standIns, 100) << "too few points read a stand-in";
+    EXPECT_GT(irradianceOnly, 100) << "too few points read an irradiance-only probe";
+    EXPECT_LE(d.maxRel, 1e-3);
+}
+
 // The default storage: the probes left out keep nothing, and both the GPU and the CPU read
 // their nearest stored probe in their place.
 TEST_F(GiSparseTest, AbsentProbesAreReadAsTheirStandInsLikeTheCpuDoes) {

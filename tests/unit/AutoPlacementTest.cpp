@@ -4,6 +4,7 @@
 #include "ProbeTestScenes.h"
 #include "core/Error.h"
 #include "probes/placement/BoxMerge.h"
+#include "probes/store/FreeSpaceTiles.h"
 #include "probes/store/MemoryReport.h"
 #include "probes/bake/RayScene.h"
 #include "probes/StaticTriangles.h"
@@ -235,6 +236,45 @@ TEST(AutoPlacement, DefaultStaysWithinTheDefaultUniformMemory) {
     const int fewest = std::min(n.x, std::min(n.y, n.z));
     EXPECT_LE(finest, spacingOf(u.volumes[0]) * float(fewest + 1) / float(fewest) * 1.0001f);
     expectSurfacesAtFinestSpacing(s, a);
+}
+
+// Ranked free space (`bake`'s default): the placement leaves the tiles at least 5% of the
+// budget - placed again into 95% of it when the placement that fills the budget leaves less
+// (the rooms), unless that costs over 5% of spacing - and a placement that leaves more (the
+// Cornell box) is the stand-ins' own.
+TEST(AutoPlacement, RankedFreeSpaceLeavesTheTilesTheirShareOfTheBudget) {
+    auto finestOf = [](const AutoPlacementResult& r) {
+        float f = std::numeric_limits<float>::infinity();
+        for (const ProbeVolume& v : r.volumes)
+            f = std::min(f, spacingOf(v));
+        return f;
+    };
+    for (const char* name : {"rooms", "cornell"}) {
+        SCOPED_TRACE(name);
+        const pb::scene::Scene s = pb::scene::loadScene(name);
+        AutoPlacementRequest req;
+        req.sparse = true;
+        req.latticeSearch = false;
+        const AutoPlacementResult standIns = placeAutoVolumes(s, req);
+        req.freeSpace = FreeSpace::Ranked;
+        const AutoPlacementResult ranked = placeAutoVolumes(s, req);
+        EXPECT_EQ(ranked.budgetBytes, standIns.budgetBytes) << "the tiles' share is in the budget";
+        const bool filled = double(standIns.bytes) > standIns.budgetBytes * (1 - kFreeSpaceTileShare);
+        if (std::string(name) == "rooms") EXPECT_TRUE(filled) << "the rooms test nothing";
+        if (std::string(name) == "cornell") EXPECT_FALSE(filled) << "the Cornell box tests nothing";
+        if (filled) {
+            EXPECT_LE(double(ranked.bytes), ranked.budgetBytes * (1 - kFreeSpaceTileShare));
+            EXPECT_GT(finestOf(ranked), finestOf(standIns));
+            EXPECT_LE(finestOf(ranked), finestOf(standIns) * 1.05f);
+        } else {
+            ASSERT_EQ(ranked.volumes.size(), standIns.volumes.size());
+            for (std::size_t v = 0; v < ranked.volumes.size(); ++v) {
+                EXPECT_EQ(ranked.volumes[v].counts, standIns.volumes[v].counts);
+                EXPECT_EQ(ranked.volumes[v].center, standIns.volumes[v].center);
+                EXPECT_EQ(ranked.volumes[v].halfExtents, standIns.volumes[v].halfExtents);
+            }
+        }
+    }
 }
 
 TEST(AutoPlacement, EmptySceneAndBadOptionsAreErrors) {

@@ -4,6 +4,7 @@
 // gives (SparseStorageTest). The mid-air tests compare lookups of the two.
 #include "probes/StaticTriangles.h"
 #include "probes/bake/Baker.h"
+#include "probes/placement/AutoPlacement.h"
 #include "probes/placement/AutoVolume.h"
 #include "probes/store/SparseStorage.h"
 #include "scene/SceneLoader.h"
@@ -29,6 +30,31 @@ inline DenseAndSparse bakeDenseAndSparse(const std::string& builtin, int maxProb
     b.dense = probes::bakeProbes(b.scene, r);
     b.sparse = b.dense;
     probes::applySparseStorage(b.sparse, probes::staticBakeTriangles(b.scene), freeSpace);
+    return b;
+}
+
+// The default bake's volumes (`bake --volumes auto`: adaptive placement under the default
+// budget, stored sparse, FreeSpace::Ranked), baked dense, and stored as that bake stores them
+// (SparseStorageTest: the same as the sparse bake). The lattice search is skipped for time: it
+// shifts the lattice by under a cell and changes nothing the tiles are chosen by. `budget`
+// receives the placement's budget, which the tiles fill.
+inline DenseAndSparse bakeDefaultDenseAndSparse(const std::string& builtin, double& budget) {
+    DenseAndSparse b{pb::scene::makeBuiltinScene(builtin), {}, {}};
+    probes::AutoPlacementRequest p;
+    p.sparse = true;
+    p.freeSpace = probes::FreeSpace::Ranked;
+    p.latticeSearch = false;
+    const probes::AutoPlacementResult placed = probes::placeAutoVolumes(b.scene, p);
+    budget = placed.budgetBytes;
+    probes::BakeRequest r;
+    r.volumes = placed.volumes;
+    r.scenarios = probes::resolveScenarios({"day"}, {}, b.scene);
+    r.settings.raysPerProbe = 64;
+    r.settings.bounces = 2;
+    b.dense = probes::bakeProbes(b.scene, r);
+    b.sparse = b.dense;
+    probes::applySparseStorage(b.sparse, probes::staticBakeTriangles(b.scene),
+                               probes::FreeSpace::Ranked, budget);
     return b;
 }
 

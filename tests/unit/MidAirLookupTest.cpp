@@ -11,6 +11,7 @@
 #include "probes/bake/MidAirSamples.h"
 #include "probes/bake/RayScene.h"
 #include "probes/placement/AutoVolume.h"
+#include "probes/store/MemoryReport.h"
 #include "probes/store/SparseLayout.h"
 #include "probes/store/SparseStorage.h"
 #include "scene/SceneLoader.h"
@@ -179,6 +180,29 @@ TEST_P(MidAir, IrradianceOnlyProbesLightEveryPointWithin15PercentOfTheDenseLooku
     EXPECT_EQ(e.outsideReach, 0)
         << "a lookup is off by more than 15% beyond the dense light within reach (worst "
         << e.worstBeyondReach << ")";
+}
+
+// Issue 18's target for the default bake (`bake --volumes auto`, FreeSpace::Ranked): the
+// left-out probes whose stand-ins are furthest off keep their irradiance within the placement's
+// budget, and every mid-air lookup is then within 15% of the dense bake of the same volumes.
+TEST_P(MidAir, TheDefaultBakeLightsEveryPointWithin15PercentOfTheDenseBake) {
+    double budget = 0.0;
+    const DenseAndSparse b = pb::test::bakeDefaultDenseAndSparse(GetParam(), budget);
+    ASSERT_EQ(b.dense.volumes.size(), 1u) << "compareMidAir reads one volume";
+    ASSERT_GT(budget, 0.0);
+    const MemoryReport m = memoryReport(b.sparse);
+    EXPECT_LE(double(m.total.storedTotal()), budget) << "the tiles broke the budget";
+    EXPECT_GT(m.total.irradianceOnlyProbes, 0u) << "no tile chosen: vacuous";
+    const MidAirError e = compareMidAir(b, 500);
+    std::printf("[ mid-air ] %s, default bake: %zu of %d probes stored, %zu irradiance-only, "
+                "%.0f of %.0f KiB; %d lookups, %d differ from the dense one: mean %.4f, p90 "
+                "%.4f, worst %.4f; %d unlit\n",
+                GetParam(), b.sparse.storedCount(), b.sparse.probeCount(),
+                m.total.irradianceOnlyProbes, double(m.total.storedTotal()) / 1024, budget / 1024,
+                e.lookups, e.changed, e.mean, e.p90, e.worst, e.unlit);
+    EXPECT_EQ(e.unlit, 0) << "a point the dense set lights got no lookup";
+    EXPECT_GT(e.changed, e.lookups / 20) << "too few lookups read a left-out probe: vacuous";
+    EXPECT_LE(e.worst, 0.15f) << "a mid-air lookup is more than 15% off the dense one";
 }
 
 INSTANTIATE_TEST_SUITE_P(Builtin, MidAir, testing::Values("cornell", "rooms", "courtyard"));

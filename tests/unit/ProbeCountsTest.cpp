@@ -20,6 +20,7 @@ ProbeSet setOf(const std::vector<std::array<int, 3>>& volumes, bool sparse) {
             const bool inside = i < invalid, far = sparse && i >= invalid && i < invalid + absent;
             states[size_t(i)].stored = !(sparse && inside) && !far;
             states[size_t(i)].valid = !inside && !far; // in memory an absent probe is invalid
+            states[size_t(i)].backfaceRatio = inside ? 1.0f : 0.0f; // as the geometry pass sets
         }
         s.states.push_back(states);
     }
@@ -60,14 +61,13 @@ TEST(ProbeCounts, SparseSetsSplitWhatIsNotStoredWithTheBakesInvalidCount) {
     EXPECT_EQ(t.stored + *t.absent + *t.invalid, t.probes);
     EXPECT_EQ(t.absent, 5u);
 
-    // Read back from a file: the not-stored probes of volume 0 cannot be split, volume 1's
-    // (all stored) can; the total is unknown.
+    // Read back from a file: the back-face ratios tell the 3 inside geometry from the 5 absent
+    // ones lookups read stand-ins for, as the bake's count does.
     const std::vector<ProbeCounts> file = volumeProbeCounts(s, nullptr);
-    EXPECT_FALSE(file[0].absent.has_value());
-    EXPECT_FALSE(file[0].invalid.has_value());
-    EXPECT_EQ(file[0].notStored(), 8u);
+    EXPECT_EQ(file[0].absent, 5u);
+    EXPECT_EQ(file[0].invalid, 3u);
     EXPECT_EQ(file[1].invalid, 0u);
-    EXPECT_FALSE(totalProbeCounts(file).absent.has_value());
+    EXPECT_EQ(totalProbeCounts(file).absent, 5u);
     EXPECT_EQ(totalProbeCounts(file).stored, 10u);
 }
 
@@ -78,8 +78,9 @@ TEST(ProbeCounts, CountsThatDoNotFitTheStatesAreAnError) {
     EXPECT_THROW(volumeProbeCounts(s, &wrongSize), pb::Error);
 }
 
-// Since probe file version 7 an absent probe keeps its irradiance (irradiance-only, valid):
-// the states alone split a sparse set read back from a file.
+// An absent probe may keep its irradiance (irradiance-only, valid): it counts as absent
+// whatever its back-face ratio, and so do the stand-ins beside it (FreeSpace::Ranked keeps
+// some tiles, not all).
 TEST(ProbeCounts, IrradianceOnlyProbesTellAbsentFromInvalidWithoutBakeCounts) {
     ProbeSet s = setOf({{12, 3, 5}, {6, 0, 0}}, true);
     // Volume 0: probes 3..7 are the absent ones (setOf): irradiance-only and valid.
@@ -98,4 +99,16 @@ TEST(ProbeCounts, IrradianceOnlyProbesTellAbsentFromInvalidWithoutBakeCounts) {
     // The bake's own count agrees with the states.
     const std::vector<std::size_t> baked{3, 0};
     EXPECT_EQ(volumeProbeCounts(s, &baked)[0].absent, 5u);
+}
+
+TEST(ProbeCounts, AMixOfTilesAndStandInsCountsEveryAbsentProbe) {
+    ProbeSet s = setOf({{12, 3, 5}}, true);
+    s.states[0][3].irradianceOnly = s.states[0][3].valid = true; // one of the 5 keeps a tile
+    s.settings.backfaceThreshold = 0.25f;
+    const std::vector<ProbeCounts> file = volumeProbeCounts(s, nullptr);
+    EXPECT_EQ(file[0].absent, 5u);
+    EXPECT_EQ(file[0].invalid, 3u);
+    // A probe whose ratio is over the threshold is inside geometry, absent or not.
+    s.states[0][4].backfaceRatio = 0.3f;
+    EXPECT_EQ(volumeProbeCounts(s, nullptr)[0].invalid, 4u);
 }

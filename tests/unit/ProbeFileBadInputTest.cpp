@@ -120,3 +120,21 @@ TEST(ProbeFileBadInput, StorageScaleMustBeAPowerOfTwo) {
     ok.irradiance[0][0].storageScale = 0.25f;
     EXPECT_EQ(errorOf(ok), "(no error)");
 }
+
+TEST(ProbeFileBadInput, TheFreeSpaceRecordNamesAKnownChoiceAndAFiniteBudget) {
+    ProbeSet a = tinySet();
+    a.freeSpace = FreeSpace(7);
+    EXPECT_CONTAINS(errorOf(a), "corrupt free-space record (choice 7)");
+    for (double budget : {-1.0, double(kNan), std::numeric_limits<double>::infinity()}) {
+        ProbeSet b = tinySet();
+        b.freeSpace = FreeSpace::Ranked;
+        b.freeSpaceBudgetBytes = budget;
+        EXPECT_CONTAINS(errorOf(b), "corrupt free-space record (budget not a finite size)");
+    }
+    ProbeSet c = tinySet();
+    c.freeSpace = FreeSpace::Ranked;
+    c.freeSpaceBudgetBytes = 123456.0;
+    const ProbeSet back = parseProbeSet(serializeProbeSet(c), "probes.pbp");
+    EXPECT_EQ(back.freeSpace, FreeSpace::Ranked);
+    EXPECT_EQ(back.freeSpaceBudgetBytes, 123456.0);
+}

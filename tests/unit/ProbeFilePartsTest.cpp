@@ -6,6 +6,10 @@
 #include "SunlitFloorBake.h"
 #include "core/Error.h"
 #include "probes/bake/Baker.h"
+#include "probes/StaticTriangles.h"
+#include "probes/placement/AutoVolume.h"
+#include "probes/store/MemoryReport.h"
+#include "scene/SceneLoader.h"
 #include "probes/store/ProbeFile.h"
 
 #include <gtest/gtest.h>
@@ -68,6 +72,40 @@ TEST(ProbeFileParts, MergedPartsAreTheSingleBakeByteForByte) {
         const ProbeSet merged = mergeProbeFileParts(parts, {"b", "a"});
         EXPECT_TRUE(serializeProbeSet(merged) == single) << "sparse " << sparse;
     }
+}
+
+// Ranked free-space tiles rank every scenario's light: the parts keep every left-out probe's
+// tile, the merge chooses as the whole bake does - byte for byte.
+TEST(ProbeFileParts, MergedPartsMakeTheWholeBakesRankedTileChoice) {
+    const pb::scene::Scene s = pb::scene::makeBuiltinScene("courtyard"); // air to leave out
+    BakeRequest r;
+    r.volumes.push_back(fitAutoVolume(staticBakeBounds(s), 0.0f, 1500).volume);
+    r.scenarios = resolveScenarios({"day", "night"}, {}, s);
+    r.settings.raysPerProbe = 32;
+    r.settings.bounces = 1;
+    r.sparse = true;
+    // A budget that holds some of the left-out probes' tiles, not all.
+    const ProbeSet standIns = bakeProbes(s, r);
+    ProbeSet all = standIns;
+    r.freeSpace = FreeSpace::Irradiance;
+    all = bakeProbes(s, r);
+    r.freeSpace = FreeSpace::Ranked;
+    r.freeSpaceBudgetBytes = 0.5 * double(memoryReport(standIns).total.storedTotal() +
+                                          memoryReport(all).total.storedTotal());
+    const ProbeSet whole = bakeProbes(s, r);
+    const std::vector<ProbeFilePart> parts = {bakePart(s, r, 0, 2), bakePart(s, r, 1, 2)};
+    std::size_t tiles = 0, partTiles = 0, absent = 0;
+    for (std::size_t v = 0; v < whole.states.size(); ++v)
+        for (std::size_t i = 0; i < whole.states[v].size(); ++i) {
+            tiles += whole.states[v][i].irradianceOnly ? 1 : 0;
+            partTiles += parts[0].set.states[v][i].irradianceOnly ? 1 : 0;
+            absent += !whole.states[v][i].stored ? 1 : 0;
+        }
+    ASSERT_GT(tiles, 0u) << "no tile chosen: vacuous";
+    ASSERT_GT(partTiles, tiles) << "the parts already chose: nothing left to the merge";
+    EXPECT_EQ(parts[0].set.freeSpace, FreeSpace::Ranked);
+    const ProbeSet merged = mergeProbeFileParts(parts, {"a", "b"});
+    EXPECT_TRUE(serializeProbeSet(merged) == serializeProbeSet(whole));
 }
 
 TEST(ProbeFileParts, APartsScenarioIsSeededByItsIndexInTheWholeBake) {

@@ -7,9 +7,11 @@
 #include "core/FileIO.h"
 #include "fuzz/FuzzInputs.h"
 #include "probes/AbsentProbeFill.h"
+#include "probes/ProbeCounts.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/Baker.h"
 #include "probes/bake/RayScene.h"
+#include "probes/bake/SceneMatch.h"
 #include "probes/placement/AutoVolume.h"
 #include "probes/store/Hash.h"
 #include "probes/store/MemoryReport.h"
@@ -252,10 +254,14 @@ TEST(SparseStorage, BakingOnlyTheKeptProbesGivesTheDenseBakeDropped) {
     // Both storages of the probes left out: dropped (stand-ins), or their irradiance kept
     // (traced in the last pass: the earlier passes feed only surface lookups, whose corners
     // are all kept, so their irradiance and SH are the dense bake's).
-    for (FreeSpace mode : {FreeSpace::StandIns, FreeSpace::Irradiance}) {
-    SCOPED_TRACE(mode == FreeSpace::Irradiance ? "irradiance" : "stand-ins");
+    // Ranked keeps some of them (the default budget: the tiles get 5% of the whole).
+    for (FreeSpace mode : {FreeSpace::StandIns, FreeSpace::Ranked, FreeSpace::Irradiance}) {
+    SCOPED_TRACE(freeSpaceName(mode));
     ProbeSet dense = denseBake;
     applySparseStorage(dense, staticBakeTriangles(s), mode);
+    const std::size_t tiles = memoryReport(dense).total.irradianceOnlyProbes;
+    if (mode == FreeSpace::StandIns) EXPECT_EQ(tiles, 0u);
+    if (mode != FreeSpace::StandIns) EXPECT_GT(tiles, 0u);
     r.sparse = true;
     r.freeSpace = mode;
     const ProbeSet sparse = bakeProbes(s, r);
@@ -371,6 +377,40 @@ TEST(SparseStorage, KeepsTheFreeSpaceLatticeEverywhere) {
         const glm::ivec3 q = v.probeCoords(i);
         EXPECT_EQ(kept[size_t(i)] != 0, q.x % 2 == 0 && q.y % 2 == 0 && q.z % 2 == 0) << i;
     }
+}
+
+// The default bake's mix (FreeSpace::Ranked): some left-out probes keep a tile, the others
+// are read as stand-ins - and read back from the file, each is what it was, and the counts
+// tell both apart from the probes inside geometry.
+TEST(SparseStorage, FileRoundTripKeepsTheRankedMixOfTilesAndStandIns) {
+    const ProbeSet sparse = bakeBuiltin("courtyard", 1500, true, FreeSpace::Ranked);
+    const ProbeSet back = parseProbeSet(serializeProbeSet(sparse), "ranked.pbp");
+    std::size_t tiles = 0, standIns = 0;
+    for (std::size_t i = 0; i < back.states[0].size(); ++i) {
+        EXPECT_EQ(back.states[0][i].stored, sparse.states[0][i].stored) << i;
+        EXPECT_EQ(back.states[0][i].irradianceOnly, sparse.states[0][i].irradianceOnly) << i;
+        EXPECT_EQ(back.states[0][i].valid, sparse.states[0][i].valid) << i;
+        tiles += back.states[0][i].irradianceOnly ? 1 : 0;
+        standIns += fillable(back.states[0][i], back.settings.backfaceThreshold) ? 1 : 0;
+    }
+    ASSERT_GT(tiles, 0u) << "no tile: not a mix";
+    ASSERT_GT(standIns, 0u) << "no stand-in: not a mix";
+    EXPECT_EQ(back.irradiance[0][0].texels, sparse.irradiance[0][0].texels);
+    EXPECT_EQ(back.sh, sparse.sh);
+    // The free-space record: what the input hash was made of, so the file is still known as
+    // this scene's (render, costmodel and bench check it).
+    EXPECT_EQ(back.freeSpace, FreeSpace::Ranked);
+    EXPECT_EQ(back.freeSpaceBudgetBytes, 0.0);
+    EXPECT_TRUE(probeSetMatchesScene(back, pb::scene::makeBuiltinScene("courtyard")));
+    EXPECT_FALSE(probeSetMatchesScene(back, pb::scene::makeBuiltinScene("rooms")));
+    // Read back, the probes not stored split as the bake counted them.
+    const ProbeSet& dense = courtyardDense();
+    std::size_t inside = 0;
+    for (const ProbeState& p : dense.states[0])
+        inside += p.valid ? 0 : 1;
+    const ProbeCounts c = volumeProbeCounts(back, nullptr)[0];
+    EXPECT_EQ(c.absent, tiles + standIns);
+    EXPECT_EQ(c.invalid, inside);
 }
 
 TEST(SparseStorage, FileRoundTripStoresOnlyTheKeptTiles) {

@@ -2,12 +2,15 @@
 // it (it never changes the result). Bump kBakeAlgorithmVersion whenever the bake's output
 // changes for the same inputs, so stale files are re-baked rather than reused.
 #include "probes/bake/BakeHash.h"
+
 #include "probes/bake/Baker.h"
 #include "probes/store/SparseStorage.h"
 #include "probes/store/Hash.h"
 #include "probes/store/ProbeFile.h"
 #include "probes/store/SceneHash.h"
 #include "probes/bake/RayScene.h"
+
+#include <algorithm>
 
 namespace pb::probes {
 namespace {
@@ -45,7 +48,7 @@ void hashScene(Hasher& h, const scene::Scene& s) {
 
 void hashBakeVersionsAndScene(Hasher& h, const scene::Scene& scene) {
     h.pod(kBakeAlgorithmVersion);
-    h.pod(kProbeFileVersion);
+    h.pod(kProbeFileContentVersion);
     hashScene(h, scene);
 }
 
@@ -84,9 +87,13 @@ std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& r) {
     // from before it lack the lattice and must be re-baked. Dense bakes (the gate's committed
     // file among them) keep their hash.
     if (r.sparse) h.pod(std::uint32_t(kFreeSpaceLatticeStep));
-    // ... and what the probes it leaves out keep (only hashed when they keep their irradiance,
-    // so the default sparse files keep their hash).
+    // ... and what the probes it leaves out keep (not hashed for stand-ins, so files from
+    // before the choice keep their hash); Ranked's choice depends on its budget.
     if (r.sparse && r.freeSpace == FreeSpace::Irradiance) h.pod(std::uint32_t(2));
+    if (r.sparse && r.freeSpace == FreeSpace::Ranked) {
+        h.pod(std::uint32_t(3));
+        h.pod(std::max(r.freeSpaceBudgetBytes, 0.0)); // ProbeSet::freeSpaceBudgetBytes
+    }
     // Only set by the update engine's sample bakes: every other bake keeps its hash.
     if (r.geometryRays > 0) h.pod(std::int32_t(r.geometryRays));
     return h.value();

@@ -14,6 +14,7 @@
 #include "probes/bake/RadiancePass.h"
 #include "probes/bake/RayDirections.h"
 #include "probes/bake/RayScene.h"
+#include "probes/store/FreeSpaceTiles.h"
 #include "probes/store/SparseStorage.h"
 
 #include <algorithm>
@@ -198,11 +199,11 @@ void bakeGeometry(BakeRun& run) {
 struct RadianceMask {
     std::vector<std::vector<std::uint8_t>> keep; // sparse only: per volume, per probe
     std::vector<bool> isParent;
-    bool irradianceOnly = false; // the left-out probes keep their irradiance (FreeSpace)
+    bool irradianceOnly = false; // left-out probes may keep their irradiance (FreeSpace)
 
     explicit RadianceMask(const BakeRun& run)
         : isParent(run.set.volumes.size(), false),
-          irradianceOnly(run.req.freeSpace == FreeSpace::Irradiance) {
+          irradianceOnly(run.req.freeSpace != FreeSpace::StandIns) {
         if (run.req.sparse) {
             const std::vector<WorldTriangle> triangles = staticBakeTriangles(run.scene);
             for (size_t v = 0; v < run.set.volumes.size(); ++v)
@@ -211,9 +212,10 @@ struct RadianceMask {
         for (int p : run.parents)
             if (p >= 0) isParent[size_t(p)] = true;
     }
-    // With FreeSpace::Irradiance a probe sparse storage leaves out is still traced in the last
-    // pass: it keeps its irradiance tile (ProbeState::irradianceOnly). Earlier passes feed only the lookups at
-    // surface hits, whose cells' corners are all kept, so they skip it.
+    // With FreeSpace::Irradiance or Ranked a probe sparse storage leaves out is still traced in
+    // the last pass: it may keep its irradiance tile (ProbeState::irradianceOnly), and Ranked
+    // compares it with its stand-in. Earlier passes feed only the lookups at surface hits,
+    // whose cells' corners are all kept, so they skip it.
     bool needed(const ProbeSet& set, int v, int p, bool lastPass) const {
         if (!set.states[size_t(v)][size_t(p)].valid) return false;
         return keep.empty() || isParent[size_t(v)] || (lastPass && irradianceOnly) ||
@@ -527,8 +529,24 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     std::vector<QuantisationError> errors = quantiseSet(run.set, req.settings.format, threads);
     // Invalid as baked, before sparse storage marks its absent probes invalid too.
     std::vector<std::size_t> bakedInvalid = invalidPerVolume(run.set);
-    // Left-out valid probes keep nothing, or (FreeSpace::Irradiance) irradiance and SH.
-    if (req.sparse) storeOnly(run.set, mask.keep, req.freeSpace);
+    // Left-out valid probes keep nothing, or irradiance and SH (all of them, or the ones
+    // whose stand-in is furthest off).
+    FreeSpaceTileChoice tiles;
+    if (req.sparse && req.freeSpace == FreeSpace::Ranked && !req.onlyScenarios.empty()) {
+        // A split bake's part: the choice ranks every scenario's light, so bake-merge makes it
+        // (ProbeFileParts.h); the part keeps every tile.
+        storeOnly(run.set, mask.keep, FreeSpace::Irradiance);
+    } else if (req.sparse && req.freeSpace == FreeSpace::Ranked) {
+        tiles = chooseFreeSpaceTiles(run.set, mask.keep, req.freeSpaceBudgetBytes);
+        storeOnly(run.set, mask.keep, tiles.tiles);
+    } else if (req.sparse) {
+        storeOnly(run.set, mask.keep, req.freeSpace);
+    }
+    if (req.sparse) { // as the input hash has them
+        run.set.freeSpace = req.freeSpace;
+        run.set.freeSpaceBudgetBytes =
+            req.freeSpace == FreeSpace::Ranked ? std::max(req.freeSpaceBudgetBytes, 0.0) : 0.0;
+    }
 
     if (statsOut) {
         BakeStats st = countStats(run, std::move(bakedInvalid));
@@ -542,6 +560,9 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         st.seconds = since(t0);
         st.quantisation = std::move(errors);
         run.noise.summarise(st);
+        st.freeSpaceCandidates = tiles.candidates;
+        st.freeSpaceTiles = tiles.chosen;
+        st.freeSpaceWorstLeft = tiles.worstLeft;
         *statsOut = st;
     }
     return std::move(run.set);

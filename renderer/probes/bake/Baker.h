@@ -25,8 +25,12 @@ struct BakeRequest {
     // cells with static surface stay stored. Part of the input hash.
     bool sparse = false;
     // With `sparse`: what the valid probes left out keep (SparseStorage.h FreeSpace). Part of
-    // the input hash when Irradiance (the default files keep their hash).
+    // the input hash unless StandIns. `bake` asks for Ranked.
     FreeSpace freeSpace = FreeSpace::StandIns;
+    // With Ranked: the memory the set may use with its free-space tiles (one scenario
+    // resident, as memoryReport counts it; `bake --volumes auto`: the placement's budget).
+    // <= 0: defaultFreeSpaceBudget (FreeSpaceTiles.h). Part of the input hash with Ranked.
+    double freeSpaceBudgetBytes = 0.0;
     // Probes traced before their indirect lookups are sorted and done (RadiancePass.h);
     // 0 = about 2^18 rays per slab. Memory and speed only: never changes the result.
     int slabProbes = 0;
@@ -94,6 +98,10 @@ struct BakeStats {
     std::uint64_t extraRoundRays = 0;
     int threads = 1;
     std::vector<QuantisationError> quantisation;
+    // FreeSpace::Ranked (FreeSpaceTiles.h): the left-out probes that could have a tile, how many
+    // got one, and the highest stand-in score among those that did not.
+    std::size_t freeSpaceCandidates = 0, freeSpaceTiles = 0;
+    float freeSpaceWorstLeft = 0.0f;
 };
 
 // Throws pb::Error for invalid volumes, no scenario, rays < 1 or bounces < 1.

@@ -12,6 +12,8 @@ bool probeSetMatchesScene(const ProbeSet& set, const scene::Scene& scene) {
     request.volumes = set.volumes;
     request.scenarios = set.scenarios;
     request.settings = set.settings;
+    request.freeSpace = set.freeSpace;
+    request.freeSpaceBudgetBytes = set.freeSpaceBudgetBytes;
     auto matches = [&](const scene::Scene& candidate) {
         for (bool sparse : {false, true}) {
             request.sparse = sparse;

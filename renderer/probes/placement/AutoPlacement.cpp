@@ -5,6 +5,7 @@
 #include "probes/store/MemoryReport.h"
 #include "probes/placement/PlacementError.h"
 #include "probes/bake/RayScene.h"
+#include "probes/store/FreeSpaceTiles.h"
 #include "probes/store/SparseStorage.h"
 
 #include <chrono>
@@ -56,6 +57,8 @@ public:
             best = fillSparseBudget(first, levels);
         else if (!capNote_.empty())
             best.notes.push_back(capNote_);
+        if (req_.sparse && req_.freeSpace == FreeSpace::Ranked && budgetSetsSpacing())
+            reserveFreeSpaceTiles(first, levels, best);
         if (budgetSetsSpacing()) chooseLattice(best);
         if (budgetSetsSpacing() && req_.latticeSearch) searchShift(best);
         // The default budget coarsens every time: that is how the default is defined, not news.
@@ -107,6 +110,31 @@ private:
         }
     }
 
+    // Ranked free space: the bake's tiles fill what the placement leaves of the budget. When the
+    // placement that fills it leaves them under kFreeSpaceTileShare, `auto` is placed again
+    // into the rest (`auto-uniform`, the comparison baseline, stays as it is placed). 5% fewer bytes should cost about 2.5% of spacing where surfaces set the memory
+    // (bytes ~ 1/spacing^2); a placement more than kMaxReserveCoarsening coarser is the
+    // placement's own steps (tiers of 2^levels, the lattice choice), whose price on the surfaces
+    // exceeds what the tiles return in the air (bench/results/2026-11-29-ranked-free-space.md):
+    // then the first placement stays and the tiles get what it leaves.
+    void reserveFreeSpaceTiles(const AutoPlacementResult& first, int levels,
+                               AutoPlacementResult& best) {
+        if (double(best.bytes) <= reservedBudget()) return;
+        reserved_ = true;
+        AutoPlacementResult r = fits(first) ? fillSparseBudget(first, levels)
+                                            : fitLimits(first, levels);
+        if (finest(r) <= finest(best) * (1.0f + kMaxReserveCoarsening))
+            best = std::move(r);
+        else
+            reserved_ = false;
+    }
+    static constexpr float kMaxReserveCoarsening = 0.05f;
+
+    // What the volumes may store of the budget: all of it, or, once the free-space tiles'
+    // share is reserved (reserveFreeSpaceTiles), the rest (FreeSpaceTiles.h).
+    double reservedBudget() const { return budget_ * (1.0 - kFreeSpaceTileShare); }
+    double placeBudget() const { return reserved_ ? reservedBudget() : budget_; }
+
     // The budget, not the user, set the spacing: only then are the lattice steps ours to choose.
     bool budgetSetsSpacing() const {
         return adaptive_ && budget_ > 0.0 && !(req_.adaptive.spacing > 0.0f);
@@ -120,7 +148,7 @@ private:
         const std::vector<std::size_t> kept = sparseProbeCounts(volumes, triangles_);
         std::vector<std::size_t> rest;
         for (std::size_t v = 0; v < volumes.size(); ++v)
-            rest.push_back(req_.freeSpaceIrradiance
+            rest.push_back(req_.freeSpace == FreeSpace::Irradiance
                                ? std::size_t(volumes[v].probeCount()) - kept[v]
                                : 0);
         return memoryReport(volumes, req_.format, &kept, &rest).total.storedTotal();
@@ -153,7 +181,7 @@ private:
     }
 
     bool fits(const AutoPlacementResult& r) const {
-        if (budget_ > 0.0 && double(r.bytes) > budget_) return false;
+        if (budget_ > 0.0 && double(r.bytes) > placeBudget()) return false;
         if (r.probes > req_.maxProbes) return false;
         for (const ProbeVolume& v : r.volumes)
             if (!volumeProblem(v).empty()) return false;
@@ -163,7 +191,7 @@ private:
     // How far over the limits a placement is (> 1: over).
     double excess(const AutoPlacementResult& r) const {
         double e = double(r.probes) / double(req_.maxProbes);
-        if (budget_ > 0.0) e = std::max(e, double(r.bytes) / budget_);
+        if (budget_ > 0.0) e = std::max(e, double(r.bytes) / placeBudget());
         for (const ProbeVolume& v : r.volumes)
             e = std::max(e, double(v.probeCount()) / double(kMaxProbesPerVolume));
         return e;
@@ -263,7 +291,7 @@ private:
              << best.probes << " probes, " << mib(double(best.bytes)) << ") to fit ";
         if (defaultBudget_)
             note << "the default budget";
-        else if (budget_ > 0.0 && double(first.bytes) > budget_)
+        else if (budget_ > 0.0 && double(first.bytes) > placeBudget())
             note << budgetOption(budget_);
         else
             note << "the limit of " << req_.maxProbes << " probes";
@@ -358,6 +386,7 @@ private:
     const AutoLattice lattice_;
     float spacing_; // the start spacing; after the first placement, the one it used
     double budget_; // the request's, or the default one (defaultBudget_)
+    bool reserved_ = false; // the free-space tiles' share is kept out of the placement's budget
     bool defaultBudget_ = false;
     std::vector<WorldTriangle> triangles_;
     std::unique_ptr<RayScene> rays_;

@@ -20,6 +20,7 @@
 #include "probes/placement/LatticeShiftSearch.h"
 #include "probes/Scenario.h"
 #include "probes/StorageFormat.h"
+#include "probes/store/SparseStorage.h"
 #include "scene/Scene.h"
 
 #include <functional>
@@ -41,9 +42,14 @@ struct AutoPlacementRequest {
     // The bake stores sparse (`bake --sparse`, SparseStorage.h): the budget counts only the
     // probes at surface cells (+ the indirection), so a finer spacing fits the same memory.
     bool sparse = false;
-    // With `sparse`: the probes it leaves out keep their irradiance tile, which the budget
-    // then counts (SparseStorage.h FreeSpace::Irradiance).
-    bool freeSpaceIrradiance = false;
+    // With `sparse`: what the probes it leaves out keep (SparseStorage.h FreeSpace).
+    // Irradiance: every one keeps its irradiance tile, which the budget then counts. Ranked
+    // (what `bake` asks for): the bake's tiles fill what the placement leaves of the budget
+    // (FreeSpaceTiles.h); when the adaptive placement that fills the budget leaves them less
+    // than kFreeSpaceTileShare of it, it is made again into the rest, if that costs at most
+    // 5% of its finest spacing (a placement the budget sets, not one at a given spacing;
+    // auto-uniform, the comparison baseline, is never placed again).
+    FreeSpace freeSpace = FreeSpace::StandIns;
     // `auto` under a budget (the default one included) ends with a measured search of where
     // its lattice sits (LatticeShiftSearch.h): up to 25 one-bounce trial bakes of the chosen
     // placement. false: keep the lattice as placed (`bake --no-lattice-search`).
@@ -67,7 +73,7 @@ struct AutoPlacementResult {
     std::size_t bytes = 0;      // stored probe memory in the request's format (sparse: as stored)
     long long probes = 0;
     int placements = 0;           // how many placements the budget loop tried
-    double budgetBytes = 0.0;     // the budget applied (0: none)
+    double budgetBytes = 0.0;     // the budget applied (0: none), free-space tiles included
     bool defaultBudget = false;   // adaptive, no spacing or budget given: the default uniform
                                   // grid's memory (coarsening to it is not reported in notes)
     AdaptiveStats stats;          // adaptive only: of the placement returned

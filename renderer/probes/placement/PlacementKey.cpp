@@ -23,7 +23,7 @@ std::uint64_t autoPlacementKey(const scene::Scene& scene, const AutoPlacementReq
     h.pod(std::uint32_t(r.format));
     h.pod(std::int64_t(r.maxProbes));
     h.pod(std::uint8_t(r.sparse));
-    if (r.sparse && r.freeSpaceIrradiance) h.pod(std::uint8_t(2)); // default keys unchanged
+    if (r.sparse && r.freeSpace != FreeSpace::StandIns) h.pod(std::uint8_t(r.freeSpace) + 1);
     h.pod(std::uint8_t(r.latticeSearch));
     h.pod(std::uint8_t(r.lighting.has_value()));
     if (r.lighting) {

@@ -297,6 +297,32 @@ void readShRecord(ByteReader& body, ProbeSet& set, const std::string& path) {
         }
 }
 
+// --- Free-space record (version 8): u8 FreeSpace, f64 Ranked's budget (ProbeSet.h).
+void writeFreeSpaceRecord(ByteWriter& w, const ProbeSet& set) {
+    w.pod(std::uint8_t(set.freeSpace));
+    w.pod(set.freeSpaceBudgetBytes);
+}
+
+void readFreeSpaceRecord(ByteReader& body, ProbeSet& set, const std::string& path) {
+    const auto mode = body.pod<std::uint8_t>("free-space choice");
+    const auto budget = body.pod<double>("free-space budget");
+    if (mode > std::uint8_t(FreeSpace::Irradiance))
+        throw fileError(path, "corrupt free-space record (choice " + std::to_string(mode) + ")");
+    if (!std::isfinite(budget) || budget < 0.0)
+        throw fileError(path, "corrupt free-space record (budget not a finite size)");
+    set.freeSpace = FreeSpace(mode);
+    set.freeSpaceBudgetBytes = budget;
+}
+
+// Before version 8: what the states imply (the bake hashed nothing else then).
+void impliedFreeSpace(ProbeSet& set) {
+    set.freeSpace = FreeSpace::StandIns;
+    for (const auto& states : set.states)
+        for (const ProbeState& p : states)
+            if (p.irradianceOnly) set.freeSpace = FreeSpace::Irradiance;
+    set.freeSpaceBudgetBytes = 0.0;
+}
+
 } // namespace
 
 std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
@@ -356,6 +382,7 @@ std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
             writeVolumeTexture(w, sc[v], set.volumes[v], set.states[v], true, set.format());
 
     writeShRecord(w, set);
+    writeFreeSpaceRecord(w, set);
 
     std::uint64_t total = w.data().size() + sizeof(std::uint64_t);
     std::memcpy(w.data().data() + 12, &total, sizeof(total));
@@ -476,6 +503,10 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
         }
     }
     if (version >= 6) readShRecord(body, set, path);
+    if (version >= 8)
+        readFreeSpaceRecord(body, set, path);
+    else
+        impliedFreeSpace(set);
     if (body.remaining() != 0)
         throw fileError(path, "corrupt: " + std::to_string(body.remaining()) +
                                   " unexpected bytes before the checksum");

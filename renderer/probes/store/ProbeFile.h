@@ -29,7 +29,13 @@ inline constexpr char kProbeFileMagic[8] = {'P', 'B', 'P', 'R', 'O', 'B', 'E', '
 //    files read with no SH).
 // 7: sparse volumes' irradiance-only probes (issue 18): a second bitmap after the presence
 //    bitmap, their irradiance tiles packed after the stored ones, their SH kept.
-inline constexpr std::uint32_t kProbeFileVersion = 7;
+// 8: the free-space record (issue 18) after the SH record: u8 FreeSpace, f64 Ranked's budget
+//    (older files: StandIns, or Irradiance when any probe is irradiance-only; budget 0).
+inline constexpr std::uint32_t kProbeFileVersion = 8;
+// The version the bake's input hash names (BakeHash.cpp): bumped with kProbeFileVersion when a
+// file of the same inputs would hold something else. Version 8 only writes down what version
+// 7 files imply (their free space), so a version 7 file stays up to date for the bake cache.
+inline constexpr std::uint32_t kProbeFileContentVersion = 7;
 inline constexpr std::uint32_t kProbeFileFirstVersion = 1; // oldest version still read
 
 std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set);

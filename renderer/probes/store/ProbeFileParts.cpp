@@ -3,8 +3,10 @@
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "probes/store/BinaryIO.h"
+#include "probes/store/FreeSpaceTiles.h"
 #include "probes/store/Hash.h"
 #include "probes/store/ProbeFile.h"
+#include "probes/store/SparseStorage.h"
 
 #include <algorithm>
 #include <cstring>
@@ -18,6 +20,8 @@ std::vector<std::uint8_t> geometryBytes(const ProbeSet& set) {
     ProbeSet g;
     g.inputHash = set.inputHash;
     g.settings = set.settings;
+    g.freeSpace = set.freeSpace;
+    g.freeSpaceBudgetBytes = set.freeSpaceBudgetBytes;
     g.volumes = set.volumes;
     g.states = set.states;
     g.visibility = set.visibility;
@@ -158,6 +162,17 @@ ProbeSet mergeProbeFileParts(const std::vector<ProbeFilePart>& parts,
         if (p.set.hasSh()) out.sh.push_back(p.set.sh[at]);
     }
     if (out.sh.size() != out.irradiance.size()) out.sh.clear(); // a part without SH: none
+    // Ranked free space ranks over every scenario's light, which no part has alone: the parts
+    // keep every left-out probe's tile and the choice is made here, as the whole bake makes it.
+    if (out.freeSpace == FreeSpace::Ranked) {
+        std::vector<std::vector<std::uint8_t>> keep;
+        for (const auto& states : out.states) {
+            keep.emplace_back(states.size(), 0);
+            for (std::size_t i = 0; i < states.size(); ++i)
+                keep.back()[i] = states[i].stored ? 1 : 0;
+        }
+        storeOnly(out, keep, chooseFreeSpaceTiles(out, keep, out.freeSpaceBudgetBytes).tiles);
+    }
     return out;
 }
 

@@ -7,7 +7,9 @@
 // every part runs it whole, and a scenario's radiance passes read only that scenario's
 // previous pass and are seeded by the scenario's index in the whole bake (BakeRequest::
 // onlyScenarios), so each part's scenarios are the whole bake's. The merge checks the parts'
-// geometry bytes agree instead of trusting it.
+// geometry bytes agree instead of trusting it. A sparse bake's ranked free-space tiles
+// (FreeSpaceTiles.h) rank every scenario's light: each part keeps every left-out probe's tile,
+// and the merge makes the whole bake's choice from the joined scenarios.
 //
 // Part file, little-endian: magic "PBPPART1", u32 version, u32 part, u32 parts, u32 the whole
 // bake's scenario count, u32 held scenario count + u32 index each, u64 size + the bytes of a

@@ -4,6 +4,7 @@
 #include "core/ParallelFor.h"
 #include "probes/ProbeSampler.h"
 #include "probes/ShIrradiance.h"
+#include "probes/store/FreeSpaceTiles.h"
 #include "probes/store/SparseLayout.h"
 
 #include <algorithm>
@@ -190,30 +191,61 @@ std::vector<std::size_t> sparseProbeCounts(const std::vector<ProbeVolume>& volum
     return out;
 }
 
+const char* freeSpaceName(FreeSpace f) {
+    switch (f) {
+    case FreeSpace::StandIns: return "stand-ins";
+    case FreeSpace::Ranked: return "ranked";
+    case FreeSpace::Irradiance: return "all";
+    }
+    return "?";
+}
+
+bool parseFreeSpace(const std::string& text, FreeSpace& out) {
+    for (FreeSpace f : {FreeSpace::StandIns, FreeSpace::Ranked, FreeSpace::Irradiance})
+        if (text == freeSpaceName(f)) {
+            out = f;
+            return true;
+        }
+    return false;
+}
+
 void applySparseStorage(ProbeSet& set, const std::vector<WorldTriangle>& triangles,
-                        FreeSpace freeSpace) {
+                        FreeSpace freeSpace, double budgetBytes) {
     const std::vector<int> parents = validateVolumes(set.volumes, "sparse storage");
     std::vector<std::vector<std::uint8_t>> keep;
     for (std::size_t vi = 0; vi < set.volumes.size(); ++vi)
         keep.push_back(sparseKeptProbes(set.volumes[vi], parents[vi] < 0, triangles));
-    storeOnly(set, keep, freeSpace);
+    storeOnly(set, keep, freeSpace, budgetBytes);
 }
 
 void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep,
-               FreeSpace freeSpace) {
-    if (keep.size() != set.volumes.size()) throw Error("storeOnly: one mask per volume");
+               FreeSpace freeSpace, double budgetBytes) {
+    if (freeSpace == FreeSpace::Ranked) {
+        storeOnly(set, keep, chooseFreeSpaceTiles(set, keep, budgetBytes).tiles);
+        return;
+    }
+    std::vector<std::vector<std::uint8_t>> tiles;
+    for (const auto& k : keep)
+        tiles.emplace_back(k.size(), freeSpace == FreeSpace::Irradiance ? 1 : 0);
+    storeOnly(set, keep, tiles);
+}
+
+void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep,
+               const std::vector<std::vector<std::uint8_t>>& tiles) {
+    if (keep.size() != set.volumes.size() || tiles.size() != set.volumes.size())
+        throw Error("storeOnly: one mask per volume");
     for (std::size_t vi = 0; vi < set.volumes.size(); ++vi) {
         const ProbeVolume& v = set.volumes[vi];
         std::vector<ProbeState>& states = set.states[vi];
-        if (keep[vi].size() != states.size()) throw Error("storeOnly: one flag per probe");
-        // FreeSpace::Irradiance: a valid probe left out keeps its irradiance
-        // (ProbeState::irradianceOnly): it lies outside geometry, and only free cells read it.
-        // Otherwise, and for an invalid probe, it is dropped whole.
-        const bool irradiance = freeSpace == FreeSpace::Irradiance;
+        if (keep[vi].size() != states.size() || tiles[vi].size() != states.size())
+            throw Error("storeOnly: one flag per probe");
+        // A valid probe left out with a tile keeps its irradiance (ProbeState::irradianceOnly):
+        // it lies outside geometry, and only free cells read it. Otherwise, and for an invalid
+        // probe, it is dropped whole.
         for (std::size_t i = 0; i < states.size(); ++i) {
             const bool valid = states[i].valid;
             states[i].stored = valid && keep[vi][i];
-            states[i].irradianceOnly = irradiance && valid && !keep[vi][i];
+            states[i].irradianceOnly = valid && !keep[vi][i] && tiles[vi][i];
             states[i].valid = states[i].stored || states[i].irradianceOnly;
         }
         // Zero what is not stored the way the file's round trip does: pack, then unpack.

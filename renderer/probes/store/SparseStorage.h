@@ -14,6 +14,7 @@
 #include "probes/StaticTriangles.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace pb::probes {
@@ -53,23 +54,26 @@ std::vector<std::size_t> sparseProbeCounts(const std::vector<ProbeVolume>& volum
 std::size_t freeSpaceOnlyProbes(const ProbeSet& set,
                                 const std::vector<WorldTriangle>& triangles);
 
-// What sparse storage keeps of the valid probes it leaves out (issue 18):
-// - StandIns: nothing (they become invalid; lookups read their nearest stored probe,
-//   AbsentProbeFill.h). The default.
-// - Irradiance: their irradiance tile and SH, no visibility (ProbeState::irradianceOnly): a
-//   mid-air lookup then gives the dense bake's light, for a third of a stored probe's bytes
-//   each (`bake --free-space-irradiance`).
-enum class FreeSpace { StandIns, Irradiance };
+// FreeSpace (ProbeSet.h): what sparse storage keeps of the valid probes it leaves out.
+// "stand-ins", "ranked", "all" (the `bake --free-space` values).
+const char* freeSpaceName(FreeSpace f);
+bool parseFreeSpace(const std::string& text, FreeSpace& out);
 
 // Marks every probe that is invalid or no surface corner as not stored (and invalid, or
 // irradiance-only) and zeroes what it no longer holds, exactly as writing and reading the
-// file would.
+// file would. `budgetBytes`: Ranked's memory budget (chooseFreeSpaceTiles).
 void applySparseStorage(ProbeSet& set, const std::vector<WorldTriangle>& triangles,
-                        FreeSpace freeSpace = FreeSpace::StandIns);
+                        FreeSpace freeSpace = FreeSpace::StandIns, double budgetBytes = 0.0);
 
 // The same for any choice: keep[volume][probe] != 0 and valid stays stored, the rest becomes
-// absent. Sizes must match the set's volumes.
+// absent. Sizes must match the set's volumes. Ranked chooses its tiles from the set as given
+// (every valid probe traced).
 void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep,
-               FreeSpace freeSpace = FreeSpace::StandIns);
+               FreeSpace freeSpace = FreeSpace::StandIns, double budgetBytes = 0.0);
+
+// The same with the tiles chosen: tiles[volume][probe] != 0 and valid, not kept, becomes
+// irradiance-only.
+void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep,
+               const std::vector<std::vector<std::uint8_t>>& tiles);
 
 } // namespace pb::probes
