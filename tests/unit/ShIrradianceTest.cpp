@@ -43,6 +43,7 @@ std::vector<std::uint8_t> asVersion5(std::vector<std::uint8_t> bytes, const Prob
     for (std::size_t s = 0; s < set.sh.size(); ++s)
         for (const ProbeVolume& v : set.volumes)
             shBytes += std::size_t(v.probeCount()) * 9 * 12;
+    shBytes += 1 + 8; // and version 8's free-space record after it
     bytes.resize(bytes.size() - 8 - shBytes);
     const std::uint32_t version = 5;
     std::memcpy(bytes.data() + 8, &version, 4);

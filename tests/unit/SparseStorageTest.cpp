@@ -413,6 +413,28 @@ TEST(SparseStorage, FileRoundTripKeepsTheRankedMixOfTilesAndStandIns) {
     EXPECT_EQ(c.invalid, inside);
 }
 
+// A version 7 file (no free-space record) reads as what its states imply - all when it has
+// irradiance-only probes - and its input hash, made then of exactly that, still matches its
+// scene and the bake of the same request (the bake cache keeps it).
+TEST(SparseStorage, AVersion7FileReadsItsFreeSpaceFromItsStates) {
+    const pb::scene::Scene scene = pb::scene::makeBuiltinScene("courtyard");
+    const ProbeSet sparse = bakeBuiltin("courtyard", 1500, true, FreeSpace::Irradiance);
+    std::vector<std::uint8_t> bytes = serializeProbeSet(sparse);
+    bytes.resize(bytes.size() - 8 - 9); // the checksum and the free-space record
+    const std::uint32_t version = 7;
+    std::memcpy(bytes.data() + 8, &version, 4);
+    const std::uint64_t size = bytes.size() + 8;
+    std::memcpy(bytes.data() + 12, &size, 8);
+    const std::uint64_t sum = fnv1a64(bytes.data(), bytes.size());
+    bytes.resize(bytes.size() + 8);
+    std::memcpy(bytes.data() + bytes.size() - 8, &sum, 8);
+    const ProbeSet old = parseProbeSet(bytes, "v7.pbp");
+    EXPECT_EQ(old.freeSpace, FreeSpace::Irradiance);
+    EXPECT_EQ(old.freeSpaceBudgetBytes, 0.0);
+    EXPECT_EQ(old.inputHash, sparse.inputHash);
+    EXPECT_TRUE(probeSetMatchesScene(old, scene));
+}
+
 TEST(SparseStorage, FileRoundTripStoresOnlyTheKeptTiles) {
     ProbeSet sparse = bakeBuiltin("courtyard", 1500, true, FreeSpace::Irradiance);
     ASSERT_LT(sparse.storedCount(), sparse.probeCount());
