@@ -2,6 +2,7 @@
 // the bake's SH in the probe file (and older files reading as "no SH"), and the CPU SH
 // sampler's leak modes.
 #include "probes/ShIrradiance.h"
+#include "OlderProbeFile.h"
 #include "ProbeTestScenes.h"
 #include "SunlitFloorBake.h"
 #include "core/Error.h"
@@ -44,15 +45,7 @@ std::vector<std::uint8_t> asVersion5(std::vector<std::uint8_t> bytes, const Prob
         for (const ProbeVolume& v : set.volumes)
             shBytes += std::size_t(v.probeCount()) * 9 * 12;
     shBytes += 1 + 8; // and version 8's free-space record after it
-    bytes.resize(bytes.size() - 8 - shBytes);
-    const std::uint32_t version = 5;
-    std::memcpy(bytes.data() + 8, &version, 4);
-    const std::uint64_t size = bytes.size() + 8;
-    std::memcpy(bytes.data() + 12, &size, 8);
-    const std::uint64_t sum = fnv1a64(bytes.data(), bytes.size());
-    bytes.resize(bytes.size() + 8);
-    std::memcpy(bytes.data() + bytes.size() - 8, &sum, 8);
-    return bytes;
+    return pb::test::asOlderProbeFile(std::move(bytes), shBytes, 5);
 }
 
 } // namespace

@@ -2,6 +2,7 @@
 // surface test keeps, the probe file round trip of a sparse set, and the guarantee that lets
 // sparse storage drop probes at all: no surface point's irradiance changes.
 #include "probes/store/SparseStorage.h"
+#include "OlderProbeFile.h"
 #include "ProbeTestScenes.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
@@ -419,15 +420,9 @@ TEST(SparseStorage, FileRoundTripKeepsTheRankedMixOfTilesAndStandIns) {
 TEST(SparseStorage, AVersion7FileReadsItsFreeSpaceFromItsStates) {
     const pb::scene::Scene scene = pb::scene::makeBuiltinScene("courtyard");
     const ProbeSet sparse = bakeBuiltin("courtyard", 1500, true, FreeSpace::Irradiance);
-    std::vector<std::uint8_t> bytes = serializeProbeSet(sparse);
-    bytes.resize(bytes.size() - 8 - 9); // the checksum and the free-space record
-    const std::uint32_t version = 7;
-    std::memcpy(bytes.data() + 8, &version, 4);
-    const std::uint64_t size = bytes.size() + 8;
-    std::memcpy(bytes.data() + 12, &size, 8);
-    const std::uint64_t sum = fnv1a64(bytes.data(), bytes.size());
-    bytes.resize(bytes.size() + 8);
-    std::memcpy(bytes.data() + bytes.size() - 8, &sum, 8);
+    // Version 7 had no free-space record (u8 + f64).
+    const std::vector<std::uint8_t> bytes =
+        pb::test::asOlderProbeFile(serializeProbeSet(sparse), 9, 7);
     const ProbeSet old = parseProbeSet(bytes, "v7.pbp");
     EXPECT_EQ(old.freeSpace, FreeSpace::Irradiance);
     EXPECT_EQ(old.freeSpaceBudgetBytes, 0.0);
