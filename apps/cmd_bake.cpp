@@ -376,7 +376,9 @@ std::optional<std::pair<ProbeSet, nlohmann::json>> upToDateByPlacementCache(
     BakeRequest r;
     r.volumes = set->volumes;
     setBakeSettings(a, s, {}, r);
-    r.freeSpaceBudgetBytes = cached->placement.value("budget_bytes", 0.0);
+    // As buildRequest sets it: the placement's budget when it had one.
+    if (const double b = cached->placement.value("budget_bytes", 0.0); b > 0.0)
+        r.freeSpaceBudgetBytes = b;
     if (set->inputHash != cached->inputHash || bakeInputHash(s, r) != set->inputHash)
         return std::nullopt;
     return std::make_pair(std::move(*set), cached->placement);

@@ -259,7 +259,8 @@ TEST(AutoPlacement, RankedFreeSpaceLeavesTheTilesTheirShareOfTheBudget) {
         req.freeSpace = FreeSpace::Ranked;
         const AutoPlacementResult ranked = placeAutoVolumes(s, req);
         EXPECT_EQ(ranked.budgetBytes, standIns.budgetBytes) << "the tiles' share is in the budget";
-        const bool filled = double(standIns.bytes) > standIns.budgetBytes * (1 - kFreeSpaceTileShare);
+        const bool filled =
+            double(standIns.bytes) > standIns.budgetBytes * (1 - kFreeSpaceTileShare);
         if (std::string(name) == "rooms") EXPECT_TRUE(filled) << "the rooms test nothing";
         if (std::string(name) == "cornell") EXPECT_FALSE(filled) << "the Cornell box tests nothing";
         if (filled) {

@@ -140,7 +140,8 @@ TEST(FreeSpaceTiles, AProbeWithItsStandInsLightScoresZero) {
         stored[p].stored = stored[p].valid && keep[0][p];
         stored[p].valid = stored[p].stored;
     }
-    const int from = fillSources(traced.volumes[0], stored, traced.settings.backfaceThreshold)[worst];
+    const int from =
+        fillSources(traced.volumes[0], stored, traced.settings.backfaceThreshold)[worst];
     ASSERT_GE(from, 0);
     ProbeTexture& t = traced.irradiance[0][0];
     const glm::ivec3 a = traced.volumes[0].probeCoords(int(worst)),

@@ -112,11 +112,12 @@ private:
 
     // Ranked free space: the bake's tiles fill what the placement leaves of the budget. When the
     // placement that fills it leaves them under kFreeSpaceTileShare, `auto` is placed again
-    // into the rest (`auto-uniform`, the comparison baseline, stays as it is placed). 5% fewer bytes should cost about 2.5% of spacing where surfaces set the memory
-    // (bytes ~ 1/spacing^2); a placement more than kMaxReserveCoarsening coarser is the
-    // placement's own steps (tiers of 2^levels, the lattice choice), whose price on the surfaces
-    // exceeds what the tiles return in the air (bench/results/2026-11-29-ranked-free-space.md):
-    // then the first placement stays and the tiles get what it leaves.
+    // into the rest (`auto-uniform`, the comparison baseline, stays as it is placed). 5% fewer
+    // bytes should cost about 2.5% of spacing where surfaces set the memory (bytes ~
+    // 1/spacing^2); a placement more than kMaxReserveCoarsening coarser is the placement's own
+    // steps (tiers of 2^levels, the lattice choice), whose price on the surfaces exceeds what
+    // the tiles return in the air (bench/results/2026-11-29-ranked-free-space.md): then the
+    // first placement stays and the tiles get what it leaves.
     void reserveFreeSpaceTiles(const AutoPlacementResult& first, int levels,
                                AutoPlacementResult& best) {
         if (double(best.bytes) <= reservedBudget()) return;
