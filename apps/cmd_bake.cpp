@@ -839,8 +839,9 @@ const RegisterCommand reg{{
                    "nearby) keep. ranked: the ones whose stand-in (the nearest stored probe, "
                    "which lookups read instead) is furthest from their own light keep their "
                    "irradiance tile (a third of a probe's bytes, no visibility), as many as "
-                   "the memory budget allows: auto placement leaves at least 5% of its budget "
-                   "to them (without a budget they add 5% of the whole). stand-ins: none do. "
+                   "the memory budget allows: what auto placement leaves of its budget (it is "
+                   "placed again to leave 5% when that costs at most 5% of its spacing; "
+                   "without a budget they add 5% of the whole). stand-ins: none do. "
                    "all: every one does, and the budget counts them all, so auto placement "
                    "picks a coarser spacing (bench/README.md \"Mid-air options\")")
                 ->capture_default_str();
