@@ -22,9 +22,10 @@
 
 namespace pb::probes {
 
-// The share of a sparse set's memory kept for these tiles at least: a placement under a budget
-// that leaves them less is made again into (1 - share) of it (AutoPlacement.h), and a bake
-// without a budget lets the tiles add up to share / (1 - share) of its stored bytes. 5%: on the
+// The share of a sparse set's memory these tiles are meant to get: an adaptive placement under
+// a budget that leaves them less is made again into (1 - share) of it when that costs at most
+// 5% of its spacing (AutoPlacement.h), and a bake without a budget lets the tiles add up to
+// share / (1 - share) of its stored bytes. 5%: on the
 // built-in scenes' default placements the tiles that bring every mid-air lookup within 15% of
 // the dense one cost 2.1-7.2% of the stored bytes, and the placements leave 2.8-16.6% of
 // their budget unused (bench/results/2026-11-29-irradiance-only-half-tiles.md).
