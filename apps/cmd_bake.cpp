@@ -412,12 +412,14 @@ nlohmann::json volumesJson(const ProbeSet& set, const std::vector<ProbeCounts>& 
 
 // "probes: N in V volume(s), ..." : stored / absent / invalid (ProbeCounts.h).
 // `irradianceOnly`: how many absent probes kept their irradiance (--free-space).
-std::string probeCountsText(const ProbeCounts& c, std::size_t volumes, std::size_t irradianceOnly) {
+// volumeProbeCounts always knows absent and invalid (the bake's count, or the states).
+std::string probeCountsText(const ProbeCounts& c, std::size_t volumes,
+                            std::size_t irradianceOnly) {
     std::ostringstream s;
     s << "probes: " << c.probes << " in " << volumes << " volume(s), ";
     if (c.notStored() == 0)
         s << "all stored, " << *c.invalid << " invalid (inside geometry)";
-    else if (c.absent && c.invalid)
+    else
         s << c.stored << " stored, " << *c.absent
           << (irradianceOnly == 0 ? " absent (not stored: no surface nearby), "
               : irradianceOnly == *c.absent
@@ -425,9 +427,6 @@ std::string probeCountsText(const ProbeCounts& c, std::size_t volumes, std::size
                   : " absent (no surface nearby; " + std::to_string(irradianceOnly) +
                         " of them keep their irradiance, no visibility), ")
           << *c.invalid << " invalid (inside geometry, not stored)";
-    else
-        s << c.stored << " stored, " << c.notStored() << " not stored (absent or invalid: a "
-          << "file read back does not tell which; --force re-bakes)";
     return s.str();
 }
 

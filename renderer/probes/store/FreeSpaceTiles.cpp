@@ -99,8 +99,7 @@ std::vector<std::vector<float>> standInErrors(const ProbeSet& traced,
 FreeSpaceTileChoice chooseFreeSpaceTiles(const ProbeSet& traced,
                                          const std::vector<std::vector<std::uint8_t>>& keep,
                                          double budgetBytes) {
-    checkShapes(traced, keep);
-    const std::vector<std::vector<float>> errors = standInErrors(traced, keep);
+    const std::vector<std::vector<float>> errors = standInErrors(traced, keep); // checks shapes
     FreeSpaceTileChoice c;
     std::vector<std::size_t> stored;
     std::vector<std::tuple<float, std::size_t, std::size_t>> ranked; // score, volume, probe
@@ -117,13 +116,13 @@ FreeSpaceTileChoice chooseFreeSpaceTiles(const ProbeSet& traced,
         stored.push_back(n);
     }
     c.candidates = ranked.size();
+    // Highest score first; ties by volume, then probe.
     std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) {
-        return std::get<0>(a) > std::get<0>(b) ||
-               (std::get<0>(a) == std::get<0>(b) &&
-                std::make_pair(std::get<1>(a), std::get<2>(a)) <
-                    std::make_pair(std::get<1>(b), std::get<2>(b)));
+        return std::make_tuple(-std::get<0>(a), std::get<1>(a), std::get<2>(a)) <
+               std::make_tuple(-std::get<0>(b), std::get<1>(b), std::get<2>(b));
     });
-    // The set's bytes with the first k ranked probes as tiles (monotone in k).
+    // The set's bytes with the first k ranked probes as tiles. The packed textures grow in
+    // steps, so the search below keeps only k it has checked against the budget.
     auto bytesWith = [&](std::size_t k) {
         std::vector<std::size_t> tiles(traced.volumes.size(), 0);
         for (std::size_t i = 0; i < k; ++i)
