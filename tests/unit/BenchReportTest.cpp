@@ -31,7 +31,7 @@ VariantResult variant(const Variant& v, double frameMs, double flip, double psnr
         t.ms = stats::summarize(t.samples);
         r.sections.push_back(t);
     }
-    r.accuracy = {true, flip, 2 * flip, psnr, 1.0 - flip, flip * flip, ""};
+    r.accuracy = {true, flip, 2 * flip, psnr, 1.0 - flip, flip * flip, "", "", ""};
     r.coverage = {1.0, 1, 1.0};
     r.giMemoryMiB = 2.5;
     r.volumesKept = 1;
@@ -313,8 +313,9 @@ TEST(BenchFetchFloor, TheRatioPerEvaluationDividesByTheEvaluationsPerTexel) {
     int counted = 0;
     for (const auto& v : j["variants"]) {
         if (!v.contains("gi_evaluations")) {
-            if (v.contains("gi_over_floor_per_evaluation"))
+            if (v.contains("gi_over_floor_per_evaluation")) {
                 EXPECT_TRUE(v["gi_over_floor_per_evaluation"].is_null()) << v.dump();
+            }
             continue;
         }
         ++counted;

@@ -87,7 +87,9 @@ TEST(CostModelSh, EachLookupReadsEightTexelsPerCoefficientTexturePlusTheMask) {
             const std::uint64_t read = v.shCoefficientFetches / std::uint64_t(textures);
             EXPECT_LE(read, looked);
             EXPECT_GE(read, looked * 99 / 100);
-            if (!mask) EXPECT_EQ(read, looked);
+            if (!mask) {
+                EXPECT_EQ(read, looked);
+            }
             // The formula: 8 texels per coefficient texture + 1 for the mask.
             EXPECT_EQ(v.probeTexels, 8 * std::uint64_t(textures) * read + v.shMaskFetches);
             EXPECT_EQ(shTexelsPerLookup(r.profile), 8 * textures + (mask ? 1 : 0));

@@ -187,7 +187,9 @@ TEST(CostModelSparse, AStandInsFetchesLandInItsSourcesTile) {
             }
             EXPECT_TRUE(owner) << "fetch at tile " << tile.x << "," << tile.y << "," << tile.z;
         }
-        if (l.trace.probesRead) EXPECT_EQ(tiles, expected);
+        if (l.trace.probesRead) {
+            EXPECT_EQ(tiles, expected);
+        }
     }
     EXPECT_GT(standInFetches, 100);
 }

@@ -31,7 +31,9 @@ void expectGoodDefaultView(const Scene& s, const std::string& label) {
     EXPECT_GE(c.frontFraction, 0.5f) << label;
     EXPECT_LT(c.skyFraction, 0.5f) << label;
     EXPECT_FALSE(c.insideClosedMesh) << label;
-    if (c.sceneHasLight) EXPECT_GE(c.litFraction, 0.1f) << label;
+    if (c.sceneHasLight) {
+        EXPECT_GE(c.litFraction, 0.1f) << label;
+    }
 }
 
 View lookFrom(glm::vec3 eye, glm::vec3 target) {

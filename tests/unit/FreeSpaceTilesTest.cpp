@@ -154,5 +154,7 @@ TEST(FreeSpaceTiles, AProbeWithItsStandInsLightScoresZero) {
     const std::vector<std::vector<float>> after = standInErrors(traced, keep);
     EXPECT_EQ(after[0][worst], 0.0f);
     for (std::size_t p = 0; p < err[0].size(); ++p)
-        if (p != worst && !keep[0][p]) EXPECT_EQ(after[0][p], err[0][p]) << p;
+        if (p != worst && !keep[0][p]) {
+            EXPECT_EQ(after[0][p], err[0][p]) << p;
+        }
 }

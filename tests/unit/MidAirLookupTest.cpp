@@ -194,7 +194,7 @@ TEST_P(MidAir, TheDefaultBakeLightsEveryPointWithin15PercentOfTheDenseBake) {
     EXPECT_LE(double(m.total.storedTotal()), budget) << "the tiles broke the budget";
     EXPECT_GT(m.total.irradianceOnlyProbes, 0u) << "no tile chosen: vacuous";
     const MidAirError e = compareMidAir(b, 500);
-    std::printf("[ mid-air ] %s, default bake: %zu of %d probes stored, %zu irradiance-only, "
+    std::printf("[ mid-air ] %s, default bake: %zu of %zu probes stored, %zu irradiance-only, "
                 "%.0f of %.0f KiB; %d lookups, %d differ from the dense one: mean %.4f, p90 "
                 "%.4f, worst %.4f; %d unlit\n",
                 GetParam(), b.sparse.storedCount(), b.sparse.probeCount(),

@@ -261,8 +261,12 @@ TEST(SparseStorage, BakingOnlyTheKeptProbesGivesTheDenseBakeDropped) {
     ProbeSet dense = denseBake;
     applySparseStorage(dense, staticBakeTriangles(s), mode);
     const std::size_t tiles = memoryReport(dense).total.irradianceOnlyProbes;
-    if (mode == FreeSpace::StandIns) EXPECT_EQ(tiles, 0u);
-    if (mode != FreeSpace::StandIns) EXPECT_GT(tiles, 0u);
+    if (mode == FreeSpace::StandIns) {
+        EXPECT_EQ(tiles, 0u);
+    }
+    if (mode != FreeSpace::StandIns) {
+        EXPECT_GT(tiles, 0u);
+    }
     r.sparse = true;
     r.freeSpace = mode;
     const ProbeSet sparse = bakeProbes(s, r);
@@ -346,9 +350,10 @@ TEST(SparseStorage, AbsentProbesReadTheirNearestStoredProbe) {
         const glm::vec3 at = v.gridLocal(v.probeCoords(int(i)));
         const float d = glm::length(v.gridLocal(v.probeCoords(source[i])) - at);
         for (std::size_t j = 0; j < source.size(); ++j)
-            if (sparse.states[0][j].stored && sparse.states[0][j].valid)
+            if (sparse.states[0][j].stored && sparse.states[0][j].valid) {
                 ASSERT_GE(glm::length(v.gridLocal(v.probeCoords(int(j))) - at), d - 1e-4f)
                     << "probe " << i << ": " << j << " is nearer than " << source[i];
+            }
     }
     EXPECT_GT(filled, 0);
 
