@@ -3,6 +3,7 @@
 #include "ParseErrors.h"
 #include "Version.h"
 #include "core/Error.h"
+#include "core/ReuseFreedMemory.h"
 
 #include <algorithm>
 #include <iostream>
@@ -18,6 +19,7 @@ std::vector<Command>& commands() {
 } // namespace pb::app
 
 int main(int argc, char** argv) {
+    pb::reuseFreedMemory(); // bakes free and reallocate large textures (ReuseFreedMemory.h)
     using namespace pb::app;
     CLI::App app{"probebench - a testbed for baked probe global illumination (DDGI) on weak GPUs.\n"
                  "Renders glTF or built-in scenes through OpenGL ES 3 (EGL headless by default,\n"

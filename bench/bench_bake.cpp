@@ -11,6 +11,7 @@
 //
 // Scene: $PB_SPONZA_GLB, else $PB_SCENES_DIR/sponza_decimated/sponza_s_lod4.glb, else
 // ../shared/scenes beside the source tree.
+#include "core/ReuseFreedMemory.h"
 #include "probes/bake/BakePhaseClock.h"
 #include "probes/bake/Baker.h"
 #include "core/ParallelFor.h"
@@ -205,6 +206,7 @@ BENCHMARK(BM_SamplerLookup)->Arg(0)->Arg(1);
 } // namespace
 
 int main(int argc, char** argv) {
+    pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
     benchmark::Initialize(&argc, argv);
     if (!std::filesystem::exists(sponzaPath())) {
         std::cerr << "bench_bake: scene not found: " << sponzaPath()

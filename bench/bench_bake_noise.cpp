@@ -6,6 +6,7 @@
 //
 // Usage: bench_bake_noise SCENE A.probes B.probes [POINTS] [--region X0,Y0,Z0,X1,Y1,Z1]
 // (SCENE: built-in name or glTF; --region: only the points inside that box, e.g. one room)
+#include "core/ReuseFreedMemory.h"
 #include "core/Error.h"
 #include "probes/bake/SeedDifference.h"
 #include "probes/store/ProbeFile.h"
@@ -19,6 +20,7 @@
 using namespace pb;
 
 int main(int argc, char** argv) {
+    pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
     const char* usage =
         "usage: bench_bake_noise SCENE A.probes B.probes [POINTS] [--region X0,Y0,Z0,X1,Y1,Z1]\n";
     if (argc < 4) {

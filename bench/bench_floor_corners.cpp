@@ -20,6 +20,7 @@
 // Usage: bench_floor_corners [--rays R] [--gather-rays G] [--lines N] [--below Y]
 //                            [--patch X0 Z0 ROWS] [--dump FILE] [SCENE]  (default: Sponza, --below
 //                            1)
+#include "core/ReuseFreedMemory.h"
 #include "SharedScenes.h"
 #include "core/Error.h"
 #include "probes/Octahedral.h"
@@ -235,6 +236,7 @@ struct Bin {
 } // namespace
 
 int main(int argc, char** argv) {
+    pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
     int rays = 64, gatherRays = 256, lineCount = 40;
     float below = 1.0f;
     std::string scenePath, dumpPath;

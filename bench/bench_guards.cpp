@@ -16,6 +16,7 @@
 // Under valgrind --tool=callgrind with LP_NUM_THREADS=0 and --only CONFIG --rounds 1 the
 // instruction count of one configuration is repeatable (DESIGN.md): a hardware-independent
 // proxy (bench/README.md lists the command).
+#include "core/ReuseFreedMemory.h"
 #include "frame/FrameRenderer.h"
 #include "metrics/Statistics.h"
 #include "platforms/Platform.h"
@@ -84,6 +85,7 @@ int intArg(int argc, char** argv, const char* name, int def) {
 } // namespace
 
 int main(int argc, char** argv) {
+    pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
     const int width = intArg(argc, argv, "--width", 960);
     const int height = intArg(argc, argv, "--height", 540);
     const int rounds = std::max(1, intArg(argc, argv, "--rounds", 9));

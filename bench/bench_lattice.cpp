@@ -25,6 +25,7 @@
 // Usage: bench_lattice [--lines N] [--rays R] [--gather-rays G] [--below Y] [--elevation DEG]
 //                      [--volumes FILE]...
 //                      [--json FILE] [SCENE...]   (default: the five shared scenes)
+#include "core/ReuseFreedMemory.h"
 #include "SharedScenes.h"
 #include "core/Error.h"
 #include "probes/ProbeSampler.h"
@@ -183,6 +184,7 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
 } // namespace
 
 int main(int argc, char** argv) {
+    pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
     Options o;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];

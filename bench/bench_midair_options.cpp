@@ -33,6 +33,7 @@
 // Usage: bench_midair_options [--max-probes N] [--rays R] [--sh-only | --slack]
 //                             [--default-placement] [SCENE...]
 //        (default: cornell rooms courtyard)
+#include "core/ReuseFreedMemory.h"
 #include "core/Error.h"
 #include "probes/AbsentProbeFill.h"
 #include "probes/Octahedral.h"
@@ -865,6 +866,7 @@ void slackVariants(const char* name) {
 } // namespace
 
 int main(int argc, char** argv) {
+    pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
     std::vector<std::string> scenes;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];

@@ -7,6 +7,7 @@
 // Own flags, before them: --scene=NAME|FILE (default rooms with bench/volumes/rooms_nested.toml;
 // another scene bakes --volumes auto), --volumes=auto|auto-uniform|FILE, --size=WxH (default
 // 640x360), --platform=egl|osmesa, --timing=auto|cpu|query.
+#include "core/ReuseFreedMemory.h"
 #include "bench/runner/FetchFloorPass.h"
 #include "bench/runner/ProbeCache.h"
 #include "bench/runner/SectionTimer.h"
@@ -163,6 +164,7 @@ void setUp(World& w) {
 } // namespace
 
 int main(int argc, char** argv) {
+    pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
     World w;
     world = &w;
     try {

@@ -46,6 +46,7 @@
 //
 // Scenes: arguments (paths or built-in names), else the five shared scenes under
 // $PB_SCENES_DIR (default ../shared/scenes: run it from the repository root).
+#include "core/ReuseFreedMemory.h"
 #include "SharedScenes.h"
 #include "core/Error.h"
 #include "probes/placement/AutoPlacement.h"
@@ -341,6 +342,7 @@ void printTable(const nlohmann::json& r) {
 } // namespace
 
 int main(int argc, char** argv) {
+    pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
     Options o;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
