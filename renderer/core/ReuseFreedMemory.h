@@ -9,7 +9,7 @@ namespace pb {
 // placement's lattice search bakes up to 25 trial sets in a row. glibc serves every block over
 // its mmap threshold (128 KiB to 32 MiB, adapting) with a fresh mapping and unmaps it on free,
 // so each trial page-faults and the kernel zeroes all of its memory again. On the 2-core VM
-// that was about 40% of a default `bake --scene courtyard` (14.8 s -> 7.3 s with this; the
+// that was about 40% of a default `bake --scene courtyard` (13.7 s -> 6.8 s wall with this; the
 // output is byte-identical, bench/results/2026-11-29-allocator-reuse.md). The cost: the
 // process keeps its peak heap until it exits, which a command-line run does anyway.
 //

@@ -90,6 +90,28 @@ TEST(LatticeScore, FloorLinesStayOnFlatUpwardSurfaces) {
     EXPECT_TRUE(findFloorLines(RayScene(wall), 5, 16, 0.1f).empty());
 }
 
+TEST(LatticeScore, FloorLinesDoNotRunInsideAWallWhoseTopIsInTheCeiling) {
+    // The rooms' build: a 6 x 6 m floor, a wall box standing on it (|x| < 0.5, up to y = 2) and
+    // a ceiling box that holds the wall's top. From a floor point inside the wall, the first
+    // thing straight up is the ceiling's underside, so only the other directions show that the
+    // point is inside a solid.
+    scene::Scene s = emptyScene();
+    const int m = addMaterial(s, glm::vec3(0.5f));
+    scene::Primitive floor;
+    floor.material = m;
+    addQuad(floor, {-3, 0, -3}, {6, 0, 0}, {0, 0, 6}, {0, 1, 0});
+    addInstance(s, floor);
+    addInstance(s, boxPrimitive({-0.5f, -0.2f, -3}, {0.5f, 2.0f, 3}, false, m));
+    addInstance(s, boxPrimitive({-3, 1.9f, -3}, {3, 2.1f, 3}, false, m));
+    const RayScene rs(s);
+    const std::vector<FloorLine> lines = findFloorLines(rs, 40, 8, 0.1f);
+    ASSERT_GE(lines.size(), 20u);
+    for (const FloorLine& l : lines)
+        for (int i = 0; i < l.samples; ++i)
+            EXPECT_GT(std::fabs(l.point(i).x), 0.5f - 1e-3f) << "inside the wall at x "
+                                                              << l.point(i).x;
+}
+
 TEST(LatticeScore, ADoubleSidedFloorWoundDownwardIsAFloorASingleSidedOneIsNot) {
     // Sponza's court floor: its triangles face down, its material is double-sided, so it is
     // rendered from above. Wound the same way but single-sided it is a ceiling's underside.

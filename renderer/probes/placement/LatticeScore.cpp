@@ -1,5 +1,6 @@
 #include "probes/placement/LatticeScore.h"
 
+#include "probes/bake/MidAirSamples.h"
 #include "probes/bake/RayDirections.h"
 
 #include <cmath>
@@ -68,6 +69,9 @@ std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples
             ok = ok &&
                  (!up.hit() || (up.t > clearance && (rs.faceNormal(up.geomID, up.primID).y < 0.0f ||
                                                      rs.surface(up.geomID).doubleSided)));
+            // A floor running under a wall box whose top is inside a ceiling box passes the
+            // test above (the ceiling's underside comes first): ask every direction (the rooms).
+            ok = ok && !insideGeometry(rs, q + glm::vec3(0, lift, 0), clearance);
         }
         if (!ok) continue;
         lines.push_back({glm::vec3(p.x, height + lift, p.z), axis, step, samples});

@@ -30,8 +30,10 @@ struct FloorLine {
 // upward-facing surfaces (normal within ~2.5 degrees of +Y; a double-sided face counts with
 // either winding) that stay flat (every point's surface at the first point's height, within
 // step / 8) and open above over their whole length (nothing within 4 steps, and the first
-// thing above is a ceiling seen from below or double-sided, not the inside of a solid). Starts are random in the scene's bounds, dropped to the first
-// surface below (seeded: the same lines for the same scene); 4000 * count tries at most.
+// thing above is a ceiling seen from below or double-sided, not the inside of a solid, and no
+// point inside geometry by MidAirSamples.h's test). Starts are random in the scene's bounds,
+// dropped to the first surface below (seeded: the same lines for the same scene); 4000 * count
+// tries at most.
 // Starts above `startBelow` are not drawn: a height a little over a storey's floor keeps the
 // lines on that storey (the roofs of a tall scene would otherwise take most of them).
 std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples, float step,
