@@ -25,6 +25,14 @@ std::vector<double> noise(std::uint64_t seed, double amplitude) {
         v = amplitude * (uniformFloat(seed) - 0.5);
     return r;
 }
+
+// A 6 x 6 m floor at y = 0, centred on the origin, facing up.
+void addFloor(scene::Scene& s, int material) {
+    scene::Primitive floor;
+    floor.material = material;
+    addQuad(floor, {-3, 0, -3}, {6, 0, 0}, {0, 0, 6}, {0, 1, 0});
+    addInstance(s, floor);
+}
 } // namespace
 
 TEST(LatticeScore, ARippleAtTheSpacingStandsOutOfNoiseAndTrend) {
@@ -56,10 +64,7 @@ TEST(LatticeScore, FloorLinesStayOnFlatUpwardSurfaces) {
     // sloped ramp nowhere: lines must lie at y = 0 or y = 1 and never cross the step.
     scene::Scene s = emptyScene();
     const int m = addMaterial(s, glm::vec3(0.5f));
-    scene::Primitive floor;
-    floor.material = m;
-    addQuad(floor, {-3, 0, -3}, {6, 0, 0}, {0, 0, 6}, {0, 1, 0});
-    addInstance(s, floor);
+    addFloor(s, m);
     addInstance(s, boxPrimitive({1, 0, -3}, {3, 1, 3}, false, m));
     const RayScene rs(s);
     const std::vector<FloorLine> lines = findFloorLines(rs, 20, 16, 0.1f);
@@ -97,10 +102,7 @@ TEST(LatticeScore, FloorLinesDoNotRunInsideAWallWhoseTopIsInTheCeiling) {
     // point is inside a solid.
     scene::Scene s = emptyScene();
     const int m = addMaterial(s, glm::vec3(0.5f));
-    scene::Primitive floor;
-    floor.material = m;
-    addQuad(floor, {-3, 0, -3}, {6, 0, 0}, {0, 0, 6}, {0, 1, 0});
-    addInstance(s, floor);
+    addFloor(s, m);
     addInstance(s, boxPrimitive({-0.5f, -0.2f, -3}, {0.5f, 2.0f, 3}, false, m));
     addInstance(s, boxPrimitive({-3, 1.9f, -3}, {3, 2.1f, 3}, false, m));
     const RayScene rs(s);
