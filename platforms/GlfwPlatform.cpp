@@ -30,7 +30,7 @@ bool envSet(const char* name) {
     return v && *v;
 }
 
-GLADapiproc loadGlFunction(const char* name) {
+GLADapiproc loadGlfwGlFunction(const char* name) {
     return reinterpret_cast<GLADapiproc>(glfwGetProcAddress(name));
 }
 
@@ -82,7 +82,7 @@ GlfwPlatform::GlfwPlatform(const PlatformOptions& options) {
     // Frame times are measured, so never wait for vertical sync.
     glfwSwapInterval(0);
     const int loaded =
-        api_ == GlApi::GLCore ? gladLoadGL(loadGlFunction) : gladLoadGLES2(loadGlFunction);
+        api_ == GlApi::GLCore ? gladLoadGL(loadGlfwGlFunction) : gladLoadGLES2(loadGlfwGlFunction);
     if (!loaded) {
         glfwDestroyWindow(window_);
         glfwTerminate();
@@ -107,7 +107,7 @@ void GlfwPlatform::makeCurrent() {
     glfwMakeContextCurrent(window_);
     if (ownsGlEntryPoints(this)) return;
     const bool loaded =
-        api_ == GlApi::GLCore ? gladLoadGL(loadGlFunction) : gladLoadGLES2(loadGlFunction);
+        api_ == GlApi::GLCore ? gladLoadGL(loadGlfwGlFunction) : gladLoadGLES2(loadGlfwGlFunction);
     if (!loaded) throw PlatformError("glfw: reloading the GL entry points failed");
     claimGlEntryPoints(this);
 }

@@ -39,7 +39,7 @@ const OsMesaApi& osMesaApi() {
 
 // Through OSMesaGetProcAddress, never through a linked libGL: with libGL loaded first, every
 // gl* call under an OSMesa context would be a silent no-op (DESIGN.md).
-GLADapiproc loadGlFunction(const char* name) {
+GLADapiproc loadOsMesaGlFunction(const char* name) {
     return reinterpret_cast<GLADapiproc>(osMesaApi().getProcAddress(name));
 }
 
@@ -84,7 +84,7 @@ OsMesaPlatform::OsMesaPlatform(const PlatformOptions& options) {
         api.destroyContext(ctx);
         throw PlatformError("osmesa: OSMesaMakeCurrent failed");
     }
-    if (!gladLoadGL(loadGlFunction)) {
+    if (!gladLoadGL(loadOsMesaGlFunction)) {
         api.makeCurrent(nullptr, nullptr, 0, 0, 0);
         api.destroyContext(ctx);
         throw PlatformError("osmesa: gladLoadGL found no GL entry points");
@@ -109,7 +109,7 @@ void OsMesaPlatform::makeCurrent() {
                                  GL_UNSIGNED_BYTE, kBufferSize, kBufferSize))
         throw PlatformError("osmesa: OSMesaMakeCurrent failed");
     if (ownsGlEntryPoints(this)) return;
-    if (!gladLoadGL(loadGlFunction))
+    if (!gladLoadGL(loadOsMesaGlFunction))
         throw PlatformError("osmesa: gladLoadGL found no GL entry points");
     claimGlEntryPoints(this);
 }

@@ -55,7 +55,7 @@ std::string floorRatioCell(const VariantResult& p) {
            fixed(perTexel, 2) + ")";
 }
 
-void profileTable(std::ostringstream& out, const BenchResult& r) {
+void markdownProfileTable(std::ostringstream& out, const BenchResult& r) {
     out << "| profile | size | frame ms median [" << ciLabel(frameCiLevels(r))
         << "] | Δ ms vs reference [" << ciLabel(deltaCiLevels(r))
         << "] | GI ms | "
@@ -164,7 +164,7 @@ std::string markdownSummary(const BenchResult& r) {
     if (const std::string w = roundsWarning(r.settings.rounds); !w.empty())
         out << " **Warning: " << w << ".**";
     out << "\n\n";
-    profileTable(out, r);
+    markdownProfileTable(out, r);
     out << responseMarkdown(r); // beside the frame times it is the price of
     passTable(out, r);
     ablationTables(out, r);

@@ -30,7 +30,7 @@ std::string floorText(const BenchResult& r) {
     return worst < 0.0 ? std::string() : "; the truth's own noise adds about " + scientific(worst) + " to rel. MSE";
 }
 
-std::string cell(const std::string& text, const std::string& cls = "") {
+std::string truthCell(const std::string& text, const std::string& cls = "") {
     return "<td" + (cls.empty() ? "" : " class=\"" + cls + "\"") + ">" + htmlEscape(text) + "</td>";
 }
 
@@ -66,14 +66,15 @@ std::string truthHtml(const BenchResult& r) {
              "<th>rel. MSE</th></tr>\n";
         for (size_t i = 0; i < s.variants.size(); ++i) {
             const VariantResult& v = s.variants[i];
-            h << "<tr>" << cell(v.variant.label.empty() ? v.variant.id : v.variant.label, "l")
-              << cell(roleText(s, i), "l");
+            h << "<tr>" << truthCell(v.variant.label.empty() ? v.variant.id : v.variant.label, "l")
+              << truthCell(roleText(s, i), "l");
             if (!v.vsTruth.measured) {
                 h << "<td colspan=\"4\">n/a</td></tr>\n";
                 continue;
             }
-            h << cell(fixed(v.vsTruth.flipMean, 4)) << cell(fixed(v.vsTruth.flipMax, 3))
-              << cell(psnrText(v.vsTruth.psnr)) << cell(scientific(v.vsTruth.relativeMse)) << "</tr>\n";
+            h << truthCell(fixed(v.vsTruth.flipMean, 4)) << truthCell(fixed(v.vsTruth.flipMax, 3))
+              << truthCell(psnrText(v.vsTruth.psnr)) << truthCell(scientific(v.vsTruth.relativeMse))
+              << "</tr>\n";
         }
         h << "</table>\n";
         const TruthPictures& p = s.truthPictures;

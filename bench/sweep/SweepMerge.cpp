@@ -69,8 +69,11 @@ std::vector<Row> rowsOf(const json& merged, const std::string& node) {
         r.scene = text(p.at("labels").at("scene"));
         r.profile = p.at("name").get<std::string>();
         r.resolution = text(p.at("labels").at("resolution"));
-        for (const json& s : p.at("labels").at("switches"))
-            r.switches += (r.switches.empty() ? "" : " ") + s.get<std::string>();
+        for (const json& s : p.at("labels").at("switches")) {
+            // Two appends, not a chain of +: GCC 12 warns (falsely) about the chain's copy.
+            if (!r.switches.empty()) r.switches += ' ';
+            r.switches += s.get<std::string>();
+        }
         r.status = text(p.at("status"));
         if (p.contains("frame_ms")) {
             r.measured = true;

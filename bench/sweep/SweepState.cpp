@@ -13,7 +13,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string pad4(std::size_t i) {
+std::string jobNumber(std::size_t i) {
     char b[16];
     std::snprintf(b, sizeof b, "%04zu", i);
     return b;
@@ -38,10 +38,10 @@ std::string planStatePath(const std::string& outDir) {
     return (fs::path(outDir) / "sweep-plan.json").string();
 }
 std::string statusPath(const std::string& outDir, std::size_t job) {
-    return (fs::path(outDir) / "status" / (pad4(job) + ".json")).string();
+    return (fs::path(outDir) / "status" / (jobNumber(job) + ".json")).string();
 }
 std::string logPath(const std::string& outDir, std::size_t job, const char* stream) {
-    return (fs::path(outDir) / "logs" / (pad4(job) + "." + stream)).string();
+    return (fs::path(outDir) / "logs" / (jobNumber(job) + "." + stream)).string();
 }
 
 void writePlanState(const std::string& outDir, const PlanState& s) {
@@ -122,7 +122,10 @@ std::string indexRanges(const std::vector<std::size_t>& indices) {
             ++j;
         if (!out.empty()) out += ",";
         out += std::to_string(indices[i]);
-        if (j > i) out += "-" + std::to_string(indices[j]);
+        if (j > i) {
+            out += '-'; // two appends, not "-" + ...: GCC 12 warns (falsely) about that
+            out += std::to_string(indices[j]);
+        }
         i = j + 1;
     }
     return out;

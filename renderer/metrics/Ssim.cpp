@@ -19,10 +19,10 @@ namespace {
 constexpr int kRadius = 5; // 11x11 window
 constexpr double kSigma = 1.5;
 
-using Plane = std::vector<double>;
+using SsimPlane = std::vector<double>;
 
-Plane luma(const image::Image8& img) {
-    Plane out(size_t(img.width) * img.height);
+SsimPlane luma(const image::Image8& img) {
+    SsimPlane out(size_t(img.width) * img.height);
     for (size_t i = 0; i < out.size(); ++i) {
         const auto* p = &img.pixels[i * 4];
         out[i] = 0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2];
@@ -33,12 +33,12 @@ Plane luma(const image::Image8& img) {
 // Weighted mean over the clipped window. The Gaussian is separable and so is its clipped,
 // renormalized version (the normalizer is the product of the in-image 1D sums), so two 1D
 // passes give exactly the 2D result.
-Plane windowMean(const Plane& in, int w, int h) {
+SsimPlane windowMean(const SsimPlane& in, int w, int h) {
     std::array<double, 2 * kRadius + 1> g{};
     for (int i = -kRadius; i <= kRadius; ++i)
         g[i + kRadius] = std::exp(-double(i * i) / (2 * kSigma * kSigma));
-    auto pass = [&](const Plane& src, bool horizontal) {
-        Plane dst(src.size());
+    auto pass = [&](const SsimPlane& src, bool horizontal) {
+        SsimPlane dst(src.size());
         for (int y = 0; y < h; ++y)
             for (int x = 0; x < w; ++x) {
                 double sum = 0, weight = 0;
@@ -60,15 +60,16 @@ Plane windowMean(const Plane& in, int w, int h) {
 double ssim(const image::Image8& test, const image::Image8& reference) {
     requireComparable("ssim", test, reference);
     const int w = test.width, h = test.height;
-    const Plane x = luma(test), y = luma(reference);
-    Plane xx(x.size()), yy(x.size()), xy(x.size());
+    const SsimPlane x = luma(test), y = luma(reference);
+    SsimPlane xx(x.size()), yy(x.size()), xy(x.size());
     for (size_t i = 0; i < x.size(); ++i) {
         xx[i] = x[i] * x[i];
         yy[i] = y[i] * y[i];
         xy[i] = x[i] * y[i];
     }
-    const Plane mx = windowMean(x, w, h), my = windowMean(y, w, h);
-    const Plane exx = windowMean(xx, w, h), eyy = windowMean(yy, w, h), exy = windowMean(xy, w, h);
+    const SsimPlane mx = windowMean(x, w, h), my = windowMean(y, w, h);
+    const SsimPlane exx = windowMean(xx, w, h), eyy = windowMean(yy, w, h),
+                    exy = windowMean(xy, w, h);
     const double c1 = (0.01 * 255) * (0.01 * 255), c2 = (0.03 * 255) * (0.03 * 255);
     double sum = 0;
     for (size_t i = 0; i < x.size(); ++i) {

@@ -12,7 +12,7 @@
 namespace pb::stats {
 namespace {
 
-constexpr size_t kExactMannWhitneyMax = 50; // per sample
+constexpr size_t kExactTableMax = 50;       // per sample
 constexpr double kExactKsMaxProduct = 1e6;  // m * n lattice cells
 
 struct RankSums {
@@ -68,7 +68,7 @@ double mannWhitneyP(const std::vector<double>& a, const std::vector<double>& b) 
     detail::requireSample("mannWhitneyP", "b", b);
     const size_t m = a.size(), n = b.size();
     const RankSums r = rankSums(a, b);
-    if (!r.hasTies && m <= kExactMannWhitneyMax && n <= kExactMannWhitneyMax) {
+    if (!r.hasTies && m <= kExactTableMax && n <= kExactTableMax) {
         const std::vector<double> cdf = detail::mannWhitneyCdf(int(m), int(n));
         const size_t u = size_t(std::llround(r.uA));
         // Symmetric null distribution: P(U >= u) = P(U <= mn - u).

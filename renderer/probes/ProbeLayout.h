@@ -16,6 +16,7 @@
 namespace pb::probes {
 
 constexpr int kIrradianceInterior = 6;
+constexpr int kIrradianceInteriorTexels = kIrradianceInterior * kIrradianceInterior;
 constexpr int kIrradianceTile = kIrradianceInterior + 2;
 constexpr int kVisibilityInterior = 14;
 constexpr int kVisibilityTile = kVisibilityInterior + 2;

@@ -2,6 +2,7 @@
 
 #include "profile/ProfileSettings.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace pb::profile {
@@ -14,12 +15,12 @@ nlohmann::json PlatformProfile::toJson() const {
                      {"switches", switches.valuesJson()}};
     // The non-switch settings under their TOML paths: {"output": {"width": 1280, ...}, ...}.
     for (const ProfileSetting& s : profileSettings()) {
-        nlohmann::json::json_pointer ptr("/" + [&] {
-            std::string k = s.key;
-            for (char& c : k)
-                if (c == '.') c = '/';
-            return k;
-        }());
+        // Built in place, not as "/" + key: GCC 12 takes that concatenation, once inlined, for
+        // an overlapping copy (a false -Wrestrict).
+        std::string path = "/";
+        path += s.key;
+        std::replace(path.begin(), path.end(), '.', '/');
+        nlohmann::json::json_pointer ptr(path);
         if (s.kind == ProfileSetting::Kind::Text)
             j[ptr] = s.getText(*this);
         else if (s.kind == ProfileSetting::Kind::Integer)

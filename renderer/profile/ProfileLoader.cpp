@@ -31,7 +31,7 @@ struct Entry {
     int line = 0;
 };
 
-std::string knownKeys() {
+std::string knownLoaderKeys() {
     std::string out = kInheritKey;
     for (const ProfileSetting& s : profileSettings())
         out += ", " + s.key;
@@ -67,7 +67,7 @@ public:
             int line = int(k.source().begin.line);
             if (const toml::table* sub = v.as_table()) {
                 if (!knownSection(key))
-                    fail(line, key, "unknown table (known keys: " + knownKeys() + ")");
+                    fail(line, key, "unknown table (known keys: " + knownLoaderKeys() + ")");
                 flatten(*sub, key, out);
             } else {
                 out.push_back({key, &v, line});
@@ -207,7 +207,7 @@ PlatformProfile parseChain(const std::string& text, const std::string& path,
         else if (const SwitchInfo* s = findSwitch(e.key))
             P.applySwitch(*s, e, p);
         else
-            P.fail(e.line, e.key, "unknown key (known keys: " + knownKeys() + ")");
+            P.fail(e.line, e.key, "unknown key (known keys: " + knownLoaderKeys() + ")");
     }
     if (!inherited)
         for (const ProfileSetting& s : profileSettings())

@@ -36,8 +36,8 @@ ProfileSetting integer(const char* key, int lo, int hi, const char* doc,
     return s;
 }
 
-ProfileSetting text(const char* key, bool required, const char* doc,
-                    std::string PlatformProfile::*field) {
+ProfileSetting textSetting(const char* key, bool required, const char* doc,
+                           std::string PlatformProfile::*field) {
     ProfileSetting s;
     s.key = key;
     s.kind = Kind::Text;
@@ -56,8 +56,8 @@ ProfileSetting optional(ProfileSetting s) {
 
 std::vector<ProfileSetting> buildSettings() {
     return {
-        text("description", false, "one line shown by `probebench profiles`",
-             &PlatformProfile::description),
+        textSetting("description", false, "one line shown by `probebench profiles`",
+                    &PlatformProfile::description),
         integer("output.width", 16, 16384, "output (GBuffer) width in pixels",
                 &PlatformProfile::width),
         integer("output.height", 16, 16384, "output (GBuffer) height in pixels",
@@ -75,9 +75,9 @@ std::vector<ProfileSetting> buildSettings() {
                          "probe update budget: probe texture bytes uploaded per frame (0 = no "
                          "limit)",
                          &PlatformProfile::updateUploadBytesPerFrame)),
-        text("costmodel.cache_preset", true,
-             "texture-cache preset of the cost model (probebench costmodel --cache)",
-             &PlatformProfile::cachePreset),
+        textSetting("costmodel.cache_preset", true,
+                    "texture-cache preset of the cost model (probebench costmodel --cache)",
+                    &PlatformProfile::cachePreset),
     };
 }
 

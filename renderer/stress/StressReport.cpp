@@ -17,7 +17,7 @@ nlohmann::json variantJson(const StressVariant& v) {
 }
 
 // NaN/Inf cannot be JSON numbers; an error run has no error figures.
-nlohmann::json number(double v) {
+nlohmann::json jsonNumber(double v) {
     return std::isfinite(v) ? nlohmann::json(v) : nullptr;
 }
 
@@ -86,9 +86,9 @@ nlohmann::json sweepJson(const SweepResult& r) {
              {"symptom", run.symptom},
              {"nonfinite_pixels", run.m.nonfinitePixels},
              {"nonfinite_gi_texels", run.m.nonfiniteGiTexels},
-             {"max_rel", number(run.m.maxRel)},
-             {"mean_rel", number(run.m.meanRel)},
-             {"median_rel", number(run.m.medianRel)},
+             {"max_rel", jsonNumber(run.m.maxRel)},
+             {"mean_rel", jsonNumber(run.m.meanRel)},
+             {"median_rel", jsonNumber(run.m.medianRel)},
              {"error", run.m.error.empty() ? nlohmann::json(nullptr) : nlohmann::json(run.m.error)},
              {"culprits", run.culprits},
              {"fixed_by", run.fixedBy},

@@ -1,12 +1,10 @@
 #include "probes/bake/EmitterTable.h"
 
+#include "probes/bake/Luminance.h"
+
 #include <cmath>
 
 namespace pb::probes {
-
-namespace {
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-} // namespace
 
 EmitterTable::EmitterTable(std::vector<EmissiveTriangle> all) {
     std::vector<double> power;

@@ -3,6 +3,7 @@
 #include "core/ParallelFor.h"
 #include "probes/bake/AliasTable.h"
 #include "probes/bake/DirectLight.h"
+#include "probes/bake/Luminance.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,8 +11,6 @@
 namespace pb::probes {
 
 namespace {
-
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
 // A patch side waiting for its power estimate.
 struct Candidate {

@@ -2,34 +2,30 @@
 
 #include "probes/ProbeLayout.h"
 #include "probes/ProbeSet.h"
+#include "probes/bake/Luminance.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace pb::probes {
 
-namespace {
-constexpr int kTexels = kIrradianceInterior * kIrradianceInterior;
-float luminance(float r, float g, float b) { return 0.2126f * r + 0.7152f * g + 0.0722f * b; }
-} // namespace
-
 void NoiseRounds::startSlab(std::size_t count) {
-    firstVariance_.assign(count * kTexels, 0.0f);
-    sumY_.assign(count * kTexels, 0.0);
-    sumY2_.assign(count * kTexels, 0.0);
+    firstVariance_.assign(count * kIrradianceInteriorTexels, 0.0f);
+    sumY_.assign(count * kIrradianceInteriorTexels, 0.0);
+    sumY2_.assign(count * kIrradianceInteriorTexels, 0.0);
     meanY_.assign(count, 0.0f);
     rounds_.assign(count, 0);
 }
 
 void NoiseRounds::firstRound(std::size_t i, const RadianceSlab& slab, const ProbeConvolution& conv,
                              const float* rgb) {
-    slab.texelVariance(i, conv, &firstVariance_[i * kTexels]);
+    slab.texelVariance(i, conv, &firstVariance_[i * kIrradianceInteriorTexels]);
     float y = 0.0f;
-    for (int t = 0; t < kTexels; ++t) {
-        const float yt = luminance(rgb[3 * t], rgb[3 * t + 1], rgb[3 * t + 2]);
-        sumY_[i * kTexels + size_t(t)] = yt;
-        sumY2_[i * kTexels + size_t(t)] = double(yt) * yt;
-        y += yt / kTexels;
+    for (int t = 0; t < kIrradianceInteriorTexels; ++t) {
+        const float yt = luminance(glm::vec3(rgb[3 * t], rgb[3 * t + 1], rgb[3 * t + 2]));
+        sumY_[i * kIrradianceInteriorTexels + size_t(t)] = yt;
+        sumY2_[i * kIrradianceInteriorTexels + size_t(t)] = double(yt) * yt;
+        y += yt / kIrradianceInteriorTexels;
     }
     meanY_[i] = y;
     rounds_[i] = 1;
@@ -39,13 +35,13 @@ float NoiseRounds::noise(std::size_t i) const {
     if (!(meanY_[i] > 0.0f) || rounds_[i] == 0) return 0.0f;
     const double k = rounds_[i];
     double v = 0.0;
-    for (int t = 0; t < kTexels; ++t) {
-        const std::size_t at = i * kTexels + size_t(t);
+    for (int t = 0; t < kIrradianceInteriorTexels; ++t) {
+        const std::size_t at = i * kIrradianceInteriorTexels + size_t(t);
         if (rounds_[i] == 1) {
-            v += double(firstVariance_[at]) / kTexels;
+            v += double(firstVariance_[at]) / kIrradianceInteriorTexels;
         } else {
             const double s2 = std::max(0.0, (sumY2_[at] - sumY_[at] * sumY_[at] / k) / (k - 1.0));
-            v += s2 / k / kTexels;
+            v += s2 / k / kIrradianceInteriorTexels;
         }
     }
     return float(std::sqrt(v) / meanY_[i]);
@@ -60,10 +56,10 @@ std::vector<std::size_t> NoiseRounds::aboveTarget(std::size_t count) const {
 }
 
 int NoiseRounds::addRound(std::size_t i, const float* rgb) {
-    for (int t = 0; t < kTexels; ++t) {
-        const double yt = luminance(rgb[3 * t], rgb[3 * t + 1], rgb[3 * t + 2]);
-        sumY_[i * kTexels + size_t(t)] += yt;
-        sumY2_[i * kTexels + size_t(t)] += yt * yt;
+    for (int t = 0; t < kIrradianceInteriorTexels; ++t) {
+        const double yt = luminance(glm::vec3(rgb[3 * t], rgb[3 * t + 1], rgb[3 * t + 2]));
+        sumY_[i * kIrradianceInteriorTexels + size_t(t)] += yt;
+        sumY2_[i * kIrradianceInteriorTexels + size_t(t)] += yt * yt;
     }
     return ++rounds_[i];
 }
@@ -72,7 +68,7 @@ void NoiseRounds::setMean(std::size_t i, const float* tile, int pitch) {
     for (int ty = 0; ty < kIrradianceInterior; ++ty)
         for (int tx = 0; tx < kIrradianceInterior; ++tx) {
             const float* p = tile + (size_t(ty + 1) * size_t(pitch) + size_t(tx + 1)) * 4;
-            y += luminance(p[0], p[1], p[2]) / kTexels;
+            y += luminance(glm::vec3(p[0], p[1], p[2])) / kIrradianceInteriorTexels;
         }
     meanY_[i] = y;
 }

@@ -5,6 +5,7 @@
 #include "probes/ProbeLayout.h"
 #include "probes/ShIrradiance.h"
 #include "probes/bake/DirectLight.h"
+#include "probes/bake/Luminance.h"
 #include "probes/bake/RayDirections.h"
 
 #include <cmath>
@@ -14,12 +15,7 @@ namespace pb::probes {
 
 namespace {
 
-constexpr int kTexels = kIrradianceInterior * kIrradianceInterior;
 constexpr float kUniformSpherePdf = float(1.0 / (4.0 * M_PI));
-
-float luminance(const glm::vec3& c) {
-    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-}
 
 // The interior texels' directions, volume-local (as ProbeConvolution's).
 const std::vector<glm::vec3>& texelDirections() {
@@ -39,7 +35,7 @@ const std::vector<glm::vec3>& texelDirections() {
 void addToFacingTexels(const glm::vec3& c, const glm::vec3& local, float* rgb, float* y1,
                        float* y2) {
     const std::vector<glm::vec3>& texels = texelDirections();
-    for (int t = 0; t < kTexels; ++t) {
+    for (int t = 0; t < kIrradianceInteriorTexels; ++t) {
         const float cosT = glm::dot(texels[size_t(t)], local);
         if (!(cosT > 0.0f)) continue;
         const glm::vec3 x = c * cosT;
@@ -83,12 +79,12 @@ void RadianceSlab::reset(std::size_t probes, int rays) {
     for (auto& k : keys_)
         k.clear();
     slotSamples_.assign(probes, 0);
-    lightRgb_.assign(probes * kTexels * 3, 0.0f);
-    lightY_.assign(probes * kTexels, 0.0f);
-    lightY2_.assign(probes * kTexels, 0.0f);
+    lightRgb_.assign(probes * kIrradianceInteriorTexels * 3, 0.0f);
+    lightY_.assign(probes * kIrradianceInteriorTexels, 0.0f);
+    lightY2_.assign(probes * kIrradianceInteriorTexels, 0.0f);
     slotLitSamples_.assign(probes, 0);
-    litY_.assign(probes * kTexels, 0.0f);
-    litY2_.assign(probes * kTexels, 0.0f);
+    litY_.assign(probes * kIrradianceInteriorTexels, 0.0f);
+    litY2_.assign(probes * kIrradianceInteriorTexels, 0.0f);
     lightSh_.assign(probes * kShL2Coefficients, glm::vec3(0.0f));
 }
 
@@ -194,9 +190,9 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
     std::uint64_t state = nee.stream ^ (probeKey * 0x9e3779b97f4a7c15ull);
     splitmix64(state);
     const glm::mat3 toLocal = glm::transpose(rot);
-    float* rgb = lightRgb_.data() + slot * kTexels * 3;
-    float* y1 = lightY_.data() + slot * kTexels;
-    float* y2 = lightY2_.data() + slot * kTexels;
+    float* rgb = lightRgb_.data() + slot * kIrradianceInteriorTexels * 3;
+    float* y1 = lightY_.data() + slot * kIrradianceInteriorTexels;
+    float* y2 = lightY2_.data() + slot * kIrradianceInteriorTexels;
     for (int j = 0; j < m; ++j) {
         const float u0 = uniformFloat(state), u1 = uniformFloat(state), u2 = uniformFloat(state);
         const EmitterSample s = emitters.sample(u0, u1, u2);
@@ -228,9 +224,9 @@ void RadianceSlab::traceLitSamples(std::size_t slot, const RayScene& rs, const S
     std::uint64_t state = nee.stream ^ 0x6c697420ull ^ (probeKey * 0xbf58476d1ce4e5b9ull);
     splitmix64(state);
     const glm::mat3 toLocal = glm::transpose(rot);
-    float* rgb = lightRgb_.data() + slot * kTexels * 3;
-    float* y1 = litY_.data() + slot * kTexels;
-    float* y2 = litY2_.data() + slot * kTexels;
+    float* rgb = lightRgb_.data() + slot * kIrradianceInteriorTexels * 3;
+    float* y1 = litY_.data() + slot * kIrradianceInteriorTexels;
+    float* y2 = litY2_.data() + slot * kIrradianceInteriorTexels;
     const float eps = rs.epsilon();
     // The samples' numbers first (the stream's order), then the table reads in two prefetched
     // steps (alias column, entry): both tables are large and read at random.
@@ -322,8 +318,8 @@ const glm::vec4* RadianceSlab::finish(std::size_t slot) {
 void RadianceSlab::convolve(std::size_t slot, const ProbeConvolution& conv, float* outRgb) {
     conv.irradiance(&finish(slot)->x, outRgb);
     if (slotSamples_[slot] == 0 && slotLitSamples_[slot] == 0) return;
-    const float* rgb = lightRgb_.data() + slot * kTexels * 3;
-    for (int i = 0; i < kTexels * 3; ++i)
+    const float* rgb = lightRgb_.data() + slot * kIrradianceInteriorTexels * 3;
+    for (int i = 0; i < kIrradianceInteriorTexels * 3; ++i)
         outRgb[i] += rgb[i];
 }
 
@@ -333,15 +329,15 @@ void RadianceSlab::texelVariance(std::size_t slot, const ProbeConvolution& conv,
     // Each light part is a sum of M samples: its variance is M times their sample variance.
     auto addSumVariance = [&](int m, const float* y1, const float* y2) {
         if (m < 2) return;
-        for (int t = 0; t < kTexels; ++t) {
+        for (int t = 0; t < kIrradianceInteriorTexels; ++t) {
             const float s2 = std::max(0.0f, (y2[t] - y1[t] * y1[t] / float(m)) / float(m - 1));
             outVar[t] += float(m) * s2;
         }
     };
-    addSumVariance(slotSamples_[slot], lightY_.data() + slot * kTexels,
-                   lightY2_.data() + slot * kTexels);
-    addSumVariance(slotLitSamples_[slot], litY_.data() + slot * kTexels,
-                   litY2_.data() + slot * kTexels);
+    addSumVariance(slotSamples_[slot], lightY_.data() + slot * kIrradianceInteriorTexels,
+                   lightY2_.data() + slot * kIrradianceInteriorTexels);
+    addSumVariance(slotLitSamples_[slot], litY_.data() + slot * kIrradianceInteriorTexels,
+                   litY2_.data() + slot * kIrradianceInteriorTexels);
 }
 
 void RadianceSlab::projectSh(std::size_t slot, const std::vector<glm::vec3>& dirs,

@@ -2,6 +2,7 @@
 
 #include "probes/ProbeSampler.h"
 #include "probes/StaticTriangles.h"
+#include "probes/bake/Luminance.h"
 #include "probes/bake/RayScene.h"
 #include "probes/bake/SurfaceSamples.h"
 
@@ -12,8 +13,6 @@
 namespace pb::probes {
 
 namespace {
-
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 
 double percentile(std::vector<double> v, double q) {
     if (v.empty()) return 0.0;
