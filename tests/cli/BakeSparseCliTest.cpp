@@ -13,7 +13,7 @@ using namespace pb::test;
 
 namespace {
 
-nlohmann::json jsonOf(const CommandResult& r) {
+nlohmann::json bakeSparseJsonOf(const CommandResult& r) {
     EXPECT_EQ(r.exitCode, 0) << r.output;
     return nlohmann::json::parse(r.output.substr(r.output.find('{')));
 }
@@ -24,12 +24,12 @@ nlohmann::json bake(const std::string& volumes, const std::string& out,
     std::vector<std::string> args{"bake", "--scene",   "courtyard", "--volumes", volumes, "--rays",
                                   "16",   "--bounces", "1",         "--json",    "--out", out};
     args.insert(args.end(), extra.begin(), extra.end());
-    return jsonOf(runProbebench(args));
+    return bakeSparseJsonOf(runProbebench(args));
 }
 
 // What the written file stores (probebench memory reads it back).
 nlohmann::json storedTotal(const std::string& file) {
-    return jsonOf(runProbebench({"memory", "--probes", file, "--json"}))["total"];
+    return bakeSparseJsonOf(runProbebench({"memory", "--probes", file, "--json"}))["total"];
 }
 
 } // namespace

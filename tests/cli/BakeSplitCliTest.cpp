@@ -22,7 +22,7 @@ std::string fileBytes(const fs::path& p) {
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-void expectOneLineError(const CommandResult& r, const std::string& problem) {
+void bakeSplitExpectOneLineError(const CommandResult& r, const std::string& problem) {
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_EQ(r.output.rfind("probebench: error: ", 0), 0u) << r.output;
     EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << "not one line:\n" << r.output;
@@ -51,12 +51,12 @@ TEST(BakeSplitCli, MergedPartsAreTheSingleBakesBytes) {
         << merged.output;
     EXPECT_TRUE(fileBytes(dir / "single.pbp") == fileBytes(dir / "merged.pbp"));
 
-    expectOneLineError(runProbebench({"bake-merge", (dir / "p0.pbpart").string(), "--out",
-                                      (dir / "x.pbp").string()}),
-                       "bake-merge: part 1 of 2 is missing");
-    expectOneLineError(runProbebench({"bake-merge", (dir / "single.pbp").string(), "--out",
-                                      (dir / "x.pbp").string()}),
-                       "single.pbp: not a probe part file");
+    bakeSplitExpectOneLineError(runProbebench({"bake-merge", (dir / "p0.pbpart").string(), "--out",
+                                               (dir / "x.pbp").string()}),
+                                "bake-merge: part 1 of 2 is missing");
+    bakeSplitExpectOneLineError(runProbebench({"bake-merge", (dir / "single.pbp").string(), "--out",
+                                               (dir / "x.pbp").string()}),
+                                "single.pbp: not a probe part file");
     EXPECT_FALSE(fs::exists(dir / "x.pbp"));
 }
 
@@ -67,14 +67,17 @@ TEST(BakeSplitCli, WrongSplitsAreOneLineErrors) {
         a.insert(a.end(), extra.begin(), extra.end());
         return runProbebench(a);
     };
-    expectOneLineError(with({"--split", "volume", "--part", "0/2"}),
-                       "--split volume: not supported: a bounce pass looks up every volume's");
-    expectOneLineError(with({"--split", "scenario", "--part", "0/3"}),
-                       "--part: 3 parts for 2 scenario(s)");
-    expectOneLineError(with({"--split", "scenario", "--part", "2/2"}), "--part: must be I/N");
-    expectOneLineError(with({"--split", "scenario", "--part", "half"}), "--part: expected I/N");
-    expectOneLineError(with({"--split", "scenario"}), "--split: needs --part I/N");
-    expectOneLineError(with({"--part", "0/2"}), "--part: needs --split scenario");
+    bakeSplitExpectOneLineError(
+        with({"--split", "volume", "--part", "0/2"}),
+        "--split volume: not supported: a bounce pass looks up every volume's");
+    bakeSplitExpectOneLineError(with({"--split", "scenario", "--part", "0/3"}),
+                                "--part: 3 parts for 2 scenario(s)");
+    bakeSplitExpectOneLineError(with({"--split", "scenario", "--part", "2/2"}),
+                                "--part: must be I/N");
+    bakeSplitExpectOneLineError(with({"--split", "scenario", "--part", "half"}),
+                                "--part: expected I/N");
+    bakeSplitExpectOneLineError(with({"--split", "scenario"}), "--split: needs --part I/N");
+    bakeSplitExpectOneLineError(with({"--part", "0/2"}), "--part: needs --split scenario");
     EXPECT_FALSE(fs::exists(dir / "x.pbpart"));
 }
 

@@ -19,7 +19,7 @@ using namespace pb::test;
 
 namespace {
 
-std::string readText(const fs::path& p) {
+std::string benchReadText(const fs::path& p) {
     std::ifstream in(p);
     std::stringstream s;
     s << in.rdbuf();
@@ -162,7 +162,7 @@ TEST(BenchCli, TinyRunWritesTheJsonShapeTheReportAndHeatMaps) {
     auto r = runProbebench(tinyBench(dir, todayProfile(dir)));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("| handheld-today | 64x36 |"), std::string::npos) << r.output;
-    auto j = nlohmann::json::parse(readText(dir / "out.json"));
+    auto j = nlohmann::json::parse(benchReadText(dir / "out.json"));
     EXPECT_EQ(j["schema"], "probebench.bench/1");
     for (const char* k : {"platform", "gl_version", "gl_renderer", "driver", "cpu",
                           "lp_num_threads", "commit", "date", "load_average_start"})
@@ -232,7 +232,7 @@ TEST(BenchCli, TinyRunWritesTheJsonShapeTheReportAndHeatMaps) {
             EXPECT_EQ(differ, 1) << a.dump();
         }
     EXPECT_TRUE(j["profiles"][0]["vs_reference"].is_null()) << "reference is the baseline";
-    std::string html = readText(dir / "report.html");
+    std::string html = benchReadText(dir / "report.html");
     EXPECT_NE(html.find("handheld-today"), std::string::npos);
     EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos) << "heat maps inline";
     // Beside each profile's heat map: the reference's frame and the profile's, inline.

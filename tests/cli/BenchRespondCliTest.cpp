@@ -23,7 +23,7 @@ const fs::path& coarseRooms() {
     return file;
 }
 
-std::string readText(const fs::path& p) {
+std::string benchRespondReadText(const fs::path& p) {
     std::ifstream in(p);
     std::stringstream s;
     s << in.rdbuf();
@@ -42,7 +42,7 @@ fs::path budgetedProfile(const fs::path& dir) {
     return p;
 }
 
-std::vector<std::string> tinyBench(const fs::path& dir, const std::string& event) {
+std::vector<std::string> benchRespondTinyBench(const fs::path& dir, const std::string& event) {
     return {"bench",
             "--scene",
             "rooms",
@@ -78,9 +78,9 @@ std::vector<std::string> tinyBench(const fs::path& dir, const std::string& event
 
 TEST(BenchRespondCli, RecordsEachProfilesResponseWithItsUpdateBudget) {
     const fs::path dir = outputDir();
-    auto r = runProbebench(tinyBench(dir, "sun:off@2"));
+    auto r = runProbebench(benchRespondTinyBench(dir, "sun:off@2"));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const auto j = nlohmann::json::parse(readText(dir / "out.json"));
+    const auto j = nlohmann::json::parse(benchRespondReadText(dir / "out.json"));
     ASSERT_TRUE(j.contains("response")) << j.dump();
     const auto& resp = j["response"];
     EXPECT_EQ(resp["frames"], kFrames);
@@ -130,28 +130,28 @@ TEST(BenchRespondCli, RecordsEachProfilesResponseWithItsUpdateBudget) {
     }
     // The readable outputs show the response column beside the frame time.
     EXPECT_NE(r.output.find("response t95 (frames)"), std::string::npos) << r.output;
-    const std::string html = readText(dir / "report.html");
+    const std::string html = benchRespondReadText(dir / "report.html");
     EXPECT_NE(html.find("id=\"response\""), std::string::npos);
     EXPECT_NE(html.find("response t95 (frames)"), std::string::npos);
 }
 
 TEST(BenchRespondCli, WithoutRespondTheJsonHasNoResponse) {
     const fs::path dir = outputDir();
-    auto args = tinyBench(dir, "sun:off@2");
+    auto args = benchRespondTinyBench(dir, "sun:off@2");
     const auto at = std::find(args.begin(), args.end(), "--respond");
     args.erase(at, at + 4); // --respond EVENT --respond-frames N
     auto r = runProbebench(args);
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const auto j = nlohmann::json::parse(readText(dir / "out.json"));
+    const auto j = nlohmann::json::parse(benchRespondReadText(dir / "out.json"));
     EXPECT_FALSE(j.contains("response"));
     EXPECT_EQ(r.output.find("response t95"), std::string::npos);
-    EXPECT_EQ(readText(dir / "report.html").find("id=\"response\""), std::string::npos);
+    EXPECT_EQ(benchRespondReadText(dir / "report.html").find("id=\"response\""), std::string::npos);
 }
 
 TEST(BenchRespondCli, ABadEventIsAOneLineErrorBeforeAnythingIsTimed) {
     const fs::path dir = outputDir();
     for (const std::string event : {"light:nolamp:off@1", "sun:off@99", "moon:off@1"}) {
-        auto r = runProbebench(tinyBench(dir, event));
+        auto r = runProbebench(benchRespondTinyBench(dir, event));
         EXPECT_EQ(r.exitCode, 1) << event;
         EXPECT_EQ(r.output.rfind("probebench: error: --respond: ", 0), 0u) << r.output;
         EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
@@ -159,7 +159,7 @@ TEST(BenchRespondCli, ABadEventIsAOneLineErrorBeforeAnythingIsTimed) {
         EXPECT_FALSE(fs::exists(dir / "report.html"));
     }
     // Bench's own bake stores sparse probes, which respond cannot update: said before baking.
-    auto args = tinyBench(dir, "sun:off@2");
+    auto args = benchRespondTinyBench(dir, "sun:off@2");
     const auto at = std::find(args.begin(), args.end(), "--probes");
     args.erase(at, at + 2);
     auto r = runProbebench(args);

@@ -22,7 +22,7 @@ std::vector<std::string> tinyTruthBench(const fs::path& dir) {
             "--json", (dir / "out.json").string(), "--html", (dir / "report.html").string()};
 }
 
-std::string readText(const fs::path& p) {
+std::string benchTruthReadText(const fs::path& p) {
     std::ifstream in(p);
     std::stringstream ss;
     ss << in.rdbuf();
@@ -36,7 +36,7 @@ TEST(BenchTruthCli, EveryRowIsMeasuredAgainstTheTruthReferenceIncluded) {
     auto r = runProbebench(tinyTruthBench(dir));
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("Against the path-traced truth"), std::string::npos) << r.output;
-    auto j = nlohmann::json::parse(readText(dir / "out.json"));
+    auto j = nlohmann::json::parse(benchTruthReadText(dir / "out.json"));
     ASSERT_TRUE(j["truth"].is_object());
     EXPECT_EQ(j["truth"]["spp"], 8);
     ASSERT_EQ(j["truth"]["sizes"].size(), 1u);
@@ -52,7 +52,7 @@ TEST(BenchTruthCli, EveryRowIsMeasuredAgainstTheTruthReferenceIncluded) {
     EXPECT_TRUE(p["reference_accuracy_vs_truth"].is_object());
     for (const char* k : {"truth", "reference", "profile", "reference_heatmap", "profile_heatmap"})
         EXPECT_TRUE(fs::exists(p["truth_pictures"][k].get<std::string>())) << k;
-    const std::string html = readText(dir / "report.html");
+    const std::string html = benchTruthReadText(dir / "report.html");
     EXPECT_NE(html.find("Against the ground truth"), std::string::npos);
     EXPECT_NE(html.find("alt=\"truth\" src=\"data:image/png;base64,"), std::string::npos);
 }

@@ -27,7 +27,7 @@ nlohmann::json parse(const CommandResult& r) {
     return nlohmann::json::parse(r.output, nullptr, false);
 }
 
-void expectOneLineError(const CommandResult& r, const std::string& mustName) {
+void compareExpectOneLineError(const CommandResult& r, const std::string& mustName) {
     EXPECT_FALSE(r.crashed) << r.output;
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("error:"), std::string::npos) << r.output;
@@ -77,7 +77,7 @@ TEST(CompareCli, MissingFileIsAOneLineError) {
     const auto r =
         runProbebench({"compare", "--test", (dir / "nope.png").string(), "--reference",
                        (dir / "a.png").string(), "--heatmap", (dir / "heat.png").string()});
-    expectOneLineError(r, "nope.png");
+    compareExpectOneLineError(r, "nope.png");
     EXPECT_FALSE(fs::exists(dir / "heat.png"));
 }
 
@@ -88,7 +88,7 @@ TEST(CompareCli, SizeMismatchNamesBothFiles) {
     const auto r =
         runProbebench({"compare", "--test", (dir / "small.png").string(), "--reference",
                        (dir / "big.png").string(), "--heatmap", (dir / "heat.png").string()});
-    expectOneLineError(r, "small.png");
+    compareExpectOneLineError(r, "small.png");
     EXPECT_NE(r.output.find("big.png"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("4x4"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("8x4"), std::string::npos) << r.output;

@@ -27,7 +27,7 @@ std::vector<std::string> base() {
             "--width",   "64",      "--height", "36"};
 }
 
-void expectOneLineError(const std::vector<std::string>& extra, const std::string& needle) {
+void costModelExpectOneLineError(const std::vector<std::string>& extra, const std::string& needle) {
     std::vector<std::string> args = base();
     args.insert(args.end(), extra.begin(), extra.end());
     auto r = runProbebench(args);
@@ -85,14 +85,15 @@ TEST(CostModelCli, PrintsATableOfVariantsAndCaches) {
 }
 
 TEST(CostModelCli, BadInputIsAOneLineError) {
-    expectOneLineError({"--cache", "switch"}, "unknown cache preset 'switch'");
-    expectOneLineError({"--cache-size", "65536"}, "--cache-size, --line and --ways");
-    expectOneLineError({"--cache-size", "65536", "--line", "48", "--ways", "4"}, "line size");
-    expectOneLineError({"--layout", "swizzled"}, "--layout");
-    expectOneLineError({"--set", "gi.loops=twisted"}, "gi.loops");
-    expectOneLineError({"--view", "nowhere"}, "nowhere");
-    expectOneLineError({"--worst-case", "--view", "doorway"}, "--worst-case");
-    expectOneLineError({"--warp", "0"}, "--warp");
+    costModelExpectOneLineError({"--cache", "switch"}, "unknown cache preset 'switch'");
+    costModelExpectOneLineError({"--cache-size", "65536"}, "--cache-size, --line and --ways");
+    costModelExpectOneLineError({"--cache-size", "65536", "--line", "48", "--ways", "4"},
+                                "line size");
+    costModelExpectOneLineError({"--layout", "swizzled"}, "--layout");
+    costModelExpectOneLineError({"--set", "gi.loops=twisted"}, "gi.loops");
+    costModelExpectOneLineError({"--view", "nowhere"}, "nowhere");
+    costModelExpectOneLineError({"--worst-case", "--view", "doorway"}, "--worst-case");
+    costModelExpectOneLineError({"--warp", "0"}, "--warp");
     auto missing = runProbebench({"costmodel", "--scene", "rooms", "--probes", "/nonexistent.pbp"});
     EXPECT_NE(missing.exitCode, 0);
     EXPECT_FALSE(missing.crashed);

@@ -32,13 +32,13 @@ void writeJson(const fs::path& p, const nlohmann::json& j) {
     std::ofstream(p) << j.dump(2);
 }
 
-std::string probeCache() {
+std::string gateProbeCache() {
     return (fs::path(PB_TEST_OUTPUT_DIR) / "gate-probe-cache").string();
 }
 
 std::vector<std::string> gate(const fs::path& baseline, std::vector<std::string> extra = {}) {
     std::vector<std::string> a{"gate", "--baseline", baseline.string(), "--cache-dir",
-                               probeCache()};
+                               gateProbeCache()};
     a.insert(a.end(), extra.begin(), extra.end());
     return a;
 }
@@ -54,7 +54,7 @@ fs::path tinyBaseline(const fs::path& dir) {
     return b;
 }
 
-bool firstLineIsTheError(const CommandResult& r, const std::string& text) {
+bool gateFirstLineIsTheError(const CommandResult& r, const std::string& text) {
     return r.output.rfind("probebench: error: " + text, 0) == 0 &&
            std::count(r.output.begin(), r.output.end(), '\n') == 1;
 }
@@ -94,7 +94,7 @@ TEST(GateCli, UpdateWritesABaselineThatTheNextRunPassesWithIdenticalCounters) {
 }
 
 namespace {
-std::string fileBytes(const fs::path& p) {
+std::string gateFileBytes(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
@@ -114,11 +114,12 @@ TEST(GateCli, UpdateWithKeepProbesKeepsTheCommittedProbeData) {
                                           committed.string() + "'"})
                   .exitCode,
               0);
-    const std::string other = fileBytes(committed);
+    const std::string other = gateFileBytes(committed);
 
     auto r = runProbebench(gate(b, {"--update", "--keep-probes", "--no-timing"}));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_TRUE(fileBytes(committed) == other) << "--keep-probes rewrote the committed probe data";
+    EXPECT_TRUE(gateFileBytes(committed) == other)
+        << "--keep-probes rewrote the committed probe data";
     const nlohmann::json kept = readJson(b);
     EXPECT_NE(kept["probes"], kept["bake"]) << "measured with this machine's bake";
     EXPECT_EQ(runProbebench(gate(b, {"--no-timing"})).exitCode, 0);
@@ -126,7 +127,7 @@ TEST(GateCli, UpdateWithKeepProbesKeepsTheCommittedProbeData) {
     // Without it, --update commits this machine's bake.
     r = runProbebench(gate(b, {"--update", "--no-timing"}));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    EXPECT_FALSE(fileBytes(committed) == other) << "--update kept the committed probe data";
+    EXPECT_FALSE(gateFileBytes(committed) == other) << "--update kept the committed probe data";
     const nlohmann::json rebaked = readJson(b);
     EXPECT_EQ(rebaked["probes"], rebaked["bake"]);
 }
@@ -314,50 +315,52 @@ TEST(GateCli, ErrorsAreOneLine) {
     const fs::path missing = dir / "missing.json";
     auto r = runProbebench(gate(missing));
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_TRUE(
-        firstLineIsTheError(r, missing.string() + ": no such baseline (create it with --update)"))
+    EXPECT_TRUE(gateFirstLineIsTheError(r, missing.string() +
+                                               ": no such baseline (create it with --update)"))
         << r.output;
 
     std::ofstream(dir / "bad.json") << "{\"schema\": \"probebench.gate/1\"}";
     r = runProbebench(gate(dir / "bad.json"));
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_TRUE(firstLineIsTheError(r, (dir / "bad.json").string() + ": suite.scene: missing"))
+    EXPECT_TRUE(gateFirstLineIsTheError(r, (dir / "bad.json").string() + ": suite.scene: missing"))
         << r.output;
 
     const fs::path b = tinyBaseline(dir);
     r = runProbebench(gate(b, {"--width", "32", "--height", "32"}));
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_TRUE(firstLineIsTheError(r, "--width: only with --update (the suite is the baseline's)"))
+    EXPECT_TRUE(
+        gateFirstLineIsTheError(r, "--width: only with --update (the suite is the baseline's)"))
         << r.output;
 
     r = runProbebench(gate(b, {"--keep-probes"}));
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_TRUE(firstLineIsTheError(r, "--keep-probes: only with --update (the gate always "
-                                       "measures with the committed probe data)"))
+    EXPECT_TRUE(gateFirstLineIsTheError(r, "--keep-probes: only with --update (the gate always "
+                                           "measures with the committed probe data)"))
         << r.output;
     r = runProbebench(gate(b, {"--update", "--keep-probes", "--volumes", "auto-uniform"}));
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_TRUE(firstLineIsTheError(r, "--volumes: not with --keep-probes (another scene or other "
-                                       "volumes need their own bake)"))
+    EXPECT_TRUE(gateFirstLineIsTheError(r,
+                                        "--volumes: not with --keep-probes (another scene or other "
+                                        "volumes need their own bake)"))
         << r.output;
     const fs::path lone = dir / "lone.json";
     fs::copy_file(b, lone, fs::copy_options::overwrite_existing);
     r = runProbebench(gate(lone, {"--update", "--keep-probes"}));
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_TRUE(firstLineIsTheError(r, (dir / "lone.probes.gz").string() +
-                                           ": no committed probe data to keep (--keep-probes)"))
+    EXPECT_TRUE(gateFirstLineIsTheError(r, (dir / "lone.probes.gz").string() +
+                                               ": no committed probe data to keep (--keep-probes)"))
         << r.output;
 
     r = runProbebench(gate(b, {"--against", (dir / "no-such-binary").string()}));
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_TRUE(
-        firstLineIsTheError(r, "--against " + (dir / "no-such-binary").string() + ": no such file"))
+    EXPECT_TRUE(gateFirstLineIsTheError(r, "--against " + (dir / "no-such-binary").string() +
+                                               ": no such file"))
         << r.output;
 
     r = runCommand({"env", "PB_DEBUG_GI_EXTRA_FETCHES=lots", binaryPath().string(), "gate",
                     "--baseline", b.string()});
     EXPECT_EQ(r.exitCode, 1);
-    EXPECT_TRUE(firstLineIsTheError(
+    EXPECT_TRUE(gateFirstLineIsTheError(
         r, "PB_DEBUG_GI_EXTRA_FETCHES: must be an integer in 0..16 (test-only fault injection)"))
         << r.output;
 

@@ -18,7 +18,7 @@ struct RunResult {
 };
 
 // Runs `probebench <args>` through the shell; `prefix` goes before the binary (xvfb-run).
-RunResult runProbebench(const std::string& args, const std::string& prefix = "") {
+RunResult infoRunProbebench(const std::string& args, const std::string& prefix = "") {
     const auto errFile = outputDir() / "stderr.txt";
     const std::string cmd =
         prefix + "'" + binaryPath().string() + "' " + args + " 2>'" + errFile.string() + "'";
@@ -42,7 +42,7 @@ bool osmesaMissing(const RunResult& r) {
 } // namespace
 
 TEST(InfoCli, JsonHasTheDriverStringsAndCapabilities) {
-    const RunResult r = runProbebench("info --json");
+    const RunResult r = infoRunProbebench("info --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
     ASSERT_FALSE(j.is_discarded()) << "not JSON:\n" << r.out;
@@ -55,19 +55,19 @@ TEST(InfoCli, JsonHasTheDriverStringsAndCapabilities) {
 }
 
 TEST(InfoCli, TextListsCapabilitiesAsYesNo) {
-    const RunResult r = runProbebench("info");
+    const RunResult r = infoRunProbebench("info");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     for (const char* text : {"GL_VERSION", "GL_RENDERER", "GL_VENDOR", "RGBA16F", "yes"})
         EXPECT_NE(r.out.find(text), std::string::npos) << text << " in:\n" << r.out;
 }
 
 TEST(InfoCli, ListsTheSupportedGltfExtensions) {
-    const RunResult text = runProbebench("info");
+    const RunResult text = infoRunProbebench("info");
     ASSERT_EQ(text.exitCode, 0) << text.err;
     for (const char* ext : {"EXT_meshopt_compression", "KHR_draco_mesh_compression",
                             "KHR_mesh_quantization", "KHR_texture_transform"})
         EXPECT_NE(text.out.find(ext), std::string::npos) << ext << " in:\n" << text.out;
-    const RunResult js = runProbebench("info --json");
+    const RunResult js = infoRunProbebench("info --json");
     ASSERT_EQ(js.exitCode, 0) << js.err;
     const auto j = nlohmann::json::parse(js.out);
     ASSERT_TRUE(j.contains("gltf_extensions"));
@@ -75,7 +75,7 @@ TEST(InfoCli, ListsTheSupportedGltfExtensions) {
 }
 
 TEST(InfoCli, RunsOnOsMesa) {
-    const RunResult r = runProbebench("info --platform osmesa");
+    const RunResult r = infoRunProbebench("info --platform osmesa");
     if (osmesaMissing(r) && !underCi()) GTEST_SKIP() << r.err;
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("osmesa"), std::string::npos) << r.out;
@@ -83,20 +83,20 @@ TEST(InfoCli, RunsOnOsMesa) {
 }
 
 TEST(InfoCli, RejectsAnUnknownPlatform) {
-    const RunResult r = runProbebench("info --platform nonsense");
+    const RunResult r = infoRunProbebench("info --platform nonsense");
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE((r.out + r.err).find("--platform"), std::string::npos) << r.out << r.err;
     EXPECT_NE((r.out + r.err).find("nonsense"), std::string::npos) << r.out << r.err;
 }
 
 TEST(InfoCli, NamesAMissingDevice) {
-    const RunResult r = runProbebench("info --device 99");
+    const RunResult r = infoRunProbebench("info --device 99");
     EXPECT_NE(r.exitCode, 0);
     EXPECT_NE(r.err.find("egl: device 99"), std::string::npos) << r.err;
 }
 
 TEST(InfoCli, ListsEglDevices) {
-    const RunResult r = runProbebench("info --devices --json");
+    const RunResult r = infoRunProbebench("info --devices --json");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const nlohmann::json j = nlohmann::json::parse(r.out, nullptr, false);
     ASSERT_TRUE(j.is_array()) << r.out;
@@ -112,7 +112,7 @@ TEST(InfoCli, RunsOnGlfwUnderXvfb) {
         if (underCi()) FAIL() << "xvfb-run is missing under CI (apt install xvfb xauth)";
         GTEST_SKIP() << "xvfb-run not installed: the glfw backend needs an X server";
     }
-    const RunResult r = runProbebench("info --platform glfw", "xvfb-run -a ");
+    const RunResult r = infoRunProbebench("info --platform glfw", "xvfb-run -a ");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("glfw: GLFW"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("GL_VERSION"), std::string::npos) << r.out;

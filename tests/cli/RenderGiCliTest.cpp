@@ -15,12 +15,12 @@ namespace {
 
 // A coarse bake of `rooms`, shared by the tests of this file (its own file name: the
 // other CLI suites bake theirs in parallel).
-const fs::path& roomsProbes() {
+const fs::path& renderGiRoomsProbes() {
     static const fs::path file = bakeCoarseRooms(fs::path(PB_TEST_OUTPUT_DIR) / "rooms_gi_cli.pbp");
     return file;
 }
 
-double meanLuma(const pb::image::Image8& img) {
+double renderGiMeanLuma(const pb::image::Image8& img) {
     double sum = 0;
     for (size_t i = 0; i < img.pixels.size(); i += 4)
         sum += 0.2126 * img.pixels[i] + 0.7152 * img.pixels[i + 1] + 0.0722 * img.pixels[i + 2];
@@ -39,22 +39,24 @@ TEST(RenderGiCli, ProbesChangeTheIndirectLight) {
     auto plain = runProbebench(renderArgs(dir / "plain.png"));
     ASSERT_EQ(plain.exitCode, 0) << plain.output;
     auto args = renderArgs(dir / "gi.png");
-    args.insert(args.end(), {"--probes", roomsProbes().string(), "--scenario", "day"});
+    args.insert(args.end(), {"--probes", renderGiRoomsProbes().string(), "--scenario", "day"});
     auto gi = runProbebench(args);
     ASSERT_EQ(gi.exitCode, 0) << gi.output;
     EXPECT_NE(gi.output.find("gi: ddgi, 1 of 1 volume(s), scenario 'day'"), std::string::npos)
         << gi.output;
     auto a = pb::image::readPng((dir / "plain.png").string());
     auto b = pb::image::readPng((dir / "gi.png").string());
-    EXPECT_GT(std::abs(meanLuma(a) - meanLuma(b)), 1.0) << "GI must replace the ambient";
-    EXPECT_GT(meanLuma(b), 5.0) << "a sunlit room with GI is not black";
+    EXPECT_GT(std::abs(renderGiMeanLuma(a) - renderGiMeanLuma(b)), 1.0)
+        << "GI must replace the ambient";
+    EXPECT_GT(renderGiMeanLuma(b), 5.0) << "a sunlit room with GI is not black";
 }
 
 TEST(RenderGiCli, SwitchesFromTheCommandLine) {
     fs::path dir = outputDir();
     auto args = renderArgs(dir / "half.png");
-    args.insert(args.end(), {"--probes", roomsProbes().string(), "--set", "gi.resolution=half",
-                             "--set", "gi.target_format=r11g11b10f", "--set", "gi.loops=split"});
+    args.insert(args.end(),
+                {"--probes", renderGiRoomsProbes().string(), "--set", "gi.resolution=half", "--set",
+                 "gi.target_format=r11g11b10f", "--set", "gi.loops=split"});
     auto r = runProbebench(args);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("gi.resolution=half"), std::string::npos) << r.output;
@@ -81,7 +83,7 @@ TEST(RenderGiCli, BadSwitchesAreOneLineErrors) {
     for (const Case& c : cases) {
         fs::path out = dir / "bad.png";
         auto args = renderArgs(out);
-        args.insert(args.end(), {"--probes", roomsProbes().string()});
+        args.insert(args.end(), {"--probes", renderGiRoomsProbes().string()});
         args.insert(args.end(), c.extra.begin(), c.extra.end());
         auto r = runProbebench(args);
         EXPECT_FALSE(r.crashed) << r.output;
@@ -121,7 +123,7 @@ TEST(RenderGiCli, EverySwitchValueRenders) {
     };
     for (const auto& set : sets) {
         auto args = renderArgs(dir / "switch.png");
-        args.insert(args.end(), {"--probes", roomsProbes().string(), "--dynamic", "table"});
+        args.insert(args.end(), {"--probes", renderGiRoomsProbes().string(), "--dynamic", "table"});
         for (const auto& kv : set)
             args.insert(args.end(), {"--set", kv});
         auto r = runProbebench(args);
@@ -133,14 +135,14 @@ TEST(RenderGiCli, EverySwitchValueRenders) {
 TEST(RenderGiCli, DebugViewsWriteTheirImages) {
     fs::path dir = outputDir();
     auto normalArgs = renderArgs(dir / "normal.png");
-    normalArgs.insert(normalArgs.end(), {"--probes", roomsProbes().string()});
+    normalArgs.insert(normalArgs.end(), {"--probes", renderGiRoomsProbes().string()});
     ASSERT_EQ(runProbebench(normalArgs).exitCode, 0);
     const auto normal = pb::image::readPng((dir / "normal.png").string());
     for (const char* view :
          {"gi_only", "probes_irradiance", "probes_visibility", "volume_coverage"}) {
         const fs::path out = dir / (std::string(view) + ".png");
         auto args = renderArgs(out);
-        args.insert(args.end(), {"--probes", roomsProbes().string(), "--debug", view});
+        args.insert(args.end(), {"--probes", renderGiRoomsProbes().string(), "--debug", view});
         auto r = runProbebench(args);
         ASSERT_EQ(r.exitCode, 0) << view << ": " << r.output;
         EXPECT_NE(r.output.find(std::string("debug view ") + view), std::string::npos) << r.output;
@@ -150,7 +152,7 @@ TEST(RenderGiCli, DebugViewsWriteTheirImages) {
         EXPECT_EQ(img.width,
                   std::string(view) == "volume_coverage" ? 2 * normal.width : normal.width);
         if (img.width == normal.width) {
-            EXPECT_GT(std::abs(meanLuma(img) - meanLuma(normal)), 0.5) << view;
+            EXPECT_GT(std::abs(renderGiMeanLuma(img) - renderGiMeanLuma(normal)), 0.5) << view;
         }
     }
     auto noProbes = renderArgs(dir / "np.png");
@@ -165,7 +167,7 @@ TEST(RenderGiCli, JsonReportsPixelsEvaluatedPerVolume) {
     fs::path dir = outputDir();
     for (const char* mode : {"naive", "stencil"}) {
         auto args = renderArgs(dir / "json.png");
-        args.insert(args.end(), {"--probes", roomsProbes().string(), "--json", "--set",
+        args.insert(args.end(), {"--probes", renderGiRoomsProbes().string(), "--json", "--set",
                                  std::string("gi.multi_volume=") + mode});
         auto r = runProbebench(args);
         ASSERT_EQ(r.exitCode, 0) << r.output;

@@ -17,7 +17,7 @@ CommandResult renderTo(std::vector<std::string> outputs) {
     return runProbebench(args);
 }
 
-void expectOneLineError(const CommandResult& r, const std::string& text) {
+void renderOutputPathsExpectOneLineError(const CommandResult& r, const std::string& text) {
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_EQ(r.output.rfind("probebench: error: ", 0), 0u) << r.output;
     EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << r.output;
@@ -29,11 +29,12 @@ void expectOneLineError(const CommandResult& r, const std::string& text) {
 TEST(RenderOutputPathsCli, MissingFolderIsAnErrorUnlessMkdir) {
     const fs::path dir = outputDir();
     const fs::path out = dir / "no" / "such" / "x.png";
-    expectOneLineError(renderTo({"--out", out.string()}), "does not exist (--mkdir creates it)");
+    renderOutputPathsExpectOneLineError(renderTo({"--out", out.string()}),
+                                        "does not exist (--mkdir creates it)");
     EXPECT_FALSE(fs::exists(dir / "no")) << "created the folders anyway";
-    expectOneLineError(renderTo({"--out", (dir / "x.png").string(), "--out-hdr",
-                                 (dir / "nope" / "x.pfm").string()}),
-                       "--out-hdr");
+    renderOutputPathsExpectOneLineError(renderTo({"--out", (dir / "x.png").string(), "--out-hdr",
+                                                  (dir / "nope" / "x.pfm").string()}),
+                                        "--out-hdr");
     EXPECT_FALSE(fs::exists(dir / "x.png")) << "wrote --out before refusing --out-hdr";
 
     const CommandResult made = renderTo({"--out", out.string(), "--mkdir"});
@@ -43,11 +44,12 @@ TEST(RenderOutputPathsCli, MissingFolderIsAnErrorUnlessMkdir) {
 
 TEST(RenderOutputPathsCli, ExtensionMustBeTheFormatWritten) {
     const fs::path dir = outputDir();
-    expectOneLineError(renderTo({"--out", (dir / "x.jpg").string()}),
-                       "writes an 8-bit sRGB PNG, so the name must end in .png (not .jpg)");
-    expectOneLineError(renderTo({"--out", (dir / "x.png").string(), "--out-hdr",
-                                 (dir / "x.exr").string()}),
-                       "must end in .pfm");
+    renderOutputPathsExpectOneLineError(
+        renderTo({"--out", (dir / "x.jpg").string()}),
+        "writes an 8-bit sRGB PNG, so the name must end in .png (not .jpg)");
+    renderOutputPathsExpectOneLineError(
+        renderTo({"--out", (dir / "x.png").string(), "--out-hdr", (dir / "x.exr").string()}),
+        "must end in .pfm");
     EXPECT_TRUE(fs::is_empty(dir)) << "wrote something before refusing";
     const CommandResult upper = renderTo({"--out", (dir / "X.PNG").string()});
     EXPECT_EQ(upper.exitCode, 0) << upper.output;
@@ -56,12 +58,15 @@ TEST(RenderOutputPathsCli, ExtensionMustBeTheFormatWritten) {
 TEST(RenderOutputPathsCli, WindowAndPathModesRefuseOutputsTheyWouldNotWrite) {
     // Checked before any window opens: no display needed.
     const fs::path dir = outputDir();
-    expectOneLineError(renderTo({"--platform", "glfw", "--out-hdr", (dir / "x.pfm").string()}),
-                       "--out-hdr: the window mode writes nothing at exit");
-    expectOneLineError(renderTo({"--platform", "glfw", "--dump-gbuffer", (dir / "gb").string()}),
-                       "--dump-gbuffer: the window mode writes nothing at exit");
-    expectOneLineError(renderTo({"--path", "static", "--frames", "1", "--out-dir",
-                                 (dir / "walk").string(), "--out-hdr", (dir / "x.pfm").string()}),
-                       "--out-hdr: not written in --path mode");
+    renderOutputPathsExpectOneLineError(
+        renderTo({"--platform", "glfw", "--out-hdr", (dir / "x.pfm").string()}),
+        "--out-hdr: the window mode writes nothing at exit");
+    renderOutputPathsExpectOneLineError(
+        renderTo({"--platform", "glfw", "--dump-gbuffer", (dir / "gb").string()}),
+        "--dump-gbuffer: the window mode writes nothing at exit");
+    renderOutputPathsExpectOneLineError(
+        renderTo({"--path", "static", "--frames", "1", "--out-dir", (dir / "walk").string(),
+                  "--out-hdr", (dir / "x.pfm").string()}),
+        "--out-hdr: not written in --path mode");
     EXPECT_TRUE(fs::is_empty(dir));
 }

@@ -17,7 +17,7 @@ namespace {
 
 // A coarse bake of `rooms`, shared by the tests of this file (its own file name: the
 // other CLI suites bake theirs in parallel).
-const fs::path& roomsProbes() {
+const fs::path& renderPathRoomsProbes() {
     static const fs::path file =
         bakeCoarseRooms(fs::path(PB_TEST_OUTPUT_DIR) / "rooms_path_cli.pbp");
     return file;
@@ -66,8 +66,9 @@ TEST(RenderPathCli, WritesNumberedFrames) {
 TEST(RenderPathCli, ComparesEveryFrameWithFullResolution) {
     const fs::path out = outputDir() / "cmp";
     auto args = pathArgs("static", out, 5);
-    args.insert(args.end(), {"--probes", roomsProbes().string(), "--set", "gi.resolution=half",
-                             "--set", "gi.upsample=temporal", "--compare-to", "full"});
+    args.insert(args.end(),
+                {"--probes", renderPathRoomsProbes().string(), "--set", "gi.resolution=half",
+                 "--set", "gi.upsample=temporal", "--compare-to", "full"});
     auto r = runProbebench(args);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     std::ifstream csv(out / "errors.csv");
@@ -120,8 +121,9 @@ TEST(RenderPathCli, PathFileCutsResetTheHistory) {
                            "[[key]]\ntime = 0.3\nposition = [3.0, 1.6, 0.0]\n"
                            "target = [-1.7, 0.0, 0.5]\ncut = true\n";
     auto args = pathArgs(file.string(), dir / "out", 6);
-    args.insert(args.end(), {"--probes", roomsProbes().string(), "--set", "gi.resolution=half",
-                             "--set", "gi.upsample=temporal", "--compare-to", "full"});
+    args.insert(args.end(),
+                {"--probes", renderPathRoomsProbes().string(), "--set", "gi.resolution=half",
+                 "--set", "gi.upsample=temporal", "--compare-to", "full"});
     auto r = runProbebench(args);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     std::ifstream jf(dir / "out" / "errors.json");
@@ -153,7 +155,7 @@ TEST(RenderPathCli, BadOptionsAreOneLineErrorsAndWriteNothing) {
         {path("spiral"), "--path 'spiral': not a built-in path (static, slow_pan"},
         {path(badFile.string()), "bad.toml:1: [[key]] #1: missing key 'target'"},
         {path("static", {"--compare-to", "full"}), "--compare-to full: needs --probes"},
-        {path("static", {"--probes", roomsProbes().string(), "--compare-to", "half"}),
+        {path("static", {"--probes", renderPathRoomsProbes().string(), "--compare-to", "half"}),
          "only 'full'"},
         {{"render", "--scene", "cornell", "--path", "doorway_walk", "--out-dir", out.string()},
          "needs the built-in 'rooms' scene"},

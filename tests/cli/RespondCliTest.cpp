@@ -17,7 +17,7 @@ using namespace pb::test;
 
 namespace {
 
-const fs::path& coarseRooms() {
+const fs::path& respondCoarseRooms() {
     static const fs::path file =
         bakeCoarseRooms(fs::path(PB_TEST_OUTPUT_DIR) / "rooms_coarse_respond.pbp");
     return file;
@@ -28,7 +28,7 @@ std::vector<std::string> respond(const fs::path& dir, std::vector<std::string> e
                                      "--scene",
                                      "rooms",
                                      "--probes",
-                                     coarseRooms().string(),
+                                     respondCoarseRooms().string(),
                                      "--width",
                                      "64",
                                      "--height",
@@ -43,7 +43,7 @@ std::vector<std::string> respond(const fs::path& dir, std::vector<std::string> e
     return args;
 }
 
-std::string readText(const fs::path& p) {
+std::string respondReadText(const fs::path& p) {
     std::ifstream in(p);
     std::stringstream s;
     s << in.rdbuf();
@@ -72,7 +72,7 @@ TEST(RespondCli, MeasuresEveryScheduleAgainstTheConvergedRebake) {
         respond(dir, {"--event", "sun:off@2", "--frames", "60", "--json", (dir / "r.json").string(),
                       "--out-dir", (dir / "out").string()}));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const auto j = nlohmann::json::parse(readText(dir / "r.json"));
+    const auto j = nlohmann::json::parse(respondReadText(dir / "r.json"));
     ASSERT_EQ(j["schedules"].size(), 3u);
     std::map<std::string, nlohmann::json> by;
     for (const auto& s : j["schedules"]) {
@@ -103,7 +103,7 @@ TEST(RespondCli, MeasuresEveryScheduleAgainstTheConvergedRebake) {
     for (std::size_t n = 0; n <= 12; ++n)
         EXPECT_NEAR(hy[n].get<double>(), std::pow(0.97, double(n)), 0.05) << n;
     EXPECT_TRUE(j["closed_form_hysteresis"].is_array());
-    const std::string html = readText(dir / "out" / "report.html");
+    const std::string html = respondReadText(dir / "out" / "report.html");
     EXPECT_NE(html.find("<svg"), std::string::npos);
     EXPECT_NE(html.find("<polyline"), std::string::npos);
     EXPECT_TRUE(fs::exists(dir / "out" / "frames" / "hastened_0059.png"));
@@ -146,7 +146,7 @@ TEST(RespondCli, BudgetsCapTheUpdatesAndTheUploadedBytes) {
                       "--upload-bytes-per-frame", "51200", "--rays-per-frame", "12800", "--json",
                       (dir / "b.json").string()}));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const auto j = nlohmann::json::parse(readText(dir / "b.json"));
+    const auto j = nlohmann::json::parse(respondReadText(dir / "b.json"));
     EXPECT_EQ(j["probe_updates_per_frame_budget"].get<int>(), 100);
     const auto& s = j["schedules"][0];
     EXPECT_DOUBLE_EQ(s["probe_updates_per_frame"].get<double>(), 100.0);
@@ -163,7 +163,7 @@ TEST(RespondCli, AProfileCarriesTheUpdateBudget) {
         respond(dir, {"--event", "sun:off@1", "--frames", "4", "--schedule", "hastened",
                       "--profile", profile.string(), "--json", (dir / "p.json").string()}));
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    const auto j = nlohmann::json::parse(readText(dir / "p.json"));
+    const auto j = nlohmann::json::parse(respondReadText(dir / "p.json"));
     EXPECT_EQ(j["rays_per_frame_budget"].get<int>(), 12800);
     EXPECT_EQ(j["probe_updates_per_frame_budget"].get<int>(), 100);
     // The command line wins over the profile.
@@ -172,7 +172,8 @@ TEST(RespondCli, AProfileCarriesTheUpdateBudget) {
                       "--profile", profile.string(), "--upload-bytes-per-frame", "5120", "--json",
                       (dir / "q.json").string()}));
     ASSERT_EQ(cli.exitCode, 0) << cli.output;
-    EXPECT_EQ(nlohmann::json::parse(readText(dir / "q.json"))["probe_updates_per_frame_budget"]
-                  .get<int>(),
-              10);
+    EXPECT_EQ(
+        nlohmann::json::parse(respondReadText(dir / "q.json"))["probe_updates_per_frame_budget"]
+            .get<int>(),
+        10);
 }

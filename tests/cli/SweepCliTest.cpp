@@ -34,7 +34,7 @@ std::string truthPlan(const std::string& name, const std::string& scene) {
     return plan;
 }
 
-void expectOneLineError(const CommandResult& r, const std::string& problem) {
+void sweepExpectOneLineError(const CommandResult& r, const std::string& problem) {
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_EQ(r.output.rfind("probebench: error: ", 0), 0u) << r.output;
     EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << "not one line:\n" << r.output;
@@ -51,20 +51,20 @@ std::string fileText(const fs::path& p) {
 TEST(SweepCli, BadPlansFailBeforeAnythingRuns) {
     const fs::path dir = outputDir();
     const fs::path empty = writePlan(dir, "empty.toml", "name = \"e\"\n");
-    expectOneLineError(runProbebench({"sweep", "--plan", empty.string(), "--out",
-                                      (dir / "out").string()}),
-                       "empty.toml: the plan expands to no jobs");
+    sweepExpectOneLineError(
+        runProbebench({"sweep", "--plan", empty.string(), "--out", (dir / "out").string()}),
+        "empty.toml: the plan expands to no jobs");
     const fs::path unknown =
         writePlan(dir, "unknown.toml", "name = \"u\"\n[[bench]]\nscenes = [\"cornell\"]\n"
                                        "profiles = [\"reference\"]\nresolutions = [\"64x36\"]\n"
                                        "rounds = 3\n");
-    expectOneLineError(runProbebench({"sweep", "--plan", unknown.string(), "--out",
-                                      (dir / "out").string()}),
-                       "unknown key 'rounds'");
+    sweepExpectOneLineError(
+        runProbebench({"sweep", "--plan", unknown.string(), "--out", (dir / "out").string()}),
+        "unknown key 'rounds'");
     EXPECT_FALSE(fs::exists(dir / "out")) << "a refused plan created its output folder";
-    expectOneLineError(runProbebench({"sweep", "--plan", empty.string(), "--out",
-                                      (dir / "out").string(), "--engine", "pbs"}),
-                       "--engine: expected local or slurm");
+    sweepExpectOneLineError(runProbebench({"sweep", "--plan", empty.string(), "--out",
+                                           (dir / "out").string(), "--engine", "pbs"}),
+                            "--engine: expected local or slurm");
 }
 
 TEST(SweepCli, AFailedJobKeepsTheOthersAndResumeRunsOnlyIt) {
@@ -87,12 +87,13 @@ TEST(SweepCli, AFailedJobKeepsTheOthersAndResumeRunsOnlyIt) {
     const auto job0Time = fs::last_write_time(out / "jobs/0000.json");
 
     // The same plan into its own folder without --resume is refused; so is another plan.
-    expectOneLineError(runProbebench({"sweep", "--plan", plan.string(), "--out", out.string()}),
-                       "already holds this plan's results (1 of 2 jobs finished); --resume");
+    sweepExpectOneLineError(
+        runProbebench({"sweep", "--plan", plan.string(), "--out", out.string()}),
+        "already holds this plan's results (1 of 2 jobs finished); --resume");
     const fs::path other = writePlan(dir, "other.toml", truthPlan("other", "rooms"));
-    expectOneLineError(runProbebench({"sweep", "--plan", other.string(), "--out", out.string(),
-                                      "--resume"}),
-                       "holds the results of another plan ('resume'");
+    sweepExpectOneLineError(
+        runProbebench({"sweep", "--plan", other.string(), "--out", out.string(), "--resume"}),
+        "holds the results of another plan ('resume'");
 
     ASSERT_EQ(writeTinyGltf(dir, "later"), later);
     const CommandResult resumed =

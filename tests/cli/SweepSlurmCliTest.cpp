@@ -17,7 +17,7 @@ namespace pb::test {
 namespace {
 namespace fs = std::filesystem;
 
-std::string fileText(const fs::path& p) {
+std::string sweepSlurmFileText(const fs::path& p) {
     std::ifstream in(p, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
@@ -69,8 +69,8 @@ TEST(SweepSlurmCli, SlurmEngineMergesAsTheLocalEngineDoes) {
     ASSERT_EQ(slurm.exitCode, 0) << slurm.output;
     EXPECT_NE(slurm.output.find("submitted job array"), std::string::npos) << slurm.output;
 
-    const nlohmann::json a = nlohmann::json::parse(fileText(dir / "local/sweep.json"));
-    const nlohmann::json b = nlohmann::json::parse(fileText(dir / "slurm/sweep.json"));
+    const nlohmann::json a = nlohmann::json::parse(sweepSlurmFileText(dir / "local/sweep.json"));
+    const nlohmann::json b = nlohmann::json::parse(sweepSlurmFileText(dir / "slurm/sweep.json"));
     EXPECT_EQ(a["profiles"].size(), 4u); // 2 profiles x 2 resolutions
     EXPECT_EQ(a["bakes"].size(), 1u);
     EXPECT_TRUE(a["profiles"][2]["accuracy"]["flip_mean"].is_number());
@@ -84,7 +84,8 @@ TEST(SweepSlurmCli, SlurmEngineMergesAsTheLocalEngineDoes) {
          "--volumes", "auto-uniform", "--out", (dir / "single.pbp").string()});
     ASSERT_EQ(single.exitCode, 0) << single.output;
     const std::string merged = b["bakes"][0]["file"].get<std::string>();
-    EXPECT_TRUE(fileText(dir / "single.pbp") == fileText(dir / "slurm" / merged))
+    EXPECT_TRUE(sweepSlurmFileText(dir / "single.pbp") ==
+                sweepSlurmFileText(dir / "slurm" / merged))
         << "the merged split bake is not the single bake's bytes";
 
     // A failing task: the other task's result stays, --resume submits only the failed index.

@@ -14,7 +14,7 @@ using namespace pb::test;
 
 namespace {
 
-void expectOneLineError(const CommandResult& r, const std::string& mustName) {
+void truthExpectOneLineError(const CommandResult& r, const std::string& mustName) {
     EXPECT_FALSE(r.crashed) << r.output;
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find("error:"), std::string::npos) << r.output;
@@ -22,7 +22,7 @@ void expectOneLineError(const CommandResult& r, const std::string& mustName) {
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
 }
 
-nlohmann::json readJson(const fs::path& p) {
+nlohmann::json truthReadJson(const fs::path& p) {
     std::ifstream in(p);
     return nlohmann::json::parse(in, nullptr, false);
 }
@@ -46,7 +46,7 @@ TEST(TruthCli, WritesHdrPngAndJsonThenReusesTheCache) {
     EXPECT_EQ(hdr.width, 32);
     auto png = pb::image::readPng((dir / "t.png").string());
     EXPECT_EQ(png.height, 18);
-    auto j = readJson(dir / "t.json");
+    auto j = truthReadJson(dir / "t.json");
     ASSERT_FALSE(j.is_discarded());
     EXPECT_FALSE(j["cached"].get<bool>());
     EXPECT_GT(j["mean_luminance"].get<double>(), 0.0);
@@ -56,7 +56,7 @@ TEST(TruthCli, WritesHdrPngAndJsonThenReusesTheCache) {
 
     r = runProbebench(args);
     ASSERT_EQ(r.exitCode, 0) << r.output;
-    auto again = readJson(dir / "t.json");
+    auto again = truthReadJson(dir / "t.json");
     EXPECT_TRUE(again["cached"].get<bool>());
     EXPECT_EQ(again["mean_luminance"], j["mean_luminance"]);
 }
@@ -68,13 +68,13 @@ TEST(TruthCli, BadInputIsAOneLineErrorAndWritesNothing) {
     args.insert(args.end(), {"--out-hdr", out});
     auto spp0 = args;
     spp0[10] = "0";
-    expectOneLineError(runProbebench(spp0), "--spp");
+    truthExpectOneLineError(runProbebench(spp0), "--spp");
     auto blind = args;
     blind.insert(blind.end(), {"--camera", "0,1,5,0,1,10"}); // outside the box, looking away
-    expectOneLineError(runProbebench(blind), "sees no geometry");
+    truthExpectOneLineError(runProbebench(blind), "sees no geometry");
     auto view = args;
     view[4] = "nowhere";
-    expectOneLineError(runProbebench(view), "nowhere");
+    truthExpectOneLineError(runProbebench(view), "nowhere");
     EXPECT_FALSE(fs::exists(out));
 }
 

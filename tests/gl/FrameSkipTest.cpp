@@ -17,7 +17,7 @@ namespace {
 
 using FrameSkipTest = GlTest;
 
-constexpr int kW = 96, kH = 54;
+constexpr int kFrameSkipW = 96, kFrameSkipH = 54;
 
 std::vector<std::string> passNames(const render::FrameRenderer& r) {
     std::vector<std::string> names;
@@ -37,7 +37,7 @@ bool skippedMentions(const render::FrameRenderer& r, const std::string& what) {
     return false;
 }
 
-render::GiOptions gi(const std::vector<std::string>& sets = {}) {
+render::GiOptions frameSkipGi(const std::vector<std::string>& sets = {}) {
     render::GiOptions o;
     o.probes = &giTestProbes(probes::StorageFormat::Rgba16f);
     for (const auto& kv : sets)
@@ -54,7 +54,8 @@ Pair renderBoth(const scene::Scene& s, const scene::View& view, const render::Gi
     p.lean = std::make_unique<render::FrameRenderer>(s, render::defaultFrameSettings(s), o);
     p.full = std::make_unique<render::FrameRenderer>(s, render::defaultFrameSettings(s), o,
                                                      render::FrameBuild{false});
-    const render::RenderView rv = render::makeRenderView(view, s.worldBounds(), kW, kH);
+    const render::RenderView rv =
+        render::makeRenderView(view, s.worldBounds(), kFrameSkipW, kFrameSkipH);
     p.lean->render(rv);
     p.full->render(rv);
     return p;
@@ -91,7 +92,7 @@ TEST_F(FrameSkipTest, NoShadowPassWithoutAShadowCastingLight) {
 TEST_F(FrameSkipTest, NoShPassNorShTexturesWithoutDynamicObjects) {
     const scene::Scene& s = giTestScene(); // rooms: no dynamic object
     ASSERT_TRUE(render::findDynamicObjects(s).objects.empty());
-    Pair p = renderBoth(s, *s.findView("sunlit_room"), gi({"gi.dynamic=sh"}));
+    Pair p = renderBoth(s, *s.findView("sunlit_room"), frameSkipGi({"gi.dynamic=sh"}));
     EXPECT_FALSE(hasPass(*p.lean, "gi-dynamic-sh"));
     EXPECT_EQ(p.lean->giMemory().dynamicSh, 0u);
     EXPECT_TRUE(hasPass(*p.full, "gi-dynamic-sh"));
@@ -105,7 +106,7 @@ TEST_F(FrameSkipTest, NoShPassNorShTexturesWithoutDynamicObjects) {
     for (auto& inst : moving.instances)
         inst.dynamic = inst.nodeName == "sofa";
     render::FrameRenderer withObject(moving, render::defaultFrameSettings(moving),
-                                     gi({"gi.dynamic=sh"}));
+                                     frameSkipGi({"gi.dynamic=sh"}));
     EXPECT_TRUE(hasPass(withObject, "gi-dynamic-sh"));
     EXPECT_GT(withObject.giMemory().dynamicSh, 0u);
 }
@@ -114,11 +115,11 @@ TEST_F(FrameSkipTest, OmittedVolumesHaveNoTexturesAndAreListed) {
     const scene::Scene& s = giTestScene();
     const probes::ProbeSet& set = giTestProbes(probes::StorageFormat::Rgba16f);
     const std::string root = set.volumes[0].name;
-    render::FrameRenderer all(s, render::defaultFrameSettings(s), gi());
+    render::FrameRenderer all(s, render::defaultFrameSettings(s), frameSkipGi());
     render::FrameRenderer noChild(s, render::defaultFrameSettings(s),
-                                  gi({"gi.volume_lod=omit:child"}));
+                                  frameSkipGi({"gi.volume_lod=omit:child"}));
     render::FrameRenderer none(s, render::defaultFrameSettings(s),
-                               gi({"gi.volume_lod=omit:" + root}));
+                               frameSkipGi({"gi.volume_lod=omit:" + root}));
     EXPECT_EQ(all.gpuProbes()->volumes().size(), 2u);
     EXPECT_EQ(noChild.gpuProbes()->volumes().size(), 1u);
     EXPECT_LT(noChild.giMemory().probes, all.giMemory().probes);
@@ -136,7 +137,7 @@ TEST_F(FrameSkipTest, AViewThatSeesNoVolumeRunsNoGiPassAndLooksTheSame) {
     const scene::View up = scene::parseCameraSpec("0,30,0,0,60,0.1,60");
     for (const char* res : {"gi.resolution=full", "gi.resolution=half"}) {
         SCOPED_TRACE(res);
-        Pair p = renderBoth(s, up, gi({res, "gi.upsample=temporal"}));
+        Pair p = renderBoth(s, up, frameSkipGi({res, "gi.upsample=temporal"}));
         EXPECT_TRUE(p.lean->giSkippedLastFrame());
         EXPECT_FALSE(p.full->giSkippedLastFrame());
         expectSameImage(p);
@@ -144,20 +145,20 @@ TEST_F(FrameSkipTest, AViewThatSeesNoVolumeRunsNoGiPassAndLooksTheSame) {
         EXPECT_GT(p.lean->giMemory().probes, 0u);
     }
     // Timed sections: only the passes that ran.
-    render::FrameRenderer r(s, render::defaultFrameSettings(s), gi());
+    render::FrameRenderer r(s, render::defaultFrameSettings(s), frameSkipGi());
     struct Names : render::FrameTimer {
         std::vector<std::string> names;
         void begin(const char* n) override { names.push_back(n); }
         void end(const char*) override {}
     } timer;
-    r.render(render::makeRenderView(up, s.worldBounds(), kW, kH), &timer);
+    r.render(render::makeRenderView(up, s.worldBounds(), kFrameSkipW, kFrameSkipH), &timer);
     EXPECT_EQ(std::count(timer.names.begin(), timer.names.end(), "gi-apply"), 0);
     // Looking into the house again: the GI runs.
-    const render::RenderView in =
-        render::makeRenderView(*s.findView("sunlit_room"), s.worldBounds(), kW, kH);
+    const render::RenderView in = render::makeRenderView(*s.findView("sunlit_room"),
+                                                         s.worldBounds(), kFrameSkipW, kFrameSkipH);
     r.render(in);
     EXPECT_FALSE(r.giSkippedLastFrame());
-    render::FrameRenderer reference(s, render::defaultFrameSettings(s), gi(),
+    render::FrameRenderer reference(s, render::defaultFrameSettings(s), frameSkipGi(),
                                     render::FrameBuild{false});
     reference.render(in);
     EXPECT_EQ(r.readRadiance().pixels, reference.readRadiance().pixels);
@@ -177,7 +178,7 @@ TEST_F(FrameSkipTest, GiMemoryEstimateMatchesWhatAFrameAllocates) {
         {"gi.dynamic=sh", "gi.volume_lod=omit:child"},
     };
     for (const auto& sets : variants) {
-        render::GiOptions o = gi(sets);
+        render::GiOptions o = frameSkipGi(sets);
         SCOPED_TRACE(o.profile.valuesJson().dump());
         render::FrameRenderer r(s, render::defaultFrameSettings(s), o);
         r.render(render::makeRenderView(*s.findView("sunlit_room"), s.worldBounds(), 101, 57));

@@ -13,7 +13,8 @@
 namespace pb::test {
 namespace {
 
-constexpr int kW = 64, kH = 32, kStepX = 37; // odd: a low-res footprint straddles the step
+constexpr int kGiBilateralStepW = 64, kGiBilateralStepH = 32,
+              kStepX = 37; // odd: a low-res footprint straddles the step
 
 struct StepResult {
     int mixed = 0;     // pixels with both red and green above 1%
@@ -36,11 +37,12 @@ protected:
         scene::Bounds bounds;
         bounds.extend({-10, -10, -10});
         bounds.extend({10, 10, 10});
-        const render::RenderView view = render::makeRenderView(camera, bounds, kW, kH);
+        const render::RenderView view =
+            render::makeRenderView(camera, bounds, kGiBilateralStepW, kGiBilateralStepH);
         render::GpuScene gpu(s);
         render::FrameSettings settings;
         gl::ProgramCache programs;
-        render::FrameTargets targets(kW, kH);
+        render::FrameTargets targets(kGiBilateralStepW, kGiBilateralStepH);
         const gl::DriverQuirks quirks = gl::detectDriverQuirks();
 
         // GBuffer: normal +Z (octahedral (0,0)) everywhere, flags 0, depth per side.
@@ -49,9 +51,9 @@ protected:
         glClearBufferfv(GL_COLOR, 1, normal);
         glClearBufferfv(GL_COLOR, 3, zero);
         glEnable(GL_SCISSOR_TEST);
-        glScissor(0, 0, kStepX, kH);
+        glScissor(0, 0, kStepX, kGiBilateralStepH);
         glClearBufferfi(GL_DEPTH_STENCIL, 0, windowDepth(view, nearZ), 0);
-        glScissor(kStepX, 0, kW - kStepX, kH);
+        glScissor(kStepX, 0, kGiBilateralStepW - kStepX, kGiBilateralStepH);
         glClearBufferfi(GL_DEPTH_STENCIL, 0, windowDepth(view, farZ), 0);
         glDisable(GL_SCISSOR_TEST);
 
@@ -64,8 +66,8 @@ protected:
         // Low-res texel i was evaluated at GBuffer column i * 2 + jitter.
         gl::TextureDesc d;
         d.format = gl::TextureFormat::RGBA16F;
-        d.width = kW / 2;
-        d.height = kH / 2;
+        d.width = kGiBilateralStepW / 2;
+        d.height = kGiBilateralStepH / 2;
         gl::Texture low(d);
         std::vector<float> texels;
         for (int y = 0; y < d.height; ++y)
@@ -80,8 +82,8 @@ protected:
         const image::ImageF out = render::readFloat(*ctx.gi.irradiance);
 
         StepResult r;
-        for (int y = 0; y < kH; ++y)
-            for (int x = 0; x < kW; ++x) {
+        for (int y = 0; y < kGiBilateralStepH; ++y)
+            for (int x = 0; x < kGiBilateralStepW; ++x) {
                 const float red = out.at(x, y, 0), green = out.at(x, y, 1);
                 r.mixed += red > 0.01f && green > 0.01f;
                 r.wrongSide += x < kStepX ? red < 0.01f : green < 0.01f;
@@ -97,13 +99,13 @@ TEST_F(GiBilateralStepTest, NeverBlendsAcrossAStepBeyondTheTolerance) {
     EXPECT_EQ(r.wrongSide, 0);
     // Control: bilinear mixes the two along the step on every row.
     r = run("bilinear", 2.0f, 2.5f);
-    EXPECT_GE(r.mixed, kH);
+    EXPECT_GE(r.mixed, kGiBilateralStepH);
 }
 
 TEST_F(GiBilateralStepTest, BlendsAStepWithinTheTolerance) {
     // 2.0 -> 2.02: 1%, within the tolerance: one surface as far as the filter is concerned.
     const StepResult r = run("bilateral", 2.0f, 2.02f);
-    EXPECT_GE(r.mixed, kH);
+    EXPECT_GE(r.mixed, kGiBilateralStepH);
 }
 
 } // namespace

@@ -17,7 +17,7 @@
 namespace pb::test {
 namespace {
 
-constexpr int kW = 320, kH = 180;
+constexpr int kGiDebugViewW = 320, kGiDebugViewH = 180;
 
 struct SphereCheck {
     std::vector<glm::vec3> atProbe; // radiance at each probe's projected centre
@@ -44,7 +44,8 @@ SphereCheck renderSpheres(render::GiDebugView view, bool sparse = false) {
     gi.probes = &set;
     gi.debugView = view;
     render::FrameRenderer r(s, render::defaultFrameSettings(s), gi);
-    const render::RenderView rv = render::makeRenderView(cam, s.worldBounds(), kW, kH);
+    const render::RenderView rv =
+        render::makeRenderView(cam, s.worldBounds(), kGiDebugViewW, kGiDebugViewH);
     r.render(rv);
     const image::ImageF radiance = r.readRadiance();
     SphereCheck out;
@@ -53,9 +54,10 @@ SphereCheck renderSpheres(render::GiDebugView view, bool sparse = false) {
     for (int p = 0; p < v.probeCount(); ++p) {
         const glm::vec3 local = -v.halfExtents + glm::vec3(v.probeCoords(p)) * v.cellSize();
         const glm::vec4 clip = rv.clipFromRel * glm::vec4(rv.toRel(v.toWorld(local)), 1.0f);
-        const int x = int((clip.x / clip.w * 0.5f + 0.5f) * kW);
-        const int y = kH - 1 - int((clip.y / clip.w * 0.5f + 0.5f) * kH);
-        EXPECT_TRUE(x >= 0 && x < kW && y >= 0 && y < kH) << "probe " << p << " off screen";
+        const int x = int((clip.x / clip.w * 0.5f + 0.5f) * kGiDebugViewW);
+        const int y = kGiDebugViewH - 1 - int((clip.y / clip.w * 0.5f + 0.5f) * kGiDebugViewH);
+        EXPECT_TRUE(x >= 0 && x < kGiDebugViewW && y >= 0 && y < kGiDebugViewH)
+            << "probe " << p << " off screen";
         out.atProbe.push_back({radiance.at(x, y, 0), radiance.at(x, y, 1), radiance.at(x, y, 2)});
     }
     return out;

@@ -36,7 +36,7 @@ namespace fs = std::filesystem;
 namespace pb::test {
 namespace {
 
-constexpr int kW = 160, kH = 90;
+constexpr int kGiDynamicMidAirW = 160, kGiDynamicMidAirH = 90;
 
 const scene::Scene& dynamicScene() {
     static const scene::Scene s = scene::makeBuiltinScene("rooms_dynamic");
@@ -79,13 +79,14 @@ DynamicPixels renderDynamic(const probes::ProbeSet& set, const std::string& mode
     render::FrameSettings fs = render::defaultFrameSettings(s);
     fs.indirectOnly = true;
     render::FrameRenderer r(s, fs, gi);
-    r.render(render::makeRenderView(*s.findView("dynamic"), s.worldBounds(), kW, kH));
+    r.render(render::makeRenderView(*s.findView("dynamic"), s.worldBounds(), kGiDynamicMidAirW,
+                                    kGiDynamicMidAirH));
     const image::ImageF radiance = r.readRadiance();
     const image::Image8 albedo = render::readRgba8(r.targets()->gbuffer.channel(0));
     const image::Image8 flags = render::readRgba8(r.targets()->gbuffer.channel(3));
     DynamicPixels d;
-    for (int y = 0; y < kH; ++y)
-        for (int x = 0; x < kW; ++x) {
+    for (int y = 0; y < kGiDynamicMidAirH; ++y)
+        for (int x = 0; x < kGiDynamicMidAirW; ++x) {
             if (!(flags.at(x, y, 0) & 1u)) continue;
             const glm::vec3 e = lambertIrradiance(radiance, albedo, x, y);
             d.irradiance.push_back(e);
@@ -140,8 +141,8 @@ TEST_F(GiDynamicPerPixelTest, PerPixelDynamicPixelsSkipTheBehindFadeAsTheCpuDoes
     gi.probes = &bakes().dense;
     gi.profile.applyOverride("gi.target_format=rgba32f");
     render::FrameRenderer r(s, render::defaultFrameSettings(s), gi);
-    const render::RenderView view =
-        render::makeRenderView(*s.findView("dynamic"), s.worldBounds(), kW, kH);
+    const render::RenderView view = render::makeRenderView(*s.findView("dynamic"), s.worldBounds(),
+                                                           kGiDynamicMidAirW, kGiDynamicMidAirH);
     r.render(view);
     checkNoGlErrors("rendering");
     const std::vector<GBufferSurface> surfaces = gbufferSurfaces(r, view);
@@ -149,9 +150,10 @@ TEST_F(GiDynamicPerPixelTest, PerPixelDynamicPixelsSkipTheBehindFadeAsTheCpuDoes
     const image::ImageF target = render::readFloat(*giTarget(r));
     const probes::ProbeSampler cpu(bakes().dense, 0);
     int dynamic = 0, fadeMatters = 0, worse = 0, surface = 0;
-    for (int y = 0; y < kH; ++y)
-        for (int x = 0; x < kW; ++x) {
-            const GBufferSurface& px = surfaces[std::size_t(y) * kW + std::size_t(x)];
+    for (int y = 0; y < kGiDynamicMidAirH; ++y)
+        for (int x = 0; x < kGiDynamicMidAirW; ++x) {
+            const GBufferSurface& px =
+                surfaces[std::size_t(y) * kGiDynamicMidAirW + std::size_t(x)];
             if (px.sky) continue;
             ++surface;
             const bool isDynamic = (px.flags & 1u) != 0;

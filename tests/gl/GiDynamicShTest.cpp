@@ -19,9 +19,9 @@
 namespace pb::test {
 namespace {
 
-constexpr int kW = 160, kH = 90;
+constexpr int kGiDynamicShW = 160, kGiDynamicShH = 90;
 
-const scene::Scene& dynamicScene() {
+const scene::Scene& giDynamicShDynamicScene() {
     static const scene::Scene s = [] {
         scene::Scene s = scene::makeBuiltinScene("rooms");
         for (auto& inst : s.instances)
@@ -57,14 +57,15 @@ struct ShFrame {
     std::vector<float> targetWeight;
 };
 
-ShFrame renderDynamic(const probes::ProbeSet& set, const std::string& dynamic) {
-    const scene::Scene& s = dynamicScene();
+ShFrame giDynamicShRenderDynamic(const probes::ProbeSet& set, const std::string& dynamic) {
+    const scene::Scene& s = giDynamicShDynamicScene();
     render::GiOptions gi;
     gi.probes = &set;
     gi.profile.applyOverride("gi.target_format=rgba32f");
     gi.profile.applyOverride("gi.dynamic=" + dynamic);
     render::FrameRenderer r(s, render::defaultFrameSettings(s), gi);
-    r.render(render::makeRenderView(*s.findView("dark_room"), s.worldBounds(), kW, kH));
+    r.render(render::makeRenderView(*s.findView("dark_room"), s.worldBounds(), kGiDynamicShW,
+                                    kGiDynamicShH));
     const image::ImageF radiance = r.readRadiance();
     const image::Image8 albedo = render::readRgba8(r.targets()->gbuffer.channel(0));
     const image::ImageF normal = render::readFloat(r.targets()->gbuffer.channel(1));
@@ -74,8 +75,8 @@ ShFrame renderDynamic(const probes::ProbeSet& set, const std::string& dynamic) {
         if (auto* a = dynamic_cast<const render::GiApplyPass*>(p.get())) target = a->target();
     const image::ImageF gt = render::readFloat(*target);
     ShFrame f;
-    for (int y = 0; y < kH; ++y)
-        for (int x = 0; x < kW; ++x) {
+    for (int y = 0; y < kGiDynamicShH; ++y)
+        for (int x = 0; x < kGiDynamicShW; ++x) {
             const glm::vec3 e = lambertIrradiance(radiance, albedo, x, y);
             f.irradiance.push_back(e);
             f.normal.push_back(gbufferNormal(normal.at(x, y, 0), normal.at(x, y, 1)));
@@ -100,8 +101,8 @@ TEST_F(GiDynamicShTest, ShMatchesPerPixelInASmoothField) {
     const probes::ProbeSet set = buildingProbes([](int, const glm::vec3& d, const glm::ivec3&) {
         return glm::vec3(1.0f, 0.9f, 0.8f) * (0.6f + 0.3f * d.x + 0.2f * d.y - 0.1f * d.z);
     });
-    const ShFrame pp = renderDynamic(set, "per_pixel");
-    const ShFrame sh = renderDynamic(set, "sh");
+    const ShFrame pp = giDynamicShRenderDynamic(set, "per_pixel");
+    const ShFrame sh = giDynamicShRenderDynamic(set, "sh");
     int dynamicPixels = 0;
     double maxRel = 0, sumRel = 0;
     for (size_t i = 0; i < pp.flags.size(); ++i) {
@@ -124,9 +125,9 @@ TEST_F(GiDynamicShTest, ShIsTheCentresLightingAndOnlyForDynamicPixels) {
     const probes::ProbeSet set = buildingProbes([](int, const glm::vec3&, const glm::ivec3& p) {
         return glm::vec3(0.2f + 0.25f * float(p.x));
     });
-    const ShFrame pp = renderDynamic(set, "per_pixel");
-    const ShFrame sh = renderDynamic(set, "sh");
-    const render::DynamicObjects objects = render::findDynamicObjects(dynamicScene());
+    const ShFrame pp = giDynamicShRenderDynamic(set, "per_pixel");
+    const ShFrame sh = giDynamicShRenderDynamic(set, "sh");
+    const render::DynamicObjects objects = render::findDynamicObjects(giDynamicShDynamicScene());
     ASSERT_EQ(objects.objects.size(), 2u);
     const probes::ProbeSampler cpu(set, 0);
     int dynamicPixels = 0, staticDiffer = 0, farFromCentre = 0;

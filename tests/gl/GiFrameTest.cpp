@@ -19,11 +19,12 @@
 namespace pb::test {
 namespace {
 
-constexpr int kW = 160, kH = 90;
+constexpr int kGiFrameW = 160, kGiFrameH = 90;
 
 render::RenderView testView() {
     const scene::Scene& s = giTestScene();
-    return render::makeRenderView(*s.findView("sunlit_room"), s.worldBounds(), kW, kH);
+    return render::makeRenderView(*s.findView("sunlit_room"), s.worldBounds(), kGiFrameW,
+                                  kGiFrameH);
 }
 
 std::unique_ptr<render::FrameRenderer> makeRenderer(const probes::ProbeSet* set,
@@ -66,9 +67,9 @@ TEST_F(GiFrameTest, ApplyPassMatchesCpuAtGBufferPixels) {
     probes::ProbeSampler cpu(set, 0);
     int covered = 0, sky = 0, worse = 0;
     double maxRel = 0;
-    for (int y = 0; y < kH; ++y)
-        for (int x = 0; x < kW; ++x) {
-            const GBufferSurface& px = surfaces[std::size_t(y) * kW + std::size_t(x)];
+    for (int y = 0; y < kGiFrameH; ++y)
+        for (int x = 0; x < kGiFrameW; ++x) {
+            const GBufferSurface& px = surfaces[std::size_t(y) * kGiFrameW + std::size_t(x)];
             if (px.sky) {
                 ++sky;
                 continue;
@@ -85,11 +86,11 @@ TEST_F(GiFrameTest, ApplyPassMatchesCpuAtGBufferPixels) {
         }
     std::printf("[ apply vs cpu ] %d surface pixels (%d sky), %d covered: max rel %.3g, %d above "
                 "1e-3\n",
-                kW * kH - sky, sky, covered, maxRel, worse);
-    EXPECT_GT(covered, kW * kH / 2);
+                kGiFrameW * kGiFrameH - sky, sky, covered, maxRel, worse);
+    EXPECT_GT(covered, kGiFrameW * kGiFrameH / 2);
     // Depth reconstruction rounds differently on each side: a pixel right on a probe-cell
     // boundary may pick the other base probe. Allow a handful, never many.
-    EXPECT_LE(worse, kW * kH / 1000);
+    EXPECT_LE(worse, kGiFrameW * kGiFrameH / 1000);
 }
 
 // Compared on the GI target (RGBA32F): the RGBA16F radiance would turn a last-bit float

@@ -17,7 +17,7 @@
 namespace pb::test {
 namespace {
 
-constexpr int kW = 160, kH = 90;
+constexpr int kGiInvocationCounterW = 160, kGiInvocationCounterH = 90;
 
 render::GiApplyPass* applyPass(render::FrameRenderer& r) {
     return r.giApplyPass();
@@ -42,7 +42,8 @@ render::GiPassStats renderCounted(const NestedCamera& cam, const std::string& mu
     render::FrameRenderer r(s, render::defaultFrameSettings(s), gi, render::FrameBuild{false});
     applyPass(r)->setCountPixels(true);
     applyPass(r)->setCountInvocationsWithLateTests(lateTests);
-    r.render(render::makeRenderView(cam.view, s.worldBounds(), kW, kH));
+    r.render(render::makeRenderView(cam.view, s.worldBounds(), kGiInvocationCounterW,
+                                    kGiInvocationCounterH));
     return applyPass(r)->stats();
 }
 
@@ -110,7 +111,9 @@ TEST_F(GiInvocationCounterTest, StencilKeepsTakenTexelsOutOfTheApply) {
                 if (v.culled) continue;
                 EXPECT_GE(v.applyInvocations, v.evaluatedPixels) << v.name;
                 // The stencil test ran before the shader: at most the untaken texels reach it.
-                EXPECT_LE(v.applyInvocations, std::int64_t(kW) * kH - taken) << v.name;
+                EXPECT_LE(v.applyInvocations,
+                          std::int64_t(kGiInvocationCounterW) * kGiInvocationCounterH - taken)
+                    << v.name;
                 // The mark evaluates the same influence test as the apply: it runs on at least the
                 // texels it marks, and those are the ones the apply evaluated.
                 if (v.fillPass && !v.markInApply) {

@@ -18,7 +18,7 @@
 namespace pb::test {
 namespace {
 
-constexpr int kW = 160, kH = 90;
+constexpr int kGiScreenRectW = 160, kGiScreenRectH = 90;
 
 struct GiFrame {
     image::ImageF gi;
@@ -37,7 +37,7 @@ GiFrame renderNested(const scene::View& view, const std::string& multiVolume,
     render::GiApplyPass* pass = r.giApplyPass();
     pass->setCountPixels(true);
     pass->setScreenRects(screenRects);
-    r.render(render::makeRenderView(view, s.worldBounds(), kW, kH));
+    r.render(render::makeRenderView(view, s.worldBounds(), kGiScreenRectW, kGiScreenRectH));
     return {render::readFloat(*pass->target()), pass->stats()};
 }
 

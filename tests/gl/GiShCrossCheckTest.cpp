@@ -20,7 +20,7 @@
 namespace pb::test {
 namespace {
 
-glm::vec3 randomUnit(std::mt19937& rng) {
+glm::vec3 giShCrossCheckRandomUnit(std::mt19937& rng) {
     std::normal_distribution<float> g;
     for (;;) {
         glm::vec3 v(g(rng), g(rng), g(rng));
@@ -33,8 +33,8 @@ struct ShCheck {
     int covered = 0, inChild = 0, worst = -1;
 };
 
-ShCheck crossCheck(const probes::ProbeSet& set, const std::string& technique,
-                   const std::string& leak, int n) {
+ShCheck shCrossCheck(const probes::ProbeSet& set, const std::string& technique,
+                     const std::string& leak, int n) {
     profile::Profile prof;
     prof.applyOverride("gi.target_format=rgba32f");
     prof.applyOverride("gi.technique=" + technique);
@@ -49,8 +49,8 @@ ShCheck crossCheck(const probes::ProbeSet& set, const std::string& technique,
     std::vector<render::GiPoint> pts(static_cast<size_t>(n));
     for (auto& p : pts) {
         p.position = root.toWorld(glm::vec3(u(rng), u(rng), u(rng)) * ext);
-        p.normal = randomUnit(rng);
-        p.view = randomUnit(rng);
+        p.normal = giShCrossCheckRandomUnit(rng);
+        p.view = giShCrossCheckRandomUnit(rng);
     }
     const std::vector<glm::vec4> g = eval.evaluate(pts);
     const probes::ShSampler cpu(set, 0, "test probes");
@@ -91,7 +91,7 @@ TEST_P(GiShCrossCheckTest, GpuMatchesTheCpuShSamplerForEveryTechniqueAndLeakMode
     EXPECT_GT(set.invalidCount(), 0u) << "invalid probes must be exercised";
     for (const char* technique : {"sh_l1", "sh_l2"})
         for (const char* leak : {"none", "weight", "validity_mask"}) {
-            const ShCheck r = crossCheck(set, technique, leak, 4000);
+            const ShCheck r = shCrossCheck(set, technique, leak, 4000);
             std::printf("[ sh cross-check ] %s, %s, %s: %d covered, %d in the child, max rel "
                         "%.3g, max |weight| error %.3g\n",
                         GetParam().c_str(), technique, leak, r.covered, r.inChild, r.maxRel,
@@ -111,7 +111,7 @@ TEST_P(GiShCrossCheckTest, SparseSetGpuMatchesTheCpuShSampler) {
     ASSERT_LT(set.storedCount(), set.probeCount()) << "nothing absent: vacuous";
     for (const char* technique : {"sh_l1", "sh_l2"})
         for (const char* leak : {"none", "weight", "validity_mask"}) {
-            const ShCheck r = crossCheck(set, technique, leak, 2000);
+            const ShCheck r = shCrossCheck(set, technique, leak, 2000);
             std::printf("[ sh cross-check ] %s sparse, %s, %s: %d covered, max rel %.3g\n",
                         GetParam().c_str(), technique, leak, r.covered, r.maxRel);
             EXPECT_GT(r.covered, 1000) << technique << " " << leak;

@@ -27,7 +27,7 @@
 namespace pb::test {
 namespace {
 
-constexpr int kW = 160, kH = 90;
+constexpr int kGiSparseW = 160, kGiSparseH = 90;
 
 // giTestProbes (a root and a rotated child over `rooms`, every 7th probe invalid) stored
 // sparse: invalid probes and probes at no surface cell left out.
@@ -68,7 +68,8 @@ image::ImageF renderGi(const probes::ProbeSet& set) {
     gi.profile.applyOverride("gi.target_format=rgba32f");
     const scene::Scene& s = giTestScene();
     render::FrameRenderer r(s, render::defaultFrameSettings(s), gi);
-    r.render(render::makeRenderView(*s.findView("sunlit_room"), s.worldBounds(), kW, kH));
+    r.render(render::makeRenderView(*s.findView("sunlit_room"), s.worldBounds(), kGiSparseW,
+                                    kGiSparseH));
     for (const auto& p : r.passes())
         if (auto* pass = dynamic_cast<const render::GiApplyPass*>(p.get()))
             return render::readFloat(*pass->target());

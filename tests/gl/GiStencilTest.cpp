@@ -19,23 +19,23 @@
 namespace pb::test {
 namespace {
 
-constexpr int kW = 160, kH = 90;
+constexpr int kGiStencilW = 160, kGiStencilH = 90;
 
-struct GiFrame {
+struct StencilFrame {
     image::ImageF gi;
     render::GiPassStats stats;
     render::RenderView view;
 };
 
-render::GiApplyPass* applyPass(render::FrameRenderer& r) {
+render::GiApplyPass* giStencilApplyPass(render::FrameRenderer& r) {
     for (const auto& p : r.passes())
         if (auto* gi = dynamic_cast<render::GiApplyPass*>(p.get())) return gi;
     return nullptr;
 }
 
-GiFrame renderNested(const NestedCamera& cam, const std::string& multiVolume,
-                     const std::string& resolution, const std::string& dumpDir = "",
-                     bool hugeRoot = false, const std::string& technique = "ddgi") {
+StencilFrame renderStencilNested(const NestedCamera& cam, const std::string& multiVolume,
+                                 const std::string& resolution, const std::string& dumpDir = "",
+                                 bool hugeRoot = false, const std::string& technique = "ddgi") {
     const scene::Scene& s = giTestScene();
     render::GiOptions gi;
     gi.probes = &nestedVolumeProbes(hugeRoot);
@@ -52,10 +52,10 @@ GiFrame renderNested(const NestedCamera& cam, const std::string& multiVolume,
     gi.profile.applyOverride("gi.technique=" + technique);
     gi.profile.applyOverride("gi.sh_leak=weight");
     render::FrameRenderer r(s, render::defaultFrameSettings(s), gi);
-    render::GiApplyPass* pass = applyPass(r);
+    render::GiApplyPass* pass = giStencilApplyPass(r);
     pass->setCountPixels(true);
-    GiFrame f;
-    f.view = render::makeRenderView(cam.view, s.worldBounds(), kW, kH);
+    StencilFrame f;
+    f.view = render::makeRenderView(cam.view, s.worldBounds(), kGiStencilW, kGiStencilH);
     r.render(f.view);
     f.gi = render::readFloat(*pass->target());
     f.stats = pass->stats();
@@ -74,7 +74,7 @@ const render::GiVolumeStats* volumeStats(const render::GiPassStats& s, const std
     return nullptr;
 }
 
-void printCounts(const char* what, const GiFrame& f) {
+void printCounts(const char* what, const StencilFrame& f) {
     std::printf("  %-8s", what);
     for (const auto& v : f.stats.volumes)
         std::printf(" %s=%lld%s%s%s", v.name.c_str(), static_cast<long long>(v.evaluatedPixels),
@@ -93,8 +93,10 @@ TEST_F(GiStencilTest, TheShTechniqueShadesLikeNaiveUnderStencil) {
     for (const char* technique : {"sh_l1", "sh_l2"})
         for (const NestedCamera& cam : nestedCameras()) {
             SCOPED_TRACE(std::string(technique) + ", camera " + cam.name);
-            const GiFrame naive = renderNested(cam, "naive", "full", "", false, technique);
-            const GiFrame stencil = renderNested(cam, "stencil", "full", "", false, technique);
+            const StencilFrame naive =
+                renderStencilNested(cam, "naive", "full", "", false, technique);
+            const StencilFrame stencil =
+                renderStencilNested(cam, "stencil", "full", "", false, technique);
             ASSERT_EQ(stencil.stats.evaluations.size(), naive.stats.evaluations.size());
             int wrongCount = 0, wrongVolume = 0;
             for (size_t i = 0; i < naive.stats.evaluations.size(); ++i) {
@@ -120,8 +122,8 @@ TEST_F(GiStencilTest, EveryCoveredPixelIsEvaluatedOnceByTheSmallestVolume) {
     for (const NestedCamera& cam : nestedCameras())
         for (const char* res : {"full", "half", "quarter"}) {
             SCOPED_TRACE(std::string(cam.name) + ", gi.resolution=" + res);
-            const GiFrame naive = renderNested(cam, "naive", res);
-            const GiFrame stencil = renderNested(cam, "stencil", res);
+            const StencilFrame naive = renderStencilNested(cam, "naive", res);
+            const StencilFrame stencil = renderStencilNested(cam, "stencil", res);
             std::printf("[ stencil ] camera %s, gi.resolution=%s (%dx%d):\n", cam.name, res,
                         stencil.stats.width, stencil.stats.height);
             printCounts("naive", naive);
@@ -180,8 +182,8 @@ TEST_F(GiStencilTest, EveryCoveredPixelIsEvaluatedOnceByTheSmallestVolume) {
 TEST_F(GiStencilTest, ABoxPastTheFarPlaneIsDrawnFullScreen) {
     for (const NestedCamera& cam : nestedCameras()) {
         if (std::string(cam.name) != "inside_middle") continue;
-        const GiFrame naive = renderNested(cam, "naive", "full", "", true);
-        const GiFrame stencil = renderNested(cam, "stencil", "full", "", true);
+        const StencilFrame naive = renderStencilNested(cam, "naive", "full", "", true);
+        const StencilFrame stencil = renderStencilNested(cam, "stencil", "full", "", true);
         std::printf("[ stencil ] huge root, camera %s:\n", cam.name);
         printCounts("naive", naive);
         printCounts("stencil", stencil);
@@ -208,9 +210,10 @@ TEST_F(GiStencilTest, AnOmittedVolumeIsNotDrawn) {
     gi.profile.applyOverride("gi.multi_volume=stencil");
     gi.profile.applyOverride("gi.volume_lod=omit:sun_patch");
     render::FrameRenderer r(s, render::defaultFrameSettings(s), gi);
-    applyPass(r)->setCountPixels(true);
-    r.render(render::makeRenderView(nestedCameras()[1].view, s.worldBounds(), kW, kH));
-    const render::GiPassStats& stats = applyPass(r)->stats();
+    giStencilApplyPass(r)->setCountPixels(true);
+    r.render(
+        render::makeRenderView(nestedCameras()[1].view, s.worldBounds(), kGiStencilW, kGiStencilH));
+    const render::GiPassStats& stats = giStencilApplyPass(r)->stats();
     ASSERT_EQ(stats.volumes.size(), 2u);
     for (const auto& v : stats.volumes)
         EXPECT_NE(v.name, "sun_patch");
@@ -226,29 +229,30 @@ TEST_F(GiStencilTest, TheShadingVolumeIsTheCpuSamplersChoice) {
         std::filesystem::path(PB_TEST_OUTPUT_DIR) / "gi_stencil_gbuffer";
     const probes::ProbeSampler cpu(nestedVolumeProbes(), 0);
     for (const NestedCamera& cam : nestedCameras()) {
-        const GiFrame f = renderNested(cam, "stencil", "full", dir.string());
+        const StencilFrame f = renderStencilNested(cam, "stencil", "full", dir.string());
         const image::ImageF depth = image::readPfm((dir / "depth.pfm").string());
         int checked = 0, disagree = 0;
-        for (int y = 0; y < kH; ++y)
-            for (int x = 0; x < kW; ++x) {
+        for (int y = 0; y < kGiStencilH; ++y)
+            for (int x = 0; x < kGiStencilW; ++x) {
                 const float d = depth.at(x, y, 1);
                 if (d >= 1.0f) continue;
-                const int glRow = kH - 1 - y;
-                glm::vec4 relH =
-                    f.view.relFromClip *
-                    glm::vec4((x + 0.5f) / kW * 2 - 1, (glRow + 0.5f) / kH * 2 - 1, d * 2 - 1, 1);
+                const int glRow = kGiStencilH - 1 - y;
+                glm::vec4 relH = f.view.relFromClip *
+                                 glm::vec4((x + 0.5f) / kGiStencilW * 2 - 1,
+                                           (glRow + 0.5f) / kGiStencilH * 2 - 1, d * 2 - 1, 1);
                 const glm::vec3 world =
                     glm::vec3(glm::dvec3(glm::vec3(relH) / relH.w) + f.view.eye);
                 const int v = cpu.selectVolume(world);
                 const std::string expected =
                     v < 0 ? "" : nestedVolumeProbes().volumes[size_t(v)].name;
                 ++checked;
-                disagree += shadedName(f.stats, size_t(glRow) * kW + size_t(x)) != expected;
+                disagree +=
+                    shadedName(f.stats, size_t(glRow) * kGiStencilW + size_t(x)) != expected;
             }
         std::printf("[ stencil vs cpu ] %s: %d surface pixels, %d with another volume\n", cam.name,
                     checked, disagree);
-        EXPECT_GT(checked, kW * kH / 2);
-        EXPECT_LE(disagree, kW * kH / 1000) << cam.name;
+        EXPECT_GT(checked, kGiStencilW * kGiStencilH / 2);
+        EXPECT_LE(disagree, kGiStencilW * kGiStencilH / 1000) << cam.name;
     }
 }
 

@@ -18,10 +18,11 @@
 namespace pb::test {
 namespace {
 
-constexpr int kW = 160, kH = 88; // divisible by 4: every pixel gets exact samples
+constexpr int kGiUpsampleW = 160,
+              kGiUpsampleH = 88; // divisible by 4: every pixel gets exact samples
 
 render::RenderView viewOf(const scene::Scene& s, const char* name) {
-    return render::makeRenderView(*s.findView(name), s.worldBounds(), kW, kH);
+    return render::makeRenderView(*s.findView(name), s.worldBounds(), kGiUpsampleW, kGiUpsampleH);
 }
 
 std::unique_ptr<render::FrameRenderer> renderer(const scene::Scene& s,
@@ -111,12 +112,14 @@ TEST_F(GiUpsampleHistoryTest, HistoryFollowsACameraTurn) {
     const scene::View start = *s.findView("sunlit_room");
     scene::View turned = start;
     const glm::vec3 look = start.target - start.position;
-    const float angle = glm::radians(2.0f * start.fovYDegrees / float(kH)); // ~2 pixels
+    const float angle = glm::radians(2.0f * start.fovYDegrees / float(kGiUpsampleH)); // ~2 pixels
     turned.target =
         start.position + glm::vec3(std::cos(angle) * look.x + std::sin(angle) * look.z, look.y,
                                    -std::sin(angle) * look.x + std::cos(angle) * look.z);
-    const render::RenderView a = render::makeRenderView(start, s.worldBounds(), kW, kH);
-    const render::RenderView b = render::makeRenderView(turned, s.worldBounds(), kW, kH);
+    const render::RenderView a =
+        render::makeRenderView(start, s.worldBounds(), kGiUpsampleW, kGiUpsampleH);
+    const render::RenderView b =
+        render::makeRenderView(turned, s.worldBounds(), kGiUpsampleW, kGiUpsampleH);
     auto full = renderer(s, {});
     auto bilateral = renderer(s, {"gi.resolution=half", "gi.upsample=bilateral"});
     auto temporal = renderer(s, {"gi.resolution=half", "gi.upsample=temporal"});
@@ -182,7 +185,8 @@ TEST_F(GiUpsampleHistoryTest, DynamicPixelsBypassTheHistory) {
     for (int i = 0; i < 5; ++i)
         temporal->render(view);
     const image::Image8 flags = render::readRgba8(temporal->targets()->gbuffer.channel(3));
-    std::vector<bool> dynamic(size_t(kW) * kH), still(size_t(kW) * kH);
+    std::vector<bool> dynamic(size_t(kGiUpsampleW) * kGiUpsampleH),
+        still(size_t(kGiUpsampleW) * kGiUpsampleH);
     int dynamicCount = 0;
     for (size_t p = 0; p < dynamic.size(); ++p) {
         dynamic[p] = (flags.pixels[p * 4] & render::kFlagDynamic) != 0;

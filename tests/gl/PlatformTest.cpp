@@ -21,19 +21,19 @@ constexpr Rgba kClear = {51, 102, 153, 255};   // glClearColor(0.2, 0.4, 0.6, 1)
 constexpr Rgba kTriangle = {255, 128, 0, 255}; // the fragment shader's colour
 
 // GLSL ES 3.00 on both APIs: desktop core takes it through ARB_ES3_compatibility.
-const char* kVertex = R"(#version 300 es
+const char* kPlatformVertex = R"(#version 300 es
 void main() {
     // Lower-left half of the viewport: (-1,-1), (1,-1), (-1,1).
     gl_Position = vec4(gl_VertexID == 1 ? 1.0 : -1.0, gl_VertexID == 2 ? 1.0 : -1.0, 0.0, 1.0);
 }
 )";
-const char* kFragment = R"(#version 300 es
+const char* kPlatformFragment = R"(#version 300 es
 precision mediump float;
 out vec4 color;
 void main() { color = vec4(1.0, 0.5, 0.0, 1.0); }
 )";
 
-GLuint compile(GLenum stage, const char* source) {
+GLuint platformCompile(GLenum stage, const char* source) {
     GLuint shader = glCreateShader(stage);
     glShaderSource(shader, 1, &source, nullptr);
     glCompileShader(shader);
@@ -59,7 +59,8 @@ std::vector<std::uint8_t> renderTestImage(GLenum internalFormat = GL_RGBA8) {
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, tex, 0);
     EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
 
-    GLuint vs = compile(GL_VERTEX_SHADER, kVertex), fs = compile(GL_FRAGMENT_SHADER, kFragment);
+    GLuint vs = platformCompile(GL_VERTEX_SHADER, kPlatformVertex),
+           fs = platformCompile(GL_FRAGMENT_SHADER, kPlatformFragment);
     GLuint program = glCreateProgram();
     glAttachShader(program, vs);
     glAttachShader(program, fs);

@@ -12,7 +12,7 @@ namespace {
 
 using namespace pb::bench;
 
-BenchResult result(bool withResponse) {
+BenchResult benchResponseReportResult(bool withResponse) {
     profile::PlatformProfile ref, low;
     ref.name = "reference";
     low.name = "low";
@@ -59,14 +59,14 @@ BenchResult result(bool withResponse) {
 } // namespace
 
 TEST(BenchResponseReport, WithoutRespondNothingChanges) {
-    const BenchResult r = result(false);
+    const BenchResult r = benchResponseReportResult(false);
     EXPECT_FALSE(benchJson(r).contains("response"));
     EXPECT_EQ(markdownSummary(r).find("response t95"), std::string::npos);
     EXPECT_EQ(htmlReport(r).find("id=\"response\""), std::string::npos);
 }
 
 TEST(BenchResponseReport, EachProfilesSettleFramesSitBesideItsFrameTime) {
-    const BenchResult r = result(true);
+    const BenchResult r = benchResponseReportResult(true);
     EXPECT_EQ(benchJson(r)["response"], r.response);
     const std::string md = markdownSummary(r);
     const std::string refMs = std::to_string(r.sessions[0].profile().frameMs.median).substr(0, 4);

@@ -12,7 +12,7 @@ namespace {
 
 using namespace pb::bench;
 
-BenchResult result(bool withTruth) {
+BenchResult benchTruthReportResult(bool withTruth) {
     profile::PlatformProfile ref, low;
     ref.name = "reference";
     low.name = "low";
@@ -53,7 +53,7 @@ BenchResult result(bool withTruth) {
 } // namespace
 
 TEST(BenchTruthReport, EveryVariantProfileAndAblationRowHasAccuracyVsTruth) {
-    const BenchResult r = result(true);
+    const BenchResult r = benchTruthReportResult(true);
     const nlohmann::json j = benchJson(r);
     EXPECT_EQ(j["truth"]["spp"], 256);
     for (const auto& v : j["variants"]) {
@@ -83,7 +83,7 @@ TEST(BenchTruthReport, EveryVariantProfileAndAblationRowHasAccuracyVsTruth) {
 }
 
 TEST(BenchTruthReport, WithoutATruthTheKeysAreNullAndNoSectionIsShown) {
-    const BenchResult r = result(false);
+    const BenchResult r = benchTruthReportResult(false);
     const nlohmann::json j = benchJson(r);
     EXPECT_TRUE(j["truth"].is_null());
     for (const auto& v : j["variants"])

@@ -20,7 +20,7 @@ using namespace pb::costmodel;
 namespace {
 
 // A 4x3x5 grid over [0,4]x[0,2]x[0,4] with open visibility; probe `invalid` (or none) invalid.
-probes::ProbeSet gridSet(int invalid = -1) {
+probes::ProbeSet costModelStreamGridSet(int invalid = -1) {
     probes::ProbeSet set =
         test::openProbeSet({test::gridVolume("grid", {2, 1, 2}, {2, 1, 2}, {4, 3, 5})});
     if (invalid >= 0) set.states[0][size_t(invalid)].valid = false;
@@ -43,7 +43,7 @@ glm::ivec2 glFootprint(glm::vec2 coord) {
 } // namespace
 
 TEST(CostModelStream, TraceTexelsAreTheGlFootprintOfTheReadmeFormulas) {
-    const probes::ProbeSet set = gridSet();
+    const probes::ProbeSet set = costModelStreamGridSet();
     const probes::SampleTrace t = traceAt(set);
     ASSERT_TRUE(t.probesRead);
     // README "The sampler", axis-aligned volume: local = world - (centre - half).
@@ -72,7 +72,7 @@ TEST(CostModelStream, TraceTexelsAreTheGlFootprintOfTheReadmeFormulas) {
 }
 
 TEST(CostModelStream, FusedXyzIssuesStateVisibilityIrradiancePerProbeInCornerOrder) {
-    const probes::ProbeSet set = gridSet();
+    const probes::ProbeSet set = costModelStreamGridSet();
     const probes::SampleTrace t = traceAt(set);
     const TextureTable table = makeTextureTable(64, 64, set, {0}, MemoryLayout::Linear);
     std::vector<Fetch> f;
@@ -97,7 +97,7 @@ TEST(CostModelStream, FusedXyzIssuesStateVisibilityIrradiancePerProbeInCornerOrd
 }
 
 TEST(CostModelStream, SliceFirstVisitsOneLayerBeforeTheOther) {
-    const probes::ProbeSet set = gridSet();
+    const probes::ProbeSet set = costModelStreamGridSet();
     const probes::SampleTrace t = traceAt(set);
     const TextureTable table = makeTextureTable(64, 64, set, {0}, MemoryLayout::Linear);
     for (auto loops : {profile::GiLoops::Fused, profile::GiLoops::Split}) {
@@ -122,7 +122,7 @@ TEST(CostModelStream, SliceFirstVisitsOneLayerBeforeTheOther) {
 }
 
 TEST(CostModelStream, SplitIssuesEveryVisibilityFetchBeforeAnyIrradianceFetch) {
-    const probes::ProbeSet set = gridSet();
+    const probes::ProbeSet set = costModelStreamGridSet();
     const probes::SampleTrace t = traceAt(set);
     const TextureTable table = makeTextureTable(64, 64, set, {0}, MemoryLayout::Linear);
     std::vector<Fetch> split, fused;
@@ -141,9 +141,9 @@ TEST(CostModelStream, SplitIssuesEveryVisibilityFetchBeforeAnyIrradianceFetch) {
 }
 
 TEST(CostModelStream, AnInvalidProbeReadsOnlyItsState) {
-    const probes::ProbeSet clean = gridSet();
+    const probes::ProbeSet clean = costModelStreamGridSet();
     const probes::CornerFetch c5 = traceAt(clean).corners[5];
-    const probes::ProbeSet bad = gridSet(clean.volumes[0].probeIndex(c5.probe));
+    const probes::ProbeSet bad = costModelStreamGridSet(clean.volumes[0].probeIndex(c5.probe));
     const probes::SampleTrace t = traceAt(bad);
     EXPECT_FALSE(t.corners[5].valid);
     const TextureTable table = makeTextureTable(64, 64, bad, {0}, MemoryLayout::Linear);
@@ -181,13 +181,13 @@ TEST(CostModelStream, TexelAddressesPerLayoutAndFormat) {
 }
 
 TEST(CostModelStream, FootprintBytesCountDistinctTexelsOrBlocks) {
-    const probes::ProbeSet set = gridSet();
+    const probes::ProbeSet set = costModelStreamGridSet();
     const TextureTable table = makeTextureTable(64, 64, set, {0}, MemoryLayout::Linear);
     const Fetch vis{FetchKind::Visibility, table.volumes[0].visibility, 5, 5, 0, true, 3};
     EXPECT_EQ(footprintBytes(vis, table), 4u * 4u); // RG16F
     const Fetch st{FetchKind::ProbeState, table.volumes[0].state, 1, 1, 0, false, 2};
     EXPECT_EQ(footprintBytes(st, table), 16u);
-    probes::ProbeSet bcSet = gridSet();
+    probes::ProbeSet bcSet = costModelStreamGridSet();
     bcSet.settings.format = probes::StorageFormat::Bc6h;
     const TextureTable bc = makeTextureTable(64, 64, bcSet, {0}, MemoryLayout::Linear);
     const Fetch inside{FetchKind::Irradiance, bc.volumes[0].irradiance, 1, 1, 0, true, 4};

@@ -34,7 +34,7 @@ void setPixel(Image8& img, int x, int y, std::uint8_t r, std::uint8_t g, std::ui
     p[2] = b;
 }
 
-Image8 noise(int w, int h, unsigned seed) {
+Image8 flipNoise(int w, int h, unsigned seed) {
     std::mt19937 rng(seed);
     Image8 img = solid(w, h, 0, 0, 0);
     for (size_t i = 0; i < img.pixels.size(); ++i)
@@ -85,7 +85,7 @@ double handFlip(const Lab& p, const Lab& q) {
 } // namespace
 
 TEST(Flip, IdenticalImagesHaveZeroError) {
-    const Image8 a = noise(19, 13, 5);
+    const Image8 a = flipNoise(19, 13, 5);
     const metrics::FlipResult r = metrics::ldrFlip(a, a);
     EXPECT_EQ(r.mean, 0.0);
     EXPECT_EQ(r.max, 0.0);
@@ -146,7 +146,7 @@ TEST(Flip, GrowsWithTheSizeOfAColourDifference) {
 TEST(Flip, IsSymmetricInItsArguments) {
     // Every step treats both images alike and compares them only through |t - r| (HyAB and the
     // feature differences), so swapping test and reference changes nothing.
-    const Image8 a = noise(24, 20, 6), b = noise(24, 20, 7);
+    const Image8 a = flipNoise(24, 20, 6), b = flipNoise(24, 20, 7);
     const metrics::FlipResult ab = metrics::ldrFlip(a, b), ba = metrics::ldrFlip(b, a);
     EXPECT_DOUBLE_EQ(ab.mean, ba.mean);
     ASSERT_EQ(ab.map.pixels.size(), ba.map.pixels.size());

@@ -46,13 +46,14 @@ GateRecord sampleRecord() {
     return r;
 }
 
-GateOutcome compare(const GateRecord& base, const GateRecord& now) {
+GateOutcome gateRecordCompare(const GateRecord& base, const GateRecord& now) {
     GateOutcome o;
     compareRecords(base, now, o);
     return o;
 }
 
-const GateRow* row(const GateOutcome& o, const std::string& profile, const std::string& name) {
+const GateRow* gateRecordRow(const GateOutcome& o, const std::string& profile,
+                             const std::string& name) {
     for (const GateRow& r : o.rows)
         if (r.profile == profile && r.name.rfind(name, 0) == 0) return &r;
     return nullptr;
@@ -131,7 +132,7 @@ TEST(GateRecord, BadFilesAreOneLineErrorsNamingFileAndKey) {
 }
 
 TEST(GateOutcome, TheSameMeasurementsPass) {
-    const GateOutcome o = compare(sampleRecord(), sampleRecord());
+    const GateOutcome o = gateRecordCompare(sampleRecord(), sampleRecord());
     EXPECT_EQ(o.exitCode(), 0);
     EXPECT_EQ(o.deterministicFailures(), 0);
     for (const GateRow& r : o.rows)
@@ -144,7 +145,7 @@ TEST(GateOutcome, AnyChangedCounterFailsWithExitThree) {
          {"gl.shadow.draws", "model.gi.evaluated.house", "cache.xyz/fused.hits"}) {
         GateRecord now = sampleRecord();
         setCounter(now, "handheld", key, 1 + now.profile("handheld")->counter(key)[0]);
-        const GateOutcome o = compare(sampleRecord(), now);
+        const GateOutcome o = gateRecordCompare(sampleRecord(), now);
         EXPECT_EQ(o.exitCode(), kExitRegression) << key;
         EXPECT_EQ(o.deterministicFailures(), 1) << key;
         const std::string table = gateTable(o);
@@ -154,8 +155,8 @@ TEST(GateOutcome, AnyChangedCounterFailsWithExitThree) {
     // Grouped counters name the field that moved.
     GateRecord now = sampleRecord();
     setCounter(now, "reference", "gl.shadow.programs", 2);
-    const GateOutcome changed = compare(sampleRecord(), now); // outlives the row pointer
-    const GateRow* r = row(changed, "reference", "gl.shadow");
+    const GateOutcome changed = gateRecordCompare(sampleRecord(), now); // outlives the row pointer
+    const GateRow* r = gateRecordRow(changed, "reference", "gl.shadow");
     ASSERT_NE(r, nullptr);
     EXPECT_EQ(r->status, RowStatus::Changed);
     EXPECT_EQ(r->baseline, "16/1");
@@ -167,55 +168,58 @@ TEST(GateOutcome, NewAndMissingCountersFailLikeChangedOnes) {
     GateRecord now = sampleRecord();
     now.profiles[0].counters.emplace_back("gl.new-pass.draws", 1);
     now.profiles[1].counters.erase(now.profiles[1].counters.begin()); // gl.shadow.draws
-    const GateOutcome o = compare(sampleRecord(), now);
-    EXPECT_EQ(row(o, "reference", "gl.new-pass")->status, RowStatus::New);
-    EXPECT_EQ(row(o, "handheld", "gl.shadow")->status, RowStatus::Missing);
+    const GateOutcome o = gateRecordCompare(sampleRecord(), now);
+    EXPECT_EQ(gateRecordRow(o, "reference", "gl.new-pass")->status, RowStatus::New);
+    EXPECT_EQ(gateRecordRow(o, "handheld", "gl.shadow")->status, RowStatus::Missing);
     EXPECT_EQ(o.exitCode(), kExitRegression);
 }
 
 TEST(GateOutcome, ChangedProbeDataIsNamed) {
     GateRecord now = sampleRecord();
     now.probes = "10 probes, 1 volumes, rgba16f, fnv1a 4567";
-    const GateOutcome o = compare(sampleRecord(), now);
-    EXPECT_EQ(row(o, "", "probe data")->status, RowStatus::Changed);
+    const GateOutcome o = gateRecordCompare(sampleRecord(), now);
+    EXPECT_EQ(gateRecordRow(o, "", "probe data")->status, RowStatus::Changed);
 }
 
 TEST(GateOutcome, AccuracyWithinToleranceLossBeyondIt) {
     GateRecord now = sampleRecord();
     now.profiles[1].accuracy.relMseGi = 0.065 * 1.2;    // within +25%
     now.profiles[1].accuracy.flipMean = 0.0176 + 0.001; // within +10% of 0.0176
-    GateOutcome o = compare(sampleRecord(), now);
+    GateOutcome o = gateRecordCompare(sampleRecord(), now);
     EXPECT_EQ(o.exitCode(), 0);
-    EXPECT_EQ(row(o, "handheld", "rel. MSE")->status, RowStatus::Ok);
+    EXPECT_EQ(gateRecordRow(o, "handheld", "rel. MSE")->status, RowStatus::Ok);
 
     now.profiles[1].accuracy.relMseGi = 0.065 * 1.3; // past +25%
-    o = compare(sampleRecord(), now);
-    EXPECT_EQ(row(o, "handheld", "rel. MSE")->status, RowStatus::Worse);
+    o = gateRecordCompare(sampleRecord(), now);
+    EXPECT_EQ(gateRecordRow(o, "handheld", "rel. MSE")->status, RowStatus::Worse);
     EXPECT_EQ(o.exitCode(), kExitRegression);
 
     now = sampleRecord();
     now.profiles[1].accuracy.psnr = 34.1 - 0.6; // PSNR may fall 0.5 dB
-    EXPECT_EQ(row(compare(sampleRecord(), now), "handheld", "PSNR")->status, RowStatus::Worse);
+    EXPECT_EQ(gateRecordRow(gateRecordCompare(sampleRecord(), now), "handheld", "PSNR")->status,
+              RowStatus::Worse);
 
     now = sampleRecord();
     now.profiles[1].accuracy.flipMean = 0.01; // better: passes, suggests an update
-    o = compare(sampleRecord(), now);
-    EXPECT_EQ(row(o, "handheld", "FLIP")->status, RowStatus::Better);
+    o = gateRecordCompare(sampleRecord(), now);
+    EXPECT_EQ(gateRecordRow(o, "handheld", "FLIP")->status, RowStatus::Better);
     EXPECT_EQ(o.exitCode(), 0);
 }
 
 TEST(GateOutcome, ModelAndGlPixelsMustAgree) {
     GateRecord now = sampleRecord();
-    EXPECT_EQ(row(compare(sampleRecord(), now), "reference", "evaluated px, house")->status,
-              RowStatus::Ok); // 1 pixel apart
+    EXPECT_EQ(
+        gateRecordRow(gateRecordCompare(sampleRecord(), now), "reference", "evaluated px, house")
+            ->status,
+        RowStatus::Ok); // 1 pixel apart
     now.profiles[0].glPixels = {{"house", 1010}};
-    const GateOutcome o = compare(sampleRecord(), now);
-    EXPECT_EQ(row(o, "reference", "evaluated px, house")->status, RowStatus::Disagree);
+    const GateOutcome o = gateRecordCompare(sampleRecord(), now);
+    EXPECT_EQ(gateRecordRow(o, "reference", "evaluated px, house")->status, RowStatus::Disagree);
     EXPECT_EQ(o.exitCode(), kExitRegression);
 }
 
 TEST(GateOutcome, TimingRegressionsAloneExitFour) {
-    GateOutcome o = compare(sampleRecord(), sampleRecord());
+    GateOutcome o = gateRecordCompare(sampleRecord(), sampleRecord());
     TimingComparison slower;
     slower.verdict = TimingVerdict::Different;
     slower.shift = 0.05;

@@ -17,7 +17,7 @@ using json = nlohmann::json;
 
 namespace {
 
-GltfWriter goodTriangle() {
+GltfWriter gltfExtensionsGoodTriangle() {
     GltfWriter w;
     // Non-indexed: GCC 12 warns falsely (-Wstringop-overflow) when addIndices is inlined here.
     w.addTriangleMesh(pb::test::triangleXY(), {}, "tri");
@@ -59,7 +59,7 @@ TEST(GltfExtensions, SupportedListIsSortedAndNamesTheDecoders) {
 }
 
 TEST(GltfExtensions, EveryUnsupportedRequiredExtensionIsNamedOnOneLine) {
-    GltfWriter w = goodTriangle();
+    GltfWriter w = gltfExtensionsGoodTriangle();
     w.doc["extensionsUsed"] = {"KHR_materials_volume", "EXT_x", "KHR_mesh_quantization"};
     w.doc["extensionsRequired"] = {"KHR_materials_volume", "EXT_x", "KHR_mesh_quantization"};
     const std::string path = w.write(pb::test::outputDir(), "two");
@@ -76,7 +76,7 @@ TEST(GltfExtensions, EveryUnsupportedRequiredExtensionIsNamedOnOneLine) {
 TEST(GltfExtensions, CheckedBeforeTinygltfReadsBuffers) {
     // A meshopt-style file whose second buffer has no URI: tinygltf alone would fail with
     // "'uri' is missing"; the required extension is named first.
-    GltfWriter w = goodTriangle();
+    GltfWriter w = gltfExtensionsGoodTriangle();
     w.doc["extensionsRequired"] = {"EXT_meshopt_compression_v2"};
     const std::string path = w.write(pb::test::outputDir(), "early");
     std::string text;
@@ -93,7 +93,7 @@ TEST(GltfExtensions, CheckedBeforeTinygltfReadsBuffers) {
 }
 
 TEST(GltfExtensions, IgnoredUsedExtensionsWarnOnceEach) {
-    GltfWriter w = goodTriangle();
+    GltfWriter w = gltfExtensionsGoodTriangle();
     w.doc["extensionsUsed"] = {"KHR_materials_sheen", "KHR_materials_sheen", "EXT_y",
                                "KHR_mesh_quantization"};
     const std::string path = w.write(pb::test::outputDir(), "used");

@@ -22,14 +22,14 @@ using json = nlohmann::json;
 
 namespace {
 
-GltfWriter goodTriangle() {
+GltfWriter gltfHostileInputGoodTriangle() {
     GltfWriter w;
     w.addTriangleMesh(pb::test::triangleXY(), {0, 1, 2}, "tri");
     w.addNode({{"name", "n"}, {"mesh", 0}});
     return w;
 }
 
-std::string loadError(const std::string& path) {
+std::string gltfHostileInputLoadError(const std::string& path) {
     try {
         loadGltf(path);
     } catch (const pb::Error& e) {
@@ -87,7 +87,7 @@ std::vector<std::uint8_t> jpegWithHuffmanCodes(int codes) {
 }
 
 GltfWriter withImage(const std::vector<std::uint8_t>& bytes) {
-    GltfWriter w = goodTriangle();
+    GltfWriter w = gltfHostileInputGoodTriangle();
     const int view = w.addBufferView(bytes.data(), bytes.size());
     w.doc["images"] = json::array({{{"bufferView", view}, {"mimeType", "image/png"}}});
     return w;
@@ -103,17 +103,17 @@ TEST(GltfHostileInput, DeeplyNestedJsonIsRefusedBeforeParsing) {
     const auto dir = pb::test::outputDir();
     const std::string gltf = (dir / "deep.gltf").string();
     GltfWriter::writeBytes(gltf, json.data(), json.size());
-    EXPECT_CONTAINS(loadError(gltf), "JSON nested more than 128 levels deep");
+    EXPECT_CONTAINS(gltfHostileInputLoadError(gltf), "JSON nested more than 128 levels deep");
 
     const std::string glb = (dir / "deep.glb").string();
     const std::vector<std::uint8_t> bytes = glbFromJson(json);
     GltfWriter::writeBytes(glb, bytes.data(), bytes.size());
-    EXPECT_CONTAINS(loadError(glb), "JSON nested more than 128 levels deep");
+    EXPECT_CONTAINS(gltfHostileInputLoadError(glb), "JSON nested more than 128 levels deep");
 
     // Brackets inside strings are text, not nesting.
-    GltfWriter w = goodTriangle();
+    GltfWriter w = gltfHostileInputGoodTriangle();
     w.doc["nodes"][0]["name"] = std::string(1000, '[') + "\\\"{";
-    EXPECT_EQ(loadError(w.write(dir, "brackets")), "(loaded)");
+    EXPECT_EQ(gltfHostileInputLoadError(w.write(dir, "brackets")), "(loaded)");
 }
 
 TEST(GltfHostileInput, GlbWhoseJsonChunkOverrunsTheFile) {
@@ -121,7 +121,7 @@ TEST(GltfHostileInput, GlbWhoseJsonChunkOverrunsTheFile) {
     bytes[12] = 0xF0; // JSON chunk length far past the end (the header's total still fits)
     const std::string path = (pb::test::outputDir() / "chunk.glb").string();
     GltfWriter::writeBytes(path, bytes.data(), bytes.size());
-    EXPECT_CONTAINS(loadError(path), "JSON chunk");
+    EXPECT_CONTAINS(gltfHostileInputLoadError(path), "JSON chunk");
 }
 
 TEST(GltfHostileInput, HugeAllZeroAccessorIsRefusedBeforeAllocating) {
@@ -129,17 +129,18 @@ TEST(GltfHostileInput, HugeAllZeroAccessorIsRefusedBeforeAllocating) {
     // 2^28 - 1 vertices were 6 GB of positions and normals.
     const auto dir = pb::test::outputDir();
     for (std::size_t count : {std::size_t(1) << 26, (std::size_t(1) << 28) - 1}) {
-        GltfWriter w = goodTriangle();
+        GltfWriter w = gltfHostileInputGoodTriangle();
         w.doc["accessors"][0].erase("bufferView");
         w.doc["accessors"][0]["count"] = count;
         w.doc["meshes"][0]["primitives"][0].erase("indices");
-        EXPECT_CONTAINS(loadError(w.write(dir, "zeros")), "would exceed 1024 MiB");
+        EXPECT_CONTAINS(gltfHostileInputLoadError(w.write(dir, "zeros")), "would exceed 1024 MiB");
     }
     // A NORMAL accessor with another count is refused before it is read.
-    GltfWriter n = goodTriangle();
+    GltfWriter n = gltfHostileInputGoodTriangle();
     n.doc["accessors"].push_back({{"componentType", 5126}, {"count", 1 << 27}, {"type", "VEC3"}});
     n.doc["meshes"][0]["primitives"][0]["attributes"]["NORMAL"] = 2;
-    EXPECT_CONTAINS(loadError(n.write(dir, "normals")), "NORMAL of mesh 'tri' has 134217728");
+    EXPECT_CONTAINS(gltfHostileInputLoadError(n.write(dir, "normals")),
+                    "NORMAL of mesh 'tri' has 134217728");
 }
 
 TEST(GltfHostileInput, GeometryBudgetCountsEveryRead) {
@@ -160,21 +161,21 @@ TEST(GltfHostileInput, GeometryBudgetCountsEveryRead) {
 
 TEST(GltfHostileInput, NodesTimesPrimitivesAreCapped) {
     // 1100 primitives x 1000 nodes in 60 kB of JSON: 1.1 M instances, over the 2^20 cap.
-    GltfWriter w = goodTriangle();
+    GltfWriter w = gltfHostileInputGoodTriangle();
     json prims = json::array();
     for (int i = 0; i < 1100; ++i)
         prims.push_back(w.doc["meshes"][0]["primitives"][0]);
     w.doc["meshes"][0]["primitives"] = prims;
     for (int i = 0; i < 999; ++i)
         w.addNode({{"mesh", 0}});
-    EXPECT_CONTAINS(loadError(w.write(pb::test::outputDir(), "instances")),
+    EXPECT_CONTAINS(gltfHostileInputLoadError(w.write(pb::test::outputDir(), "instances")),
                     "more than 1048576 mesh instances");
 }
 
 TEST(GltfHostileInput, ManyCamerasWithOneNameGetUniqueNames) {
     // Each view name was found by a linear search per candidate suffix: O(n^3) for n cameras
     // of one name, a 1.5 MB file with 3*10^4 of them ran for hours.
-    GltfWriter w = goodTriangle();
+    GltfWriter w = gltfHostileInputGoodTriangle();
     auto camera = [](const char* name) {
         return json{{"type", "perspective"},
                     {"name", name},
@@ -200,20 +201,23 @@ TEST(GltfHostileInput, ManyCamerasWithOneNameGetUniqueNames) {
 
 TEST(GltfHostileInput, ImagesAreCheckedBeforeDecoding) {
     const auto dir = pb::test::outputDir();
-    EXPECT_CONTAINS(loadError(withImage(pngHeader(60000, 60000)).write(dir, "huge")),
-                    "image 0: declares 60000x60000 pixels, more than a texture may have");
-    EXPECT_CONTAINS(loadError(withImage(pngHeader(16384, 16384)).write(dir, "big")),
+    EXPECT_CONTAINS(
+        gltfHostileInputLoadError(withImage(pngHeader(60000, 60000)).write(dir, "huge")),
+        "image 0: declares 60000x60000 pixels, more than a texture may have");
+    EXPECT_CONTAINS(gltfHostileInputLoadError(withImage(pngHeader(16384, 16384)).write(dir, "big")),
                     "image 0: declares 16384x16384");
     const std::vector<std::uint8_t> gif = {'G', 'I', 'F', '8', '9', 'a', 1, 0, 1, 0, 0, 0, 0};
-    EXPECT_CONTAINS(loadError(withImage(gif).write(dir, "gif")), "image 0: not a PNG or JPEG file");
+    EXPECT_CONTAINS(gltfHostileInputLoadError(withImage(gif).write(dir, "gif")),
+                    "image 0: not a PNG or JPEG file");
     const std::vector<std::uint8_t> jpegWithoutFrame = {0xFF, 0xD8, 0xFF, 0xDA, 0, 2};
-    EXPECT_CONTAINS(loadError(withImage(jpegWithoutFrame).write(dir, "jpeg")),
+    EXPECT_CONTAINS(gltfHostileInputLoadError(withImage(jpegWithoutFrame).write(dir, "jpeg")),
                     "image 0: corrupt image header (no size)");
     // The fuzzer's JPEG: a Huffman table of 16 x 255 codes overflowed stb_image's 257-byte
     // code-size array (memory corruption in the shipped build: Debian's stb has no check).
     // libjpeg-turbo decodes the textures now and refuses the table.
-    EXPECT_CONTAINS(loadError(withImage(jpegWithHuffmanCodes(16 * 255)).write(dir, "dht")),
-                    "image 0: JPEG: Bogus Huffman table definition");
+    EXPECT_CONTAINS(
+        gltfHostileInputLoadError(withImage(jpegWithHuffmanCodes(16 * 255)).write(dir, "dht")),
+        "image 0: JPEG: Bogus Huffman table definition");
 }
 
 TEST(GltfHostileInput, TexturesDecodeToRgba8) {
@@ -297,34 +301,34 @@ TEST(GltfHostileInput, ImageHeaderSizes) {
 
 TEST(GltfHostileInput, BufferUriNamingAFifoIsRefusedInsteadOfBlocking) {
     const auto dir = pb::test::outputDir();
-    GltfWriter w = goodTriangle();
+    GltfWriter w = gltfHostileInputGoodTriangle();
     const std::string path = w.write(dir, "fifo");
     std::filesystem::remove(dir / "fifo.bin");
     ASSERT_EQ(::mkfifo((dir / "fifo.bin").c_str(), 0600), 0);
-    EXPECT_CONTAINS(loadError(path), "not a regular file");
+    EXPECT_CONTAINS(gltfHostileInputLoadError(path), "not a regular file");
 }
 
 TEST(GltfHostileInput, NamesWithLineBreaksStayOnOneLine) {
     GltfWriter w;
     w.addTriangleMesh(pb::test::triangleXY(), {0, 1, 9}, "evil\nname\x01");
     w.addNode({{"mesh", 0}});
-    EXPECT_CONTAINS(loadError(w.write(pb::test::outputDir(), "names")),
+    EXPECT_CONTAINS(gltfHostileInputLoadError(w.write(pb::test::outputDir(), "names")),
                     "in mesh 'evil\\nname\\x01'");
 }
 
 TEST(GltfHostileInput, SparseAccessorsAreRefused) {
-    GltfWriter w = goodTriangle();
+    GltfWriter w = gltfHostileInputGoodTriangle();
     w.doc["accessors"][0]["sparse"] = {{"count", 1},
                                        {"indices", {{"bufferView", 1}, {"componentType", 5125}}},
                                        {"values", {{"bufferView", 0}}}};
-    EXPECT_CONTAINS(loadError(w.write(pb::test::outputDir(), "sparse")),
+    EXPECT_CONTAINS(gltfHostileInputLoadError(w.write(pb::test::outputDir(), "sparse")),
                     "sparse accessors are not supported");
 }
 
 TEST(GltfHostileInput, LightsAndCamerasOutOfRange) {
     const auto dir = pb::test::outputDir();
     auto withLight = [&](const json& light, const json& node) {
-        GltfWriter w = goodTriangle();
+        GltfWriter w = gltfHostileInputGoodTriangle();
         w.doc["extensionsUsed"] = {"KHR_lights_punctual"};
         w.doc["extensions"]["KHR_lights_punctual"]["lights"] = json::array({light});
         json n = node;
@@ -332,24 +336,25 @@ TEST(GltfHostileInput, LightsAndCamerasOutOfRange) {
         w.addNode(n);
         return w;
     };
+    EXPECT_CONTAINS(gltfHostileInputLoadError(
+                        withLight({{"type", "spot"},
+                                   {"spot", {{"innerConeAngle", 0.9}, {"outerConeAngle", 0.5}}}},
+                                  json::object())
+                            .write(dir, "cone")),
+                    "spot cone angles must be 0 <= inner < outer <= pi/2");
+    EXPECT_CONTAINS(gltfHostileInputLoadError(
+                        withLight({{"type", "point"}, {"color", {1e39, 1, 1}}}, json::object())
+                            .write(dir, "colour")),
+                    "negative or non-finite colour");
     EXPECT_CONTAINS(
-        loadError(withLight({{"type", "spot"},
-                             {"spot", {{"innerConeAngle", 0.9}, {"outerConeAngle", 0.5}}}},
-                            json::object())
-                      .write(dir, "cone")),
-        "spot cone angles must be 0 <= inner < outer <= pi/2");
-    EXPECT_CONTAINS(
-        loadError(withLight({{"type", "point"}, {"color", {1e39, 1, 1}}}, json::object())
-                      .write(dir, "colour")),
-        "negative or non-finite colour");
-    EXPECT_CONTAINS(
-        loadError(
+        gltfHostileInputLoadError(
             withLight({{"type", "point"}}, {{"translation", {1e11, 0, 0}}}).write(dir, "far")),
         "light position is not finite or beyond 1e10");
 
-    GltfWriter c = goodTriangle();
+    GltfWriter c = gltfHostileInputGoodTriangle();
     c.doc["cameras"] =
         json::array({{{"type", "perspective"}, {"perspective", {{"yfov", 1.0}, {"znear", 0.1}}}}});
     c.addNode({{"camera", 0}, {"translation", {0, -3e10, 0}}});
-    EXPECT_CONTAINS(loadError(c.write(dir, "camera")), "camera position is not finite");
+    EXPECT_CONTAINS(gltfHostileInputLoadError(c.write(dir, "camera")),
+                    "camera position is not finite");
 }

@@ -35,7 +35,7 @@ std::string triangleWithBufferUri(const fs::path& dir, const std::string& name,
     return path;
 }
 
-std::string loadError(const std::string& path, const SceneOptions& options = {}) {
+std::string gltfUriLoadError(const std::string& path, const SceneOptions& options = {}) {
     try {
         loadGltf(path, options);
     } catch (const pb::Error& e) {
@@ -58,7 +58,7 @@ TEST(GltfUri, ClimbingOutOfTheFolderIsRefusedUnlessAllowed) {
     fs::create_directories(asset);
     const std::string path =
         triangleWithBufferUri(asset, "up", "sub/../../outside.bin", dir / "outside.bin");
-    const std::string msg = loadError(path);
+    const std::string msg = gltfUriLoadError(path);
     EXPECT_EQ(msg, path + ": buffer 0 uri 'sub/../../outside.bin' climbs out of the asset's "
                           "folder (--allow-external-uris permits it)");
     EXPECT_EQ(loadGltf(path, allowExternal()).triangleCount(), 1u);
@@ -67,21 +67,22 @@ TEST(GltfUri, ClimbingOutOfTheFolderIsRefusedUnlessAllowed) {
 TEST(GltfUri, TheIssuesPasswdUriIsNeverOpened) {
     const fs::path dir = pb::test::outputDir();
     const std::string path = triangleWithBufferUri(dir, "passwd", "../../../../etc/passwd");
-    EXPECT_NE(loadError(path).find("climbs out of the asset's folder"), std::string::npos);
+    EXPECT_NE(gltfUriLoadError(path).find("climbs out of the asset's folder"), std::string::npos);
     // Percent-escaped dots are the same path to tinygltf.
     const std::string escaped = triangleWithBufferUri(dir, "pct", "%2e%2e/%2E%2E/etc/passwd");
-    EXPECT_NE(loadError(escaped).find("climbs out"), std::string::npos) << loadError(escaped);
+    EXPECT_NE(gltfUriLoadError(escaped).find("climbs out"), std::string::npos)
+        << gltfUriLoadError(escaped);
 }
 
 TEST(GltfUri, AbsoluteAndSchemeUrisAreRefused) {
     const fs::path dir = pb::test::outputDir();
     const fs::path bin = dir / "abs" / "tri.bin";
     const std::string absolute = triangleWithBufferUri(dir, "absolute", bin.string(), bin);
-    EXPECT_NE(loadError(absolute).find("is an absolute path"), std::string::npos)
-        << loadError(absolute);
+    EXPECT_NE(gltfUriLoadError(absolute).find("is an absolute path"), std::string::npos)
+        << gltfUriLoadError(absolute);
     EXPECT_EQ(loadGltf(absolute, allowExternal()).triangleCount(), 1u);
     const std::string scheme = triangleWithBufferUri(dir, "scheme", "file:///etc/passwd");
-    EXPECT_NE(loadError(scheme).find("not a relative path"), std::string::npos);
+    EXPECT_NE(gltfUriLoadError(scheme).find("not a relative path"), std::string::npos);
 }
 
 TEST(GltfUri, ImageUrisAreConfinedToo) {
@@ -93,8 +94,9 @@ TEST(GltfUri, ImageUrisAreConfinedToo) {
     w.doc["materials"] =
         json::array({{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}});
     const std::string path = w.write(pb::test::outputDir(), "img");
-    EXPECT_NE(loadError(path).find("image 0 uri '../secret.png' climbs out"), std::string::npos)
-        << loadError(path);
+    EXPECT_NE(gltfUriLoadError(path).find("image 0 uri '../secret.png' climbs out"),
+              std::string::npos)
+        << gltfUriLoadError(path);
 }
 
 TEST(GltfUri, RelativePathsInsideAndDataUrisWork) {
@@ -132,7 +134,7 @@ TEST(GltfUri, RelativePathsInsideAndDataUrisWork) {
 TEST(GltfUri, MissingBufferStaysAnError) {
     const fs::path dir = pb::test::outputDir();
     const std::string path = triangleWithBufferUri(dir, "nobuf", "gone.bin");
-    const std::string msg = loadError(path);
+    const std::string msg = gltfUriLoadError(path);
     EXPECT_EQ(msg.rfind(path + ": ", 0), 0u) << msg;
     EXPECT_NE(msg.find("gone.bin"), std::string::npos) << msg;
     EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;

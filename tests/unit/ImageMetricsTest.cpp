@@ -13,7 +13,8 @@ using pb::image::ImageF;
 
 namespace {
 
-Image8 solid(int w, int h, std::uint8_t r, std::uint8_t g, std::uint8_t b, std::uint8_t a = 255) {
+Image8 imageMetricsSolid(int w, int h, std::uint8_t r, std::uint8_t g, std::uint8_t b,
+                         std::uint8_t a = 255) {
     Image8 img;
     img.width = w;
     img.height = h;
@@ -27,16 +28,17 @@ Image8 solid(int w, int h, std::uint8_t r, std::uint8_t g, std::uint8_t b, std::
     return img;
 }
 
-void setPixel(Image8& img, int x, int y, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+void imageMetricsSetPixel(Image8& img, int x, int y, std::uint8_t r, std::uint8_t g,
+                          std::uint8_t b) {
     std::uint8_t* p = &img.pixels[(size_t(y) * img.width + x) * 4];
     p[0] = r;
     p[1] = g;
     p[2] = b;
 }
 
-Image8 noise(int w, int h, unsigned seed) {
+Image8 imageMetricsNoise(int w, int h, unsigned seed) {
     std::mt19937 rng(seed);
-    Image8 img = solid(w, h, 0, 0, 0);
+    Image8 img = imageMetricsSolid(w, h, 0, 0, 0);
     for (size_t i = 0; i < img.pixels.size(); ++i)
         if (i % 4 != 3) img.pixels[i] = std::uint8_t(rng() & 0xff);
     return img;
@@ -62,7 +64,7 @@ double luma601(const std::uint8_t* p) {
 // ---- PSNR ----
 
 TEST(Psnr, IdenticalImagesAreInfinite) {
-    const Image8 a = noise(7, 5, 1);
+    const Image8 a = imageMetricsNoise(7, 5, 1);
     EXPECT_TRUE(std::isinf(metrics::psnr(a, a)));
     EXPECT_GT(metrics::psnr(a, a), 0);
 }
@@ -70,28 +72,30 @@ TEST(Psnr, IdenticalImagesAreInfinite) {
 TEST(Psnr, UniformOffsetHasKnownMse) {
     // Every R, G, B differs by 10: MSE = 100, PSNR = 10 log10(65025 / 100) = 28.13080 dB.
     // Alpha differs as well and must not count.
-    const Image8 ref = solid(4, 3, 100, 100, 100, 255), test = solid(4, 3, 110, 90, 110, 0);
+    const Image8 ref = imageMetricsSolid(4, 3, 100, 100, 100, 255),
+                 test = imageMetricsSolid(4, 3, 110, 90, 110, 0);
     EXPECT_NEAR(metrics::psnr(test, ref), 28.13080, 1e-5);
 }
 
 TEST(Psnr, OneChannelOfOnePixelFullyWrong) {
     // 2x2 image, 12 colour values, one off by 255: MSE = 255^2 / 12, PSNR = 10 log10(12)
     // = 10.79181 dB.
-    const Image8 ref = solid(2, 2, 0, 0, 0);
+    const Image8 ref = imageMetricsSolid(2, 2, 0, 0, 0);
     Image8 test = ref;
-    setPixel(test, 1, 1, 0, 255, 0);
+    imageMetricsSetPixel(test, 1, 1, 0, 255, 0);
     EXPECT_NEAR(metrics::psnr(test, ref), 10.79181, 1e-5);
 }
 
 TEST(Psnr, RejectsSizeMismatchAndEmpty) {
-    EXPECT_THROW(metrics::psnr(solid(2, 2, 0, 0, 0), solid(2, 3, 0, 0, 0)), Error);
+    EXPECT_THROW(metrics::psnr(imageMetricsSolid(2, 2, 0, 0, 0), imageMetricsSolid(2, 3, 0, 0, 0)),
+                 Error);
     EXPECT_THROW(metrics::psnr(Image8{}, Image8{}), Error);
 }
 
 // ---- SSIM ----
 
 TEST(Ssim, IdenticalImagesGiveOne) {
-    const Image8 a = noise(23, 17, 2);
+    const Image8 a = imageMetricsNoise(23, 17, 2);
     EXPECT_NEAR(metrics::ssim(a, a), 1.0, 1e-12);
 }
 
@@ -99,16 +103,19 @@ TEST(Ssim, ConstantImagesReduceToTheLuminanceTerm) {
     // No variance, no covariance: SSIM = (2 mx my + C1) / (mx^2 + my^2 + C1) with
     // C1 = (0.01 * 255)^2 = 6.5025. Grey 100 vs 150: 30006.5025 / 32506.5025 = 0.9230923105.
     // The same for 1x1 and for larger constant images.
-    EXPECT_NEAR(metrics::ssim(solid(1, 1, 100, 100, 100), solid(1, 1, 150, 150, 150)), 0.9230923105,
-                1e-9);
-    EXPECT_NEAR(metrics::ssim(solid(13, 9, 100, 100, 100), solid(13, 9, 150, 150, 150)),
+    EXPECT_NEAR(metrics::ssim(imageMetricsSolid(1, 1, 100, 100, 100),
+                              imageMetricsSolid(1, 1, 150, 150, 150)),
+                0.9230923105, 1e-9);
+    EXPECT_NEAR(metrics::ssim(imageMetricsSolid(13, 9, 100, 100, 100),
+                              imageMetricsSolid(13, 9, 150, 150, 150)),
                 0.9230923105, 1e-9);
 }
 
 TEST(Ssim, UsesRec601Luma) {
     // Pure red vs black: luma 0.299 * 255 = 76.245 vs 0, so SSIM = C1 / (76.245^2 + C1).
     const double expected = 6.5025 / (76.245 * 76.245 + 6.5025);
-    EXPECT_NEAR(metrics::ssim(solid(1, 1, 255, 0, 0), solid(1, 1, 0, 0, 0)), expected, 1e-12);
+    EXPECT_NEAR(metrics::ssim(imageMetricsSolid(1, 1, 255, 0, 0), imageMetricsSolid(1, 1, 0, 0, 0)),
+                expected, 1e-12);
     const std::uint8_t red[3] = {255, 0, 0};
     EXPECT_NEAR(luma601(red), 76.245, 1e-12);
 }
@@ -120,14 +127,14 @@ TEST(Ssim, TwoPixelImageWithClippedWindow) {
     // cov = 0 - mx my = -p q 255^2; pixel 1 mirrors it. So
     // SSIM = (2 p q L + C1)(-2 p q L + C2) / (((p^2 + q^2) L + C1)(2 p q L + C2)), L = 255^2,
     // C2 = (0.03 * 255)^2 = 58.5225: -0.97226147.
-    Image8 x = solid(2, 1, 0, 0, 0), y = solid(2, 1, 0, 0, 0);
-    setPixel(x, 1, 0, 255, 255, 255);
-    setPixel(y, 0, 0, 255, 255, 255);
+    Image8 x = imageMetricsSolid(2, 1, 0, 0, 0), y = imageMetricsSolid(2, 1, 0, 0, 0);
+    imageMetricsSetPixel(x, 1, 0, 255, 255, 255);
+    imageMetricsSetPixel(y, 0, 0, 255, 255, 255);
     EXPECT_NEAR(metrics::ssim(x, y), -0.97226147, 1e-7);
 }
 
 TEST(Ssim, MoreNoiseScoresLower) {
-    const Image8 ref = noise(32, 32, 3);
+    const Image8 ref = imageMetricsNoise(32, 32, 3);
     std::mt19937 rng(4);
     double previous = 1.0;
     for (int amplitude : {4, 16, 64}) {
@@ -144,7 +151,8 @@ TEST(Ssim, MoreNoiseScoresLower) {
 }
 
 TEST(Ssim, RejectsSizeMismatch) {
-    EXPECT_THROW(metrics::ssim(solid(3, 2, 0, 0, 0), solid(2, 3, 0, 0, 0)), Error);
+    EXPECT_THROW(metrics::ssim(imageMetricsSolid(3, 2, 0, 0, 0), imageMetricsSolid(2, 3, 0, 0, 0)),
+                 Error);
 }
 
 // ---- relative MSE ----

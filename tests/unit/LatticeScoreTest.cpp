@@ -19,7 +19,7 @@ namespace {
 constexpr float kStep = 0.125f, kSpacing = 1.0f; // 8 samples per cell
 constexpr int kSamples = 64;
 
-std::vector<double> noise(std::uint64_t seed, double amplitude) {
+std::vector<double> latticeScoreNoise(std::uint64_t seed, double amplitude) {
     std::vector<double> r(kSamples);
     for (double& v : r)
         v = amplitude * (uniformFloat(seed) - 0.5);
@@ -36,7 +36,7 @@ void addFloor(scene::Scene& s, int material) {
 } // namespace
 
 TEST(LatticeScore, ARippleAtTheSpacingStandsOutOfNoiseAndTrend) {
-    std::vector<double> ripple = noise(3, 0.02);
+    std::vector<double> ripple = latticeScoreNoise(3, 0.02);
     for (int i = 0; i < kSamples; ++i) // rings under the probes + a slow gradient
         ripple[size_t(i)] += 0.1 * std::cos(2 * M_PI * i * kStep / kSpacing) + 0.01 * i;
     const double rippled = latticeScore(ripple, kStep, 1.0f / kSpacing);
@@ -48,7 +48,7 @@ TEST(LatticeScore, ARippleAtTheSpacingStandsOutOfNoiseAndTrend) {
     // noise scatters; the bench reports medians).
     double sum = 0.0;
     for (std::uint64_t s = 1; s <= 200; ++s) {
-        std::vector<double> r = noise(s * 7919, 0.1);
+        std::vector<double> r = latticeScoreNoise(s * 7919, 0.1);
         for (int i = 0; i < kSamples; ++i)
             r[size_t(i)] += 0.05 * i;
         sum += latticeScore(r, kStep, 1.0f / kSpacing) / 200.0;

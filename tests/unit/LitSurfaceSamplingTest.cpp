@@ -28,8 +28,8 @@ using namespace pb::test;
 
 namespace {
 
-constexpr int kTexels = kIrradianceInterior * kIrradianceInterior;
-constexpr float kHalf = 0.25f, kBelow = 1.0f, kAlbedo = 0.8f;
+constexpr int kLitSurfaceSamplingTexels = kIrradianceInterior * kIrradianceInterior;
+constexpr float kLitSurfaceSamplingHalf = 0.25f, kBelow = 1.0f, kAlbedo = 0.8f;
 
 Scenario sunFromAbove(float intensity) {
     Scenario sc;
@@ -48,13 +48,15 @@ scene::Scene squareScene(bool blocker) {
     const int grey = addMaterial(s, glm::vec3(kAlbedo));
     scene::Primitive p;
     p.material = grey;
-    addQuad(p, {-kHalf, -kBelow, -kHalf}, {2 * kHalf, 0, 0}, {0, 0, 2 * kHalf}, {0, 1, 0});
+    addQuad(p, {-kLitSurfaceSamplingHalf, -kBelow, -kLitSurfaceSamplingHalf},
+            {2 * kLitSurfaceSamplingHalf, 0, 0}, {0, 0, 2 * kLitSurfaceSamplingHalf}, {0, 1, 0});
     addInstance(s, p);
     if (blocker) {
         const int black = addMaterial(s, glm::vec3(0.0f));
         scene::Primitive card;
         card.material = black;
-        addQuad(card, {0, -0.5f, -kHalf}, {kHalf, 0, 0}, {0, 0, 2 * kHalf}, {0, 1, 0});
+        addQuad(card, {0, -0.5f, -kLitSurfaceSamplingHalf}, {kLitSurfaceSamplingHalf, 0, 0},
+                {0, 0, 2 * kLitSurfaceSamplingHalf}, {0, 1, 0});
         addInstance(s, card);
     }
     return s;
@@ -64,12 +66,14 @@ scene::Scene squareScene(bool blocker) {
 // rule: uniform radiance L = albedo / pi * E_sun, E(n) = L sum max(0, n.w) cos_l dA / d^2.
 float squareIrradiance(float sun, glm::vec3 n) {
     const int k = 200;
-    const float le = kAlbedo / float(M_PI) * sun, da = (2 * kHalf / k) * (2 * kHalf / k);
+    const float le = kAlbedo / float(M_PI) * sun,
+                da = (2 * kLitSurfaceSamplingHalf / k) * (2 * kLitSurfaceSamplingHalf / k);
     double e = 0.0;
     for (int i = 0; i < k; ++i)
         for (int j = 0; j < k; ++j) {
-            const glm::vec3 y(-kHalf + (i + 0.5f) * 2 * kHalf / k, -kBelow,
-                              -kHalf + (j + 0.5f) * 2 * kHalf / k);
+            const glm::vec3 y(
+                -kLitSurfaceSamplingHalf + (i + 0.5f) * 2 * kLitSurfaceSamplingHalf / k, -kBelow,
+                -kLitSurfaceSamplingHalf + (j + 0.5f) * 2 * kLitSurfaceSamplingHalf / k);
             const float d2 = glm::dot(y, y);
             const glm::vec3 w = y / std::sqrt(d2);
             e += double(std::max(0.0f, glm::dot(n, w)) * -w.y * da / d2);
@@ -78,16 +82,16 @@ float squareIrradiance(float sun, glm::vec3 n) {
 }
 
 // One probe at the origin, one round, convolved: its 6x6 interior texels (RGB).
-std::vector<float> probeTexels(const RayScene& rs, const scene::Scene& s, const Scenario& sc,
-                               const LitSurfaces& lit, int rays, int litSamples,
-                               std::uint64_t stream) {
+std::vector<float> litSurfaceSamplingProbeTexels(const RayScene& rs, const scene::Scene& s,
+                                                 const Scenario& sc, const LitSurfaces& lit,
+                                                 int rays, int litSamples, std::uint64_t stream) {
     RadianceSlab slab;
     slab.reset(1, rays);
     const auto dirs = passDirections(rays, stream);
     RayCounters counters;
     slab.trace(0, rs, sc, s.lights, glm::mat3(1.0f), glm::vec3(0.0f), dirs, nullptr, counters,
                {0, stream ^ 0x9e37ull, litSamples, &lit}, 0);
-    std::vector<float> out(kTexels * 3);
+    std::vector<float> out(kLitSurfaceSamplingTexels * 3);
     slab.convolve(0, ProbeConvolution(dirs), out.data());
     return out;
 }
@@ -155,7 +159,8 @@ TEST(LitSurfaces, SamplesOnlyTheSunlitPartWithTheDensityARayHitLooksUp) {
         inverseDensity += 1.0 / double(p.pdfArea) / n;
     }
     // E[1 / pdf] is the area sampled: the sunlit half of the square.
-    EXPECT_NEAR(inverseDensity, 2 * kHalf * kHalf, 0.05 * 2 * kHalf * kHalf);
+    EXPECT_NEAR(inverseDensity, 2 * kLitSurfaceSamplingHalf * kLitSurfaceSamplingHalf,
+                0.05 * 2 * kLitSurfaceSamplingHalf * kLitSurfaceSamplingHalf);
     // The shadowed half and the square's underside are not sampled: a ray that hits them
     // keeps its full weight.
     const RayHit shaded = rs.intersect({0.1f, 0.0f, 0.0f}, {0, -1, 0});
@@ -188,8 +193,10 @@ TEST(LitSurfaces, AProbeAboveASmallSunlitSquareConvergesWithoutBias) {
     const LitSurfaces lit(rs, sc, s.lights, 2, shadow);
     // One round: 64 rays alone (the square covers ~1.6% of the sphere: about one ray) against
     // 64 rays + 64 lit-surface samples.
-    const double raysAlone = meanRelativeError(probeTexels(rs, s, sc, lit, 64, 0, 11), 2.0f);
-    const double withSamples = meanRelativeError(probeTexels(rs, s, sc, lit, 64, 64, 11), 2.0f);
+    const double raysAlone =
+        meanRelativeError(litSurfaceSamplingProbeTexels(rs, s, sc, lit, 64, 0, 11), 2.0f);
+    const double withSamples =
+        meanRelativeError(litSurfaceSamplingProbeTexels(rs, s, sc, lit, 64, 64, 11), 2.0f);
     std::printf("one round, mean relative error of the texels facing the square: rays alone "
                 "%.3f, with lit-surface samples %.3f\n", raysAlone, withSamples);
     EXPECT_LT(withSamples, 0.1);
@@ -198,9 +205,10 @@ TEST(LitSurfaces, AProbeAboveASmallSunlitSquareConvergesWithoutBias) {
     // sixteenth of the single-round error (what averaging alone gives: 1 / sqrt(256)), give or
     // take the noise of that figure.
     const int rounds = 256;
-    std::vector<double> mean(kTexels * 3, 0.0);
+    std::vector<double> mean(kLitSurfaceSamplingTexels * 3, 0.0);
     for (int r = 0; r < rounds; ++r) {
-        const std::vector<float> t = probeTexels(rs, s, sc, lit, 64, 64, 100 + std::uint64_t(r));
+        const std::vector<float> t =
+            litSurfaceSamplingProbeTexels(rs, s, sc, lit, 64, 64, 100 + std::uint64_t(r));
         for (std::size_t i = 0; i < mean.size(); ++i)
             mean[i] += t[i] / double(rounds);
     }

@@ -23,7 +23,9 @@ namespace {
 
 using namespace pb::probes;
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+float nestedCornerLeakLuminance(const glm::vec3& c) {
+    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
+}
 
 ProbeSet bakeNested(const scene::Scene& s, int bounces) {
     BakeRequest req;
@@ -63,7 +65,8 @@ TEST(NestedCornerLeak, DarkRoomCornerMatchesTheGatherNotTheLitRoom) {
     for (std::size_t i = 0; i < pts.size(); ++i) {
         const IrradianceSample e = sampler.sample(pts[i].pos, pts[i].normal, pts[i].normal);
         ASSERT_EQ(set.volumes[size_t(e.volume)].name, "dark_room") << "point " << i;
-        const double p = luminance(e.irradiance), t = luminance(truth[i]);
+        const double p = nestedCornerLeakLuminance(e.irradiance),
+                     t = nestedCornerLeakLuminance(truth[i]);
         probeSum += p;
         truthSum += t;
         worst = std::max(worst, p / t);

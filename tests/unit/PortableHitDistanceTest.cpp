@@ -32,7 +32,8 @@ struct Traced {
     std::vector<float> portable;
 };
 
-Traced trace(const pb::scene::Scene& s, const std::vector<Ray>& rays, const std::string& isa) {
+Traced portableHitDistanceTrace(const pb::scene::Scene& s, const std::vector<Ray>& rays,
+                                const std::string& isa) {
     pb::probes::pinEmbreeIsa(isa);
     const pb::probes::RayScene scene(s);
     pb::probes::pinEmbreeIsa(""); // Embree chooses again, for the tests after this one
@@ -55,7 +56,8 @@ TEST(PortableHitDistance, IsTheSameBitsWhereEmbreeKernelsRoundDifferently) {
     for (const char* name : {"cornell", "courtyard", "rooms"}) {
         const pb::scene::Scene s = pb::scene::makeBuiltinScene(name);
         const std::vector<Ray> rays = randomRays(pb::probes::RayScene(s).bounds(), 20000);
-        const Traced a = trace(s, rays, "sse2"), b = trace(s, rays, widest);
+        const Traced a = portableHitDistanceTrace(s, rays, "sse2"),
+                     b = portableHitDistanceTrace(s, rays, widest);
         for (std::size_t i = 0; i < rays.size(); ++i) {
             const pb::probes::RayHit &ha = a.hits[i], &hb = b.hits[i];
             ASSERT_EQ(ha.hit(), hb.hit()) << name << " ray " << i;

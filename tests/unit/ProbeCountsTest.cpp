@@ -12,7 +12,7 @@ namespace {
 
 // One volume per entry: `n` probes, the first `invalid` invalid (stored unless `sparse`), and
 // with `sparse` the next `absent` valid ones not stored either.
-ProbeSet setOf(const std::vector<std::array<int, 3>>& volumes, bool sparse) {
+ProbeSet probeCountsSetOf(const std::vector<std::array<int, 3>>& volumes, bool sparse) {
     ProbeSet s;
     for (const auto& [n, invalid, absent] : volumes) {
         std::vector<ProbeState> states(static_cast<std::size_t>(n));
@@ -30,7 +30,7 @@ ProbeSet setOf(const std::vector<std::array<int, 3>>& volumes, bool sparse) {
 } // namespace
 
 TEST(ProbeCounts, DenseSetsNeedNoBakeCounts) {
-    const ProbeSet s = setOf({{10, 3, 0}, {4, 0, 0}}, false);
+    const ProbeSet s = probeCountsSetOf({{10, 3, 0}, {4, 0, 0}}, false);
     const std::vector<std::size_t> bake{3, 0};
     for (const std::vector<std::size_t>* baked :
          {&bake, (const std::vector<std::size_t>*)nullptr}) {
@@ -49,7 +49,7 @@ TEST(ProbeCounts, DenseSetsNeedNoBakeCounts) {
 
 TEST(ProbeCounts, SparseSetsSplitWhatIsNotStoredWithTheBakesInvalidCount) {
     // Volume 0: 3 invalid + 5 absent of 12; volume 1 fully stored (no invalid probe).
-    const ProbeSet s = setOf({{12, 3, 5}, {6, 0, 0}}, true);
+    const ProbeSet s = probeCountsSetOf({{12, 3, 5}, {6, 0, 0}}, true);
     const std::vector<std::size_t> baked{3, 0};
     const std::vector<ProbeCounts> c = volumeProbeCounts(s, &baked);
     EXPECT_EQ(c[0].stored, 4u);
@@ -72,7 +72,7 @@ TEST(ProbeCounts, SparseSetsSplitWhatIsNotStoredWithTheBakesInvalidCount) {
 }
 
 TEST(ProbeCounts, CountsThatDoNotFitTheStatesAreAnError) {
-    const ProbeSet s = setOf({{12, 3, 5}}, true);
+    const ProbeSet s = probeCountsSetOf({{12, 3, 5}}, true);
     const std::vector<std::size_t> oneTooMany{9}, wrongSize{3, 0};
     EXPECT_THROW(volumeProbeCounts(s, &oneTooMany), pb::Error); // 9 > the 8 not stored
     EXPECT_THROW(volumeProbeCounts(s, &wrongSize), pb::Error);
@@ -82,7 +82,7 @@ TEST(ProbeCounts, CountsThatDoNotFitTheStatesAreAnError) {
 // whatever its back-face ratio, and so do the stand-ins beside it (FreeSpace::Ranked keeps
 // some tiles, not all).
 TEST(ProbeCounts, IrradianceOnlyProbesTellAbsentFromInvalidWithoutBakeCounts) {
-    ProbeSet s = setOf({{12, 3, 5}, {6, 0, 0}}, true);
+    ProbeSet s = probeCountsSetOf({{12, 3, 5}, {6, 0, 0}}, true);
     // Volume 0: probes 3..7 are the absent ones (setOf): irradiance-only and valid.
     for (std::size_t i = 0; i < s.states[0].size(); ++i) {
         ProbeState& p = s.states[0][i];
@@ -102,7 +102,7 @@ TEST(ProbeCounts, IrradianceOnlyProbesTellAbsentFromInvalidWithoutBakeCounts) {
 }
 
 TEST(ProbeCounts, AMixOfTilesAndStandInsCountsEveryAbsentProbe) {
-    ProbeSet s = setOf({{12, 3, 5}}, true);
+    ProbeSet s = probeCountsSetOf({{12, 3, 5}}, true);
     s.states[0][3].irradianceOnly = s.states[0][3].valid = true; // one of the 5 keeps a tile
     s.settings.backfaceThreshold = 0.25f;
     const std::vector<ProbeCounts> file = volumeProbeCounts(s, nullptr);

@@ -34,7 +34,7 @@ ProbeSet tinySet() {
     return set;
 }
 
-std::string errorOf(const ProbeSet& set) {
+std::string probeFileBadInputErrorOf(const ProbeSet& set) {
     try {
         parseProbeSet(serializeProbeSet(set), "probes.pbp");
     } catch (const pb::Error& e) {
@@ -53,38 +53,38 @@ const float kNan = std::numeric_limits<float>::quiet_NaN();
 } // namespace
 
 TEST(ProbeFileBadInput, TheTinySetItselfLoads) {
-    EXPECT_EQ(errorOf(tinySet()), "(no error)");
+    EXPECT_EQ(probeFileBadInputErrorOf(tinySet()), "(no error)");
 }
 
 TEST(ProbeFileBadInput, ImpossibleBakeSettings) {
     ProbeSet a = tinySet();
     a.settings.raysPerProbe = 0;
-    EXPECT_CONTAINS(errorOf(a), "corrupt bake settings (rays 0");
+    EXPECT_CONTAINS(probeFileBadInputErrorOf(a), "corrupt bake settings (rays 0");
     ProbeSet b = tinySet();
     b.settings.backfaceThreshold = kNan;
-    EXPECT_CONTAINS(errorOf(b), "corrupt bake settings");
+    EXPECT_CONTAINS(probeFileBadInputErrorOf(b), "corrupt bake settings");
 }
 
 TEST(ProbeFileBadInput, ScenariosMustBeFiniteAndUnique) {
     ProbeSet a = tinySet();
     a.scenarios[0].sun.intensity = std::numeric_limits<float>::infinity();
-    EXPECT_CONTAINS(errorOf(a), "corrupt scenario 'day'");
+    EXPECT_CONTAINS(probeFileBadInputErrorOf(a), "corrupt scenario 'day'");
     ProbeSet b = tinySet();
     b.scenarios[0].sky.radiance.y = -1.0f;
-    EXPECT_CONTAINS(errorOf(b), "corrupt scenario 'day'");
+    EXPECT_CONTAINS(probeFileBadInputErrorOf(b), "corrupt scenario 'day'");
     ProbeSet c = tinySet();
     c.scenarios.push_back(c.scenarios[0]);
     c.irradiance.push_back(c.irradiance[0]);
-    EXPECT_CONTAINS(errorOf(c), "scenario 'day' appears twice");
+    EXPECT_CONTAINS(probeFileBadInputErrorOf(c), "scenario 'day' appears twice");
 }
 
 TEST(ProbeFileBadInput, ProbeStatesWithinACell) {
     ProbeSet a = tinySet();
     a.states[0][2].offset.x = 5.0f; // the cell is 2 units wide
-    EXPECT_CONTAINS(errorOf(a), "corrupt probe state in volume 'v'");
+    EXPECT_CONTAINS(probeFileBadInputErrorOf(a), "corrupt probe state in volume 'v'");
     ProbeSet b = tinySet();
     b.states[0][1].backfaceRatio = kNan;
-    EXPECT_CONTAINS(errorOf(b), "corrupt probe state");
+    EXPECT_CONTAINS(probeFileBadInputErrorOf(b), "corrupt probe state");
 }
 
 TEST(ProbeFileBadInput, TexelsMustBeFiniteAndNonNegative) {
@@ -103,7 +103,8 @@ TEST(ProbeFileBadInput, TexelsMustBeFiniteAndNonNegative) {
                 const std::uint16_t half = std::isnan(bad) ? 0x7E00 : bad < 0 ? 0xBC00 : 0x7C00;
                 std::memcpy(irr.stored.data() + 10, &half, 2);
             }
-            EXPECT_CONTAINS(errorOf(s), "corrupt irradiance data") << formatName(f) << " " << bad;
+            EXPECT_CONTAINS(probeFileBadInputErrorOf(s), "corrupt irradiance data")
+                << formatName(f) << " " << bad;
         }
     }
 }
@@ -114,22 +115,24 @@ TEST(ProbeFileBadInput, StorageScaleMustBeAPowerOfTwo) {
          {kNan, std::numeric_limits<float>::infinity(), 0.0f, -2.0f, 3.0f, std::ldexp(1.0f, 100)}) {
         ProbeSet s = tinySet();
         s.irradiance[0][0].storageScale = bad;
-        EXPECT_CONTAINS(errorOf(s), "corrupt storage scale of scenario 'day'") << bad;
+        EXPECT_CONTAINS(probeFileBadInputErrorOf(s), "corrupt storage scale of scenario 'day'")
+            << bad;
     }
     ProbeSet ok = tinySet();
     ok.irradiance[0][0].storageScale = 0.25f;
-    EXPECT_EQ(errorOf(ok), "(no error)");
+    EXPECT_EQ(probeFileBadInputErrorOf(ok), "(no error)");
 }
 
 TEST(ProbeFileBadInput, TheFreeSpaceRecordNamesAKnownChoiceAndAFiniteBudget) {
     ProbeSet a = tinySet();
     a.freeSpace = FreeSpace(7);
-    EXPECT_CONTAINS(errorOf(a), "corrupt free-space record (choice 7)");
+    EXPECT_CONTAINS(probeFileBadInputErrorOf(a), "corrupt free-space record (choice 7)");
     for (double budget : {-1.0, double(kNan), std::numeric_limits<double>::infinity()}) {
         ProbeSet b = tinySet();
         b.freeSpace = FreeSpace::Ranked;
         b.freeSpaceBudgetBytes = budget;
-        EXPECT_CONTAINS(errorOf(b), "corrupt free-space record (budget not a finite size)");
+        EXPECT_CONTAINS(probeFileBadInputErrorOf(b),
+                        "corrupt free-space record (budget not a finite size)");
     }
     ProbeSet c = tinySet();
     c.freeSpace = FreeSpace::Ranked;

@@ -18,7 +18,7 @@ using namespace pb::probes;
 
 namespace {
 
-BakeRequest request(const pb::scene::Scene& s, bool sparse) {
+BakeRequest probeFilePartsRequest(const pb::scene::Scene& s, bool sparse) {
     BakeRequest r = pb::test::sunlitFloorRequest(s);
     r.scenarios.push_back({"dusk", r.scenarios[0].sun, {glm::vec3(0.2f, 0.1f, 0.05f)}});
     r.settings.raysPerProbe = 32;
@@ -63,7 +63,7 @@ TEST(ProbeFileParts, ScenarioSplitGivesContiguousBlocks) {
 TEST(ProbeFileParts, MergedPartsAreTheSingleBakeByteForByte) {
     const pb::scene::Scene s = pb::test::sunlitFloor();
     for (bool sparse : {false, true}) {
-        const BakeRequest r = request(s, sparse);
+        const BakeRequest r = probeFilePartsRequest(s, sparse);
         const std::vector<std::uint8_t> single = serializeProbeSet(bakeProbes(s, r));
         // Out of order on purpose: the merge orders scenarios by their index in the bake.
         const std::vector<ProbeFilePart> parts = {bakePart(s, r, 1, 2), bakePart(s, r, 0, 2)};
@@ -112,7 +112,7 @@ TEST(ProbeFileParts, APartsScenarioIsSeededByItsIndexInTheWholeBake) {
     // Baking "night" alone as the first scenario is another bake (another seed stream) than
     // baking it as the whole bake's second: the split must not do that.
     const pb::scene::Scene s = pb::test::sunlitFloor();
-    BakeRequest r = request(s, false);
+    BakeRequest r = probeFilePartsRequest(s, false);
     const ProbeFilePart second = bakePart(s, r, 1, 3); // "night", index 1
     BakeRequest alone = r;
     alone.scenarios = {r.scenarios[2], r.scenarios[1]}; // night at index 1 again
@@ -127,7 +127,7 @@ TEST(ProbeFileParts, APartsScenarioIsSeededByItsIndexInTheWholeBake) {
 
 TEST(ProbeFileParts, MergeRefusesPartsThatDoNotBelongTogether) {
     const pb::scene::Scene s = pb::test::sunlitFloor();
-    const BakeRequest r = request(s, false);
+    const BakeRequest r = probeFilePartsRequest(s, false);
     const ProbeFilePart p0 = bakePart(s, r, 0, 2), p1 = bakePart(s, r, 1, 2);
     EXPECT_NE(mergeError({p0}).find("part 1 of 2 is missing"), std::string::npos)
         << mergeError({p0});
@@ -149,7 +149,7 @@ TEST(ProbeFileParts, MergeRefusesPartsThatDoNotBelongTogether) {
 
 TEST(ProbeFileParts, DamagedPartFilesGiveOneLineErrors) {
     const pb::scene::Scene s = pb::test::sunlitFloor();
-    const ProbeFilePart p = bakePart(s, request(s, false), 0, 2);
+    const ProbeFilePart p = bakePart(s, probeFilePartsRequest(s, false), 0, 2);
     std::vector<std::uint8_t> bytes = serializeProbeFilePart(p);
     bytes[bytes.size() / 2] ^= 0x40;
     try {

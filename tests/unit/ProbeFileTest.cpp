@@ -24,7 +24,7 @@ ProbeSet smallBake(StorageFormat format) {
     return bakeProbes(s, r);
 }
 
-std::string readError(const std::vector<std::uint8_t>& bytes) {
+std::string probeFileReadError(const std::vector<std::uint8_t>& bytes) {
     try {
         parseProbeSet(bytes, "probes.pbp");
     } catch (const pb::Error& e) {
@@ -60,7 +60,7 @@ TEST(ProbeFile, TruncatedFileIsAClearError) {
     for (std::size_t keep :
          {std::size_t(0), std::size_t(5), std::size_t(30), bytes.size() / 2, bytes.size() - 1}) {
         std::vector<std::uint8_t> cut(bytes.begin(), bytes.begin() + std::ptrdiff_t(keep));
-        std::string e = readError(cut);
+        std::string e = probeFileReadError(cut);
         EXPECT_EQ(e.rfind("probes.pbp: ", 0), 0u) << e;
         EXPECT_TRUE(e.find("truncated") != std::string::npos ||
                     e.find("not a probebench probe file") != std::string::npos)
@@ -71,7 +71,7 @@ TEST(ProbeFile, TruncatedFileIsAClearError) {
 TEST(ProbeFile, WrongVersionIsAClearError) {
     std::vector<std::uint8_t> bytes = serializeProbeSet(smallBake(StorageFormat::Rgba16f));
     bytes[8] = 99;
-    std::string e = readError(bytes);
+    std::string e = probeFileReadError(bytes);
     EXPECT_NE(e.find("version 99"), std::string::npos) << e;
     EXPECT_NE(e.find("re-bake"), std::string::npos) << e;
 }
@@ -82,11 +82,11 @@ TEST(ProbeFile, FlippedBitIsCaughtByTheChecksum) {
          {std::size_t(40), bytes.size() / 3, bytes.size() - 20, bytes.size() - 3}) {
         std::vector<std::uint8_t> bad = bytes;
         bad[at] ^= 0x10;
-        std::string e = readError(bad);
+        std::string e = probeFileReadError(bad);
         EXPECT_NE(e.find("checksum"), std::string::npos) << at << ": " << e;
     }
     std::vector<std::uint8_t> junk(bytes.size(), 0x41);
-    EXPECT_NE(readError(junk).find("not a probebench probe file"), std::string::npos);
+    EXPECT_NE(probeFileReadError(junk).find("not a probebench probe file"), std::string::npos);
 }
 
 TEST(ProbeFile, MissingFileAndFolderAreClearErrors) {

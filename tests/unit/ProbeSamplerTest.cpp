@@ -44,7 +44,7 @@ ProbeSet makeSet(std::vector<ProbeVolume> vols, const IrradianceFn& f) {
     return set;
 }
 
-ProbeVolume box(const std::string& name, glm::vec3 c, glm::vec3 h, glm::ivec3 n) {
+ProbeVolume probeSamplerBox(const std::string& name, glm::vec3 c, glm::vec3 h, glm::ivec3 n) {
     ProbeVolume v;
     v.name = name;
     v.center = c;
@@ -80,7 +80,7 @@ TEST(ProbeSampler, BilinearFetchMatchesGlLinear) {
 }
 
 TEST(ProbeSampler, UniformIrradianceIsReturnedEverywhereInside) {
-    ProbeSet set = makeSet({box("v", {1, 2, 3}, {2, 1, 2}, {4, 3, 5})},
+    ProbeSet set = makeSet({probeSamplerBox("v", {1, 2, 3}, {2, 1, 2}, {4, 3, 5})},
                            [](glm::vec3, int) { return glm::vec3(float(M_PI)); });
     ProbeSampler s(set, 0);
     std::uint64_t rng = 3;
@@ -100,7 +100,7 @@ TEST(ProbeSampler, NormalIsLookedUpInTheVolumesLocalFrame) {
     // Irradiance = a function of the LOCAL direction; the volume is rotated. A world normal
     // that is the rotated centre of texel (i, j) must read exactly that texel's value.
     auto f = [](glm::vec3 d, int) { return glm::vec3(3.0f + d.x + 2.0f * d.y - 0.5f * d.z); };
-    ProbeVolume v = box("v", {0, 0, 0}, {1, 1, 1}, {2, 2, 2});
+    ProbeVolume v = probeSamplerBox("v", {0, 0, 0}, {1, 1, 1}, {2, 2, 2});
     v.rotation = rotationFromEulerDegrees({20, 90, -35});
     ProbeSet set = makeSet({v}, f);
     ProbeSampler s(set, 0);
@@ -126,7 +126,7 @@ TEST(ProbeSampler, NormalIsLookedUpInTheVolumesLocalFrame) {
 }
 
 TEST(ProbeSampler, OutsideEveryVolumeGivesZeroWeight) {
-    ProbeSet set = makeSet({box("v", {0, 0, 0}, {1, 1, 1}, {3, 3, 3})},
+    ProbeSet set = makeSet({probeSamplerBox("v", {0, 0, 0}, {1, 1, 1}, {3, 3, 3})},
                            [](glm::vec3, int) { return glm::vec3(1.0f); });
     ProbeSampler s(set, 0);
     IrradianceSample r = s.sample({5, 0, 0}, {0, 1, 0}, {0, 1, 0});
@@ -140,7 +140,7 @@ TEST(ProbeSampler, OutsideEveryVolumeGivesZeroWeight) {
 }
 
 TEST(ProbeSampler, RootVolumesFadeOutsideTheirBox) {
-    ProbeSet set = makeSet({box("v", {0, 0, 0}, {1, 1, 1}, {3, 3, 3})},
+    ProbeSet set = makeSet({probeSamplerBox("v", {0, 0, 0}, {1, 1, 1}, {3, 3, 3})},
                            [](glm::vec3, int) { return glm::vec3(2.0f); });
     ProbeSampler s(set, 0);
     // cell = 1, fade width 0.5: at x = 1.25 half faded.
@@ -155,8 +155,8 @@ TEST(ProbeSampler, RootVolumesFadeOutsideTheirBox) {
 }
 
 TEST(ProbeSampler, SmallestContainingVolumeWins) {
-    ProbeVolume parent = box("world", {0, 0, 0}, {4, 4, 4}, {3, 3, 3});
-    ProbeVolume child = box("room", {1, 0, 0}, {1, 1, 1}, {3, 3, 3});
+    ProbeVolume parent = probeSamplerBox("world", {0, 0, 0}, {4, 4, 4}, {3, 3, 3});
+    ProbeVolume child = probeSamplerBox("room", {1, 0, 0}, {1, 1, 1}, {3, 3, 3});
     child.parent = "world";
     ProbeSet set = makeSet({parent, child}, [](glm::vec3, int) { return glm::vec3(1.0f); });
     for (float& x : set.irradiance[0][1].texels)
@@ -169,7 +169,7 @@ TEST(ProbeSampler, SmallestContainingVolumeWins) {
 }
 
 TEST(ProbeSampler, InvalidProbesAreExcludedAndAllInvalidGivesNoNaN) {
-    ProbeVolume v = box("v", {0, 0, 0}, {1, 1, 1}, {2, 2, 2});
+    ProbeVolume v = probeSamplerBox("v", {0, 0, 0}, {1, 1, 1}, {2, 2, 2});
     ProbeSet set = makeSet({v}, [](glm::vec3, int p) { return glm::vec3(p == 0 ? 100.0f : 1.0f); });
     set.states[0][0].valid = false;
     ProbeSampler s(set, 0);
@@ -189,7 +189,7 @@ TEST(ProbeSampler, InvalidProbesAreExcludedAndAllInvalidGivesNoNaN) {
 TEST(ProbeSampler, ChebyshevVisibilityDownweightsOccludedProbes) {
     // Probe 1 (x = +1) "sees" a wall at 10% of max distance in every direction: a point
     // beyond that wall should get (almost) only probe 0's irradiance.
-    ProbeVolume v = box("v", {0, 0, 0}, {1, 0.5f, 0.5f}, {2, 1, 1});
+    ProbeVolume v = probeSamplerBox("v", {0, 0, 0}, {1, 0.5f, 0.5f}, {2, 1, 1});
     ProbeSet set = makeSet({v}, [](glm::vec3, int p) { return glm::vec3(p == 0 ? 1.0f : 9.0f); });
     ProbeTexture& vis = set.visibility[0];
     for (int y = 0; y < kVisibilityTile; ++y)
@@ -205,7 +205,7 @@ TEST(ProbeSampler, ChebyshevVisibilityDownweightsOccludedProbes) {
 }
 
 TEST(ProbeSampler, SingleProbeAxesAndOneProbeVolumes) {
-    ProbeSet set = makeSet({box("v", {0, 0, 0}, {1, 1, 1}, {1, 1, 1})},
+    ProbeSet set = makeSet({probeSamplerBox("v", {0, 0, 0}, {1, 1, 1}, {1, 1, 1})},
                            [](glm::vec3, int) { return glm::vec3(4.0f); });
     ProbeSampler s(set, 0);
     IrradianceSample r = s.sample({0.3f, -0.2f, 0.9f}, {1, 0, 0}, {0, 0, 1});
@@ -217,9 +217,9 @@ namespace {
 // Two nested volumes (the root rotated, the child with a single-probe axis) with irregular
 // data: random irradiance, random visibility (meanSq >= mean^2), relocated and invalid probes.
 ProbeSet irregularSet() {
-    ProbeVolume root = box("world", {0.5f, 1, -1}, {3, 2, 2.5f}, {5, 4, 6});
+    ProbeVolume root = probeSamplerBox("world", {0.5f, 1, -1}, {3, 2, 2.5f}, {5, 4, 6});
     root.rotation = rotationFromEulerDegrees({10, 35, -5});
-    ProbeVolume child = box("room", {0.8f, 1.2f, -0.7f}, {1, 0.6f, 0.8f}, {3, 1, 4});
+    ProbeVolume child = probeSamplerBox("room", {0.8f, 1.2f, -0.7f}, {1, 0.6f, 0.8f}, {3, 1, 4});
     child.parent = "world";
     std::uint64_t rng = 99;
     ProbeSet set = makeSet({root, child}, [&](glm::vec3 d, int) {

@@ -12,7 +12,7 @@
 using namespace pb::profile;
 
 namespace {
-std::string errorOf(const std::function<void()>& f) {
+std::string profileErrorOf(const std::function<void()>& f) {
     try {
         f();
     } catch (const pb::Error& e) {
@@ -76,7 +76,7 @@ TEST(Profile, EveryChoiceRoundTrips) {
 
 TEST(Profile, BadValueNamesTheKeyAndListsAllowedValues) {
     Profile p;
-    std::string e = errorOf([&] { p.applyOverride("gi.resolution=eighth"); });
+    std::string e = profileErrorOf([&] { p.applyOverride("gi.resolution=eighth"); });
     EXPECT_NE(e.find("gi.resolution=eighth"), std::string::npos) << e;
     EXPECT_NE(e.find("full, half, quarter"), std::string::npos) << e;
     EXPECT_EQ(e.find('\n'), std::string::npos) << "one line: " << e;
@@ -85,14 +85,15 @@ TEST(Profile, BadValueNamesTheKeyAndListsAllowedValues) {
 
 TEST(Profile, UnknownKeyListsTheSwitches) {
     Profile p;
-    std::string e = errorOf([&] { p.applyOverride("gi.resolutoin=half"); });
+    std::string e = profileErrorOf([&] { p.applyOverride("gi.resolutoin=half"); });
     EXPECT_NE(e.find("unknown switch 'gi.resolutoin'"), std::string::npos) << e;
     EXPECT_NE(e.find("gi.resolution"), std::string::npos) << e;
-    EXPECT_NE(errorOf([&] { p.applyOverride("gi.loops"); }).find("expected key=value"),
+    EXPECT_NE(profileErrorOf([&] { p.applyOverride("gi.loops"); }).find("expected key=value"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] { p.applyOverride("=x"); }).find("expected key=value"),
+    EXPECT_NE(profileErrorOf([&] { p.applyOverride("=x"); }).find("expected key=value"),
               std::string::npos);
-    EXPECT_NE(errorOf([&] { p.set("nope", "1"); }).find("unknown switch"), std::string::npos);
+    EXPECT_NE(profileErrorOf([&] { p.set("nope", "1"); }).find("unknown switch"),
+              std::string::npos);
 }
 
 TEST(Profile, ShaderDefinesFollowTheTable) {
@@ -144,7 +145,7 @@ TEST(Profile, VolumeLodForms) {
     Profile p;
     p.applyOverride("gi.volume_lod=omit:inner");
     EXPECT_EQ(p.gi.volumeLod, "omit:inner");
-    std::string e = errorOf([&] { p.applyOverride("gi.volume_lod=half"); });
+    std::string e = profileErrorOf([&] { p.applyOverride("gi.volume_lod=half"); });
     EXPECT_NE(e.find("gi.volume_lod=half"), std::string::npos) << e;
     EXPECT_NE(e.find("omit:NAME"), std::string::npos) << e;
 }

@@ -14,13 +14,13 @@ struct TwoFrames {
 };
 
 // A 720p frame: what a pixel error means there.
-constexpr int kW = 1280, kH = 720;
+constexpr int kReprojectionW = 1280, kReprojectionH = 720;
 
 TwoFrames walkingCameras(glm::dvec3 origin) {
-    return {
-        testCamera(origin + glm::dvec3(0.0, 1.6, 4.0), origin + glm::dvec3(0.0, 1.0, 0.0), kW, kH),
-        testCamera(origin + glm::dvec3(0.25, 1.65, 3.7), origin + glm::dvec3(0.4, 0.9, 0.0), kW,
-                   kH)};
+    return {testCamera(origin + glm::dvec3(0.0, 1.6, 4.0), origin + glm::dvec3(0.0, 1.0, 0.0),
+                       kReprojectionW, kReprojectionH),
+            testCamera(origin + glm::dvec3(0.25, 1.65, 3.7), origin + glm::dvec3(0.4, 0.9, 0.0),
+                       kReprojectionW, kReprojectionH)};
 }
 
 const glm::dvec3 kPoints[] = {{0.2, 0.5, -0.3}, {-1.0, 1.8, 0.5}, {0.9, 0.1, -2.0}};
@@ -57,7 +57,8 @@ TEST(Reprojection, FloatWorldMatricesWouldMissFarFromTheOrigin) {
     const glm::mat4 prevWorld =
         f.prev.clipFromRel * glm::translate(glm::mat4(1.0f), -glm::vec3(f.prev.eye));
     const glm::vec4 clip = prevWorld * glm::vec4(glm::vec3(world), 1.0f);
-    const glm::vec2 naive = (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(kW, kH);
+    const glm::vec2 naive =
+        (glm::vec2(clip) / clip.w * 0.5f + 0.5f) * glm::vec2(kReprojectionW, kReprojectionH);
     const ExactProjection before = projectExact(f.prev, world);
     EXPECT_GT(glm::length(glm::dvec2(naive) - before.window), 1.0);
 }

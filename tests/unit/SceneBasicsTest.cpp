@@ -20,7 +20,7 @@ Primitive unitCubeCorners() { // two triangles are enough for bounds
     return p;
 }
 
-void expectVec(const glm::vec3& a, const glm::vec3& b, float eps = 1e-4f) {
+void sceneBasicsExpectVec(const glm::vec3& a, const glm::vec3& b, float eps = 1e-4f) {
     EXPECT_NEAR(a.x, b.x, eps);
     EXPECT_NEAR(a.y, b.y, eps);
     EXPECT_NEAR(a.z, b.z, eps);
@@ -36,10 +36,10 @@ TEST(SceneBasics, BoundsFollowInstancesAndSkipDynamicForStatic) {
     s.instances.push_back({"b", 0, glm::scale(glm::mat4(1.0f), {1, 2, 3}), false});
     s.instances.push_back({"moving", 0, glm::translate(glm::mat4(1.0f), {0, 100, 0}), true});
     const Bounds all = s.worldBounds(), stat = s.staticWorldBounds();
-    expectVec(all.min, {-1, -2, -3});
-    expectVec(all.max, {11, 101, 3});
-    expectVec(stat.min, {-1, -2, -3});
-    expectVec(stat.max, {11, 2, 3});
+    sceneBasicsExpectVec(all.min, {-1, -2, -3});
+    sceneBasicsExpectVec(all.max, {11, 101, 3});
+    sceneBasicsExpectVec(stat.min, {-1, -2, -3});
+    sceneBasicsExpectVec(stat.max, {11, 2, 3});
     EXPECT_EQ(s.triangleCount(), 6u);
 }
 
@@ -76,7 +76,7 @@ TEST(SceneBasics, FindViewAndWorldPosition) {
     EXPECT_EQ(s.findView("nope"), nullptr);
     s.primitives.push_back(unitCubeCorners());
     const Instance inst{"a", 0, glm::translate(glm::mat4(1.0f), {5, 6, 7}), false};
-    expectVec(worldPosition(s, inst, 2), {6, 7, 8});
+    sceneBasicsExpectVec(worldPosition(s, inst, 2), {6, 7, 8});
 }
 
 TEST(SceneBasics, SmoothNormalsAreUnitAndSurviveDegenerateTriangles) {
@@ -92,7 +92,7 @@ TEST(SceneBasics, SmoothNormalsAreUnitAndSurviveDegenerateTriangles) {
         EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
     }
     for (int i = 0; i < 4; ++i)
-        expectVec(p.normals[size_t(i)], {0, 1, 0});
+        sceneBasicsExpectVec(p.normals[size_t(i)], {0, 1, 0});
 }
 
 TEST(SceneBasics, SmoothNormalsOfTinyAndHugeTrianglesStayFinite) {
@@ -103,7 +103,7 @@ TEST(SceneBasics, SmoothNormalsOfTinyAndHugeTrianglesStayFinite) {
     generateSmoothNormals(p);
     for (const glm::vec3& n : p.normals)
         EXPECT_NEAR(glm::length(n), 1.0f, 1e-5f);
-    expectVec(p.normals[4], {0, 0, 1});
+    sceneBasicsExpectVec(p.normals[4], {0, 0, 1});
 }
 
 TEST(SceneBasics, DefaultViewStandsInsideLooksAlongTheLongAxisSlightlyDown) {

@@ -191,7 +191,7 @@ TEST(SceneBuiltin, NoViewStartsInsideAnObject) {
             for (const glm::vec3& d : pb::test::sphereDirections(64))
                 backFacing += grid.cast(v.position, d, 1e3f).backFacing;
             EXPECT_EQ(backFacing, 0);
-            const RayHit centre =
+            const pb::scene::RayHit centre =
                 grid.cast(v.position, glm::normalize(v.target - v.position), 1e3f);
             EXPECT_GT(centre.distance, 0.5f);
         }

@@ -19,7 +19,7 @@
 using namespace pb::probes;
 
 namespace {
-float luminance(const glm::vec3& c) {
+float shApvEncodingLuminance(const glm::vec3& c) {
     return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 } // namespace
@@ -72,8 +72,8 @@ TEST(ShApvEncoding, ExtraErrorOfL1LookupsOnABake) {
     std::vector<std::pair<float, float>> pairs;
     for (const glm::vec3& p : midAirSamples(rs, set.volumes, 400, set.volumes[0].minCellSize()))
         for (const glm::vec3& n : axes) {
-            const float a = luminance(sampler.sample(p, n, n, plain).irradiance);
-            const float b = luminance(sampler.sample(p, n, n, apv).irradiance);
+            const float a = shApvEncodingLuminance(sampler.sample(p, n, n, plain).irradiance);
+            const float b = shApvEncodingLuminance(sampler.sample(p, n, n, apv).irradiance);
             pairs.emplace_back(a, b);
             total += a;
         }

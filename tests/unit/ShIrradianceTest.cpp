@@ -19,7 +19,7 @@ using namespace pb::probes;
 
 namespace {
 
-constexpr float kPi = 3.14159265f;
+constexpr float kShIrradiancePi = 3.14159265f;
 
 std::vector<glm::vec3> radianceOf(const std::vector<glm::vec3>& dirs,
                                   glm::vec3 (*f)(const glm::vec3&)) {
@@ -33,7 +33,7 @@ glm::vec3 clampedCosineUp(const glm::vec3& d) {
     return glm::vec3(std::max(0.0f, d.z));
 }
 
-ProbeSet smallBake() {
+ProbeSet shIrradianceSmallBake() {
     const pb::scene::Scene s = pb::test::sunlitFloor();
     return bakeProbes(s, pb::test::sunlitFloorRequest(s));
 }
@@ -58,9 +58,9 @@ TEST(ShIrradiance, ConstantRadianceGivesPiTimesRadianceEverywhere) {
          {glm::vec3(0, 0, 1), glm::vec3(1, 0, 0), glm::normalize(glm::vec3(-1, 2, -3))})
         for (int count : {kShL1Coefficients, kShL2Coefficients}) {
             const glm::vec3 e = shIrradiance(c.data(), n, count);
-            EXPECT_NEAR(e.x, kPi * 1, 1e-3f);
-            EXPECT_NEAR(e.y, kPi * 2, 2e-3f);
-            EXPECT_NEAR(e.z, kPi * 3, 3e-3f);
+            EXPECT_NEAR(e.x, kShIrradiancePi * 1, 1e-3f);
+            EXPECT_NEAR(e.y, kShIrradiancePi * 2, 2e-3f);
+            EXPECT_NEAR(e.z, kShIrradiancePi * 3, 3e-3f);
         }
 }
 
@@ -72,11 +72,12 @@ TEST(ShIrradiance, ClampedCosineRadianceMatchesTheBandLimitedClosedForm) {
     const ShCoefficients c = projectRadiance(dirs, radianceOf(dirs, clampedCosineUp));
     float band[3];
     for (int l = 0; l < 3; ++l)
-        band[l] = kShBandA[l] * kShBandA[l] * float(2 * l + 1) / (4 * kPi);
+        band[l] = kShBandA[l] * kShBandA[l] * float(2 * l + 1) / (4 * kShIrradiancePi);
     const glm::vec3 up(0, 0, 1);
     EXPECT_NEAR(shIrradiance(c.data(), up, 4).x, band[0] + band[1], 2e-3f);
     EXPECT_NEAR(shIrradiance(c.data(), up, 9).x, band[0] + band[1] + band[2], 2e-3f);
-    EXPECT_NEAR(shIrradiance(c.data(), up, 9).x, 2 * kPi / 3, 0.01f * 2 * kPi / 3);
+    EXPECT_NEAR(shIrradiance(c.data(), up, 9).x, 2 * kShIrradiancePi / 3,
+                0.01f * 2 * kShIrradiancePi / 3);
 }
 
 TEST(ShIrradiance, L2ReconstructsALobeBetterThanL1) {
@@ -89,7 +90,7 @@ TEST(ShIrradiance, L2ReconstructsALobeBetterThanL1) {
         double exact = 0;
         for (const glm::vec3& d : dirs)
             exact += std::max(0.0f, d.z) * std::max(0.0f, glm::dot(d, n));
-        exact *= 4 * kPi / double(dirs.size());
+        exact *= 4 * kShIrradiancePi / double(dirs.size());
         errL1 += std::abs(shIrradiance(c.data(), n, 4).x - exact);
         errL2 += std::abs(shIrradiance(c.data(), n, 9).x - exact);
     }
@@ -97,7 +98,7 @@ TEST(ShIrradiance, L2ReconstructsALobeBetterThanL1) {
 }
 
 TEST(ShIrradiance, BakeStoresShThatAgreesWithTheOctahedralIrradiance) {
-    const ProbeSet set = smallBake();
+    const ProbeSet set = shIrradianceSmallBake();
     ASSERT_TRUE(set.hasSh());
     ASSERT_EQ(set.sh.size(), set.irradiance.size());
     const ProbeVolume& v = set.volumes[0];
@@ -116,7 +117,7 @@ TEST(ShIrradiance, BakeStoresShThatAgreesWithTheOctahedralIrradiance) {
 }
 
 TEST(ShIrradiance, FileRoundTripKeepsShAndVersion5ReadsAsNoSh) {
-    const ProbeSet set = smallBake();
+    const ProbeSet set = shIrradianceSmallBake();
     const std::vector<std::uint8_t> bytes = serializeProbeSet(set);
     const ProbeSet back = parseProbeSet(bytes, "p.pbp");
     ASSERT_TRUE(back.hasSh());
@@ -161,7 +162,7 @@ TEST(ShSampler, NudgeGivesEveryInvalidCornerZeroWeight) {
 }
 
 TEST(ShSampler, ValidProbesInterpolateTheirIrradianceAndModesAgreeWithoutInvalidProbes) {
-    ProbeSet set = smallBake();
+    ProbeSet set = shIrradianceSmallBake();
     for (auto& s : set.states[0])
         s.valid = true, s.insideAtLattice = false;
     const ShSampler sampler(set, 0, "p.pbp");
@@ -183,7 +184,7 @@ TEST(ShSampler, ValidProbesInterpolateTheirIrradianceAndModesAgreeWithoutInvalid
 }
 
 TEST(ShSampler, WeightAndMaskIgnoreAnInvalidProbesLight) {
-    ProbeSet set = smallBake();
+    ProbeSet set = shIrradianceSmallBake();
     for (auto& s : set.states[0])
         s.valid = true, s.insideAtLattice = false;
     // Make one probe invalid and give it absurd light: `none` sees it, the others must not.

@@ -18,7 +18,7 @@ using namespace pb::probes;
 
 namespace {
 
-constexpr float kPi = 3.14159265f;
+constexpr float kShRayProjectionPi = 3.14159265f;
 
 pb::scene::Scene skyOverBlackFloor() {
     pb::scene::Scene s = pb::test::emptyScene(glm::vec3(1.0f));
@@ -31,8 +31,8 @@ pb::scene::Scene skyOverBlackFloor() {
 
 ShCoefficients exactHalfSky() {
     ShCoefficients c{};
-    c[0] = glm::vec3(std::sqrt(kPi));
-    c[1] = glm::vec3(kPi * std::sqrt(3.0f / (4.0f * kPi)));
+    c[0] = glm::vec3(std::sqrt(kShRayProjectionPi));
+    c[1] = glm::vec3(kShRayProjectionPi * std::sqrt(3.0f / (4.0f * kShRayProjectionPi)));
     return c;
 }
 

@@ -31,7 +31,7 @@ namespace {
 // (MidAirLookupTest). Without the fill they are about half as bright.
 constexpr double kDarkerTolerance = 0.08;
 
-double luminance(const glm::vec3& c) {
+double shSparseLookupLuminance(const glm::vec3& c) {
     return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z;
 }
 
@@ -60,7 +60,8 @@ ProbeSet absenceAsWeight(ProbeSet set) {
     return set;
 }
 
-const glm::vec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+const glm::vec3 kShSparseLookupAxes[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                          {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
 
 // Mid-air points x 6 normals (a dynamic object's sides) of the lookups that read an absent
 // probe (those where the unfilled sparse set differs from the dense one): the sparse set's
@@ -83,12 +84,12 @@ Darkening sparseOverDense(const DenseAndSparse& b, const ProbeSet& sparse, ShLea
     int count = 0;
     for (const glm::vec3& p :
          midAirSamples(rs, b.dense.volumes, n, b.dense.volumes[0].minCellSize()))
-        for (const glm::vec3& a : kAxes) {
-            const double ld = luminance(d.sample(p, a, a, o).irradiance);
+        for (const glm::vec3& a : kShSparseLookupAxes) {
+            const double ld = shSparseLookupLuminance(d.sample(p, a, a, o).irradiance);
             all += ld;
             ++count;
             if (z.sample(p, a, a, o).irradiance == d.sample(p, a, a, o).irradiance) continue;
-            pairs.emplace_back(ld, luminance(s.sample(p, a, a, o).irradiance));
+            pairs.emplace_back(ld, shSparseLookupLuminance(s.sample(p, a, a, o).irradiance));
             sumD += ld;
             sumS += pairs.back().second;
         }
@@ -120,7 +121,7 @@ TEST_P(ShSparse, IrradianceOnlyProbesKeepTheDenseSh) {
         o.leak = leak;
         for (const glm::vec3& p :
              midAirSamples(rs, b.dense.volumes, 200, b.dense.volumes[0].minCellSize()))
-            for (const glm::vec3& a : kAxes) {
+            for (const glm::vec3& a : kShSparseLookupAxes) {
                 EXPECT_EQ(s.sample(p, a, a, o).irradiance, d.sample(p, a, a, o).irradiance)
                     << "leak mode #" << int(leak);
                 ++lookups;

@@ -17,7 +17,7 @@ using namespace pb::stress;
 
 namespace {
 
-std::string errorOf(const std::function<void()>& f) {
+std::string stressSweepErrorOf(const std::function<void()>& f) {
     try {
         f();
     } catch (const pb::Error& e) {
@@ -94,17 +94,19 @@ TEST(StressVariant, SpecsSetSwitchesAndStorage) {
 }
 
 TEST(StressVariant, BadSpecsNameTheProblem) {
-    EXPECT_NE(errorOf([] { parseVariantSpec(":gi.precision=fp16"); }).find("expected NAME"),
-              std::string::npos);
-    EXPECT_NE(errorOf([] { parseVariantSpec("a:gi.precision"); }).find("is not key=value"),
-              std::string::npos);
-    EXPECT_NE(errorOf([] {
+    EXPECT_NE(
+        stressSweepErrorOf([] { parseVariantSpec(":gi.precision=fp16"); }).find("expected NAME"),
+        std::string::npos);
+    EXPECT_NE(
+        stressSweepErrorOf([] { parseVariantSpec("a:gi.precision"); }).find("is not key=value"),
+        std::string::npos);
+    EXPECT_NE(stressSweepErrorOf([] {
                   parseVariantSpec("a:gi.precison=fp16");
               }).find("unknown switch 'gi.precison'"),
               std::string::npos);
-    EXPECT_NE(errorOf([] { parseVariantSpec("a:gi.precision=fp8"); }).find("fp32, fp16"),
+    EXPECT_NE(stressSweepErrorOf([] { parseVariantSpec("a:gi.precision=fp8"); }).find("fp32, fp16"),
               std::string::npos);
-    EXPECT_NE(errorOf([] { parseVariantSpec("a:probes.format=bc7"); }).find("bc7"),
+    EXPECT_NE(stressSweepErrorOf([] { parseVariantSpec("a:probes.format=bc7"); }).find("bc7"),
               std::string::npos);
 }
 
@@ -247,6 +249,7 @@ TEST(StressCases, NamesAreUniqueAndSelectable) {
           "variance_zero", "fold_edges", "all_invalid"})
         EXPECT_FALSE(selectCases(all, {group}).empty()) << group;
     EXPECT_EQ(selectCases(all, {"light=1e+06"}).size(), 1u);
-    EXPECT_NE(errorOf([&] { selectCases(all, {"lihgt"}); }).find("no case or group 'lihgt'"),
-              std::string::npos);
+    EXPECT_NE(
+        stressSweepErrorOf([&] { selectCases(all, {"lihgt"}); }).find("no case or group 'lihgt'"),
+        std::string::npos);
 }

@@ -12,7 +12,7 @@ using namespace pb::costmodel;
 namespace {
 
 // "H" / "M" per access.
-std::string run(LruCache& c, const std::vector<std::uint64_t>& addresses) {
+std::string textureCacheRun(LruCache& c, const std::vector<std::uint64_t>& addresses) {
     std::string out;
     for (std::uint64_t a : addresses)
         out += c.access(a) ? 'H' : 'M';
@@ -28,26 +28,26 @@ CacheConfig cfg(std::uint64_t size, int line, int ways) {
 TEST(LruCache, DirectMappedLinesOnTheSameSetEvictEachOther) {
     // 256 B, 64 B lines, 1 way: 4 sets; 0 and 256 share set 0, 64 has set 1.
     LruCache c(cfg(256, 64, 1));
-    EXPECT_EQ(run(c, {0, 256, 0, 256, 64, 64, 0}), "MMMMMHM");
+    EXPECT_EQ(textureCacheRun(c, {0, 256, 0, 256, 64, 64, 0}), "MMMMMHM");
 }
 
 TEST(LruCache, TwoWaysHoldTwoConflictingLinesAndEvictTheLeastRecentlyUsed) {
     // 512 B, 64 B lines, 2 ways: 4 sets; 0, 256, 512 all map to set 0.
     LruCache c(cfg(512, 64, 2));
-    EXPECT_EQ(run(c, {0, 256, 0, 256}), "MMHH");
+    EXPECT_EQ(textureCacheRun(c, {0, 256, 0, 256}), "MMHH");
     // 256 is the most recent: 512 evicts 0.
-    EXPECT_EQ(run(c, {512, 256, 0}), "MHM");
+    EXPECT_EQ(textureCacheRun(c, {512, 256, 0}), "MHM");
     // Set 0 holds 0 (most recent) and 256: 256 hits, 512 evicts 0, 0 evicts 256.
-    EXPECT_EQ(run(c, {256, 512, 0}), "HMM");
+    EXPECT_EQ(textureCacheRun(c, {256, 512, 0}), "HMM");
 }
 
 TEST(LruCache, CapacityMissesWhenTheCycleExceedsTheCache) {
     // Fully associative, 4 lines of 64 B.
     LruCache fits(cfg(256, 64, 4));
-    EXPECT_EQ(run(fits, {0, 64, 128, 192, 0, 64, 128, 192}), "MMMMHHHH");
+    EXPECT_EQ(textureCacheRun(fits, {0, 64, 128, 192, 0, 64, 128, 192}), "MMMMHHHH");
     // A cycle of 5 lines through 4: LRU always evicts the next one needed.
     LruCache thrash(cfg(256, 64, 4));
-    EXPECT_EQ(run(thrash, {0, 64, 128, 192, 256, 0, 64, 128, 192, 256}), "MMMMMMMMMM");
+    EXPECT_EQ(textureCacheRun(thrash, {0, 64, 128, 192, 256, 0, 64, 128, 192, 256}), "MMMMMMMMMM");
 }
 
 TEST(LruCache, LineSizeDecidesWhichNeighboursComeForFree) {
@@ -55,13 +55,13 @@ TEST(LruCache, LineSizeDecidesWhichNeighboursComeForFree) {
     for (std::uint64_t a = 0; a < 128; a += 16)
         walk.push_back(a);
     LruCache wide(cfg(1024, 64, 4));
-    EXPECT_EQ(run(wide, walk), "MHHHMHHH");
+    EXPECT_EQ(textureCacheRun(wide, walk), "MHHHMHHH");
     LruCache narrow(cfg(1024, 32, 4));
-    EXPECT_EQ(run(narrow, walk), "MHMHMHMH");
+    EXPECT_EQ(textureCacheRun(narrow, walk), "MHMHMHMH");
     LruCache clearMe(cfg(1024, 32, 4));
-    run(clearMe, walk);
+    textureCacheRun(clearMe, walk);
     clearMe.clear();
-    EXPECT_EQ(run(clearMe, {0}), "M");
+    EXPECT_EQ(textureCacheRun(clearMe, {0}), "M");
 }
 
 TEST(LruCache, ConfigurationsAreValidated) {

@@ -13,7 +13,7 @@ using namespace pb;
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
+constexpr float kTruthClosedFormPi = 3.14159265358979f;
 
 scene::Scene darkScene() {
     scene::Scene s;
@@ -111,7 +111,8 @@ TEST(TruthClosedForm, SunlitPlaneIsAlbedoOverPiTimesIrradianceTimesCosine) {
     ts.spp = 4;
     truth::TruthResult r = truth::renderTruth(s, v, ts);
     // Sun NEE is exact and every bounce escapes to the black sky: each pixel is the formula.
-    const glm::vec3 expected = albedo / kPi * s.sun.color * s.sun.intensity * s.sun.toSun.y;
+    const glm::vec3 expected =
+        albedo / kTruthClosedFormPi * s.sun.color * s.sun.intensity * s.sun.toSun.y;
     for (int y = 0; y < ts.height; ++y)
         for (int x = 0; x < ts.width; ++x)
             for (int c = 0; c < 3; ++c)

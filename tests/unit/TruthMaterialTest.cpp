@@ -11,10 +11,11 @@ using namespace pb;
 
 namespace {
 
-constexpr float kPi = 3.14159265358979f;
+constexpr float kTruthMaterialPi = 3.14159265358979f;
 
 // A one-sided quad c + (+-u) + (+-v) facing cross(u, v), UVs (0,0)..(1,1).
-void addQuad(scene::Scene& s, const glm::vec3& c, const glm::vec3& u, const glm::vec3& v, int material) {
+void truthMaterialAddQuad(scene::Scene& s, const glm::vec3& c, const glm::vec3& u,
+                          const glm::vec3& v, int material) {
     scene::Primitive p;
     p.material = material;
     glm::vec3 n = glm::normalize(glm::cross(u, v));
@@ -66,11 +67,11 @@ TEST(TruthMaterial, BaseColourTextureScalesTheAlbedo) {
     scene::SceneBuilder b(s);
     int m = b.material("tex", glm::vec3(0.5f));
     s.materials[size_t(m)].baseColorTexture = addTexture(s, {{200, 100, 50, 255}});
-    addQuad(s, glm::vec3(0.0f), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), m);
+    truthMaterialAddQuad(s, glm::vec3(0.0f), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), m);
     auto r = truth::renderTruth(s, scene::View{"v", {0, 0, 3}, {0, 0, 0}, 10.0f}, tiny());
     const float texel[3] = {200, 100, 50};
     for (int c = 0; c < 3; ++c) {
-        const float expected = 0.5f * srgbToLinear(texel[c] / 255.0f) / kPi * 2.0f;
+        const float expected = 0.5f * srgbToLinear(texel[c] / 255.0f) / kTruthMaterialPi * 2.0f;
         EXPECT_NEAR(r.hdr.at(1, 1, c), expected, 1e-5f) << c;
     }
 }
@@ -81,7 +82,7 @@ TEST(TruthMaterial, EmissiveTextureScalesTheEmission) {
     scene::SceneBuilder b(s);
     int m = b.material("glow", glm::vec3(0.0f), glm::vec3(3.0f));
     s.materials[size_t(m)].emissiveTexture = addTexture(s, {{255, 128, 0, 255}});
-    addQuad(s, glm::vec3(0.0f), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), m);
+    truthMaterialAddQuad(s, glm::vec3(0.0f), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), m);
     auto r = truth::renderTruth(s, scene::View{"v", {0, 0, 3}, {0, 0, 0}, 10.0f}, tiny());
     EXPECT_NEAR(r.hdr.at(2, 2, 0), 3.0f, 1e-5f);
     EXPECT_NEAR(r.hdr.at(2, 2, 1), 3.0f * srgbToLinear(128.0f / 255.0f), 1e-5f);
@@ -96,18 +97,18 @@ TEST(TruthMaterial, MaskAlphaCutsAHoleForCameraAndLight) {
     scene::Scene s = sunlit();
     scene::SceneBuilder b(s);
     int floor = b.material("floor", glm::vec3(0.5f));
-    addQuad(s, glm::vec3(0.0f), glm::vec3(5, 0, 0), glm::vec3(0, 5, 0), floor);
+    truthMaterialAddQuad(s, glm::vec3(0.0f), glm::vec3(5, 0, 0), glm::vec3(0, 5, 0), floor);
     int mask = b.material("mask", glm::vec3(0.0f));
     s.materials[size_t(mask)].alphaMode = scene::AlphaMode::Mask;
     s.materials[size_t(mask)].alphaCutoff = 0.5f;
     s.materials[size_t(mask)].baseColorTexture = addTexture(s, {{0, 0, 0, 0}, {0, 0, 0, 255}});
-    addQuad(s, glm::vec3(0, 0, 1), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), mask);
+    truthMaterialAddQuad(s, glm::vec3(0, 0, 1), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), mask);
     truth::TruthSettings ts = tiny();
     ts.width = 8;
     ts.height = 2;
     // 8 pixels across x in [-0.8, 0.8] at the mask's depth (a narrow view of the quad).
     auto r = truth::renderTruth(s, scene::View{"v", {0, 0, 3}, {0, 0, 0}, 10.0f}, ts);
-    const float lit = 0.5f / kPi * 2.0f;
+    const float lit = 0.5f / kTruthMaterialPi * 2.0f;
     EXPECT_NEAR(r.hdr.at(0, 0, 0), lit, 1e-5f) << "through the hole to the lit floor";
     EXPECT_NEAR(r.hdr.at(7, 0, 0), 0.0f, 1e-6f) << "the opaque half, black";
 }

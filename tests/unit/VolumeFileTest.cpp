@@ -12,7 +12,7 @@ using namespace pb::probes;
 
 namespace {
 
-std::string errorOf(const std::string& toml) {
+std::string volumeFileErrorOf(const std::string& toml) {
     try {
         parseVolumeToml(toml, "vols.toml");
     } catch (const pb::Error& e) {
@@ -81,40 +81,45 @@ TEST(VolumeFile, GridPositionsRunCornerToCorner) {
 }
 
 TEST(VolumeFile, MalformedTomlNamesFileAndLine) {
-    std::string e = errorOf("[[volume]]\nname = \"a\"\ncenter = [0, 0,\n");
+    std::string e = volumeFileErrorOf("[[volume]]\nname = \"a\"\ncenter = [0, 0,\n");
     EXPECT_NE(e.find("vols.toml:"), std::string::npos) << e;
     EXPECT_NE(e.find("TOML syntax error"), std::string::npos) << e;
 }
 
 TEST(VolumeFile, UnknownKeyNamesLineAndKey) {
-    std::string e = errorOf("[[volume]]\nname = \"a\"\ncenter = [0,0,0]\nhalf_extents = [1,1,1]\n"
-                            "probes = [2,2,2]\nprobs = 3\n");
+    std::string e =
+        volumeFileErrorOf("[[volume]]\nname = \"a\"\ncenter = [0,0,0]\nhalf_extents = [1,1,1]\n"
+                          "probes = [2,2,2]\nprobs = 3\n");
     EXPECT_NE(e.find("vols.toml:6:"), std::string::npos) << e;
     EXPECT_NE(e.find("'probs'"), std::string::npos) << e;
-    EXPECT_NE(errorOf("volumes = 1\n").find("vols.toml:1: unknown key 'volumes'"),
+    EXPECT_NE(volumeFileErrorOf("volumes = 1\n").find("vols.toml:1: unknown key 'volumes'"),
               std::string::npos);
 }
 
 TEST(VolumeFile, ZeroProbesIsAnError) {
-    std::string e = errorOf("[[volume]]\nname = \"a\"\ncenter = [0,0,0]\nhalf_extents = [1,1,1]\n"
-                            "probes = [0, 4, 4]\n");
+    std::string e =
+        volumeFileErrorOf("[[volume]]\nname = \"a\"\ncenter = [0,0,0]\nhalf_extents = [1,1,1]\n"
+                          "probes = [0, 4, 4]\n");
     EXPECT_NE(e.find("vols.toml:5:"), std::string::npos) << e;
     EXPECT_NE(e.find("'probes'"), std::string::npos) << e;
-    EXPECT_NE(errorOf("[[volume]]\nname = \"a\"\ncenter = [0,0,0]\nhalf_extents = [1,1,1]\n"
-                      "probes = [2.5, 4, 4]\n")
-                  .find("integers"),
-              std::string::npos);
-    EXPECT_NE(errorOf("[[volume]]\nname = \"a\"\ncenter = [0,0,0]\nhalf_extents = [1,0,1]\n"
-                      "probes = [2, 4, 4]\n")
-                  .find("vols.toml:4:"),
-              std::string::npos);
+    EXPECT_NE(
+        volumeFileErrorOf("[[volume]]\nname = \"a\"\ncenter = [0,0,0]\nhalf_extents = [1,1,1]\n"
+                          "probes = [2.5, 4, 4]\n")
+            .find("integers"),
+        std::string::npos);
+    EXPECT_NE(
+        volumeFileErrorOf("[[volume]]\nname = \"a\"\ncenter = [0,0,0]\nhalf_extents = [1,0,1]\n"
+                          "probes = [2, 4, 4]\n")
+            .find("vols.toml:4:"),
+        std::string::npos);
 }
 
 TEST(VolumeFile, MissingKeyAndEmptyFile) {
-    std::string e = errorOf("\n[[volume]]\nname = \"a\"\ncenter = [0,0,0]\nprobes = [2,2,2]\n");
+    std::string e =
+        volumeFileErrorOf("\n[[volume]]\nname = \"a\"\ncenter = [0,0,0]\nprobes = [2,2,2]\n");
     EXPECT_NE(e.find("vols.toml:2:"), std::string::npos) << e;
     EXPECT_NE(e.find("missing key 'half_extents'"), std::string::npos) << e;
-    EXPECT_NE(errorOf("").find("no [[volume]]"), std::string::npos);
+    EXPECT_NE(volumeFileErrorOf("").find("no [[volume]]"), std::string::npos);
 }
 
 TEST(VolumeFile, ChildOutsideParentIsAnError) {
@@ -130,17 +135,18 @@ half_extents = [2, 1, 1]
 probes = [2, 2, 2]
 parent = "world"
 )";
-    std::string e = errorOf(toml);
+    std::string e = volumeFileErrorOf(toml);
     EXPECT_NE(e.find("vols.toml:11:"), std::string::npos) << e;
     EXPECT_NE(e.find("not inside its parent 'world'"), std::string::npos) << e;
-    std::string unknown = errorOf(toml.substr(0, toml.find("parent")) + "parent = \"wrld\"\n");
+    std::string unknown =
+        volumeFileErrorOf(toml.substr(0, toml.find("parent")) + "parent = \"wrld\"\n");
     EXPECT_NE(unknown.find("unknown volume 'wrld'"), std::string::npos) << unknown;
 }
 
 TEST(VolumeFile, DuplicateNamesAndCyclesAreErrors) {
     std::string one = "[[volume]]\nname = \"a\"\ncenter = [0,0,0]\nhalf_extents = [1,1,1]\n"
                       "probes = [2,2,2]\n";
-    EXPECT_NE(errorOf(one + one).find("duplicate volume name 'a'"), std::string::npos);
+    EXPECT_NE(volumeFileErrorOf(one + one).find("duplicate volume name 'a'"), std::string::npos);
     std::vector<ProbeVolume> loop(2);
     loop[0].name = "a";
     loop[0].parent = "b";

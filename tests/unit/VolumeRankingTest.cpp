@@ -20,7 +20,7 @@
 namespace pb::test {
 namespace {
 
-const scene::Scene& rooms() {
+const scene::Scene& volumeRankingRooms() {
     static const scene::Scene s = scene::makeBuiltinScene("rooms");
     return s;
 }
@@ -47,7 +47,7 @@ scene::View westWall() {
 
 probes::VolumeRanks rank(const probes::ProbeSet& set, const std::vector<scene::View>& views) {
     costmodel::RankingInputs in;
-    in.scene = &rooms();
+    in.scene = &volumeRankingRooms();
     in.probes = &set;
     in.views = views;
     in.viewsLabel = "test";
@@ -89,7 +89,7 @@ TEST(VolumeRanking, TheVolumeThatCoversTheViewOutranksTheOneOffScreen) {
 TEST(VolumeRanking, UniformLightingMakesAVisibleChildWorthNothing) {
     probes::ProbeSet set = roomsProbes();
     // The dark room's view sees the "unseen" child, but it is lit exactly like its parent.
-    const probes::VolumeRanks r = rank(set, {*rooms().findView("dark_room")});
+    const probes::VolumeRanks r = rank(set, {*volumeRankingRooms().findView("dark_room")});
     EXPECT_GT(r.volumes[1].pixels, 0);
     EXPECT_LT(r.volumes[1].loss, 1e-6);
 }
