@@ -16,7 +16,7 @@ using nlohmann::json;
 
 namespace {
 
-void writeText(const std::string& path, const std::string& text) {
+void writeSweepText(const std::string& path, const std::string& text) {
     writeFileAtomic(path, text.data(), text.size());
 }
 
@@ -55,9 +55,9 @@ void finishSweep(const std::string& outDir) {
         throw Error("sweep: job " + std::to_string(j) +
                     " has not finished cleanly; nothing merged (--resume runs it again)");
     const json merged = sweep::mergeSweep(*plan, outDir, mergeBakes(*plan, outDir));
-    writeText((fs::path(outDir) / kSweepJson).string(), merged.dump(2) + "\n");
-    writeText((fs::path(outDir) / kSweepHtml).string(), sweep::sweepHtml(merged));
-    writeText((fs::path(outDir) / kSweepMarkdown).string(), sweep::sweepMarkdown(merged));
+    writeSweepText((fs::path(outDir) / kSweepJson).string(), merged.dump(2) + "\n");
+    writeSweepText((fs::path(outDir) / kSweepHtml).string(), sweep::sweepHtml(merged));
+    writeSweepText((fs::path(outDir) / kSweepMarkdown).string(), sweep::sweepMarkdown(merged));
 }
 
 } // namespace pb::app

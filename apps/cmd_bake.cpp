@@ -628,7 +628,7 @@ void printSummary(const BakeArgs& a, const PlacementSummary& placement, const Pr
     if (!upToDate) std::cout << "wrote " << a.out << "\n";
 }
 
-int run(const BakeArgs& a) {
+int runBake(const BakeArgs& a) {
     CommandTimes times;
     if (a.out.empty() && a.writeVolumes.empty())
         throw Error("--out is required (the probe file to write), or --write-volumes alone to "
@@ -748,7 +748,7 @@ int run(const BakeArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{{
+const RegisterCommand registerBake{{
     "bake",
     "Bake DDGI probes (irradiance + visibility) for a scene with Embree into a probe file",
     30,
@@ -860,7 +860,7 @@ const RegisterCommand reg{{
                        "the file one bake writes, byte for byte (never a cache hit)");
         cmd.add_option("--part", a->part, "With --split: this part, I/N (0 <= I < N)");
         a->json.add(cmd, "The summary");
-        return [a] { return run(*a); };
+        return [a] { return runBake(*a); };
     },
 }};
 

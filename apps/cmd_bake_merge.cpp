@@ -16,7 +16,7 @@ struct BakeMergeArgs {
     std::string out;
 };
 
-int run(const BakeMergeArgs& a) {
+int runBakeMerge(const BakeMergeArgs& a) {
     std::vector<probes::ProbeFilePart> parts;
     for (const std::string& path : a.parts)
         parts.push_back(probes::readProbeFilePart(path));
@@ -30,7 +30,7 @@ int run(const BakeMergeArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{{
+const RegisterCommand registerBakeMerge{{
     "bake-merge",
     "Join the part files of a split bake (bake --split) into one probe file",
     31,
@@ -43,7 +43,7 @@ const RegisterCommand reg{{
                        "The probe file to write (identical to the one a single bake of the same "
                        "inputs writes)")
             ->required();
-        return [a] { return run(*a); };
+        return [a] { return runBakeMerge(*a); };
     },
 }};
 

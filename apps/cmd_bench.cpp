@@ -237,7 +237,7 @@ void writeOutputs(const BenchArgs& a, bench::BenchResult& r,
     }
 }
 
-int run(const BenchArgs& a) {
+int runBench(const BenchArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
     validate(a);
     if (const std::string inj = render::giDebugInjectionSummary(); !inj.empty())
@@ -339,7 +339,7 @@ int run(const BenchArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{
+const RegisterCommand registerBench{
     {"bench",
      "Benchmark platform profiles against the reference: per-pass times, accuracy, ablation, "
      "report",
@@ -422,7 +422,7 @@ const RegisterCommand reg{
                       "it as not run");
          return [a] {
              const StdoutToStderr textToStderr(a->json.toStdout());
-             return run(*a);
+             return runBench(*a);
          };
      }}};
 

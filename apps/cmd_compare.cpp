@@ -25,7 +25,7 @@ std::string size(const image::Image8& img) {
     return std::to_string(img.width) + "x" + std::to_string(img.height);
 }
 
-int run(const CompareArgs& a) {
+int runCompare(const CompareArgs& a) {
     const image::Image8 test = image::readPng(a.test);
     const image::Image8 reference = image::readPng(a.reference);
     if (test.width != reference.width || test.height != reference.height)
@@ -72,7 +72,7 @@ int run(const CompareArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{{
+const RegisterCommand registerCompare{{
     "compare",
     "Image error of a test PNG against a reference PNG: PSNR, SSIM, LDR-FLIP (+ heat map)",
     60,
@@ -90,7 +90,7 @@ const RegisterCommand reg{{
                        "Write the per-pixel FLIP error as a PNG heat map (black = no error, "
                        "pale yellow = 1)");
         a->json.add(cmd, "The metrics (psnr_db is null for identical images, see \"identical\")");
-        return [a] { return run(*a); };
+        return [a] { return runCompare(*a); };
     },
 }};
 

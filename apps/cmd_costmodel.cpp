@@ -34,7 +34,7 @@ struct CostArgs {
     bool worstCase = false;
 };
 
-std::string cameraSpec(const scene::View& v) {
+std::string costModelCameraSpec(const scene::View& v) {
     char buf[256];
     std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g", v.position.x, v.position.y,
                   v.position.z, v.target.x, v.target.y, v.target.z, v.fovYDegrees);
@@ -60,7 +60,7 @@ std::vector<costmodel::CacheConfig> chooseCaches(const CostArgs& a,
     return out; // empty: every preset
 }
 
-int run(CostArgs& a) {
+int runCostmodel(CostArgs& a) {
     const profile::PlatformProfile platformProfile = resolveProfile(a.profileArgs);
     if (!a.profileArgs.profile.empty()) { // the profile's resolution unless given
         if (a.widthOption->count() == 0) a.width = platformProfile.width;
@@ -102,7 +102,7 @@ int run(CostArgs& a) {
     costmodel::CostReport r = costmodel::runCostModel(tester, view, o);
     r.scene = s.name;
     r.view = view.name;
-    r.camera = cameraSpec(view);
+    r.camera = costModelCameraSpec(view);
     if (a.json)
         writeJson(a.json, costmodel::reportJson(r).dump(2) + "\n");
     else
@@ -110,7 +110,7 @@ int run(CostArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{
+const RegisterCommand registerCostmodel{
     {"costmodel",
      "Deterministic GI pass counters and a texture-cache model per shader variant (no GPU)", 47,
      [](CLI::App& cmd) {
@@ -153,7 +153,7 @@ const RegisterCommand reg{
                                           "Frame (GBuffer) height (default: the --profile's, "
                                           "else 720)");
          a->json.add(cmd, "The counters and the cache model");
-         return [a] { return run(*a); };
+         return [a] { return runCostmodel(*a); };
      }}};
 
 } // namespace

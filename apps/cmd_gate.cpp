@@ -48,7 +48,7 @@ struct GateArgs {
     GateSuiteArgs suite;
 };
 
-void progress(const std::string& line) {
+void gateProgress(const std::string& line) {
     std::fprintf(stderr, "gate: %s\n", line.c_str());
     std::fflush(stderr);
 }
@@ -82,7 +82,7 @@ GateProbes gateProbes(const GateArgs& a, const gate::GateSuite& s, const scene::
     const std::string cacheDir = a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir;
     GateProbes out;
     out.set = bench::benchProbes(scene, resolveSuiteVolumes(s.volumes), cacheDir, &out.file,
-                                 progress);
+                                 gateProgress);
     now.bake = probeIdentity(out.set, out.file);
     now.probes = now.bake;
     const std::string committed = gate::committedProbesPath(a.baseline);
@@ -98,7 +98,7 @@ GateProbes gateProbes(const GateArgs& a, const gate::GateSuite& s, const scene::
         fs::create_directories(cacheDir);
         writeFileAtomic(out.file, bytes.data(), bytes.size());
     }
-    progress("probe data: " + committed + " (committed with the baseline)");
+    gateProgress("probe data: " + committed + " (committed with the baseline)");
     out.set = probes::readProbeFile(out.file);
     now.probes = probeIdentity(out.set, out.file);
     return out;
@@ -123,7 +123,7 @@ std::vector<std::string> workerArgs(const std::string& binary, const gate::GateS
     return v;
 }
 
-void checkGl(gl::DebugOutput& debug, std::uint64_t mark, const std::string& what) {
+void gateCheckGl(gl::DebugOutput& debug, std::uint64_t mark, const std::string& what) {
     const auto errors = debug.errorsSince(mark);
     if (!errors.empty())
         throw Error(what + ": the GL reported " + std::to_string(errors.size()) +
@@ -142,7 +142,7 @@ std::vector<gate::GateRow> againstTiming(const GateArgs& a, const gate::GateSuit
         gate::checkWorkerHello(w->readLine(), w->label());
     std::vector<gate::GateRow> rows;
     for (const std::string& name : s.profiles) {
-        auto say = [&](const std::string& l) { progress("timing " + name + " against: " + l); };
+        auto say = [&](const std::string& l) { gateProgress("timing " + name + " against: " + l); };
         const gate::SequentialTiming t =
             gate::timeAgainst(basew, cand, name, s.timing, budget, say);
         for (const gate::TimedQuantity& q : t.quantities)
@@ -181,7 +181,7 @@ std::vector<gate::GateRow> ratioTiming(const GateArgs& a, gate::GateRecord& now,
             return std::vector<std::pair<double, double>>{{0.0, p.frameMs / r.frameMs}};
         };
         auto say = [&](const std::string& l) {
-            progress("timing " + rec.name + "/reference: " + l);
+            gateProgress("timing " + rec.name + "/reference: " + l);
         };
         if (!decide) say("recording " + std::to_string(budget) + " rounds");
         const gate::SequentialTiming t = gate::runSequential(
@@ -230,7 +230,7 @@ GateSetup setUpSuite(const GateArgs& a, gate::GateRecord& now) {
     GateSetup g{loadSceneWithOverrides(sceneArgs), {}, {}};
     g.probes = gateProbes(a, s, g.scene, now);
     if (s.camera.empty()) {
-        progress("searching the worst-case view (stored in the baseline)");
+        gateProgress("searching the worst-case view (stored in the baseline)");
         g.view = views::findWorstCaseView(g.scene, g.probes.set, 320,
                                           std::max(16, 320 * s.height / s.width))
                      .view;
@@ -252,19 +252,19 @@ std::vector<std::unique_ptr<gate::GateRenderer>> measureProfiles(const gate::Gat
     std::vector<std::unique_ptr<gate::GateRenderer>> renderers;
     ref = 0;
     for (size_t i = 0; i < s.profiles.size(); ++i) {
-        progress("counting " + s.profiles[i] + " (" + std::to_string(s.width) + "x" +
+        gateProgress("counting " + s.profiles[i] + " (" + std::to_string(s.width) + "x" +
                  std::to_string(s.height) + ")");
         const std::uint64_t mark = debug.mark();
         renderers.push_back(
             std::make_unique<gate::GateRenderer>(in, profile::loadProfile(s.profiles[i], search)));
         now.profiles.emplace_back();
         gate::measureCounters(*renderers.back(), in, scenes, now.profiles.back());
-        checkGl(debug, mark, "profile " + s.profiles[i]);
+        gateCheckGl(debug, mark, "profile " + s.profiles[i]);
         if (s.profiles[i] == s.reference) ref = i;
     }
     for (size_t i = 0; i < renderers.size(); ++i)
         if (i != ref) {
-            progress("accuracy of " + s.profiles[i] + " against " + s.reference);
+            gateProgress("accuracy of " + s.profiles[i] + " against " + s.reference);
             now.profiles[i].accuracy = gate::measureAccuracy(*renderers[i], *renderers[ref], in);
         }
     return renderers;
@@ -278,7 +278,7 @@ void callgrindStage(const GateArgs& a, const std::string& probesFile, const gl::
     const gate::GateSuite& s = now.suite;
     const fs::path dir =
         fs::temp_directory_path() / ("probebench-callgrind-" + std::to_string(::getpid()));
-    progress("callgrind: one frame per profile under valgrind, LP_NUM_THREADS=0 (minutes)");
+    gateProgress("callgrind: one frame per profile under valgrind, LP_NUM_THREADS=0 (minutes)");
     std::vector<std::string> argv = workerArgs(gate::selfExecutable(), s, probesFile, a);
     argv.push_back("--callgrind-profiles");
     std::string list;
@@ -315,7 +315,7 @@ void updateBaseline(const GateArgs& a, const std::optional<gate::GateRecord>& ba
               << " (review `git diff` of it and commit it with the change that explains it)\n";
 }
 
-int run(GateArgs& a) {
+int runGate(GateArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
     if (a.keepProbes && !a.update)
         throw Error("--keep-probes: only with --update (the gate always measures with the "
@@ -388,7 +388,7 @@ int run(GateArgs& a) {
     return outcome.exitCode();
 }
 
-const RegisterCommand reg{
+const RegisterCommand registerGate{
     {"gate",
      "CI regression gate: exact counters, accuracy, timing (Pinpoint-style) against a baseline", 55,
      [](CLI::App& cmd) {
@@ -425,7 +425,7 @@ const RegisterCommand reg{
                     "instruction-count or model-vs-GL failure, 4 timing regressions only.");
          return [a] {
              const StdoutToStderr textToStderr(a->json.toStdout());
-             return run(*a);
+             return runGate(*a);
          };
      }}};
 

@@ -55,7 +55,7 @@ int serve(const WorkerArgs& a) {
 }
 
 // Protocol mode reports a failed start on stdout too, so the gate names the real problem.
-int run(const WorkerArgs& a) {
+int runGateWorker(const WorkerArgs& a) {
     if (!a.callgrindProfiles.empty()) return serve(a);
     try {
         return serve(a);
@@ -65,7 +65,7 @@ int run(const WorkerArgs& a) {
     }
 }
 
-const RegisterCommand reg{
+const RegisterCommand registerGateWorker{
     {"gate-worker", "Internal: the timing and callgrind worker of `probebench gate`", 1000,
      [](CLI::App& cmd) {
          cmd.group(""); // hidden from `probebench --help`
@@ -85,7 +85,7 @@ const RegisterCommand reg{
          cmd.add_flag("--callgrind-floor", a->callgrindFloor,
                       "With --callgrind-profiles: also dump the GI fetch floor and print the GI "
                       "pass's evaluations (bench/gi_floor_callgrind.sh)");
-         return [a] { return run(*a); };
+         return [a] { return runGateWorker(*a); };
      }}};
 
 } // namespace

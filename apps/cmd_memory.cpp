@@ -61,7 +61,7 @@ int runSh(const MemoryArgs& a, int coefficients) {
     return 0;
 }
 
-int run(const MemoryArgs& a) {
+int runMemory(const MemoryArgs& a) {
     if (a.probes.empty() == a.grid.empty())
         throw Error("give exactly one of --probes FILE or --grid NXxNYxNZ");
     if (a.technique == "sh_l1") return runSh(a, kShL1Coefficients);
@@ -88,7 +88,7 @@ int run(const MemoryArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{{
+const RegisterCommand registerMemory{{
     "memory",
     "Probe memory per volume and in total, uncompressed and BC6H",
     50,
@@ -100,7 +100,7 @@ const RegisterCommand reg{{
                        "gi.technique to count: ddgi (default; octahedral textures) or sh_l1 / "
                        "sh_l2 (SH 3D textures)");
         a->json.add(cmd, "The memory report");
-        return [a] { return run(*a); };
+        return [a] { return runMemory(*a); };
     },
 }};
 

@@ -79,7 +79,7 @@ LookupFound lookupFound(const ProbeSet& set, const ProbeSampler& sampler,
     return f;
 }
 
-int run(const ProbeArgs& a) {
+int runProbe(const ProbeArgs& a) {
     glm::vec3 at = parseVec3(a.at, "--at", false);
     glm::vec3 normal = glm::normalize(parseVec3(a.normal, "--normal", true));
     glm::vec3 view =
@@ -140,7 +140,7 @@ int run(const ProbeArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{{
+const RegisterCommand registerProbe{{
     "probe",
     "Irradiance from a probe file at one point (the CPU reference sampler)",
     40,
@@ -156,7 +156,7 @@ const RegisterCommand reg{{
                        "(default: the normal)");
         cmd.add_option("--scenario", a->scenario, "Lighting scenario (default: the first)");
         a->json.add(cmd, "The sample");
-        return [a] { return run(*a); };
+        return [a] { return runProbe(*a); };
     },
 }};
 

@@ -18,7 +18,7 @@ struct ProfilesArgs {
     std::string show;
 };
 
-int run(const ProfilesArgs& a) {
+int runProfiles(const ProfilesArgs& a) {
     const profile::ProfileSearch search = profileSearch();
     if (!a.show.empty()) {
         profile::PlatformProfile p = profile::loadProfile(a.show, search);
@@ -70,7 +70,7 @@ int run(const ProfilesArgs& a) {
     return failed ? 1 : 0;
 }
 
-const RegisterCommand reg{
+const RegisterCommand registerProfiles{
     {"profiles", "List the platform profiles (profiles/*.toml) with a one-line summary", 15,
      [](CLI::App& cmd) {
          auto a = std::make_shared<ProfilesArgs>();
@@ -78,7 +78,7 @@ const RegisterCommand reg{
          cmd.add_option("--show", a->show,
                         "Print one profile (NAME or .toml file) with inheritance applied, as a "
                         "complete TOML file");
-         return [a] { return run(*a); };
+         return [a] { return runProfiles(*a); };
      }}};
 
 } // namespace

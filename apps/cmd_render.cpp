@@ -80,7 +80,7 @@ void checkOutputs(const RenderArgs& a) {
     if (!a.dumpDir.empty()) checkOutputFolder("--dump-gbuffer", a.dumpDir, a.mkdir);
 }
 
-scene::View chooseView(const scene::Scene& s, const RenderArgs& a) {
+scene::View chooseRenderView(const scene::Scene& s, const RenderArgs& a) {
     return app::chooseView(s, a.view, a.camera); // SceneOptions: one message, with "did you mean"
 }
 
@@ -261,7 +261,7 @@ void printFrameReport(std::ostream& info, const RenderArgs& a,
     }
 }
 
-int run(RenderArgs& a) {
+int runRender(RenderArgs& a) {
     const profile::PlatformProfile platformProfile = resolveProfile(a.profileArgs);
     const profile::Profile& prof = platformProfile.switches;
     if (a.listSwitches) {
@@ -271,7 +271,7 @@ int run(RenderArgs& a) {
     const render::GiDebugView debugView = checkArgs(a, platformProfile);
     const bool coverage = debugView == render::GiDebugView::VolumeCoverage;
     scene::Scene s = loadSceneWithOverrides(a.scene);
-    scene::View view = chooseView(s, a);
+    scene::View view = chooseRenderView(s, a);
     probes::ProbeSet probeSet;
     render::GiOptions gi;
     if (!a.probes.empty()) {
@@ -319,7 +319,7 @@ int run(RenderArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{
+const RegisterCommand registerRender{
     {"render", "Render a scene to an image (or a window with --platform glfw)", 20,
      [](CLI::App& cmd) {
          auto a = std::make_shared<RenderArgs>();
@@ -368,7 +368,7 @@ const RegisterCommand reg{
                       "pass or resource the frame skipped, with why");
          a->json.add(cmd, "The frame's report (counts pixels like --verbose; the human lines go to "
                             "stderr)");
-         return [a] { return run(*a); };
+         return [a] { return runRender(*a); };
      }}};
 
 } // namespace

@@ -37,7 +37,7 @@ struct RespondArgs {
     JsonOption json;
 };
 
-void progress(const std::string& line) {
+void respondProgress(const std::string& line) {
     std::cerr << "respond: " << line << "\n";
 }
 
@@ -55,7 +55,7 @@ int go(RespondArgs& a) {
     probes::ProbeSet set = readProbesForScene(a.probes, scene, a.force);
     a.run.probesName = a.probes;
     a.run.keepFrames = !a.outDir.empty();
-    RespondRun run(std::move(scene), std::move(set), a.run, progress);
+    RespondRun run(std::move(scene), std::move(set), a.run, respondProgress);
 
     auto platform = platform::createPlatform([&] {
         auto p = a.platform;
@@ -83,7 +83,7 @@ int go(RespondArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{
+const RegisterCommand registerRespond{
     {"respond", "Measure how fast probe updates follow a scene change, per update schedule", 60,
      [](CLI::App& cmd) {
          auto a = std::make_shared<RespondArgs>();

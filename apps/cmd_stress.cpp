@@ -68,7 +68,7 @@ stress::RunGuards parseGuards(const std::string& s) {
     throw Error("--guards '" + s + "': allowed values: as_given, off, both");
 }
 
-void validate(const StressArgs& a) {
+void validateStress(const StressArgs& a) {
     if (a.width < 1 || a.height < 1 || a.width > 4096 || a.height > 4096)
         throw Error("--width/--height must be in 1..4096");
     if (a.maxResolution < 1 || a.maxResolution > 16384)
@@ -78,8 +78,8 @@ void validate(const StressArgs& a) {
         throw Error("--threshold must be a positive number");
 }
 
-int run(const StressArgs& a) {
-    validate(a);
+int runStress(const StressArgs& a) {
+    validateStress(a);
     const stress::RunGuards guards = parseGuards(a.guards);
     const std::vector<stress::StressVariant> variants = resolveVariants(a);
     stress::CaseOptions co;
@@ -144,7 +144,7 @@ int run(const StressArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{
+const RegisterCommand registerStress{
     {"stress",
      "Sweep numerical extremes per variant: NaN/Inf, error vs fp32, the switch that breaks, the "
      "guard that fixes",
@@ -188,7 +188,7 @@ const RegisterCommand reg{
                         "Folder for the tonemapped frames: each case's reference and runs");
          return [a] {
              const StdoutToStderr textToStderr(a->json.toStdout());
-             return run(*a);
+             return runStress(*a);
          };
      }}};
 

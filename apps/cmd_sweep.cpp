@@ -85,7 +85,7 @@ std::string failureReport(const sweep::PlanState& plan, const std::string& dir) 
     return s.str();
 }
 
-int run(const SweepArgs& a) {
+int runSweep(const SweepArgs& a) {
     if (a.engine != "local" && a.engine != "slurm")
         throw Error("--engine: expected local or slurm (got '" + a.engine + "')");
     if (a.maxParallel < 0) throw Error("--max-parallel: must be 1 or more");
@@ -143,7 +143,7 @@ int run(const SweepArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{{
+const RegisterCommand registerSweep{{
     "sweep",
     "Run a sweep plan's jobs here or as a Slurm job array, merged into one result",
     85,
@@ -175,7 +175,7 @@ const RegisterCommand reg{{
                        "on a filesystem the nodes share)");
         cmd.add_option("--poll-seconds", a->pollSeconds, "How often squeue is asked (slurm)")
             ->capture_default_str();
-        return [a] { return run(*a); };
+        return [a] { return runSweep(*a); };
     },
 }};
 

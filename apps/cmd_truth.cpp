@@ -30,9 +30,9 @@ struct TruthArgs {
 };
 
 // A percentage on a terminal (rewritten in place), a line per 10% otherwise (logs, CI).
-class Progress {
+class TruthProgress {
 public:
-    Progress() : tty_(::isatty(::fileno(stderr)) != 0) {}
+    TruthProgress() : tty_(::isatty(::fileno(stderr)) != 0) {}
     void operator()(int done, int total) {
         int pct = total > 0 ? int(100.0 * done / total) : 100;
         if (tty_) {
@@ -52,7 +52,7 @@ private:
     int last_ = -1;
 };
 
-void ensureParent(const std::string& path, const std::string& option) {
+void truthEnsureParent(const std::string& path, const std::string& option) {
     auto parent = std::filesystem::path(path).parent_path();
     if (parent.empty()) return;
     std::error_code ec;
@@ -95,14 +95,14 @@ nlohmann::json toJson(const TruthArgs& a, const scene::Scene& s, const scene::Vi
             {"note", orNull(r.note)}};
 }
 
-int run(TruthArgs& a) {
+int runTruth(TruthArgs& a) {
     if (a.settings.spp < 1)
         throw Error("--spp: must be at least 1 (got " + std::to_string(a.settings.spp) + ")");
     if (!(a.exposure >= 0.0f) || !std::isfinite(a.exposure)) throw Error("--exposure: must be > 0");
     const bool jsonToStdout = a.jsonOption && a.jsonOption->count() > 0 && (a.json.empty() || a.json == "-");
     for (const auto& [path, opt] : {std::pair{a.outHdr, "--out-hdr"}, {a.out, "--out"},
                                     {jsonToStdout ? std::string() : a.json, "--json"}})
-        if (!path.empty()) ensureParent(path, opt);
+        if (!path.empty()) truthEnsureParent(path, opt);
 
     scene::Scene s = loadSceneWithOverrides(a.scene);
     const scene::View view = chooseView(s, a.view, a.camera);
@@ -116,7 +116,7 @@ int run(TruthArgs& a) {
     if (cached) {
         result = std::move(*cached);
     } else {
-        Progress progress;
+        TruthProgress progress;
         result = truth::renderTruth(s, view, a.settings, [&](int d, int t) { progress(d, t); });
         progress.done();
         if (!a.noCache) truth::storeCachedTruth(cacheDir, hash, result);
@@ -157,7 +157,7 @@ int run(TruthArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{Command{
+const RegisterCommand registerTruth{Command{
     "truth", "Path-traced ground truth of a view (Embree): the renderer's accuracy target", 55,
     [](CLI::App& cmd) -> std::function<int()> {
         auto a = std::make_shared<TruthArgs>();
@@ -190,7 +190,7 @@ const RegisterCommand reg{Command{
                             ->expected(0, 1);
         cmd.add_option("--cache-dir", a->cacheDir, "Cache folder (default: the probe cache, ~/.cache/probebench)");
         cmd.add_flag("--no-cache", a->noCache, "Neither read nor write the cache");
-        return [a] { return run(*a); };
+        return [a] { return runTruth(*a); };
     },
 }};
 

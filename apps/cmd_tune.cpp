@@ -56,12 +56,12 @@ struct TuneArgs {
     int truthSpp = 64;
 };
 
-void progress(const std::string& line) {
+void tuneProgress(const std::string& line) {
     std::fprintf(stderr, "tune: %s\n", line.c_str());
     std::fflush(stderr);
 }
 
-void validate(const TuneArgs& a) {
+void validateTune(const TuneArgs& a) {
     if (a.truthSpp < 1) throw Error("--truth-spp must be at least 1");
     if (!(a.budgetMs > 0 && a.budgetMs <= 1000)) throw Error("--budget-ms must be in (0, 1000]");
     if (!(a.budgetMiB > 0 && a.budgetMiB <= 65536))
@@ -154,7 +154,7 @@ private:
         } else {
             const int h = std::min(height_, 180);
             const int w = std::max(16, int(double(width_) * h / height_ + 0.5));
-            progress("searching the worst-case view (every pixel needs GI) at " +
+            tuneProgress("searching the worst-case view (every pixel needs GI) at " +
                      std::to_string(w) + "x" + std::to_string(h));
             view_ = views::findWorstCaseView(scene_, set_, w, h).view;
         }
@@ -165,7 +165,7 @@ private:
             session.height = height_;
             one.sessions.push_back(session);
             const std::string dir = a_.cacheDir.empty() ? bench::defaultProbeCacheDir() : a_.cacheDir;
-            truth_ = bench::computeBenchTruth(scene_, view_, one, {a_.truthSpp, 32, dir, progress},
+            truth_ = bench::computeBenchTruth(scene_, view_, one, {a_.truthSpp, 32, dir, tuneProgress},
                                               &truthInfo_);
         }
         platform_ = platform::createPlatform(timingPlatform(a_.platform));
@@ -178,9 +178,9 @@ private:
         options_.es = caps.es;
         options_.fetchFloor = false;
         options_.pixelsPerDegree = a_.ppd;
-        options_.progress = [](const std::string& line) { progress("  " + line); };
+        options_.progress = [](const std::string& line) { tuneProgress("  " + line); };
         context_ = bench::benchContext(*platform_, caps);
-        progress("timing " + options_.timing.name + " on " + caps.renderer + ", " +
+        tuneProgress("timing " + options_.timing.name + " on " + caps.renderer + ", " +
                  std::to_string(width_) + "x" + std::to_string(height_) + ", " +
                  std::to_string(a_.rounds) + " round(s) x " + std::to_string(a_.frames) +
                  " frame(s) per candidate");
@@ -207,7 +207,7 @@ probes::ProbeSet tuneProbes(const TuneArgs& a, const scene::Scene& s, std::strin
     }
     probes::ProbeSet set = bench::benchProbes(
         s, a.volumes, a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir, &path,
-        progress);
+        tuneProgress);
     probes::attachVolumeRanks(set, path);
     return set;
 }
@@ -231,8 +231,8 @@ void printComparison(const bench::TuneCandidate& found, const bench::TuneMeasure
                                  : "warning: FLIP or memory differ from the search's");
 }
 
-int run(const TuneArgs& a) {
-    validate(a);
+int runTune(const TuneArgs& a) {
+    validateTune(a);
     const profile::ProfileSearch search = profileSearch();
     profile::PlatformProfile base = profile::loadProfile(a.base, search);
     for (const std::string& kv : a.sets)
@@ -265,7 +265,7 @@ int run(const TuneArgs& a) {
     o.budgetMiB = a.budgetMiB;
     o.maxExhaustive = a.maxExhaustive;
     o.maxPasses = a.maxPasses;
-    o.progress = progress;
+    o.progress = tuneProgress;
     const bench::TuneResult r = bench::runTune(space, memory, measure, o);
     if (r.chosen < 0) throw Error("tune: " + bench::nothingFitsMessage(r, o));
     const bench::TuneCandidate& best = r.candidates[size_t(r.chosen)];
@@ -333,7 +333,7 @@ int run(const TuneArgs& a) {
     std::printf("chosen: %s: %.2f ms (budget %g), %.3f MiB (budget %g), FLIP %.4f\n",
                 best.label.c_str(), best.m.frameMs, a.budgetMs, best.memoryMiB, a.budgetMiB,
                 best.m.flip);
-    progress("re-measuring " + a.out);
+    tuneProgress("re-measuring " + a.out);
     const bench::TuneMeasurement again = measurer({loaded.switches}).front();
     if (!again.ok) throw Error(a.out + ": the written profile did not run: " + again.error);
     printComparison(best, again, memory(loaded.switches), a.out);
@@ -372,7 +372,7 @@ int run(const TuneArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{
+const RegisterCommand registerTune{
     {"tune",
      "Search the switches for the most accurate configuration within a frame-time and a GI "
      "memory budget on this device; write it as a profile",
@@ -442,7 +442,7 @@ const RegisterCommand reg{
          a->json.add(cmd, "The whole search");
          return [a] {
              const StdoutToStderr textToStderr(a->json.toStdout());
-             return run(*a);
+             return runTune(*a);
          };
      }}};
 

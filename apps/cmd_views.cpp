@@ -35,7 +35,7 @@ struct ViewsArgs {
 };
 
 // The --camera form of a view, so a found camera can be pasted into render/bench.
-std::string cameraSpec(const scene::View& v) {
+std::string viewsCameraSpec(const scene::View& v) {
     char buf[256];
     std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g", v.position.x, v.position.y,
                   v.position.z, v.target.x, v.target.y, v.target.z, v.fovYDegrees);
@@ -44,7 +44,7 @@ std::string cameraSpec(const scene::View& v) {
 
 nlohmann::json viewJson(const scene::View& v, const views::Coverage& c) {
     return {{"name", v.name},
-            {"camera", cameraSpec(v)},
+            {"camera", viewsCameraSpec(v)},
             {"coverage",
              {{"fraction", c.fraction},
               {"max_overlap", c.maxOverlap},
@@ -60,7 +60,7 @@ void printRow(const std::string& name, const views::Coverage& c) {
                 c.meanOverlap, c.meanDistance);
 }
 
-int run(ViewsArgs& a) {
+int runViews(ViewsArgs& a) {
     const profile::PlatformProfile platformProfile = resolveProfile(a.profileArgs);
     const profile::Profile& prof = platformProfile.switches;
     if (!a.profileArgs.profile.empty()) { // the profile's resolution unless given
@@ -108,7 +108,7 @@ int run(ViewsArgs& a) {
             std::printf("  %-20s %9s %12s %13s %14s\n", "view", "needs GI", "max overlap",
                         "mean overlap", "mean distance");
             printRow(wc.view.name, wc.coverage);
-            std::printf("  --camera %s\n", cameraSpec(wc.view).c_str());
+            std::printf("  --camera %s\n", viewsCameraSpec(wc.view).c_str());
             if (wc.coverage.fraction < 1.0)
                 std::printf("  note: %.2f%% of the pixels need no GI (sky or outside every "
                             "volume): no camera found with full coverage\n",
@@ -142,7 +142,7 @@ int run(ViewsArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{
+const RegisterCommand registerViews{
     {"views", "Fraction of a view's pixels that need GI; find the worst-case view", 45,
      [](CLI::App& cmd) {
          auto a = std::make_shared<ViewsArgs>();
@@ -166,7 +166,7 @@ const RegisterCommand reg{
          cmd.add_option("--min-coverage", a->minCoverage,
                         "Exit 1 when a reported coverage is below this fraction (e.g. 1.0)");
          a->json.add(cmd, "The views");
-         return [a] { return run(*a); };
+         return [a] { return runViews(*a); };
      }}};
 
 } // namespace

@@ -34,7 +34,7 @@ double mib(std::uint64_t bytes) {
     return double(bytes) / (1024.0 * 1024.0);
 }
 
-int scenarioIndex(const probes::ProbeSet& set, const std::string& name) {
+int volumesScenarioIndex(const probes::ProbeSet& set, const std::string& name) {
     if (name.empty()) return 0;
     if (int i = set.findScenario(name); i >= 0) return i;
     throw Error("--scenario: '" + name + "' is not in the probe file");
@@ -106,7 +106,7 @@ void printRanking(const probes::ProbeSet& set, const probes::VolumeRanks& r,
                     mib(s.keptBytes));
 }
 
-int run(const VolumesArgs& a) {
+int runVolumes(const VolumesArgs& a) {
     if (a.width < 16 || a.height < 16 || a.width > 4096 || a.height > 4096)
         throw Error("--width/--height must be in 16..4096");
     if (!a.rank && (a.writeRanks || a.views != "worst-case"))
@@ -136,7 +136,7 @@ int run(const VolumesArgs& a) {
     costmodel::RankingInputs in;
     in.scene = &s;
     in.probes = &set;
-    in.scenario = scenarioIndex(set, a.scenario);
+    in.scenario = volumesScenarioIndex(set, a.scenario);
     in.views = chooseViews(a, s, set);
     in.viewsLabel = a.views;
     in.width = a.width;
@@ -166,7 +166,7 @@ int run(const VolumesArgs& a) {
     return 0;
 }
 
-const RegisterCommand reg{
+const RegisterCommand registerVolumes{
     {"volumes",
      "List a probe file's volumes; --rank: the accuracy each costs when omitted vs its memory", 55,
      [](CLI::App& cmd) {
@@ -192,7 +192,7 @@ const RegisterCommand reg{
                       "--rank: store the ranking as FILE.ranks.json next to the probe file, for "
                       "gi.volume_lod=rank_budget_mib:MIB");
          a->json.add(cmd, "The volumes (and ranks)");
-         return [a] { return run(*a); };
+         return [a] { return runVolumes(*a); };
      }}};
 
 } // namespace

@@ -157,3 +157,5 @@ CallgrindRecord runCallgrind(const std::vector<std::string>& workerArgv,
 }
 
 } // namespace pb::gate
+
+#undef PB_HAVE_CALLGRIND // this file's own (a unity build would carry it on)

@@ -133,3 +133,5 @@ void GlCallCounter::end(const char*) {
 }
 
 } // namespace pb::gate
+
+#undef PB_COUNTED_GL_CALLS // this file's own (a unity build would carry it on)
