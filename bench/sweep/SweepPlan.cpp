@@ -83,12 +83,6 @@ void checkResolution(const Parser& P, const toml::table& t, const std::string& w
                what + ": resolution '" + r + "' must be WxH, e.g. 64x36");
 }
 
-std::string pad4(std::size_t i) {
-    char b[16];
-    std::snprintf(b, sizeof b, "%04zu", i);
-    return b;
-}
-
 // A scene name or path as a file-name part: its stem, letters, digits, '-' and '_' only.
 std::string fileStem(const std::string& scene) {
     std::string stem = std::filesystem::path(scene).stem().string(), out;
@@ -183,7 +177,8 @@ std::vector<SweepJob> expandSweepPlan(const SweepPlan& plan, const std::string& 
                         for (int r = 0; r < b.repeat; ++r) {
                             const std::string w = res.substr(0, res.find('x')),
                                               h = res.substr(res.find('x') + 1);
-                            const std::string output = "jobs/" + pad4(jobs.size()) + ".json";
+                            const std::string output =
+                                "jobs/" + jobNumberText(jobs.size()) + ".json";
                             std::vector<std::string> args{"bench",   "--scene",  scene,
                                                           "--profile", profile, "--width",
                                                           w,         "--height", h};
@@ -214,7 +209,7 @@ std::vector<SweepJob> expandSweepPlan(const SweepPlan& plan, const std::string& 
     for (const BakeAxes& b : plan.bake)
         for (const std::string& scene : b.scenes) {
             const int parts = b.parts > 0 ? b.parts : int(b.scenarios.size());
-            const std::string stem = "bakes/" + pad4(jobs.size()) + "-" + fileStem(scene);
+            const std::string stem = "bakes/" + jobNumberText(jobs.size()) + "-" + fileStem(scene);
             for (int p = 0; p < parts; ++p) {
                 const std::string part = std::to_string(p) + "/" + std::to_string(parts);
                 const std::string output = stem + ".part" + std::to_string(p) + ".pbpart";
@@ -237,7 +232,7 @@ std::vector<SweepJob> expandSweepPlan(const SweepPlan& plan, const std::string& 
             }
         }
     for (const CommandJob& c : plan.commands) {
-        const std::string output = "jobs/" + pad4(jobs.size()) + ".json";
+        const std::string output = "jobs/" + jobNumberText(jobs.size()) + ".json";
         std::vector<std::string> args = c.args;
         args.push_back(c.outputOption);
         args.push_back(out + "/" + output);
@@ -259,6 +254,12 @@ std::vector<BakeGroup> bakeGroups(const std::vector<SweepJob>& jobs) {
         groups.back().jobs.push_back(j.index);
     }
     return groups;
+}
+
+std::string jobNumberText(std::size_t job) {
+    char b[24];
+    std::snprintf(b, sizeof b, "%04zu", job);
+    return b;
 }
 
 std::string planId(const std::vector<SweepJob>& jobs) {

@@ -72,6 +72,10 @@ SweepPlan parseSweepPlan(const std::string& text, const std::string& path);
 std::vector<SweepJob> expandSweepPlan(const SweepPlan& plan, const std::string& path);
 std::vector<BakeGroup> bakeGroups(const std::vector<SweepJob>& jobs);
 
+// A job's number as the sweep folder's file names spell it: 4 digits at least ("0007"), in
+// jobs/, bakes/, status/ and logs/ alike.
+std::string jobNumberText(std::size_t job);
+
 // FNV-1a of the jobs' kinds, arguments and outputs, as 16 hex digits.
 std::string planId(const std::vector<SweepJob>& jobs);
 

@@ -13,12 +13,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string jobNumber(std::size_t i) {
-    char b[16];
-    std::snprintf(b, sizeof b, "%04zu", i);
-    return b;
-}
-
 void writeJson(const std::string& path, const nlohmann::json& j) {
     fs::create_directories(fs::path(path).parent_path());
     const std::string text = j.dump(2) + "\n";
@@ -38,10 +32,10 @@ std::string planStatePath(const std::string& outDir) {
     return (fs::path(outDir) / "sweep-plan.json").string();
 }
 std::string statusPath(const std::string& outDir, std::size_t job) {
-    return (fs::path(outDir) / "status" / (jobNumber(job) + ".json")).string();
+    return (fs::path(outDir) / "status" / (jobNumberText(job) + ".json")).string();
 }
 std::string logPath(const std::string& outDir, std::size_t job, const char* stream) {
-    return (fs::path(outDir) / "logs" / (jobNumber(job) + "." + stream)).string();
+    return (fs::path(outDir) / "logs" / (jobNumberText(job) + "." + stream)).string();
 }
 
 void writePlanState(const std::string& outDir, const PlanState& s) {

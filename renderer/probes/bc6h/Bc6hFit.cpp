@@ -6,8 +6,6 @@
 namespace pb::probes::bc6h {
 namespace {
 
-constexpr float kMaxInterp = 65535.0f;
-
 int subsetOf(int partition, int regions, int texel) {
     return regions == 2 ? (kPartitions[partition] >> texel) & 1 : 0;
 }

@@ -15,6 +15,9 @@
 
 namespace pb::probes::bc6h {
 
+// The top of the 16-bit interpolation domain: fitted endpoints are clamped to [0, kMaxInterp].
+constexpr float kMaxInterp = 65535.0f;
+
 // One 4x4 block prepared for fitting.
 struct BlockTarget {
     float h[16][3]; // source as continuous half-float bit patterns (the error space)

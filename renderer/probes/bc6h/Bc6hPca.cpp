@@ -10,8 +10,6 @@
 namespace pb::probes::bc6h {
 namespace {
 
-constexpr float kPcaMaxInterp = 65535.0f;
-
 // Largest eigenvalue of a symmetric positive semi-definite 3x3 matrix: Newton's method on
 // the characteristic polynomial started at the trace, which lies above it; the polynomial is
 // convex there, so the iteration descends monotonically onto the largest root. In double: the
@@ -126,8 +124,8 @@ void fitSubset(const BlockTarget& t, std::uint16_t mask, int anchor, int subset,
     }
     if (anchorT - lo > hi - anchorT) std::swap(lo, hi);
     for (int c = 0; c < 3; ++c) {
-        out.e[2 * subset][c] = std::clamp(s.mean[c] + lo * axis[c], 0.0f, kPcaMaxInterp);
-        out.e[2 * subset + 1][c] = std::clamp(s.mean[c] + hi * axis[c], 0.0f, kPcaMaxInterp);
+        out.e[2 * subset][c] = std::clamp(s.mean[c] + lo * axis[c], 0.0f, kMaxInterp);
+        out.e[2 * subset + 1][c] = std::clamp(s.mean[c] + hi * axis[c], 0.0f, kMaxInterp);
     }
 }
 
