@@ -29,8 +29,6 @@ using namespace pb::test;
 
 namespace {
 
-constexpr int kTexels = kIrradianceInterior * kIrradianceInterior;
-
 EmissiveTriangle tri(glm::vec3 a, glm::vec3 b, glm::vec3 c, float le, bool twoSided = false) {
     return {a, b, c, glm::normalize(glm::cross(b - a, c - a)), glm::vec3(le), twoSided, 0.0f, 0, 0};
 }
@@ -76,7 +74,7 @@ std::vector<float> probeTexels(const RayScene& rs, const scene::Scene& s, int ra
     RayCounters counters;
     slab.trace(0, rs, sc, s.lights, glm::mat3(1.0f), glm::vec3(0.0f), dirs, nullptr, counters,
                {emitterSamples, stream ^ 0x9e37ull}, 0);
-    std::vector<float> out(kTexels * 3);
+    std::vector<float> out(kIrradianceInteriorTexels * 3);
     slab.convolve(0, ProbeConvolution(dirs), out.data());
     return out;
 }
@@ -146,14 +144,14 @@ TEST(EmitterSampling, AProbeUnderAPanelMatchesTheQuadratureWithoutBias) {
     ASSERT_GT(top, 1.0f);
     // Per texel facing the panel: the error of one probe, and the mean of 24 independent ones.
     double errNee = 0.0, errRays = 0.0;
-    std::vector<double> meanNee(kTexels, 0.0);
+    std::vector<double> meanNee(kIrradianceInteriorTexels, 0.0);
     const int trials = 24;
     int counted = 0;
     for (int trial = 0; trial < trials; ++trial) {
         const std::uint64_t stream = 1000 + std::uint64_t(trial);
         const std::vector<float> nee = probeTexels(rs, s, 256, 512, stream);
         const std::vector<float> rays = probeTexels(rs, s, 256, 0, stream);
-        for (int t = 0; t < kTexels; ++t) {
+        for (int t = 0; t < kIrradianceInteriorTexels; ++t) {
             const glm::vec3 n = octTexelDirection(t % kIrradianceInterior, t / kIrradianceInterior,
                                                   kIrradianceInterior);
             const float ref = panelIrradiance(le, n);
@@ -169,7 +167,7 @@ TEST(EmitterSampling, AProbeUnderAPanelMatchesTheQuadratureWithoutBias) {
     errRays /= counted * trials;
     EXPECT_LT(errNee, 0.03) << "one probe with emitter samples is within a few percent";
     EXPECT_LT(errNee * 4, errRays) << "and far closer than its rays alone (" << errRays << ")";
-    for (int t = 0; t < kTexels; ++t) {
+    for (int t = 0; t < kIrradianceInteriorTexels; ++t) {
         const glm::vec3 n = octTexelDirection(t % kIrradianceInterior, t / kIrradianceInterior,
                                               kIrradianceInterior);
         const float ref = panelIrradiance(le, n);

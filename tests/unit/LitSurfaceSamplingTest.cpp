@@ -28,7 +28,6 @@ using namespace pb::test;
 
 namespace {
 
-constexpr int kLitSurfaceSamplingTexels = kIrradianceInterior * kIrradianceInterior;
 constexpr float kLitSurfaceSamplingHalf = 0.25f, kBelow = 1.0f, kAlbedo = 0.8f;
 
 Scenario sunFromAbove(float intensity) {
@@ -91,7 +90,7 @@ std::vector<float> litSurfaceSamplingProbeTexels(const RayScene& rs, const scene
     RayCounters counters;
     slab.trace(0, rs, sc, s.lights, glm::mat3(1.0f), glm::vec3(0.0f), dirs, nullptr, counters,
                {0, stream ^ 0x9e37ull, litSamples, &lit}, 0);
-    std::vector<float> out(kLitSurfaceSamplingTexels * 3);
+    std::vector<float> out(kIrradianceInteriorTexels * 3);
     slab.convolve(0, ProbeConvolution(dirs), out.data());
     return out;
 }
@@ -205,7 +204,7 @@ TEST(LitSurfaces, AProbeAboveASmallSunlitSquareConvergesWithoutBias) {
     // sixteenth of the single-round error (what averaging alone gives: 1 / sqrt(256)), give or
     // take the noise of that figure.
     const int rounds = 256;
-    std::vector<double> mean(kLitSurfaceSamplingTexels * 3, 0.0);
+    std::vector<double> mean(kIrradianceInteriorTexels * 3, 0.0);
     for (int r = 0; r < rounds; ++r) {
         const std::vector<float> t =
             litSurfaceSamplingProbeTexels(rs, s, sc, lit, 64, 64, 100 + std::uint64_t(r));

@@ -21,16 +21,15 @@ using namespace pb::respond;
 
 namespace {
 
-constexpr int kProbeUpdateTexels = probes::kIrradianceInterior * probes::kIrradianceInterior;
-
 // Blends `updates` samples of a constant `input` into `start`, texel 0's red channel returned
 // after each update.
 std::vector<float> blendConstant(Schedule s, float start, float input, int updates,
                                  int firstIndex = 1) {
-    std::vector<float> stored(3 * kProbeUpdateTexels, start), fresh(3 * kProbeUpdateTexels, input),
-        out;
+    std::vector<float> stored(3 * probes::kIrradianceInteriorTexels, start),
+        fresh(3 * probes::kIrradianceInteriorTexels, input), out;
     for (int n = 0; n < updates; ++n) {
-        blendTexels(s, {}, firstIndex + n, fresh.data(), stored.data(), kProbeUpdateTexels);
+        blendTexels(s, {}, firstIndex + n, fresh.data(), stored.data(),
+                    probes::kIrradianceInteriorTexels);
         out.push_back(stored[0]);
     }
     return out;
@@ -69,12 +68,13 @@ TEST(BlendSchedule, HastenedWeightsDescendFromTheMaximumToTheFloor) {
     // At the change the first sample replaces the old value: the step is gone at once.
     EXPECT_FLOAT_EQ(blendConstant(Schedule::Hastened, 4.0f, 1.0f, 1).back(), 1.0f);
     // Weights 1/i are the running mean: samples 1..n starting at index 1 average exactly.
-    std::vector<float> stored(3 * kProbeUpdateTexels, 9.0f);
+    std::vector<float> stored(3 * probes::kIrradianceInteriorTexels, 9.0f);
     float sum = 0;
     for (int i = 1; i <= 5; ++i) {
-        std::vector<float> fresh(3 * kProbeUpdateTexels, float(i));
+        std::vector<float> fresh(3 * probes::kIrradianceInteriorTexels, float(i));
         sum += float(i);
-        blendTexels(Schedule::Hastened, {}, i, fresh.data(), stored.data(), kProbeUpdateTexels);
+        blendTexels(Schedule::Hastened, {}, i, fresh.data(), stored.data(),
+                    probes::kIrradianceInteriorTexels);
     }
     EXPECT_NEAR(stored[0], sum / 5.0f, 1e-6f);
 }
@@ -145,7 +145,7 @@ Fixture bakedCornellWithLamp() {
 }
 
 void constantSample(const ProbeRef&, int, float* rgb) {
-    for (int i = 0; i < 3 * kProbeUpdateTexels; ++i)
+    for (int i = 0; i < 3 * probes::kIrradianceInteriorTexels; ++i)
         rgb[i] = 0.25f;
 }
 
