@@ -93,15 +93,15 @@ LitSurfaces::LitSurfaces(const RayScene& rs, const Scenario& sc,
 
     // 2. Their power, from the direct light at the patch centre (shadow rays: all threads).
     std::vector<double> power(candidates.size());
-    std::vector<std::uint64_t> rays(std::size_t(std::max(threads, 1)), 0);
+    std::vector<PerThread<std::uint64_t>> rays(std::size_t(std::max(threads, 1)));
     parallelFor(candidates.size(), threads, [&](std::size_t k, int t) {
         const Candidate& cd = candidates[k];
         const glm::vec3 centre = (cd.a + cd.b + cd.c) / 3.0f;
-        const glm::vec3 e = directIrradiance(rs, sc, lights, centre, cd.normal, rays[size_t(t)]);
+        const glm::vec3 e = directIrradiance(rs, sc, lights, centre, cd.normal, rays[size_t(t)].value);
         power[k] = double(luminance(cd.albedoOverPi * e)) * double(cd.area);
     });
-    for (std::uint64_t r : rays)
-        shadowRays += r;
+    for (const PerThread<std::uint64_t>& r : rays)
+        shadowRays += r.value;
 
     // 3. The lit ones become entries, in candidate order (deterministic).
     std::vector<std::int32_t> slots(slotCount, -1); // entry index or -1

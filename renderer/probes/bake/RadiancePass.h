@@ -18,6 +18,7 @@
 // cache), then every probe's radiance is finished and convolved (convolve). Each lookup is
 // the same pure function of its hit as in a per-ray loop, so the result is bit for bit the
 // same, for any slab size and thread count.
+#include "core/ParallelFor.h"
 #include "probes/ProbeSampler.h"
 #include "probes/Scenario.h"
 #include "probes/bake/LitSurfaces.h"
@@ -29,7 +30,8 @@
 
 namespace pb::probes {
 
-struct RayCounters {
+// Per thread: aligned to a cache line, since every ray increments one (ParallelFor.h).
+struct alignas(kCacheLine) RayCounters {
     std::uint64_t primary = 0, shadow = 0;
 };
 
