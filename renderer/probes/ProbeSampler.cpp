@@ -277,6 +277,7 @@ struct ProbeSampler::Lookup {
     bool live[8];
     bool filled[8]; // live and a stand-in for an absent probe
     bool ownVis[8]; // the corner has a visibility tile (not ProbeState::irradianceOnly)
+    alignas(32) int visMask[8]; // ownVis as 0 / 1 in the weights' lane width
 };
 
 IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const glm::vec3& normal,
@@ -386,6 +387,7 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
         const ProbeState& state = st[index[corner]];
         k.live[corner] = inside[corner] != 0 && state.valid;
         k.ownVis[corner] = !state.irradianceOnly;
+        k.visMask[corner] = k.ownVis[corner] ? 1 : 0;
         k.filled[corner] = k.live[corner] && !f.fillSource.empty() &&
                            f.fillSource[std::size_t(index[corner])] != index[corner];
         if (trace && inside[corner]) {
@@ -484,14 +486,22 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
         irr[i] = top + (bot - top) * irrFy;
     }
 
-    // The weights, per corner (SIMD).
-    alignas(16) float weight[8];
+    // The weights, per corner. Written without branches (`&` on conditions, selects, the
+    // trilinear factors from arrays) so the compiler runs the 8 corners as one vector: with
+    // `&&` and `i & 1 ? :` it kept the loop scalar, and its divisions and square root were a
+    // third of a lookup.
+    const float ax[2] = {1.0f - alpha.x, alpha.x}, ay[2] = {1.0f - alpha.y, alpha.y},
+                az[2] = {1.0f - alpha.z, alpha.z};
+    alignas(32) const float triX[8] = {ax[0], ax[1], ax[0], ax[1], ax[0], ax[1], ax[0], ax[1]};
+    alignas(32) const float triY[8] = {ay[0], ay[0], ay[1], ay[1], ay[0], ay[0], ay[1], ay[1]};
+    alignas(32) const float triZ[8] = {az[0], az[0], az[0], az[0], az[1], az[1], az[1], az[1]};
+    alignas(32) float weight[8];
     for (int i = 0; i < 8; ++i) {
         // 4a. Wrap shading: probes behind the surface count less (never zero). dirToProbe =
         //     normalize(probe - p), n when that has no length.
         const float qx = k.px[i] - p.x, qy = k.py[i] - p.y, qz = k.pz[i] - p.z;
         const float len = std::sqrt(qx * qx + qy * qy + qz * qz);
-        const bool some = len > 0.0f && len <= std::numeric_limits<float>::max();
+        const bool some = (len > 0.0f) & (len <= std::numeric_limits<float>::max());
         const float ux = qx / len, uy = qy / len, uz = qz / len;
         const float dx = some ? ux : n.x, dy = some ? uy : n.y, dz = some ? uz : n.z;
         const float t = (dx * n.x + dy * n.y + dz * n.z + 1.0f) * 0.5f;
@@ -504,7 +514,7 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
         const float cheb = variance / (variance + dd * dd);
         const float chebW = std::max(cheb * cheb * cheb, kChebyshevFloor);
         // An irradiance-only corner has no visibility: only free cells read it (ProbeState).
-        w = d01 > mean[i] && k.ownVis[i] ? w * chebW : w;
+        w = (d01 > mean[i]) & (k.visMask[i] != 0) ? w * chebW : w;
 
         // 4c. Crush tiny weights (keeps a faint leak from dominating once normalised).
         const float crushed = w * ((w * w) / (kCrushThreshold * kCrushThreshold));
@@ -517,9 +527,7 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
         w *= std::max(ramp, k.behindFloor);
 
         // 4d. Trilinear.
-        const float tri = ((i & 1) ? alpha.x : 1.0f - alpha.x) *
-                          ((i & 2) ? alpha.y : 1.0f - alpha.y) *
-                          ((i & 4) ? alpha.z : 1.0f - alpha.z);
+        const float tri = triX[i] * triY[i] * triZ[i];
         weight[i] = w * std::max(tri, kMinTrilinear);
     }
 
