@@ -2,8 +2,11 @@
 // Picks an index in proportion to its weight in constant time (Vose's alias method): the
 // bake's light tables (EmitterTable.h, LitSurfaces.h) choose what to sample with it.
 // Deterministic: the same weights give the same table.
+#include "probes/HugePages.h"
+
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace pb::probes {
@@ -11,7 +14,8 @@ namespace pb::probes {
 class AliasTable {
 public:
     AliasTable() = default;
-    // Weights must be finite and >= 0 with a positive sum; otherwise the table is empty.
+    // Weights must be finite and >= 0 with a positive sum, at most 2^32 of them; otherwise the
+    // table is empty.
     explicit AliasTable(const std::vector<double>& weights);
 
     bool empty() const { return probability_.empty(); }
@@ -20,21 +24,23 @@ public:
     // The index for a uniform u in [0, 1).
     std::size_t pick(float u) const;
     // Hints that pick(u) comes soon (its column is read at random from a large table).
-    void prefetch(float u) const {
-        const std::size_t k = column(u);
-        __builtin_prefetch(&keep_[k]);
-        __builtin_prefetch(&alias_[k]);
-    }
+    void prefetch(float u) const { __builtin_prefetch(&columns_[column(u)]); }
 
 private:
     std::size_t column(float u) const {
-        const std::size_t n = keep_.size();
+        const std::size_t n = columns_.size();
         return std::min(std::size_t(u * float(n)), n - 1);
     }
 
+    // One column: the chance of keeping its own index, else its alias. Both in one 8-byte
+    // entry, so a pick reads one cache line; on huge pages (HugePages.h), since a large table
+    // is read at random (the lit-surface table of a big scene has millions of columns).
+    struct Column {
+        float keep;
+        std::uint32_t alias;
+    };
     std::vector<double> probability_;
-    std::vector<float> keep_; // chance of keeping the column's own index
-    std::vector<std::size_t> alias_;
+    HugePageVector<Column> columns_;
 };
 
 } // namespace pb::probes

@@ -52,11 +52,13 @@ LitSurfaces::LitSurfaces(const RayScene& rs, const Scenario& sc,
 
     // 1. Every side of every patch of every reflecting triangle.
     std::vector<Candidate> candidates;
-    triangles_.resize(rs.geometryCount());
+    geometryFirst_.assign(rs.geometryCount() + 1, 0);
+    for (unsigned g = 0; g < rs.geometryCount(); ++g)
+        geometryFirst_[g + 1] = geometryFirst_[g] + rs.triangleCount(g);
+    triangles_.assign(geometryFirst_.back(), TriangleSlots{});
     std::size_t slotCount = 0;
     for (unsigned g = 0; g < rs.geometryCount(); ++g) {
         const SurfaceInfo& surf = rs.surface(g);
-        triangles_[g].resize(rs.triangleCount(g));
         if (surf.albedo == glm::vec3(0.0f)) continue;
         const glm::vec3 albedoOverPi = surf.albedo * float(1.0 / M_PI);
         for (unsigned p = 0; p < rs.triangleCount(g); ++p) {
@@ -67,7 +69,7 @@ LitSurfaces::LitSurfaces(const RayScene& rs, const Scenario& sc,
             const float edge = std::max(glm::length(b - a),
                                         std::max(glm::length(c - b), glm::length(a - c)));
             const int n = std::clamp(int(std::ceil(edge / patchEdge)), 1, kMaxSplit);
-            TriangleSlots& t = triangles_[g][p];
+            TriangleSlots& t = triangles_[geometryFirst_[g] + p];
             t.first = std::int32_t(slotCount);
             t.split = n;
             slotCount += std::size_t(n * n * 4);
@@ -106,10 +108,15 @@ LitSurfaces::LitSurfaces(const RayScene& rs, const Scenario& sc,
     // 3. The lit ones become entries, in candidate order (deterministic).
     std::vector<std::int32_t> slots(slotCount, -1); // entry index or -1
     std::vector<double> weights;
+    std::size_t litCount = 0; // reserved up front: each growth of a huge-page array copies it
+    for (double w : power)
+        litCount += w > 0.0 && std::isfinite(w);
+    entries_.reserve(litCount);
+    weights.reserve(litCount);
     for (std::size_t k = 0; k < candidates.size(); ++k) {
         if (!(power[k] > 0.0) || !std::isfinite(power[k])) continue;
         const Candidate& cd = candidates[k];
-        slots[std::size_t(triangles_[cd.geomID][cd.primID].first + cd.slot)] =
+        slots[std::size_t(slotsOf(cd.geomID, cd.primID)->first + cd.slot)] =
             std::int32_t(entries_.size());
         entries_.push_back({cd.a, cd.b, cd.c, cd.normal, cd.albedoOverPi, 0.0f, cd.geomID,
                             cd.primID, (cd.slot & 1) != 0});
@@ -133,10 +140,8 @@ LitSurfaces::LitSurfaces(const RayScene& rs, const Scenario& sc,
 
 std::int64_t LitSurfaces::slotOf(unsigned geomID, unsigned primID, bool back,
                                  const glm::vec3& x) const {
-    if (entries_.empty() || geomID >= triangles_.size() || primID >= triangles_[geomID].size())
-        return -1;
-    const TriangleSlots& t = triangles_[geomID][primID];
-    if (t.first < 0) return -1;
+    const TriangleSlots* t = entries_.empty() ? nullptr : slotsOf(geomID, primID);
+    if (!t || t->first < 0) return -1;
     glm::vec3 a, b, c;
     rs_->triangleCorners(geomID, primID, a, b, c);
     // Barycentrics of x: u for corner b, v for corner c.
@@ -147,7 +152,7 @@ std::int64_t LitSurfaces::slotOf(unsigned geomID, unsigned primID, bool back,
     if (!(denom > 0.0f)) return -1;
     const float u = std::clamp((d11 * d20 - d01 * d21) / denom, 0.0f, 1.0f);
     const float v = std::clamp((d00 * d21 - d01 * d20) / denom, 0.0f, 1.0f);
-    return std::int64_t(t.first) + subTriangle(u, v, t.split) * 2 + int(back);
+    return std::int64_t(t->first) + subTriangle(u, v, t->split) * 2 + int(back);
 }
 
 LitPatchSample LitSurfaces::sampleEntry(std::size_t k, float u1, float u2) const {

@@ -22,6 +22,7 @@
 // The estimate only steers the sampling: a patch whose centre is in shadow gets no samples
 // but is still found by the rays, whose MIS weight there is 1, so the result stays unbiased.
 // Deterministic: the same scene and scenario give the same table, independent of the seed.
+#include "probes/HugePages.h"
 #include "probes/Scenario.h"
 #include "probes/bake/AliasTable.h"
 #include "probes/bake/RayScene.h"
@@ -73,8 +74,7 @@ public:
     }
     // Hints that slotOf will be asked about this triangle soon.
     void prefetchTriangle(unsigned geomID, unsigned primID) const {
-        if (geomID < triangles_.size() && primID < triangles_[geomID].size())
-            __builtin_prefetch(&triangles_[geomID][primID]);
+        if (const TriangleSlots* t = slotsOf(geomID, primID)) __builtin_prefetch(t);
     }
 
     // u0 picks the entry (alias table), u1, u2 the point (uniform on its patch).
@@ -107,11 +107,20 @@ private:
     };
     // Sub-triangle slot of barycentrics (u, v) in an n-split triangle.
     static int subTriangle(float u, float v, int n);
+    // The triangle's slots, or nullptr for an id the scene does not have.
+    const TriangleSlots* slotsOf(unsigned geomID, unsigned primID) const {
+        if (geomID + 1 >= geometryFirst_.size()) return nullptr;
+        const std::size_t k = geometryFirst_[geomID] + primID;
+        return k < geometryFirst_[geomID + 1] ? &triangles_[k] : nullptr;
+    }
 
+    // The arrays read at random per hit and per sample live on huge pages (HugePages.h): with
+    // 4 KiB pages each read also missed the TLB.
     const RayScene* rs_ = nullptr;
-    std::vector<Entry> entries_;
-    std::vector<std::vector<TriangleSlots>> triangles_; // [geomID][primID]
-    std::vector<float> slotPdf_;                        // the entry's pdfArea, or 0
+    HugePageVector<Entry> entries_;
+    HugePageVector<TriangleSlots> triangles_; // all geometries' triangles, in id order
+    std::vector<std::size_t> geometryFirst_;  // [geomID]: its first triangle; one past the end
+    HugePageVector<float> slotPdf_;           // the entry's pdfArea, or 0
     AliasTable pick_; // entries by power
     std::size_t patches_ = 0;
 };

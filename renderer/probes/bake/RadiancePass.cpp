@@ -72,12 +72,9 @@ void RadianceSlab::reset(std::size_t probes, int rays) {
     radiance_.resize(n);
     hits_.resize(n);
     litSlots_.resize(n);
-    pending_.resize(probes);
-    keys_.resize(probes);
-    for (auto& p : pending_)
-        p.clear();
-    for (auto& k : keys_)
-        k.clear();
+    pending_.resize(n);
+    keys_.resize(n);
+    pendingCount_.assign(probes, 0);
     slotSamples_.assign(probes, 0);
     lightRgb_.assign(probes * kIrradianceInteriorTexels * 3, 0.0f);
     lightY_.assign(probes * kIrradianceInteriorTexels, 0.0f);
@@ -94,10 +91,9 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
                          const ProbeSampler* previous, RayCounters& counters,
                          const EmitterSampling& nee, std::uint64_t probeKey) {
     const std::size_t n = std::size_t(rays_), first = slot * n;
-    std::vector<Pending>& pending = pending_[slot];
-    std::vector<std::uint32_t>& keys = keys_[slot];
-    pending.clear();
-    keys.clear();
+    Pending* pending = pending_.data() + first;
+    std::uint32_t* keys = keys_.data() + first;
+    std::uint32_t pendingCount = 0;
     const float invPi = float(1.0 / M_PI);
     const EmitterTable& emitters = rs.emitters();
     const float nPu = float(n) * kUniformSpherePdf;
@@ -172,9 +168,9 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
                     }
                     e *= weight;
                     if (previous) { // finished in convolve(), once lookUp() has E_indirect
-                        pending.push_back(
-                            {{x, nrm, -d}, e, surf.albedo * invPi, std::uint32_t(first + i)});
-                        keys.push_back(previous->localityKey(x));
+                        pending[pendingCount] = {
+                            {x, nrm, -d}, e, surf.albedo * invPi, std::uint32_t(first + i)};
+                        keys[pendingCount++] = previous->localityKey(x);
                     } else
                         L += surf.albedo * invPi * e;
                 }
@@ -182,6 +178,7 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
         }
         radiance_[first + i] = glm::vec4(L, 0.0f);
     }
+    pendingCount_[slot] = pendingCount;
     if (ml > 0) traceLitSamples(slot, rs, sc, lights, rot, origin, nee, probeKey, counters);
     if (m == 0) return;
 
@@ -264,22 +261,22 @@ void RadianceSlab::traceLitSamples(std::size_t slot, const RayScene& rs, const S
 
 void RadianceSlab::lookUp(const ProbeSampler& previous, int threads) {
     // Counting sort of the pending hits by locality key (the grid cell of the previous pass
-    // they fall in); an entry of `order` is slot << 32 | index within the slot.
-    const std::size_t keys = previous.localityKeyCount();
+    // they fall in); an entry of `order` is a place in pending_.
+    const std::size_t keys = previous.localityKeyCount(), rays = std::size_t(rays_);
     // The keys were computed by trace().
     std::vector<std::uint32_t> start(keys + 1, 0);
     std::size_t total = 0;
-    for (const auto& slotKeys : keys_) {
-        total += slotKeys.size();
-        for (std::uint32_t k : slotKeys)
-            ++start[k + 1];
+    for (std::size_t s = 0; s < pendingCount_.size(); ++s) {
+        total += pendingCount_[s];
+        for (std::size_t j = 0; j < pendingCount_[s]; ++j)
+            ++start[keys_[s * rays + j] + 1];
     }
     for (std::size_t k = 0; k < keys; ++k)
         start[k + 1] += start[k];
-    std::vector<std::uint64_t> order(total);
-    for (std::size_t s = 0; s < keys_.size(); ++s)
-        for (std::size_t j = 0; j < keys_[s].size(); ++j)
-            order[start[keys_[s][j]]++] = std::uint64_t(s) << 32 | j;
+    std::vector<std::size_t> order(total);
+    for (std::size_t s = 0; s < pendingCount_.size(); ++s)
+        for (std::size_t j = 0; j < pendingCount_[s]; ++j)
+            order[start[keys_[s * rays + j]]++] = s * rays + j;
 
     indirect_.resize(radiance_.size());
     constexpr std::size_t kChunk = 2048;
@@ -294,18 +291,20 @@ void RadianceSlab::lookUp(const ProbeSampler& previous, int threads) {
         std::vector<IrradianceSample>& out = results[std::size_t(t)];
         q.clear();
         for (std::size_t k = lo; k < hi; ++k)
-            q.push_back(pending_[order[k] >> 32][order[k] & 0xffffffffu].query);
+            q.push_back(pending_[order[k]].query);
         out.resize(q.size());
         previous.sampleBatch(q.data(), q.size(), out.data(), noFade);
         for (std::size_t k = lo; k < hi; ++k)
-            indirect_[pending_[order[k] >> 32][order[k] & 0xffffffffu].ray] =
+            indirect_[pending_[order[k]].ray] =
                 out[k - lo].irradiance;
     });
 }
 
 const glm::vec4* RadianceSlab::finish(std::size_t slot) {
     const std::size_t first = slot * std::size_t(rays_);
-    for (const Pending& h : pending_[slot]) {
+    const Pending* pending = pending_.data() + first;
+    for (std::uint32_t j = 0; j < pendingCount_[slot]; ++j) {
+        const Pending& h = pending[j];
         // The per-ray expression: emissive + albedo/pi * (direct + indirect).
         glm::vec3 e = h.direct;
         e += indirect_[h.ray];

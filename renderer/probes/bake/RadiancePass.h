@@ -19,6 +19,7 @@
 // the same pure function of its hit as in a per-ray loop, so the result is bit for bit the
 // same, for any slab size and thread count.
 #include "core/ParallelFor.h"
+#include "probes/HugePages.h"
 #include "probes/ProbeSampler.h"
 #include "probes/Scenario.h"
 #include "probes/bake/LitSurfaces.h"
@@ -118,8 +119,12 @@ private:
     std::vector<RayHit> hits_;                     // per ray, slot-major
     std::vector<std::int64_t> litSlots_;           // per ray: LitSurfaces::slotOf of its hit
     std::vector<glm::vec4> radiance_;              // per ray, slot-major: RGB + unused
-    std::vector<std::vector<Pending>> pending_;    // per slot
-    std::vector<std::vector<std::uint32_t>> keys_; // per slot: localityKey of each pending hit
+    // Pending hits, `rays_` places per slot (slot-major), the first pendingCount_[slot] used;
+    // keys_: the localityKey of each. Flat and on huge pages (HugePages.h): lookUp reads them
+    // in key order, i.e. at random.
+    HugePageVector<Pending> pending_;
+    HugePageVector<std::uint32_t> keys_;
+    std::vector<std::uint32_t> pendingCount_;
     std::vector<glm::vec3> indirect_;              // E_indirect per ray (pending hits only)
     // Emitter samples per slot and interior texel: RGB sum, luminance sum and sum of squares.
     std::vector<int> slotSamples_; // emitter samples each slot's probe took (0: rays alone)
