@@ -150,8 +150,16 @@ std::int64_t LitSurfaces::slotOf(unsigned geomID, unsigned primID, bool back,
     const float d20 = glm::dot(d, e0), d21 = glm::dot(d, e1);
     const float denom = d00 * d11 - d01 * d01;
     if (!(denom > 0.0f)) return -1;
-    const float u = std::clamp((d11 * d20 - d01 * d21) / denom, 0.0f, 1.0f);
-    const float v = std::clamp((d00 * d21 - d01 * d20) / denom, 0.0f, 1.0f);
+    const float u = (d11 * d20 - d01 * d21) / denom, v = (d00 * d21 - d01 * d20) / denom;
+    return slotOfBarycentric(geomID, primID, back, u, v);
+}
+
+std::int64_t LitSurfaces::slotOfBarycentric(unsigned geomID, unsigned primID, bool back, float u,
+                                            float v) const {
+    const TriangleSlots* t = entries_.empty() ? nullptr : slotsOf(geomID, primID);
+    if (!t || t->first < 0) return -1;
+    u = std::clamp(u, 0.0f, 1.0f);
+    v = std::clamp(v, 0.0f, 1.0f);
     return std::int64_t(t->first) + subTriangle(u, v, t->split) * 2 + int(back);
 }
 

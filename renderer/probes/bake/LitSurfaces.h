@@ -66,6 +66,10 @@ public:
     // reads it (the densities are one large array read at random: most of pdfArea's time was
     // that cache miss). slotOf: the hit's patch side, -1 where nothing is sampled.
     std::int64_t slotOf(unsigned geomID, unsigned primID, bool back, const glm::vec3& x) const;
+    // slotOf from the hit's barycentrics (RayHit::u, v: corners b and c) instead of its
+    // position: the same patch, without reading the triangle's corners.
+    std::int64_t slotOfBarycentric(unsigned geomID, unsigned primID, bool back, float u,
+                                   float v) const;
     float pdfAtSlot(std::int64_t slot) const {
         return slot < 0 ? 0.0f : slotPdf_[std::size_t(slot)];
     }

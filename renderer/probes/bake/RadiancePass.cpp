@@ -97,12 +97,12 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
     const float invPi = float(1.0 / M_PI);
     const EmitterTable& emitters = rs.emitters();
     const float nPu = float(n) * kUniformSpherePdf;
-    // All rays first, then the shading: the face normal of each hit is prefetched while the
-    // following rays are traced (results are per ray: the order of the calls does not matter).
+    // All rays first, then the shading: what the shading reads from the lit-surface table is
+    // prefetched while the following rays are traced (results are per ray: the order of the
+    // calls does not matter). The normal and barycentrics come with the hit (RayHit).
     RayHit* hits = hits_.data() + first;
     for (std::size_t i = 0; i < n; ++i) {
         hits[i] = rs.intersect(origin, rot * dirs[i]);
-        rs.prefetchSurface(hits[i]);
         if (nee.lit && hits[i].hit()) nee.lit->prefetchTriangle(hits[i].geomID, hits[i].primID);
     }
     counters.primary += n;
@@ -129,9 +129,9 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
             litSlots[i] = -1;
             if (!h.hit() || rs.surface(h.geomID).albedo == glm::vec3(0.0f)) continue;
             const glm::vec3 d = rot * dirs[i];
-            const bool back = glm::dot(rs.faceNormal(h.geomID, h.primID), d) > 0.0f;
+            const bool back = glm::dot(rs.hitNormal(h), d) > 0.0f;
             if (back && !rs.surface(h.geomID).doubleSided) continue;
-            litSlots[i] = nee.lit->slotOf(h.geomID, h.primID, back, origin + d * h.t);
+            litSlots[i] = nee.lit->slotOfBarycentric(h.geomID, h.primID, back, h.u, h.v);
             nee.lit->prefetchSlot(litSlots[i]);
         }
     }
@@ -143,7 +143,7 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
             L = sc.sky.radiance;
         } else {
             const SurfaceInfo& surf = rs.surface(h.geomID);
-            glm::vec3 nrm = rs.faceNormal(h.geomID, h.primID);
+            glm::vec3 nrm = rs.hitNormal(h);
             bool back = glm::dot(nrm, d) > 0.0f;
             if (back && !surf.doubleSided) {
                 L = glm::vec3(0.0f);

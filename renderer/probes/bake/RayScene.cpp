@@ -116,11 +116,15 @@ RayScene::RayScene(const scene::Scene& s) : recorder_(std::make_unique<Recorder>
             si = {mats[size_t(m)].albedo, mats[size_t(m)].emissive, mats[size_t(m)].doubleSided};
         if (surfaces_.size() <= id) {
             surfaces_.resize(id + 1);
+            ngSign_.resize(id + 1, 1.0f);
             normals_.resize(id + 1);
             vertices_.resize(id + 1);
             indices_.resize(id + 1);
         }
         surfaces_[id] = si;
+        // Embree's ng is cross(v1 - v0, v2 - v0) (tests/unit/RaySceneTest.cpp checks it), the
+        // counter-clockwise front of glTF; a mirroring transform turns the front around.
+        ngSign_[id] = mirrored ? -1.0f : 1.0f;
         if (si.emissive != glm::vec3(0.0f))
             for (std::size_t t = 0; t < nt; ++t) {
                 const unsigned* i = idx + 3 * t;
@@ -222,6 +226,9 @@ RayHit RayScene::intersect(const glm::vec3& o, const glm::vec3& d, float tnear, 
         out.t = rh.ray.tfar;
         out.geomID = rh.hit.geomID;
         out.primID = rh.hit.primID;
+        out.ng = {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
+        out.u = rh.hit.u;
+        out.v = rh.hit.v;
     }
     return out;
 }

@@ -42,6 +42,12 @@ void initEmbreeRay(RTCRay& r, const glm::vec3& o, const glm::vec3& d, float tnea
 struct RayHit {
     float t = -1.0f; // < 0: miss
     unsigned geomID = RTC_INVALID_GEOMETRY_ID, primID = 0;
+    // What Embree returns with the hit, so shading needs no load from the triangle arrays
+    // (those loads were cache and TLB misses, one per hit): the geometric normal as Embree
+    // computed it (not unit, not yet on the front side: RayScene::hitNormal) and the
+    // barycentrics of corners b (u) and c (v) of triangleCorners.
+    glm::vec3 ng{0.0f};
+    float u = 0.0f, v = 0.0f;
     bool hit() const { return t >= 0.0f; }
 };
 
@@ -78,6 +84,15 @@ public:
     const glm::vec3& faceNormal(unsigned geomID, unsigned primID) const {
         return normals_[geomID][primID];
     }
+    // The same front-side unit normal from the hit's own data (RayHit::ng): equal to
+    // faceNormal up to the last bits of the rounding, without its memory read. A hit never
+    // has a zero ng (Embree rejects degenerate triangles); faceNormal covers it anyway.
+    glm::vec3 hitNormal(const RayHit& h) const {
+        const float len = glm::length(h.ng);
+        if (!(len > 0.0f) || !(len <= std::numeric_limits<float>::max()))
+            return faceNormal(h.geomID, h.primID);
+        return h.ng * (ngSign_[h.geomID] / len);
+    }
     // Geometries (ids 0 .. geometryCount()-1; an id without triangles has none) and their
     // triangles' world-space corners, as traced (LitSurfaces.h samples points on them).
     unsigned geometryCount() const { return unsigned(surfaces_.size()); }
@@ -108,6 +123,7 @@ private:
     RTCDevice device_ = nullptr;
     RTCScene scene_ = nullptr;
     std::vector<SurfaceInfo> surfaces_;
+    std::vector<float> ngSign_; // [geomID]: Embree's ng times this faces the front side
     std::vector<std::vector<glm::vec3>> normals_;
     std::vector<std::vector<glm::vec3>> vertices_;      // [geomID]: world space
     std::vector<std::vector<std::uint32_t>> indices_;   // [geomID]: 3 per triangle
