@@ -15,11 +15,14 @@
 namespace pb::probes {
 namespace {
 
-// 5: relocation stays inside the volume's box, and the nesting blend leaves relocated ring
-// probes alone and looks the parent up without surface bias (issue 24); 4: lit-surface samples; 3: emitter sampling (MIS) at the probe; 2: far scenes bake in a moved
-// frame. (Sparse storage's free-space lattice changed only sparse files: bakeInputHash hashes
-// its step for sparse requests, so dense files kept their hash.)
-constexpr std::uint32_t kBakeAlgorithmVersion = 6;
+// 7: the radiance passes shade with the hit's normal and barycentrics as Embree returns them
+// (last-bit changes, RayScene.h RayHit); 6: the SH record from the ray samples; 5: relocation
+// stays inside the volume's box, and the nesting blend leaves relocated ring probes alone and
+// looks the parent up without surface bias (issue 24); 4: lit-surface samples; 3: emitter
+// sampling (MIS) at the probe; 2: far scenes bake in a moved frame. (Sparse storage's
+// free-space lattice changed only sparse files: bakeInputHash hashes its step for sparse
+// requests, so dense files kept their hash.)
+constexpr std::uint32_t kBakeAlgorithmVersion = 7;
 
 void hashScene(Hasher& h, const scene::Scene& s) {
     const auto mats = summariseMaterials(s);
