@@ -14,9 +14,7 @@ namespace pb {
 constexpr std::size_t kCacheLine = 64;
 
 // One thread's slot of a per-thread array (std::vector<PerThread<T>>(threads)).
-template <class T> struct alignas(kCacheLine) PerThread {
-    T value{};
-};
+template <class T> struct alignas(kCacheLine) PerThread { T value{}; };
 
 // Threads to use for `requested` (0 = all hardware threads).
 int resolveThreadCount(int requested);

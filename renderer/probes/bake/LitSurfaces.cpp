@@ -99,7 +99,8 @@ LitSurfaces::LitSurfaces(const RayScene& rs, const Scenario& sc,
     parallelFor(candidates.size(), threads, [&](std::size_t k, int t) {
         const Candidate& cd = candidates[k];
         const glm::vec3 centre = (cd.a + cd.b + cd.c) / 3.0f;
-        const glm::vec3 e = directIrradiance(rs, sc, lights, centre, cd.normal, rays[size_t(t)].value);
+        const glm::vec3 e =
+            directIrradiance(rs, sc, lights, centre, cd.normal, rays[size_t(t)].value);
         power[k] = double(luminance(cd.albedoOverPi * e)) * double(cd.area);
     });
     for (const PerThread<std::uint64_t>& r : rays)

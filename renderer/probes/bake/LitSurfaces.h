@@ -113,13 +113,13 @@ private:
     static int subTriangle(float u, float v, int n);
     // The triangle's slots, or nullptr for an id the scene does not have.
     const TriangleSlots* slotsOf(unsigned geomID, unsigned primID) const {
-        if (geomID + 1 >= geometryFirst_.size()) return nullptr;
+        if (std::size_t(geomID) + 1 >= geometryFirst_.size()) return nullptr;
         const std::size_t k = geometryFirst_[geomID] + primID;
         return k < geometryFirst_[geomID + 1] ? &triangles_[k] : nullptr;
     }
 
-    // The arrays read at random per hit and per sample live on huge pages (HugePages.h): with
-    // 4 KiB pages each read also missed the TLB.
+    // The arrays read at random per hit and per sample: several MiB each on a large scene, so
+    // on huge pages (HugePages.h), as the sampler's probe tiles.
     const RayScene* rs_ = nullptr;
     HugePageVector<Entry> entries_;
     HugePageVector<TriangleSlots> triangles_; // all geometries' triangles, in id order

@@ -295,8 +295,7 @@ void RadianceSlab::lookUp(const ProbeSampler& previous, int threads) {
         out.resize(q.size());
         previous.sampleBatch(q.data(), q.size(), out.data(), noFade);
         for (std::size_t k = lo; k < hi; ++k)
-            indirect_[pending_[order[k]].ray] =
-                out[k - lo].irradiance;
+            indirect_[pending_[order[k]].ray] = out[k - lo].irradiance;
     });
 }
 

@@ -122,7 +122,7 @@ RayScene::RayScene(const scene::Scene& s) : recorder_(std::make_unique<Recorder>
             indices_.resize(id + 1);
         }
         surfaces_[id] = si;
-        // Embree's ng is cross(v1 - v0, v2 - v0) (tests/unit/RaySceneTest.cpp checks it), the
+        // Embree's ng is cross(v1 - v0, v2 - v0) (tests/unit/RaySceneHitTest.cpp checks it), the
         // counter-clockwise front of glTF; a mirroring transform turns the front around.
         ngSign_[id] = mirrored ? -1.0f : 1.0f;
         if (si.emissive != glm::vec3(0.0f))

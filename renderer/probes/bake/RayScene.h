@@ -43,7 +43,7 @@ struct RayHit {
     float t = -1.0f; // < 0: miss
     unsigned geomID = RTC_INVALID_GEOMETRY_ID, primID = 0;
     // What Embree returns with the hit, so shading needs no load from the triangle arrays
-    // (those loads were cache and TLB misses, one per hit): the geometric normal as Embree
+    // (those loads were cache misses, one or more per hit): the geometric normal as Embree
     // computed it (not unit, not yet on the front side: RayScene::hitNormal) and the
     // barycentrics of corners b (u) and c (v) of triangleCorners.
     glm::vec3 ng{0.0f};
