@@ -235,7 +235,7 @@ void traceMoreRounds(BakeRun& run, const Scenario& sc, size_t s, int pass,
         if (todo.empty()) return;
         const std::uint64_t stream = roundStream(cfg.seed, int(s), pass, round);
         const auto dirs = passDirections(cfg.raysPerProbe, stream);
-        const ProbeConvolution conv(dirs);
+        const ProbeConvolution conv(dirs, ProbeConvolution::Parts::IrradianceOnly);
         const EmitterSampling nee = run.lightSampling(s, stream);
         run.slab.reset(todo.size(), cfg.raysPerProbe);
         parallelFor(todo.size(), run.threads, [&](std::size_t j, int t) {
@@ -262,7 +262,7 @@ void traceMoreRounds(BakeRun& run, const Scenario& sc, size_t s, int pass,
             run.slab.convolve(j, conv, out);
             const int k = run.noise.addRound(todo[j], out);
             glm::vec3 sh[kShL2Coefficients];
-            run.slab.projectSh(j, dirs, sh);
+            run.slab.projectSh(j, conv, sh);
             glm::vec3* mean = &run.passSh[size_t(v)][size_t(p) * kShL2Coefficients];
             for (int q = 0; q < kShL2Coefficients; ++q)
                 mean[q] += (sh[q] - mean[q]) / float(k); // the running mean, as the texels
@@ -307,7 +307,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     const ProbeSampler prevSampler(prevViews);
     const ProbeSampler* previous = prev.empty() ? nullptr : &prevSampler;
     const auto dirs = passDirections(cfg.raysPerProbe, radianceStream(cfg.seed, int(s), pass));
-    const ProbeConvolution conv(dirs);
+    const ProbeConvolution conv(dirs, ProbeConvolution::Parts::IrradianceOnly);
     // Light samples draw from their own streams, each probe by its index.
     const EmitterSampling nee = run.lightSampling(s, radianceStream(cfg.seed, int(s), pass));
     std::vector<std::vector<float>> irr(
@@ -334,7 +334,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
         if (!mask.needed(set, v, p, lastPass)) return;
         float* out = irr[size_t(t)].data();
         run.slab.convolve(i, conv, out);
-        run.slab.projectSh(i, dirs, &run.passSh[size_t(v)][size_t(p) * kShL2Coefficients]);
+        run.slab.projectSh(i, conv, &run.passSh[size_t(v)][size_t(p) * kShL2Coefficients]);
         run.noise.firstRound(i, run.slab, conv, out);
         for (int y = 0; y < kIrradianceInterior; ++y)
             for (int x = 0; x < kIrradianceInterior; ++x)

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 namespace pb::probes {
 namespace {
@@ -50,9 +51,13 @@ void ProbeConvolution::build(const std::vector<glm::vec3>& dirs, int interior, f
         }
 }
 
-ProbeConvolution::ProbeConvolution(const std::vector<glm::vec3>& dirs) : rays_(int(dirs.size())) {
+ProbeConvolution::ProbeConvolution(const std::vector<glm::vec3>& dirs, Parts parts)
+    : rays_(int(dirs.size())), parts_(parts) {
     build(dirs, kIrradianceInterior, float(M_PI), false, irr_);
-    build(dirs, kVisibilityInterior, 1.0f, true, vis_);
+    if (parts == Parts::WithVisibility) build(dirs, kVisibilityInterior, 1.0f, true, vis_);
+    shBasis_.resize(dirs.size() * kShL2Coefficients);
+    for (std::size_t r = 0; r < dirs.size(); ++r)
+        shBasis(dirs[r], &shBasis_[r * kShL2Coefficients]);
 }
 
 void ProbeConvolution::irradiance(const float* rgbx, float* out) const {
@@ -91,6 +96,8 @@ void ProbeConvolution::irradianceLumaVariance(const float* rgbx, float* out) con
 }
 
 void ProbeConvolution::visibility(const float* d, float* out) const {
+    if (parts_ != Parts::WithVisibility)
+        throw std::logic_error("ProbeConvolution::visibility: built without visibility weights");
     for (size_t t = 0; t + 1 < vis_.start.size(); ++t) {
         float m = 0, m2 = 0;
         for (int e = vis_.start[t]; e < vis_.start[t + 1]; ++e) {

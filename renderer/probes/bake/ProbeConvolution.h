@@ -12,6 +12,10 @@
 // A texel whose weights are all zero (only possible with very few rays) takes the ray
 // nearest to its direction. Weights are kept sparse: zeros and normalised weights below
 // kWeightPrune are dropped (relative effect < rays * 1e-7, far below half-float precision).
+// The rays' SH L2 basis values Y_k(d_r) are kept too (shBasisOfRay): projecting a probe's
+// radiance onto SH (RadianceSlab::projectSh) needs them for every probe of the pass.
+#include "probes/ShIrradiance.h"
+
 #include <glm/glm.hpp>
 #include <vector>
 
@@ -22,8 +26,14 @@ constexpr float kWeightPrune = 1e-7f;
 
 class ProbeConvolution {
 public:
-    explicit ProbeConvolution(const std::vector<glm::vec3>& localDirs);
+    // The radiance passes never convolve visibility: IrradianceOnly skips its weights (196
+    // texels x the rays, each a 50th power), and visibility() must not be called then.
+    enum class Parts { IrradianceOnly, WithVisibility };
+    explicit ProbeConvolution(const std::vector<glm::vec3>& localDirs,
+                              Parts parts = Parts::WithVisibility);
     int rays() const { return rays_; }
+    // Y_0 .. Y_8 of ray r's direction (ShIrradiance.h shBasis).
+    const float* shBasisOfRay(int r) const { return &shBasis_[std::size_t(r) * kShL2Coefficients]; }
     // radiance: rays() x (R, G, B, unused) floats; out: interior texels, row-major, RGB per
     // texel. (Four floats per ray: one SIMD multiply-add per weight, the same per-channel
     // arithmetic in the same order as three scalar sums.)
@@ -42,8 +52,10 @@ private:
         std::vector<float> weight;
     };
     int rays_;
+    Parts parts_;
     Sparse irr_; // weights include pi / sum
-    Sparse vis_; // weights include 1 / sum
+    Sparse vis_; // weights include 1 / sum; empty with IrradianceOnly
+    std::vector<float> shBasis_; // rays x kShL2Coefficients
     static void build(const std::vector<glm::vec3>& dirs, int interior, float scale, bool power,
                       Sparse& out);
 };

@@ -338,15 +338,13 @@ void RadianceSlab::texelVariance(std::size_t slot, const ProbeConvolution& conv,
                    litY2_.data() + slot * kIrradianceInteriorTexels);
 }
 
-void RadianceSlab::projectSh(std::size_t slot, const std::vector<glm::vec3>& dirs,
-                             glm::vec3* out) const {
+void RadianceSlab::projectSh(std::size_t slot, const ProbeConvolution& conv, glm::vec3* out) const {
     const std::size_t first = slot * std::size_t(rays_);
     const float w = float(4.0 * M_PI) / float(rays_);
-    float y[kShL2Coefficients];
     for (int k = 0; k < kShL2Coefficients; ++k)
         out[k] = lightSh_[slot * kShL2Coefficients + std::size_t(k)];
     for (std::size_t i = 0; i < std::size_t(rays_); ++i) {
-        shBasis(dirs[i], y);
+        const float* y = conv.shBasisOfRay(int(i));
         const glm::vec3 L = glm::vec3(radiance_[first + i]) * w;
         for (int k = 0; k < kShL2Coefficients; ++k)
             out[k] += L * y[k];

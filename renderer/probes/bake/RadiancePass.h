@@ -102,7 +102,8 @@ public:
     // the irradiance texels convolve: each ray 4 pi / N L(w) Y(w) (the ray set is uniform on
     // the sphere; L already carries the balance heuristic's weight), each emitter and
     // lit-surface sample its share c Y(w) (c: what it adds to a texel facing it, over cos).
-    void projectSh(std::size_t slot, const std::vector<glm::vec3>& localDirs, glm::vec3* out) const;
+    // conv: the pass's convolution (its rays' SH basis values).
+    void projectSh(std::size_t slot, const ProbeConvolution& conv, glm::vec3* out) const;
 
 private:
     // trace()'s lit-surface samples (EmitterSampling::litSamples).
