@@ -5,6 +5,7 @@
 
 #include "bench/runner/ProbeCache.h"
 #include "core/Error.h"
+#include "core/Luminance.h"
 #include "frame/FrameRenderer.h"
 #include "gl/DebugOutput.h"
 #include "passes/ProbeTileUpload.h"
@@ -38,7 +39,7 @@ LumaImage luma(const image::ImageF& img) {
     LumaImage y(std::size_t(img.width) * std::size_t(img.height));
     for (std::size_t i = 0; i < y.size(); ++i) {
         const float* p = &img.pixels[i * std::size_t(img.channels)];
-        y[i] = 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+        y[i] = pb::luminance(p);
     }
     return y;
 }

@@ -20,9 +20,10 @@
 // Usage: bench_floor_corners [--rays R] [--gather-rays G] [--lines N] [--below Y]
 //                            [--patch X0 Z0 ROWS] [--dump FILE] [SCENE]  (default: Sponza, --below
 //                            1)
-#include "core/ReuseFreedMemory.h"
 #include "SharedScenes.h"
 #include "core/Error.h"
+#include "core/Luminance.h"
+#include "core/ReuseFreedMemory.h"
 #include "probes/Octahedral.h"
 #include "probes/ProbeLayout.h"
 #include "probes/ProbeSampler.h"
@@ -46,10 +47,6 @@ using namespace pb::probes;
 namespace {
 
 constexpr int kSamplesPerLine = 64, kSamplesPerCell = 8, kBins = 6;
-
-float luminance(const glm::vec3& c) {
-    return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b;
-}
 
 ProbeSet bake(const scene::Scene& s, const std::vector<ProbeVolume>& volumes, int rays,
               int bounces) {
@@ -133,7 +130,7 @@ Lookup corners(const ProbeSet& set, int vi, const glm::vec3& world, const glm::v
         bilinearFetch(set.visibility[std::size_t(vi)], vc.x, vc.y, g.y, vis);
         const glm::vec2 ic = tileCoord(g, n, kIrradianceInterior);
         bilinearFetch(set.irradiance[0][std::size_t(vi)], ic.x, ic.y, g.y, irr);
-        c.lum = luminance({irr[0], irr[1], irr[2]});
+        c.lum = pb::luminance({irr[0], irr[1], irr[2]});
         const glm::vec3 q = c.probe - p;
         const glm::vec3 toProbe = glm::length(q) > 0 ? glm::normalize(q) : n;
         const float t = (glm::dot(toProbe, n) + 1.0f) * 0.5f;
@@ -332,7 +329,7 @@ int main(int argc, char** argv) {
             if (vi < 0) continue;
             const IrradianceSample ref = sampler.sample(p, {0, 1, 0}, {0, 1, 0});
             const Lookup l = corners(set, vi, p, {0, 1, 0});
-            const float refL = luminance(ref.irradiance);
+            const float refL = pb::luminance(ref.irradiance);
             const float mine = l.variant[kSamplerVariant];
             worstCheck =
                 std::max(worstCheck, double(std::abs(refL - mine) / std::max(refL, 1e-6f)));
@@ -345,7 +342,7 @@ int main(int argc, char** argv) {
             const float dx = fx - std::round(fx), dz = fz - std::round(fz);
             const float r = std::sqrt(dx * dx + dz * dz);
             Bin& b = bins[std::min(kBins - 1, int(r / 0.7072f * kBins))];
-            const double t = luminance(truth[k]);
+            const double t = pb::luminance(truth[k]);
             const std::size_t line = k / kSamplesPerLine;
             truthSum += t;
             for (int var = 0; var < kVariants; ++var) {

@@ -25,9 +25,10 @@
 // Usage: bench_lattice [--lines N] [--rays R] [--gather-rays G] [--below Y] [--elevation DEG]
 //                      [--volumes FILE]...
 //                      [--json FILE] [SCENE...]   (default: the five shared scenes)
-#include "core/ReuseFreedMemory.h"
 #include "SharedScenes.h"
 #include "core/Error.h"
+#include "core/Luminance.h"
+#include "core/ReuseFreedMemory.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/Baker.h"
 #include "probes/bake/RayScene.h"
@@ -64,8 +65,6 @@ struct Options {
     std::string json;
 };
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
 double percentile(std::vector<double> v, double q) {
     if (v.empty()) return 0.0;
     std::sort(v.begin(), v.end());
@@ -101,14 +100,14 @@ nlohmann::json scorePlacement(const std::string& name, const ProbeSet& set,
         const glm::vec3 view = -line.axis * std::cos(el) + glm::vec3(0, 1, 0) * std::sin(el);
         double lineTruth = 0.0;
         for (int i = 0; i < line.samples; ++i)
-            lineTruth += luminance(truth[l * kSamplesPerLine + std::size_t(i)]) / line.samples;
+            lineTruth += pb::luminance(truth[l * kSamplesPerLine + std::size_t(i)]) / line.samples;
         if (!(lineTruth > 0.0)) continue;
         for (int i = 0; i < line.samples; ++i) {
             const glm::vec3 p = line.point(i);
             const IrradianceSample e = sampler.sample(p, {0, 1, 0}, view);
             unlit += e.weight <= 0.0f;
-            const double t = luminance(truth[l * kSamplesPerLine + std::size_t(i)]);
-            const double d = luminance(e.irradiance) - t;
+            const double t = pb::luminance(truth[l * kSamplesPerLine + std::size_t(i)]);
+            const double d = pb::luminance(e.irradiance) - t;
             residual[std::size_t(i)] = d / lineTruth;
             squared += d * d;
             truthSum += t;

@@ -33,8 +33,9 @@
 // Usage: bench_midair_options [--max-probes N] [--rays R] [--sh-only | --slack]
 //                             [--default-placement] [SCENE...]
 //        (default: cornell rooms courtyard)
-#include "core/ReuseFreedMemory.h"
 #include "core/Error.h"
+#include "core/Luminance.h"
+#include "core/ReuseFreedMemory.h"
 #include "probes/AbsentProbeFill.h"
 #include "probes/Octahedral.h"
 #include "probes/ProbeSampler.h"
@@ -71,9 +72,6 @@ bool gDefaultPlacement = false;
 
 namespace {
 
-float lum(const glm::vec3& c) {
-    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
 const glm::vec3 kAxes[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
 
 struct Q {
@@ -90,7 +88,7 @@ void stats(const char* scene, const char* name, const std::vector<Q>& qs, float 
     for (const Q& q : qs) {
         IrradianceSample s = f(q);
         if (!(s.weight > 0)) ++unlit;
-        rel.push_back(std::abs(lum(s.irradiance) - q.dense) / std::max(q.dense, floor));
+        rel.push_back(std::abs(pb::luminance(s.irradiance) - q.dense) / std::max(q.dense, floor));
         sum += rel.back();
     }
     std::sort(rel.begin(), rel.end());
@@ -326,10 +324,10 @@ ChangedQueries changedQueries(const RayScene& rs, const ProbeSet& dense, const P
     for (const glm::vec3& p : midAirSamples(rs, dense.volumes, 500, dense.volumes[0].minCellSize()))
         for (const glm::vec3& n : kAxes) {
             const IrradianceSample d = ds.sample(p, n, n), s = ss.sample(p, n, n);
-            total += lum(d.irradiance);
+            total += pb::luminance(d.irradiance);
             ++all;
             if (s.filled == 0 && s.probes == d.probes) continue;
-            out.queries.push_back({p, n, lum(d.irradiance)});
+            out.queries.push_back({p, n, pb::luminance(d.irradiance)});
         }
     out.floor = 0.1f * float(total / double(all));
     return out;
@@ -395,7 +393,7 @@ void run(const char* name) {
     {
         std::vector<std::pair<float, Q>> w;
         for (const Q& q : changed)
-            w.push_back({std::abs(lum(ss.sample(q.p, q.n, q.n).irradiance) - q.dense) /
+            w.push_back({std::abs(pb::luminance(ss.sample(q.p, q.n, q.n).irradiance) - q.dense) /
                              std::max(q.dense, floor),
                          q});
         std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.first > b.first; });
@@ -418,7 +416,7 @@ void run(const char* name) {
             std::printf("  #%d rel %.3f p (%.2f %.2f %.2f) n (%g %g %g) dense %.4f sparse %.4f "
                         "grid (%.2f %.2f %.2f) surf %.2f cells; corners:",
                         i, w[size_t(i)].first, q.p.x, q.p.y, q.p.z, q.n.x, q.n.y, q.n.z, q.dense,
-                        lum(ss.sample(q.p, q.n, q.n).irradiance), g.x, g.y, g.z,
+                        pb::luminance(ss.sample(q.p, q.n, q.n).irradiance), g.x, g.y, g.z,
                         near / v.minCellSize());
             for (int c = 0; c < 8; ++c) {
                 const glm::ivec3 k = b + glm::ivec3(c & 1, (c >> 1) & 1, (c >> 2) & 1);
@@ -520,16 +518,17 @@ void run(const char* name) {
             // tile's luminance at the normal against its L2 SH's: where the truncation misses.
             std::vector<std::pair<float, Q>> w;
             for (const Q& q : changed)
-                w.push_back({std::abs(lum(es.sample(q.p, q.n, q.n).irradiance) - q.dense) /
-                                 std::max(q.dense, floor),
-                             q});
+                w.push_back(
+                    {std::abs(pb::luminance(es.sample(q.p, q.n, q.n).irradiance) - q.dense) /
+                         std::max(q.dense, floor),
+                     q});
             std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.first > b.first; });
             for (int k = 0; k < 5 && k < int(w.size()); ++k) {
                 const Q& q = w[size_t(k)].second;
                 std::printf("  L2 worst #%d rel %.3f p (%.2f %.2f %.2f) n (%g %g %g) dense %.4f "
                             "L2 %.4f; absent corners tile/L2:",
                             k, w[size_t(k)].first, q.p.x, q.p.y, q.p.z, q.n.x, q.n.y, q.n.z,
-                            q.dense, lum(es.sample(q.p, q.n, q.n).irradiance));
+                            q.dense, pb::luminance(es.sample(q.p, q.n, q.n).irradiance));
                 const glm::vec3 g = (v.toLocal(q.p) + v.halfExtents) / v.cellSize();
                 glm::ivec3 base;
                 for (int a = 0; a < 3; ++a)
@@ -539,7 +538,8 @@ void run(const char* name) {
                     const int i = v.probeIndex(base + glm::ivec3(c & 1, (c >> 1) & 1, c >> 2));
                     if (!fillable(sparse.states[0][size_t(i)], sparse.settings.backfaceThreshold))
                         continue;
-                    std::printf(" %.3f/%.3f", lum(tileIrradiance(dense, i, ln)), lum(l2(i, ln)));
+                    std::printf(" %.3f/%.3f", pb::luminance(tileIrradiance(dense, i, ln)),
+                                pb::luminance(l2(i, ln)));
                 }
                 std::printf("\n");
             }
@@ -795,7 +795,7 @@ void slackVariants(const char* name) {
     const ChangedQueries cq = changedQueries(rs, b.dense, ds, ss);
     std::vector<float> dense;
     for (const Q& q : cq.queries)
-        dense.push_back(lum(ds.sample(q.p, q.n, q.n, midAirLookup()).irradiance));
+        dense.push_back(pb::luminance(ds.sample(q.p, q.n, q.n, midAirLookup()).irradiance));
     // The bake's own score (FreeSpaceTiles.h standInErrors).
     const std::vector<std::vector<float>> scores =
         standInErrors(b.dense, {sparseKeptProbes(v, true, b.tris)});
@@ -821,7 +821,8 @@ void slackVariants(const char* name) {
         for (std::size_t j = 0; j < cq.queries.size(); ++j) {
             const Q& q = cq.queries[j];
             const double d =
-                std::abs(lum(hs.sample(q.p, q.n, q.n, midAirLookup()).irradiance) - dense[j]) /
+                std::abs(pb::luminance(hs.sample(q.p, q.n, q.n, midAirLookup()).irradiance) -
+                         dense[j]) /
                 std::max(dense[j], cq.floor);
             e.mean += d;
             e.worst = std::max(e.worst, d);

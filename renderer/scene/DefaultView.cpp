@@ -1,5 +1,6 @@
 #include "scene/DefaultView.h"
 
+#include "core/Luminance.h"
 #include "scene/RayGrid.h"
 
 #include <algorithm>
@@ -46,10 +47,6 @@ View poseView(const Bounds& b, const Pose& p) {
     return v;
 }
 
-// What a pose sees (DefaultView.h): a 16x9 grid across the 16:9 frustum and 14 rays all
-// around the eye (the 6 axes and 8 diagonals). `length` is the scene's long side.
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
-
 bool sceneHasLight(const Scene& s, const RayGrid& grid) {
     return (s.sun.enabled && s.sun.intensity > 0.0f) || luminance(s.sky.radiance) > 0.0f ||
            !s.lights.empty() || !grid.emitterCentroids().empty();
@@ -95,6 +92,8 @@ bool receivesLight(const Scene& s, const RayGrid& grid, glm::vec3 p, glm::vec3 n
     return false;
 }
 
+// What a pose sees (DefaultView.h): a 16x9 grid across the 16:9 frustum and 14 rays all
+// around the eye (the 6 axes and 8 diagonals). `length` is the scene's long side.
 ViewCheck look(const Scene& scene, const RayGrid& grid, const View& v, float length,
                float diagonal) {
     const glm::vec3 f = glm::normalize(v.target - v.position);

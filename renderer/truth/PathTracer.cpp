@@ -1,6 +1,7 @@
 #include "truth/PathTracer.h"
 
 #include "core/Error.h"
+#include "core/Luminance.h"
 #include "core/ParallelFor.h"
 #include "probes/bake/AliasTable.h"
 #include "truth/CameraRays.h"
@@ -40,7 +41,6 @@ private:
     std::uint64_t state_;
 };
 
-float luminance(const glm::vec3& c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
 float maxComponent(const glm::vec3& c) { return std::max(c.r, std::max(c.g, c.b)); }
 
 // Cosine-weighted direction around n (Malley's method on a concentric-free disk mapping).

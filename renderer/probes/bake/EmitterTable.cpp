@@ -1,6 +1,6 @@
 #include "probes/bake/EmitterTable.h"
 
-#include "probes/bake/Luminance.h"
+#include "core/Luminance.h"
 
 #include <cmath>
 

@@ -1,9 +1,9 @@
 #include "probes/bake/LitSurfaces.h"
 
+#include "core/Luminance.h"
 #include "core/ParallelFor.h"
 #include "probes/bake/AliasTable.h"
 #include "probes/bake/DirectLight.h"
-#include "probes/bake/Luminance.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 #include "probes/bake/NoiseRounds.h"
 
+#include "core/Luminance.h"
 #include "probes/ProbeLayout.h"
 #include "probes/ProbeSet.h"
-#include "probes/bake/Luminance.h"
 
 #include <algorithm>
 #include <cmath>

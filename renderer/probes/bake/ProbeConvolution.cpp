@@ -1,5 +1,6 @@
 #include "probes/bake/ProbeConvolution.h"
 
+#include "core/Luminance.h"
 #include "probes/Octahedral.h"
 #include "probes/ProbeLayout.h"
 
@@ -77,10 +78,7 @@ void ProbeConvolution::irradiance(const float* rgbx, float* out) const {
 }
 
 void ProbeConvolution::irradianceLumaVariance(const float* rgbx, float* out) const {
-    auto luma = [&](int r) {
-        const float* l = rgbx + 4 * size_t(r);
-        return 0.2126f * l[0] + 0.7152f * l[1] + 0.0722f * l[2];
-    };
+    auto luma = [&](int r) { return luminance(rgbx + 4 * size_t(r)); };
     for (size_t t = 0; t + 1 < irr_.start.size(); ++t) {
         float e = 0.0f;
         for (int k = irr_.start[t]; k < irr_.start[t + 1]; ++k)

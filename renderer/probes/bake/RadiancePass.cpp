@@ -1,11 +1,11 @@
 #include "probes/bake/RadiancePass.h"
 
+#include "core/Luminance.h"
 #include "core/ParallelFor.h"
 #include "probes/Octahedral.h"
 #include "probes/ProbeLayout.h"
 #include "probes/ShIrradiance.h"
 #include "probes/bake/DirectLight.h"
-#include "probes/bake/Luminance.h"
 #include "probes/bake/RayDirections.h"
 
 #include <cmath>

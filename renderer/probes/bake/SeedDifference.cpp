@@ -1,8 +1,8 @@
 #include "probes/bake/SeedDifference.h"
 
+#include "core/Luminance.h"
 #include "probes/ProbeSampler.h"
 #include "probes/StaticTriangles.h"
-#include "probes/bake/Luminance.h"
 #include "probes/bake/RayScene.h"
 #include "probes/bake/SurfaceSamples.h"
 

@@ -1,6 +1,7 @@
 #include "probes/store/FreeSpaceTiles.h"
 
 #include "core/Error.h"
+#include "core/Luminance.h"
 #include "probes/AbsentProbeFill.h"
 #include "probes/ProbeLayout.h"
 #include "probes/ProbeSampler.h"
@@ -21,7 +22,7 @@ float tileLuminance(const ProbeTexture& t, const glm::ivec3& c, const glm::vec3&
     const glm::vec2 tc = tileCoord(c, localDir, kIrradianceInterior);
     float e[4] = {0, 0, 0, 0};
     bilinearFetch(t, tc.x, tc.y, c.y, e);
-    return 0.2126f * e[0] + 0.7152f * e[1] + 0.0722f * e[2];
+    return luminance(e);
 }
 
 // A tenth of the stored probes' mean luminance in one scenario (the floor of step 1).
