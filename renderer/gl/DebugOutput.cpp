@@ -172,6 +172,11 @@ std::vector<DebugMessage> DebugOutput::messagesSince(std::uint64_t mark) const {
     return out;
 }
 
+void DebugOutput::discardNonErrors() {
+    std::erase_if(messages_, [](const DebugMessage& m) { return !m.isError(); });
+    keptNonErrors_ = 0;
+}
+
 void DebugOutput::print(std::ostream& out, std::uint64_t mark, bool errorsOnly) {
     out << format(errorsOnly ? errorsSince(mark) : messagesSince(mark));
 }

@@ -50,6 +50,11 @@ public:
     // error since the last poll, glGetError returns the same error again and is not repeated.
     void poll();
 
+    // Forgets every non-error message recorded so far (errors stay: they fail tests). For a
+    // reader that consumes informational messages as they come (driver statistics), so that
+    // the cap on kept non-errors applies per batch, not per process.
+    void discardNonErrors();
+
     void print(std::ostream& out, std::uint64_t mark, bool errorsOnly = true);
 
     static std::string format(const DebugMessage& m);                 // one line
