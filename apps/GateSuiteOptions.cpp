@@ -1,4 +1,5 @@
 #include "GateSuiteOptions.h"
+#include "SceneOptions.h"
 
 #include "core/Error.h"
 
@@ -65,13 +66,6 @@ std::string resolveSuiteVolumes(const std::string& volumes) {
     const fs::path inSource = fs::path(PB_SOURCE_DIR) / volumes;
     if (fs::exists(inSource)) return inSource.string();
     throw Error("suite volumes " + volumes + ": not found here nor in " + PB_SOURCE_DIR);
-}
-
-std::string gateCameraSpec(const scene::View& v) {
-    char buf[256];
-    std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g", v.position.x, v.position.y,
-                  v.position.z, v.target.x, v.target.y, v.target.z, v.fovYDegrees);
-    return buf;
 }
 
 } // namespace pb::app

@@ -31,7 +31,4 @@ gate::GateSuite resolveGateSuite(const GateSuiteArgs& a, bool update,
 // working folder or from the source tree; auto and auto-uniform pass through.
 std::string resolveSuiteVolumes(const std::string& volumes);
 
-// "px,py,pz,tx,ty,tz,fov" with 6 significant digits, as --camera reads it.
-std::string gateCameraSpec(const scene::View& v);
-
 } // namespace pb::app

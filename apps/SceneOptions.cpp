@@ -90,4 +90,11 @@ scene::View chooseView(const scene::Scene& s, const std::string& viewName,
                 didYouMean(viewName, list) + " (views: " + names + ")");
 }
 
+std::string cameraSpec(const scene::View& v) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, "%.6g,%.6g,%.6g,%.6g,%.6g,%.6g,%.6g", v.position.x, v.position.y,
+                  v.position.z, v.target.x, v.target.y, v.target.z, v.fovYDegrees);
+    return buf;
+}
+
 } // namespace pb::app

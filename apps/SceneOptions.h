@@ -27,4 +27,8 @@ std::string sceneSummary(const scene::Scene& s);
 scene::View chooseView(const scene::Scene& s, const std::string& viewName,
                        const std::string& cameraSpec);
 
+// The --camera form of a view ("px,py,pz,tx,ty,tz,fov", 6 significant digits), so a chosen or
+// found camera can be pasted into render, bench or views.
+std::string cameraSpec(const scene::View& v);
+
 } // namespace pb::app

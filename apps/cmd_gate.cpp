@@ -234,7 +234,7 @@ GateSetup setUpSuite(const GateArgs& a, gate::GateRecord& now) {
         g.view = views::findWorstCaseView(g.scene, g.probes.set, 320,
                                           std::max(16, 320 * s.height / s.width))
                      .view;
-        s.camera = gateCameraSpec(g.view);
+        s.camera = cameraSpec(g.view);
     }
     g.view = chooseView(g.scene, "", s.camera);
     return g;
