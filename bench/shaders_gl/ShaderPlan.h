@@ -1,0 +1,16 @@
+#pragma once
+// The bench's plan (bench/report/AblationPlan.h) as `probebench shaders` compiles it: every
+// distinct variant of every session once, and every single-switch pair (a switch reverted in
+// a profile, or applied to the reference) as a SwitchPair, so each switch's change in
+// instructions, registers and spills is read off programs that differ in that switch only.
+#include "ShaderCollector.h"
+#include "bench/report/AblationPlan.h"
+
+#include <vector>
+
+namespace pb::shaders {
+
+std::vector<PlannedVariant> plannedVariants(const bench::BenchPlan& plan);
+std::vector<SwitchPair> switchPairs(const bench::BenchPlan& plan);
+
+} // namespace pb::shaders
