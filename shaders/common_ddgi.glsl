@@ -183,7 +183,11 @@ ivec3 ddgiDenseTile(ivec3 q) {
 
 // Visibility-and-position weight of probe q = base + off (README steps 4a-4d); < 0 when q is
 // skipped (outside the grid, invalid or absent). `cellProbe`: where probe `base` would sit
-// unrelocated (per lookup), so a corner adds only its constant step. `tile`: where q's texels are;
+// unrelocated (per lookup), so a corner adds only its constant step. GI_LOOPS_SPLIT passes
+// `cellProbe` relative to `p` and `biased` relative to the cell's probe instead (ddgiSample):
+// two vectors live across the corners instead of three, which the mobile compilers need to keep
+// the split loops out of spills (bench/shaders/README.md); the fused path keeps the CPU
+// sampler's exact order of operations. `tile`: where q's texels are;
 // sparse sets also return the state's w (`stateW`, 1 when skipped), from which ddgiTile finds
 // the tile again.
 // Branch-free: llvmpipe runs both sides of a branch whose condition differs between the lanes
@@ -204,11 +208,18 @@ hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 cellProbe, vec3 p, hvec3 n, vec3
 #else
     tile = ddgiDenseTile(qc);
 #endif
+#ifdef GI_LOOPS_SPLIT
+    vec3 d = vec3(off) * ddgiLoopStep + state.xyz; // the probe, relative to the cell's probe
+    vec3 toProbe = cellProbe + d;
+    vec3 toPoint = biased - d;
+#else
     vec3 probe = cellProbe + vec3(off) * ddgiLoopStep + state.xyz;
+    vec3 toProbe = probe - p;
+    vec3 toPoint = biased - probe;
+#endif
 
     // 4a. Wrap shading: probes behind the surface count less (never zero). The cosine of the
     // direction to the probe (n when the probe sits on the point) without normalising it.
-    vec3 toProbe = probe - p;
     float len2 = dot(toProbe, toProbe);
     float height = dot(toProbe, vec3(n)); // the probe's height over the surface's plane
     hfloat t = len2 > 0.0 ? (ddgiHalf(height * inversesqrt(len2)) + 1.0) * 0.5 : 1.0;
@@ -219,7 +230,6 @@ hfloat ddgiProbeWeight(ivec3 q, ivec3 off, vec3 cellProbe, vec3 p, hvec3 n, vec3
     // as on the CPU: the encoding does not need it, but its rounding without it moved the
     // texel coordinate enough that a weight on the crushed Chebyshev slope (~cheb^9) differed
     // from the CPU's by 1.2e-3 once the behind-surface fade (4c') left it dominant.
-    vec3 toPoint = biased - probe;
     float dist = sqrt(dot(toPoint, toPoint));
     vec2 visCoord = vec2(tile.xy) * ddgiLoopVisTile +
                     ddgiOctEncode(dist > 0.0 ? toPoint / dist : vec3(n)) * ddgiLoopVisOct.xy +
@@ -293,7 +303,11 @@ hfloat ddgiCornerWeight(int i, ivec3 base, vec3 cellProbe, vec3 p, hvec3 nh, vec
 // a loop this long, and llvmpipe then runs it as a loop, recomputing per iteration what the
 // unrolled code folds (each corner's offset and trilinear selects, the samplers' set-up):
 // written out, 27% fewer instructions per evaluation and GI / floor 2.17 -> 1.83 on an AMD EPYC
-// (bench/results/2026-11-29-p1-written-out-loops.md).
+// (bench/results/2026-11-29-p1-written-out-loops.md). The mobile compilers agree only in part
+// (`probebench shaders`, bench/shaders/README.md): Mali-G52 and Adreno fold the written-out
+// corners well, while Mali-G57 and V3D spill on them (as a real loop none of them spills, at
+// about twice the instructions per corner). GI_LOOPS_SPLIT, which keeps eight weights live,
+// runs as real loops for that reason.
 // tests/unit/CostModelShaderTest.cpp reads these 8 calls as the fused loop.
 void ddgiFusedCorner(int i, ivec3 base, vec3 cellProbe, vec3 p, hvec3 nh, vec3 biased,
                      hvec3 alpha, vec2 irrLocal, inout hvec3 sumE, inout hfloat sumW) {
@@ -346,34 +360,41 @@ hvec4 ddgiSample(vec3 p, vec3 normal, vec3 view) {
 
     // 4. The 8 surrounding probes.
     vec3 cellProbe = u_ddgiGridOrigin + vec3(base) * u_ddgiGridStep;
+#ifdef GI_LOOPS_SPLIT
+    biased -= cellProbe; // relative to the cell's probe, and the cell's probe to p
+    cellProbe -= p;      // (ddgiProbeWeight)
+#endif
     vec2 irrLocal = ddgiIrrCoord(n);
     hvec3 sumE = vec3(0.0);
     hfloat sumW = 0.0;
 #ifdef GI_LOOPS_SPLIT
     // All visibility weights first (the visibility fetches back to back), then irradiance.
-    // Dense sets recompute each tile in the second loop: an ivec3[8] kept across the loops
-    // cost llvmpipe 8% more frame instructions (pc-high). Sparse sets keep each probe's state
-    // w (a float[8]) and decode it again: 7% fewer GI instructions than an ivec3[8] of tiles
-    // (pc-high, bench/README.md "Probe placement").
-    hfloat weights[8];
-    float states[8]; // sparse: each probe's state w; dense: unused (ddgiSplitWeight)
-    // Both loops written out, as the fused one (ddgiFusedCorner says why).
-    weights[0] = ddgiSplitWeight(0, base, cellProbe, p, nh, biased, alpha, states[0]);
-    weights[1] = ddgiSplitWeight(1, base, cellProbe, p, nh, biased, alpha, states[1]);
-    weights[2] = ddgiSplitWeight(2, base, cellProbe, p, nh, biased, alpha, states[2]);
-    weights[3] = ddgiSplitWeight(3, base, cellProbe, p, nh, biased, alpha, states[3]);
-    weights[4] = ddgiSplitWeight(4, base, cellProbe, p, nh, biased, alpha, states[4]);
-    weights[5] = ddgiSplitWeight(5, base, cellProbe, p, nh, biased, alpha, states[5]);
-    weights[6] = ddgiSplitWeight(6, base, cellProbe, p, nh, biased, alpha, states[6]);
-    weights[7] = ddgiSplitWeight(7, base, cellProbe, p, nh, biased, alpha, states[7]);
-    ddgiAddProbe(ddgiSplitTile(0, base, states[0]), weights[0], irrLocal, sumE, sumW);
-    ddgiAddProbe(ddgiSplitTile(1, base, states[1]), weights[1], irrLocal, sumE, sumW);
-    ddgiAddProbe(ddgiSplitTile(2, base, states[2]), weights[2], irrLocal, sumE, sumW);
-    ddgiAddProbe(ddgiSplitTile(3, base, states[3]), weights[3], irrLocal, sumE, sumW);
-    ddgiAddProbe(ddgiSplitTile(4, base, states[4]), weights[4], irrLocal, sumE, sumW);
-    ddgiAddProbe(ddgiSplitTile(5, base, states[5]), weights[5], irrLocal, sumE, sumW);
-    ddgiAddProbe(ddgiSplitTile(6, base, states[6]), weights[6], irrLocal, sumE, sumW);
-    ddgiAddProbe(ddgiSplitTile(7, base, states[7]), weights[7], irrLocal, sumE, sumW);
+    // Real loops, unlike the fused corners: written out, the eight weights and states and every
+    // corner's temporaries were live at once, and each mobile compiler spilled or bloated
+    // (Mesa 22.3: Mali-G52 6:43 spills:fills, G57 22:246, V3D 56:109, Adreno 3x the
+    // instructions, Tegra X1 78 registers; bench/shaders/README.md). As loops only the weights and
+    // states cross from the first loop to the second: 8 halves and 8 floats, kept in vectors
+    // (a dynamic component write is a select; an array indexed in a loop is unrolled back or
+    // put in memory). Sparse sets keep each probe's state w and decode its tile again; dense sets
+    // recompute the tile from the corner (ddgiSplitTile).
+    hvec4 weightsLo, weightsHi;
+    vec4 statesLo, statesHi; // sparse: each probe's state w; dense: unused (ddgiSplitWeight)
+    for (int i = 0; i < 8; ++i) {
+        float state;
+        hfloat w = ddgiSplitWeight(i, base, cellProbe, p, nh, biased, alpha, state);
+        if (i < 4) {
+            weightsLo[i] = w;
+            statesLo[i] = state;
+        } else {
+            weightsHi[i - 4] = w;
+            statesHi[i - 4] = state;
+        }
+    }
+    for (int i = 0; i < 8; ++i) {
+        hfloat w = i < 4 ? weightsLo[i & 3] : weightsHi[i & 3];
+        float state = i < 4 ? statesLo[i & 3] : statesHi[i & 3];
+        ddgiAddProbe(ddgiSplitTile(i, base, state), w, irrLocal, sumE, sumW);
+    }
 #else
     // The fused loop over corners 0..7, written out (ddgiFusedCorner says why).
     ddgiFusedCorner(0, base, cellProbe, p, nh, biased, alpha, irrLocal, sumE, sumW);

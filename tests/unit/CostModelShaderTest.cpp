@@ -112,6 +112,9 @@ ParsedVariant parse(const GiVariant& v) {
     std::map<std::string, std::vector<FetchKind>> helpers;
     helpers["ddgiProbeWeight"] = fetchesIn(functionBody(src, "ddgiProbeWeight"), {});
     helpers["ddgiProbeIrradiance"] = fetchesIn(functionBody(src, "ddgiProbeIrradiance"), {});
+    for (const char* fn : {"ddgiAddProbe", "ddgiCornerWeight", "ddgiFusedCorner", "ddgiSplitWeight",
+                           "ddgiSplitTile"})
+        helpers[fn] = fetchesIn(functionBody(src, fn), helpers);
     ParsedVariant p;
     std::string body = functionBody(src, "ddgiSample");
     static const std::regex loop(R"(for\s*\(\s*int\s+i\s*=\s*0\s*;\s*i\s*<\s*8\s*;\s*\+\+i\s*\))");
@@ -136,9 +139,6 @@ ParsedVariant parse(const GiVariant& v) {
     // Loops written out (common_ddgi.glsl, ddgiFusedCorner says why): 8 consecutive statements
     // that differ only in their corner, the first argument of a ddgi* call, 0..7 in order, are
     // one loop whose fetches are those of one statement.
-    for (const char* fn : {"ddgiAddProbe", "ddgiCornerWeight", "ddgiFusedCorner", "ddgiSplitWeight",
-                           "ddgiSplitTile"})
-        helpers[fn] = fetchesIn(functionBody(src, fn), helpers);
     static const std::regex cornerCall(R"(\bddgi\w+\s*\(\s*(\d)\s*,)");
     static const std::regex cornerDigit(R"(\b[0-7]\b)");
     std::string shape;
