@@ -281,6 +281,8 @@ const char* rowStatusName(RowStatus s) {
         return "same";
     case RowStatus::Unknown:
         return "unknown";
+    case RowStatus::Failed:
+        return "FAILED";
     case RowStatus::Skipped:
         break;
     }
@@ -289,7 +291,7 @@ const char* rowStatusName(RowStatus s) {
 
 bool failsDeterministic(RowStatus s) {
     return s == RowStatus::Changed || s == RowStatus::New || s == RowStatus::Missing ||
-           s == RowStatus::Worse || s == RowStatus::Disagree;
+           s == RowStatus::Worse || s == RowStatus::Disagree || s == RowStatus::Failed;
 }
 
 int GateOutcome::deterministicFailures() const {

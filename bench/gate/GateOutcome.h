@@ -24,13 +24,14 @@ enum class RowStatus {
     Same,     // timing: any change is below the threshold
     Unknown,  // timing: undecided within the round budget (passes, reported)
     Skipped,  // not compared (callgrind baseline of another toolchain, ...)
+    Failed,   // a part that must run could not (a shader target's compile, CI's compilers)
 };
 const char* rowStatusName(RowStatus s); // "ok", "CHANGED", ...
-bool failsDeterministic(RowStatus s);   // Changed, New, Missing, Worse, Disagree
+bool failsDeterministic(RowStatus s);   // Changed, New, Missing, Worse, Disagree, Failed
 
 struct GateRow {
     std::string profile; // "" for rows about the whole suite
-    std::string group;   // probes | counters | accuracy | model-vs-gl | timing | callgrind
+    std::string group; // probes | counters | accuracy | model-vs-gl | timing | callgrind | shaders
     std::string name, baseline, now;
     RowStatus status = RowStatus::Ok;
     std::string note;
@@ -42,7 +43,7 @@ struct GateOutcome {
     bool recording = false;         // --update: the rows show what changes in the baseline
     int deterministicFailures() const;
     int timingFailures() const;
-    // 0 pass, 3 a counter / accuracy / callgrind / agreement failure, 4 only timing
+    // 0 pass, 3 a counter / accuracy / callgrind / shader / agreement failure, 4 only timing
     // regressions (1 is every error: bad option, unreadable baseline, GL failure).
     int exitCode() const;
 };

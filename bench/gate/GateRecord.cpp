@@ -1,5 +1,6 @@
 #include "GateRecord.h"
 
+#include "bench/shaders/ShaderTargets.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
 
@@ -82,7 +83,8 @@ json suiteJson(const GateSuite& s) {
               {"psnr_db", a.psnrDb},
               {"rel_mse_gi_abs", a.relMseAbs},
               {"rel_mse_gi_rel", a.relMseRel}}},
-            {"callgrind_tolerance", s.callgrindTolerance}};
+            {"callgrind_tolerance", s.callgrindTolerance},
+            {"shader_targets", s.shaderTargets}};
 }
 
 GateSuite suiteFrom(const json& j, const std::string& where) {
@@ -116,6 +118,15 @@ GateSuite suiteFrom(const json& j, const std::string& where) {
     at.relMseAbs = optionalField(a, "rel_mse_gi_abs", aw, at.relMseAbs);
     at.relMseRel = optionalField(a, "rel_mse_gi_rel", aw, at.relMseRel);
     s.callgrindTolerance = optionalField(j, "callgrind_tolerance", where, s.callgrindTolerance);
+    // Baselines written before the shader statistics were gated get the default targets.
+    s.shaderTargets = optionalField(j, "shader_targets", where, s.shaderTargets);
+    for (const std::string& t : s.shaderTargets) {
+        try {
+            shaders::findShaderTarget(t);
+        } catch (const Error& e) {
+            throw Error(where + ".shader_targets: " + e.what());
+        }
+    }
     if (s.width < 16 || s.height < 16 || s.width > 16384 || s.height > 16384)
         throw Error(where + ".width/height: must be in 16..16384");
     if (s.profiles.empty()) throw Error(where + ".profiles: empty");
@@ -130,6 +141,42 @@ GateSuite suiteFrom(const json& j, const std::string& where) {
 
 json keyJson(const CallgrindKey& k) {
     return {{"mesa", k.mesa}, {"llvm", k.llvm}, {"compiler", k.compiler}, {"valgrind", k.valgrind}};
+}
+
+// {"key": {...}, "targets": {target: {profile: {pass: counters}}}}: nested objects, so the
+// file's keys sort as everywhere else in it.
+json shaderRecordJson(const ShaderRecord& r) {
+    json targets = json::object();
+    for (const ShaderTargetRecord& t : r.targets) {
+        json profiles = json::object();
+        for (const ShaderPassRecord& p : t.passes)
+            profiles[p.profile][p.pass] = countersJson(p.counters);
+        targets[t.target] = profiles;
+    }
+    return {{"key", {{"mesa", r.key.mesa}, {"drivers", r.key.drivers}}}, {"targets", targets}};
+}
+
+ShaderRecord shaderRecordFrom(const json& j, const std::string& where) {
+    ShaderRecord r;
+    const json& k = j.is_object() ? j.value("key", json()) : json();
+    r.key.mesa = field<std::string>(k, "mesa", where + ".key");
+    r.key.drivers = field<std::vector<std::string>>(k, "drivers", where + ".key");
+    const json& targets = j.is_object() ? j.value("targets", json()) : json();
+    if (!targets.is_object()) throw Error(where + ".targets: must be an object");
+    for (const auto& [target, profiles] : targets.items()) {
+        const std::string tw = where + ".targets." + target;
+        if (!profiles.is_object()) throw Error(tw + ": must be an object of profiles");
+        ShaderTargetRecord t{target, {}};
+        for (const auto& [profile, passes] : profiles.items()) {
+            if (!passes.is_object())
+                throw Error(tw + "." + profile + ": must be an object of passes");
+            for (const auto& [pass, counters] : passes.items())
+                t.passes.push_back(
+                    {profile, pass, countersFrom(counters, tw + "." + profile + "." + pass)});
+        }
+        r.targets.push_back(std::move(t));
+    }
+    return r;
 }
 
 } // namespace
@@ -154,6 +201,30 @@ const Counters* CallgrindRecord::profile(const std::string& name) const {
     return nullptr;
 }
 
+bool ShaderKey::operator==(const ShaderKey& o) const {
+    return mesa == o.mesa && drivers == o.drivers;
+}
+
+std::string ShaderKey::text() const {
+    std::string list;
+    for (const std::string& d : drivers)
+        list += (list.empty() ? "" : ", ") + d;
+    return "Mesa " + mesa + " (" + list + ")";
+}
+
+const ShaderPassRecord* ShaderTargetRecord::pass(const std::string& profile,
+                                                 const std::string& name) const {
+    for (const ShaderPassRecord& p : passes)
+        if (p.profile == profile && p.pass == name) return &p;
+    return nullptr;
+}
+
+const ShaderTargetRecord* ShaderRecord::target(const std::string& name) const {
+    for (const ShaderTargetRecord& t : targets)
+        if (t.target == name) return &t;
+    return nullptr;
+}
+
 const ProfileRecord* GateRecord::profile(const std::string& name) const {
     for (const ProfileRecord& p : profiles)
         if (p.name == name) return &p;
@@ -163,6 +234,12 @@ const ProfileRecord* GateRecord::profile(const std::string& name) const {
 const CallgrindRecord* GateRecord::callgrindFor(const CallgrindKey& key) const {
     for (const CallgrindRecord& c : callgrind)
         if (c.key == key) return &c;
+    return nullptr;
+}
+
+const ShaderRecord* GateRecord::shadersFor(const ShaderKey& key) const {
+    for (const ShaderRecord& s : shaders)
+        if (s.key == key) return &s;
     return nullptr;
 }
 
@@ -187,12 +264,16 @@ json recordJson(const GateRecord& r) {
             ps[name] = countersJson(counters);
         callgrind.push_back({{"key", keyJson(c.key)}, {"profiles", ps}});
     }
+    json shaderRecords = json::array();
+    for (const ShaderRecord& s : r.shaders)
+        shaderRecords.push_back(shaderRecordJson(s));
     const json environment{{"embree_isa", r.environment.embreeIsa},
                            {"gl_renderer", r.environment.glRenderer},
                            {"cpu", r.environment.cpu}};
-    return {{"schema", kGateSchema},      {"suite", suiteJson(r.suite)}, {"recorded", r.recorded},
-            {"environment", environment}, {"probes", r.probes},          {"bake", r.bake},
-            {"profiles", profiles},       {"callgrind", callgrind}};
+    return {
+        {"schema", kGateSchema},      {"suite", suiteJson(r.suite)}, {"recorded", r.recorded},
+        {"environment", environment}, {"probes", r.probes},          {"bake", r.bake},
+        {"profiles", profiles},       {"callgrind", callgrind},      {"shaders", shaderRecords}};
 }
 
 GateRecord recordFromJson(const json& j, const std::string& source) {
@@ -252,6 +333,10 @@ GateRecord recordFromJson(const json& j, const std::string& source) {
                 c.profiles.emplace_back(name, countersFrom(counters, w + ".profiles." + name));
             r.callgrind.push_back(std::move(c));
         }
+        const json& sh = j.value("shaders", json::array()); // older baselines: none
+        if (!sh.is_array()) throw Error("shaders: must be an array");
+        for (size_t i = 0; i < sh.size(); ++i)
+            r.shaders.push_back(shaderRecordFrom(sh[i], "shaders[" + std::to_string(i) + "]"));
         return r;
     } catch (const Error& e) {
         throw fileError(source, e.what());

@@ -2,8 +2,9 @@
 // What the regression gate compares (bench/gate/README.md): the suite it runs and, per
 // profile, what one run measured - exact counters, accuracy against the reference, and the
 // profile/reference frame-time ratios of its interleaved rounds - plus callgrind instruction
-// counts keyed by the toolchain that produced them. A baseline file (bench/baselines/*.json)
-// is one such record written on purpose (`probebench gate --update`). GL-free.
+// counts keyed by the toolchain that produced them, and the weak GPUs' shader compilers'
+// statistics keyed by the Mesa that built them. A baseline file (bench/baselines/*.json) is one
+// such record written on purpose (`probebench gate --update`). GL-free.
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -51,6 +52,10 @@ struct GateSuite {
     TimingSettings timing;
     AccuracyTolerance tolerance;
     double callgrindTolerance = 0.005; // relative, of the frame's instructions
+    // `probebench shaders` targets whose compiler statistics are gated (bench/gate/README.md
+    // "Shader statistics"): one Adreno, one Bifrost and one Valhall Mali by default, the
+    // handheld-class parts the profiles aim at. A baseline without the key gets these.
+    std::vector<std::string> shaderTargets = {"adreno-630", "mali-g52", "mali-g57"};
 };
 
 // What a run's figures depend on besides the code and the suite (compared, unlike
@@ -98,6 +103,34 @@ struct CallgrindRecord {
     const Counters* profile(const std::string& name) const;
 };
 
+// What a shader compiler's statistics depend on: the Mesa that built the compilers and the
+// drivers built into it (scripts/mesa-shim.sh); a baseline with another key is skipped.
+struct ShaderKey {
+    std::string mesa;                 // "22.3.6-1+deb12u2": the install's Debian version
+    std::vector<std::string> drivers; // as built: "freedreno", "panfrost", ...
+    bool operator==(const ShaderKey& o) const;
+    std::string text() const; // "Mesa 22.3.6-1+deb12u2 (freedreno, panfrost, v3d, nouveau)"
+};
+
+// One pass of one profile on one target: its heaviest fragment program's figures as exact
+// integers (ShaderCounters.h names them).
+struct ShaderPassRecord {
+    std::string profile, pass;
+    Counters counters;
+};
+
+struct ShaderTargetRecord {
+    std::string target; // "mali-g52"
+    std::vector<ShaderPassRecord> passes;
+    const ShaderPassRecord* pass(const std::string& profile, const std::string& pass) const;
+};
+
+struct ShaderRecord {
+    ShaderKey key;
+    std::vector<ShaderTargetRecord> targets;
+    const ShaderTargetRecord* target(const std::string& name) const;
+};
+
 struct GateRecord {
     GateSuite suite;
     nlohmann::json recorded = nlohmann::json::object(); // where and when (never compared)
@@ -111,8 +144,10 @@ struct GateRecord {
     std::string bake;
     std::vector<ProfileRecord> profiles;
     std::vector<CallgrindRecord> callgrind; // at most one per key
+    std::vector<ShaderRecord> shaders;      // at most one per key
     const ProfileRecord* profile(const std::string& name) const;
     const CallgrindRecord* callgrindFor(const CallgrindKey& key) const;
+    const ShaderRecord* shadersFor(const ShaderKey& key) const;
 };
 
 // The probe file committed beside a baseline: "<baseline without .json>.probes.gz".

@@ -10,11 +10,11 @@ namespace pb::gate {
 namespace {
 
 int groupRank(const std::string& g) {
-    static const char* order[] = {"probes",   "counters", "model-vs-gl",
-                                  "accuracy", "timing",   "callgrind"};
-    for (int i = 0; i < 6; ++i)
+    static const char* order[] = {"probes", "counters",  "model-vs-gl",    "accuracy",
+                                  "timing", "callgrind", "gl-invocations", "shaders"};
+    for (int i = 0; i < 8; ++i)
         if (g == order[i]) return i;
-    return 6;
+    return 8;
 }
 
 } // namespace
@@ -42,6 +42,9 @@ std::string gateTable(const GateOutcome& o) {
                 out << " (against the reference profile, tolerances from the baseline)";
             else if (group == "model-vs-gl")
                 out << " (GI pixels evaluated: cost model vs the GL pass's own count)";
+            else if (group == "shaders")
+                out << " (exact; per target and pass, its heaviest fragment program as the "
+                       "target's compiler reports it; the note names the figures)";
             out << "\n";
         }
         std::snprintf(line, sizeof line, fmt, r.profile.c_str(), r.name.c_str(), r.baseline.c_str(),
@@ -56,7 +59,7 @@ std::string gateTable(const GateOutcome& o) {
             << " of them new or different from the previous baseline\n";
     else
         out << "gate: " << (o.exitCode() == 0 ? "PASS" : "FAIL") << " - " << o.rows.size()
-            << " rows, " << d << " counter/accuracy/instruction failure(s), " << t
+            << " rows, " << d << " counter/accuracy/instruction/shader failure(s), " << t
             << " timing regression(s)\n";
     return out.str();
 }
