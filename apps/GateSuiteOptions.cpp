@@ -1,6 +1,7 @@
 #include "GateSuiteOptions.h"
 #include "SceneOptions.h"
 
+#include "bench/shaders/ShaderTargets.h"
 #include "core/Error.h"
 
 #include <algorithm>
@@ -33,6 +34,12 @@ void addGateSuiteOptions(CLI::App& cmd, GateSuiteArgs& a) {
                        "Profiles to gate, comma-separated (default: every profile; the reference "
                        "is always included)")
             ->delimiter(',')
+            ->group(g),
+        cmd.add_option("--shader-targets", a.shaderTargets,
+                       "Shader compiler targets whose statistics are gated, comma-separated, or "
+                       "none (default: adreno-630,mali-g52,mali-g57; probebench shaders "
+                       "--list-targets)")
+            ->delimiter(',')
             ->group(g)};
 }
 
@@ -55,6 +62,13 @@ gate::GateSuite resolveGateSuite(const GateSuiteArgs& a, bool update,
         s.height = a.height;
     }
     if (!a.profiles.empty()) s.profiles = a.profiles;
+    if (a.shaderTargets == std::vector<std::string>{"none"})
+        s.shaderTargets.clear();
+    else if (!a.shaderTargets.empty()) {
+        s.shaderTargets.clear();
+        for (const std::string& t : a.shaderTargets) // throws naming the closest names
+            s.shaderTargets.push_back(shaders::findShaderTarget(t).name);
+    }
     if (std::find(s.profiles.begin(), s.profiles.end(), s.reference) == s.profiles.end())
         s.profiles.insert(s.profiles.begin(), s.reference);
     return s;

@@ -15,6 +15,7 @@ struct GateSuiteArgs {
     std::string scene, volumes, camera;
     int width = 0, height = 0;
     std::vector<std::string> profiles;
+    std::vector<std::string> shaderTargets;  // "none" alone: gate no shader statistics
     std::vector<const CLI::Option*> options; // to tell which were given
 };
 

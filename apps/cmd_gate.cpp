@@ -2,20 +2,26 @@
 // exact counters (GL calls per pass, the cost model's pixels, fetches and bytes, the cache
 // model), accuracy against the reference within the baseline's tolerances, timing decided as
 // Chromium's Pinpoint does (profile/reference ratios in one run, or this binary against
-// another with --against), optionally callgrind instruction counts - prints a table and exits
-// non-zero on a regression. --update rewrites the baseline on purpose.
+// another with --against), optionally callgrind instruction counts, and the weak GPUs' shader
+// compilers' statistics (exact, keyed by Mesa) - prints a table and exits non-zero on a
+// regression. --update rewrites the baseline on purpose.
 #include "CommandRegistry.h"
-#include "JsonOption.h"
 #include "GateSuiteOptions.h"
+#include "JsonOption.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
 #include "SceneOptions.h"
+#include "ShaderTargetOptions.h"
 #include "bench/gate/GateOutcome.h"
+#include "bench/gate/ShaderComparison.h"
+#include "bench/gate/ShaderCounters.h"
 #include "bench/gate_gl/CallgrindFrame.h"
 #include "bench/gate_gl/GateWorker.h"
 #include "bench/gate_gl/WorkerProcess.h"
 #include "bench/runner/BenchContext.h"
 #include "bench/runner/ProbeCache.h"
+#include "bench/shaders/MesaShim.h"
+#include "bench/shaders_gl/TargetWorkers.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "core/Gzip.h"
@@ -42,7 +48,7 @@ namespace fs = std::filesystem;
 struct GateArgs {
     JsonOption json;
     std::string baseline, against, cacheDir;
-    bool quick = false, update = false, callgrind = false, noTiming = false;
+    bool quick = false, update = false, callgrind = false, noTiming = false, noShaders = false;
     bool keepProbes = false; // --update --keep-probes: measure with the committed probe data
     platform::PlatformOptions platform;
     GateSuiteArgs suite;
@@ -253,7 +259,7 @@ std::vector<std::unique_ptr<gate::GateRenderer>> measureProfiles(const gate::Gat
     ref = 0;
     for (size_t i = 0; i < s.profiles.size(); ++i) {
         gateProgress("counting " + s.profiles[i] + " (" + std::to_string(s.width) + "x" +
-                 std::to_string(s.height) + ")");
+                     std::to_string(s.height) + ")");
         const std::uint64_t mark = debug.mark();
         renderers.push_back(
             std::make_unique<gate::GateRenderer>(in, profile::loadProfile(s.profiles[i], search)));
@@ -293,6 +299,53 @@ void callgrindStage(const GateArgs& a, const std::string& probesFile, const gl::
     gate::compareCallgrind(base, cg, outcome);
 }
 
+// The weak GPUs' compiler statistics (bench/gate/README.md "Shader statistics"): every suite
+// profile compiled as itself (no ablation) by each of the suite's shader targets, rendering the
+// suite's view with the probe data every other figure is measured with, compared exactly with
+// the baseline's record of this Mesa (into `outcome`, recorded into `now`).
+void shaderStage(const GateArgs& a, const GateSetup& g, const gate::GateRecord& base,
+                 gate::GateRecord& now, gate::GateOutcome& outcome) {
+    const gate::GateSuite& s = now.suite;
+    if (a.noShaders) {
+        outcome.notes.push_back("shaders: not run (--no-shaders)");
+        return;
+    }
+    if (s.shaderTargets.empty()) {
+        outcome.notes.push_back("shaders: the suite names no shader targets");
+        return;
+    }
+    shaders::MesaShimInstall install;
+    try {
+        install = shaders::findMesaShim();
+    } catch (const Error& e) {
+        gate::shadersNotBuilt(base, e.what(), gate::runningOnCi(), outcome);
+        return;
+    }
+    ShaderRunInputs in;
+    for (const std::string& t : s.shaderTargets)
+        in.targets += (in.targets.empty() ? "" : ",") + t;
+    in.plan.profiles = s.profiles;
+    in.plan.reference = s.reference;
+    in.plan.ablate = false;
+    in.plan.width = s.width;
+    in.plan.height = s.height;
+    in.scene.scene = s.scene;
+    in.probesPath = g.probes.file;
+    in.camera = s.camera;
+    gateProgress("shaders: every profile on " + in.targets + " (Mesa " + install.mesaVersion +
+                 ", drm-shim)");
+    const shaders::ShaderStatisticsRun run = runShaderTargets(
+        in, g.scene.name, [](const std::string& l) { gateProgress("shaders: " + l); });
+    const std::vector<std::string> problems = shaders::shaderRunProblems(run);
+    // A partial record would fail every later run on the passes it lacks: record none.
+    if (a.update && !problems.empty())
+        throw Error("shaders: " + problems.front() +
+                    " (baseline not updated; --no-shaders keeps its shader statistics)");
+    const gate::ShaderRecord record = gate::shaderRecordOf(run, install.drivers, s.profiles);
+    now.shaders = {record};
+    gate::compareShaders(base, record, problems, outcome);
+}
+
 // --update: the baseline rewritten from this run (callgrind counts of other toolchains kept),
 // with the probe data it was measured with committed beside it (already there with
 // --keep-probes).
@@ -303,6 +356,12 @@ void updateBaseline(const GateArgs& a, const std::optional<gate::GateRecord>& ba
     if (a.callgrind && base)
         for (const gate::CallgrindRecord& c : base->callgrind)
             if (!(c.key == now.callgrind.front().key)) out.callgrind.push_back(c);
+    // Shader statistics likewise: this Mesa's replaced, other Mesas' kept; all kept when they
+    // were not measured (--no-shaders, compilers not built here).
+    if (base)
+        for (const gate::ShaderRecord& r : base->shaders)
+            if (now.shaders.empty() || !(r.key == now.shaders.front().key))
+                out.shaders.push_back(r);
     const std::string committed = gate::committedProbesPath(a.baseline);
     if (!a.keepProbes) { // --keep-probes: measured with the committed file, left as it is
         const std::vector<unsigned char> bytes = readFileBytes(probesFile);
@@ -344,8 +403,9 @@ int runGate(GateArgs& a) {
         bench::chooseTiming(s.timing.method, caps, gl::detectDriverQuirks());
     now.recorded = bench::benchContext(*platform, caps);
     now.environment.glRenderer = caps.renderer;
-    const gate::GateInputs in{&g.scene, &g.probes.set, g.view, render::defaultFrameSettings(g.scene),
-                              s.width,  s.height,      s.timing.warmup};
+    const gate::GateInputs in{
+        &g.scene, &g.probes.set, g.view,         render::defaultFrameSettings(g.scene),
+        s.width,  s.height,      s.timing.warmup};
     std::size_t ref = 0;
     auto renderers = measureProfiles(in, now, debug, ref);
 
@@ -367,6 +427,7 @@ int runGate(GateArgs& a) {
         callgrindStage(a, g.probes.file, caps, base ? *base : empty, now, outcome);
     else if (base && !base->callgrind.empty())
         outcome.notes.push_back("callgrind: not run (--callgrind runs it)");
+    shaderStage(a, g, base ? *base : empty, now, outcome);
 
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -416,13 +477,18 @@ const RegisterCommand registerGate{
                       "compiler and valgrind, skipped otherwise)");
          cmd.add_flag("--no-timing", a->noTiming,
                       "Skip the timing gate (counters and accuracy only)");
+         cmd.add_flag("--no-shaders", a->noShaders,
+                      "Skip the weak GPUs' shader compiler statistics (otherwise measured when "
+                      "scripts/mesa-shim.sh has built the compilers; --update then keeps the "
+                      "baseline's)");
          a->json.add(cmd, "The verdicts and the measurements");
          cmd.add_option("--cache-dir", a->cacheDir,
                         "Folder of the baked-probe cache (default: ~/.cache/probebench)");
          addPlatformOptions(cmd, a->platform);
          addGateSuiteOptions(cmd, a->suite);
          cmd.footer("Exit codes: 0 pass (or --update done), 1 error, 3 a counter, accuracy, "
-                    "instruction-count or model-vs-GL failure, 4 timing regressions only.");
+                    "instruction-count, shader-statistics or model-vs-GL failure, 4 timing "
+                    "regressions only.");
          return [a] {
              const StdoutToStderr textToStderr(a->json.toStdout());
              return runGate(*a);
