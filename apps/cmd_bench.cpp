@@ -11,6 +11,7 @@
 #include "ProfileOptions.h"
 #include "RespondRun.h"
 #include "SceneOptions.h"
+#include "ShaderTargetOptions.h"
 #include "bench/report/CiLevels.h"
 #include "bench/report/HtmlReport.h"
 #include "bench/report/MarkdownSummary.h"
@@ -20,6 +21,8 @@
 #include "bench/runner/CacheModelRun.h"
 #include "bench/runner/ProbeCache.h"
 #include "bench/runner/SessionRunner.h"
+#include "bench/shaders/MesaShim.h"
+#include "bench/shaders_gl/TargetWorkers.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "frame/FrameRenderer.h"
@@ -57,6 +60,8 @@ struct BenchArgs {
     int truthSpp = 64;
     std::vector<std::string> respond; // --respond EVENT (respond's --event); empty: no response
     int respondFrames = 150;
+    std::string targets; // --targets: the weak GPUs' compilers (bench/shaders/README.md)
+    int targetTimeout = 600;
 };
 
 void progress(const std::string& line) {
@@ -93,6 +98,12 @@ void validate(const BenchArgs& a) {
     if (a.truthSpp < 1) throw Error("--truth-spp must be at least 1");
     if (a.respondFrames < 2 || a.respondFrames > 10000)
         throw Error("--respond-frames must be in 2..10000");
+    if (a.targetTimeout < 1) throw Error("--target-timeout must be at least 1 s");
+    if (!a.targets.empty()) {
+        // Said before the bake and the timing: names, and whether the compilers are built.
+        shaders::parseShaderTargets(a.targets);
+        shaders::findMesaShim();
+    }
     // Said before bench's own bake (minutes), which stores sparse probes respond cannot update.
     if (!a.respond.empty() && a.probes.empty())
         throw Error("--respond: needs --probes FILE, a dense probe file (bake --dense)");
@@ -264,6 +275,18 @@ int runBench(const BenchArgs& a) {
     bench::BenchResult result;
     scene::View view;
     result.view = chooseBenchView(a, s, set, plan, view);
+    if (!a.targets.empty()) {
+        ShaderRunInputs in;
+        in.targets = a.targets;
+        in.plan = {a.profiles, a.reference, a.sets, a.ablate};
+        in.scene = a.scene;
+        in.probesPath = probesPath;
+        in.camera = cameraSpec(view);
+        in.timeoutSeconds = a.targetTimeout;
+        progress("compiling every variant's programs on the targets " + a.targets);
+        result.shaderTargets = runShaderTargets(
+            in, s.name, [](const std::string& line) { progress("targets: " + line); });
+    }
     auto platform = platform::createPlatform(timingPlatform(a.platform));
     gl::DebugOutput debug;
     const gl::GlCaps caps = gl::queryCaps();
@@ -314,6 +337,8 @@ int runBench(const BenchArgs& a) {
     for (const auto& session : result.sessions)
         for (const auto& v : session.variants)
             if (!v.ok()) skipped.push_back(v.variant.id + ": " + v.error);
+    for (const std::string& p : shaders::shaderRunProblems(result.shaderTargets))
+        skipped.push_back("--targets " + p);
     if (a.strict && !skipped.empty())
         throw Error("--strict: " + std::to_string(skipped.size()) +
                     " variant(s) could not run, nothing written; first: " + skipped.front());
@@ -333,6 +358,8 @@ int runBench(const BenchArgs& a) {
         }
     for (const auto& [why, ids] : reasons)
         std::fprintf(stderr, "warning: not run (%s): %s\n", why.c_str(), ids.c_str());
+    for (const std::string& p : shaders::shaderRunProblems(result.shaderTargets))
+        std::fprintf(stderr, "warning: --targets %s\n", p.c_str());
     if (!a.json.file().empty()) std::cout << "\nwrote " << a.json.file() << "\n";
     if (!a.html.empty())
         std::cout << (a.json.file().empty() ? "\n" : "") << "wrote " << a.html << "\n";
@@ -416,6 +443,13 @@ const RegisterCommand registerBench{
                         "--width/--height or 160x90; needs a dense --probes file");
          cmd.add_option("--respond-frames", a->respondFrames,
                         "Frames of that response run (as respond's --frames)")
+             ->capture_default_str();
+         cmd.add_option("--targets", a->targets,
+                        "Also compile every variant's programs with these weak GPUs' own "
+                        "compilers (probebench shaders --list-targets; all) and report their "
+                        "statistics beside the timings; needs scripts/mesa-shim.sh");
+         cmd.add_option("--target-timeout", a->targetTimeout,
+                        "Seconds one target's compiler run may take")
              ->capture_default_str();
          cmd.add_flag("--strict", a->strict,
                       "Fail (writing nothing) when any variant cannot run, instead of reporting "

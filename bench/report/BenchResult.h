@@ -1,6 +1,7 @@
 #pragma once
 // Everything one benchmark run measured, GL-free, for the JSON, the Markdown summary and the
 // HTML report (ResultJson.h, MarkdownSummary.h, HtmlReport.h). Times in milliseconds.
+#include "bench/shaders/ShaderStatistics.h"
 #include "AblationPlan.h"
 #include "CacheModelSection.h"
 #include "metrics/Statistics.h"
@@ -116,6 +117,9 @@ struct BenchResult {
     // (profiles[]: profile, budgets, schedules[] with t95_frames, t99_frames, rays_per_frame,
     // upload_bytes_per_frame; no error curves); null without.
     nlohmann::json response;
+    // `bench --targets`: every profile's programs compiled by the weak GPUs' compilers
+    // (bench/shaders/README.md); no targets when not asked for.
+    shaders::ShaderStatisticsRun shaderTargets;
 };
 
 } // namespace pb::bench

@@ -6,6 +6,7 @@
 #include "Html.h"
 #include "ResponseSection.h"
 #include "ResultJson.h"
+#include "ShaderTargetsSection.h"
 #include "SvgCharts.h"
 #include "TruthSection.h"
 
@@ -230,6 +231,7 @@ std::string htmlReport(const BenchResult& r) {
     charts(h, r);
     ablation(h, r);
     h << cacheModelHtml(r.cacheModel);
+    h << shaderTargetsHtml(r);
     heatmaps(h, r);
     h << truthHtml(r);
     context(h, r);

@@ -5,6 +5,7 @@
 #include "GiSections.h"
 #include "ResponseSection.h"
 #include "ResultJson.h"
+#include "ShaderTargetsSection.h"
 #include "Spread.h"
 #include "TruthSection.h"
 
@@ -169,6 +170,7 @@ std::string markdownSummary(const BenchResult& r) {
     passTable(out, r);
     ablationTables(out, r);
     out << cacheModelMarkdown(r.cacheModel);
+    out << shaderTargetsMarkdown(r);
     out << truthMarkdown(r);
     return out.str();
 }

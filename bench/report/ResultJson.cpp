@@ -219,6 +219,7 @@ nlohmann::json benchJson(const BenchResult& r) {
     j["cache_model"] = cacheModelJson(r.cacheModel);
     j["truth"] = r.truth; // null without --truth
     if (!r.response.is_null()) j["response"] = r.response; // only with --respond
+    if (!r.shaderTargets.targets.empty()) j["shader_targets"] = shaders::toJson(r.shaderTargets);
     return j;
 }
 

@@ -135,6 +135,7 @@ double StageStatistics::fills() const {
 double StageStatistics::fullRegisters() const {
     if (has("full")) return field("full");
     if (has("max-temps")) return field("max-temps");
+    if (has("registers")) return field("registers"); // Midgard: work registers
     return field("gpr");
 }
 

@@ -32,7 +32,7 @@ struct StageStatistics {
     double cycles() const; // the compiler's throughput bound (Mali only)
     double spills() const;
     double fills() const;
-    // Registers: freedreno full and half (vec4 registers), v3d max-temps, nouveau gpr.
+    // Registers: freedreno full and half, v3d max-temps, Midgard registers, nouveau gpr.
     double fullRegisters() const;
     double halfRegisters() const;
     double occupancy() const; // waves (freedreno) or threads (Mali, v3d) in flight

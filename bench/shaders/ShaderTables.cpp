@@ -88,20 +88,22 @@ std::string registers(const StageStatistics* s) {
         return figure(s->field("full"), false) + " full / " + figure(s->field("half"), false) +
                " half";
     if (s->has("max-temps")) return figure(s->field("max-temps"), false) + " temps";
+    if (s->has("registers")) return figure(s->field("registers"), false) + " regs";
     if (s->has("gpr")) return figure(s->field("gpr"), false) + " gpr";
     return "-";
 }
 
-std::string shaderMarkdown(const ShaderStatisticsRun& run) {
+std::string shaderMarkdown(const ShaderStatisticsRun& run, int level) {
     std::ostringstream md;
-    md << "# Shader statistics of the weak GPUs' compilers\n\n"
+    const std::string title(size_t(std::max(level, 1)), '#');
+    md << title << " Shader statistics of the weak GPUs' compilers\n\n"
        << "Mesa " << run.mesaVersion << " (drm-shim, no hardware), scene " << run.scene
        << ", probes " << run.probes << ". Figures are each compiler's own static estimates for "
        << "one fragment: deterministic for this Mesa version, comparable within one driver, "
           "not timings. A pass's figure is its heaviest fragment program; a loop's body is counted "
           "once (the loops column says how many a program has).\n";
     for (const TargetStatistics& t : run.targets) {
-        md << "\n## " << t.target << ": " << t.device << " (" << t.driver << ")\n\n";
+        md << "\n" << title << "# " << t.target << ": " << t.device << " (" << t.driver << ")\n\n";
         if (!t.error.empty()) {
             md << "**Not run:** " << t.error << "\n";
             continue;

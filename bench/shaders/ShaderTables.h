@@ -41,7 +41,8 @@ std::string spillsFills(const StageStatistics* s);
 std::string registers(const StageStatistics* s);
 
 // The whole run as Markdown: a section per target (what it is, its GL strings, what it could
-// not run), its pass table and its switch table.
-std::string shaderMarkdown(const ShaderStatisticsRun& run);
+// not run), its pass table and its switch table. `level`: the heading level of the title
+// (1 standalone, 2 inside the bench's summary; targets one deeper).
+std::string shaderMarkdown(const ShaderStatisticsRun& run, int level = 1);
 
 } // namespace pb::shaders
