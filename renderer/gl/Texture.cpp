@@ -1,6 +1,8 @@
 #include "gl/Texture.h"
 
+#include "core/Error.h"
 #include "gl/DebugLabels.h"
+#include "gl/TextureLimits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,7 +41,12 @@ int fullMipChain(int w, int h) {
 }
 } // namespace
 
-Texture::Texture(const TextureDesc& desc) : id_(genTexture()), desc_(desc) {
+Texture::Texture(const TextureDesc& desc) : desc_(desc) {
+    if (std::string why = textureLimitProblem(desc, queryTextureLimits()); !why.empty())
+        throw Error("a " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
+                    (desc.layers > 0 ? "x" + std::to_string(desc.layers) : std::string()) +
+                    " texture: " + why);
+    id_ = genTexture();
     if (desc_.levels <= 0) desc_.levels = fullMipChain(desc_.width, desc_.height);
     const FormatInfo& fi = formatInfo(desc_.format);
     GLenum t = target();

@@ -1,6 +1,7 @@
 #include "passes/GiApplyPass.h"
 
 #include "core/Error.h"
+#include "gl/Capabilities.h"
 #include "passes/GiDebugInjection.h"
 #include "passes/GiVolumeRaster.h"
 #include "profile/GiDynamicReads.h"
@@ -16,6 +17,28 @@ gl::Defines giShaderDefines(const profile::Profile& p, const GpuProbes* probes) 
         d[name] = value;
     if (probes && probes->anySparse()) d["DDGI_SPARSE_TILES"] = "";
     return d;
+}
+
+void requireRenderableTarget(const profile::Profile& profile, const gl::GlCaps& caps) {
+    bool renderable = true;
+    const char* what = "";
+    switch (profile.gi.targetFormat) {
+    case profile::GiTargetFormat::Rgba16f:
+        renderable = caps.renderRgba16f;
+        what = "RGBA16F";
+        break;
+    case profile::GiTargetFormat::Rgba32f:
+        renderable = caps.renderRgba32f;
+        what = "RGBA32F";
+        break;
+    case profile::GiTargetFormat::R11g11b10f:
+        renderable = caps.renderR11fG11fB10f;
+        what = "R11F_G11F_B10F";
+        break;
+    }
+    if (!renderable)
+        throw Error("gi.target_format=" + profile.get("gi.target_format") + " needs " + what +
+                    " colour-renderable, which " + caps.renderer + " is not");
 }
 
 gl::TextureFormat giTargetFormat(profile::GiTargetFormat f) {
@@ -98,6 +121,7 @@ void resetState() {
 GiApplyPass::GiApplyPass(const GpuProbes& probes, const profile::Profile& profile,
                          bool dynamicObjects)
     : probes_(probes), profile_(profile), defines_(giShaderDefines(profile, &probes)) {
+    requireRenderableTarget(profile, gl::queryCaps());
     if (profile::dynamicPixelsUnfaded(profile, dynamicObjects)) defines_["GI_DYNAMIC_UNFADED"] = "";
 }
 

@@ -10,6 +10,7 @@
 //            shader), then a cheap mark draw; with the eye inside the box the depth test
 //            decides the influence and the apply marks itself (renderer/README.md
 //            "gi.multi_volume=stencil").
+#include "gl/Capabilities.h"
 #include "passes/FrameContext.h"
 #include "passes/GiInvocationCounter.h"
 #include "passes/GiPassStats.h"
@@ -25,6 +26,9 @@ namespace pb::render {
 // sparse volume: the indirection's integer arithmetic is compiled only where data needs it.
 gl::Defines giShaderDefines(const profile::Profile& p, const GpuProbes* probes = nullptr);
 gl::TextureFormat giTargetFormat(profile::GiTargetFormat f);
+// Throws pb::Error naming the switch when the context cannot render to the profile's GI target
+// format (ES 3.0 guarantees none of the float formats; a weak GPU may lack one).
+void requireRenderableTarget(const profile::Profile& profile, const gl::GlCaps& caps);
 
 class GiApplyPass : public Pass {
 public:

@@ -38,7 +38,13 @@ gl::Texture uploadProbeTexture(const probes::ProbeTexture& t, gl::TextureFormat 
     d.height = t.shape.height;
     d.layers = t.shape.layers;
     d.filter = gl::Filter::Linear; // the sampler's bilinear; tile borders keep it in the tile
-    gl::Texture tex(d);
+    gl::Texture tex = [&] {
+        try {
+            return gl::Texture(d);
+        } catch (const Error& e) { // past the context's limits: say which probe texture
+            throw Error(what + ": " + e.what());
+        }
+    }();
     if (t.stored.size() != gl::textureBytes(format, d.width, d.height, d.layers))
         throw Error(what + ": " + std::to_string(t.stored.size()) + " stored bytes, expected " +
                     std::to_string(gl::textureBytes(format, d.width, d.height, d.layers)));
@@ -178,10 +184,9 @@ GpuProbes::GpuProbes(const probes::ProbeSet& set, int scenario, const profile::V
         auto packed = [&](const probes::ProbeTexture& t, int tile) -> const probes::ProbeTexture& {
             if (!tiles.sparse) return t;
             const bool irradiance = tile == probes::kIrradianceTile;
-            scratch = probes::packTiles(t, irradiance ? tiles.slots : visibilitySlots, v.counts,
-                                        irradiance ? tiles.packedCounts
-                                                   : tiles.visibilityPackedCounts,
-                                        tile, format_);
+            scratch = probes::packTiles(
+                t, irradiance ? tiles.slots : visibilitySlots, v.counts,
+                irradiance ? tiles.packedCounts : tiles.visibilityPackedCounts, tile, format_);
             return scratch;
         };
         g.irradiance = uploadProbeTexture(

@@ -50,7 +50,13 @@ gl::Texture volumeTexture(gl::TextureFormat f, const glm::ivec3& counts, const v
     d.layers = counts.y;
     d.volume = true;
     d.filter = gl::Filter::Linear;
-    gl::Texture t(d);
+    gl::Texture t = [&] {
+        try {
+            return gl::Texture(d);
+        } catch (const Error& e) { // past the context's limits: say which volume
+            throw Error(label + ": " + e.what());
+        }
+    }();
     t.upload(data);
     t.label(label);
     return t;
