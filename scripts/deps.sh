@@ -15,10 +15,19 @@ PB_PACKAGES=(
     # (scripts/slurm-local.sh, bench/README.md "Sweeps").
     slurmctld slurmd slurm-client munge
 )
+# What scripts/mesa-shim.sh needs to build the weak GPUs' compilers from Debian's Mesa source
+# (installed by that script, only when it builds).
+PB_MESA_BUILD_PACKAGES=(
+    meson ninja-build python3-mako bison flex libdrm-dev zlib1g-dev libexpat1-dev pkg-config
+    dpkg-dev xz-utils gcc g++
+)
 
+# pb_install_deps [PACKAGE...]: the given packages (default: PB_PACKAGES), only the missing ones.
 pb_install_deps() {
+    local wanted=("$@")
+    [ ${#wanted[@]} -gt 0 ] || wanted=("${PB_PACKAGES[@]}")
     local missing=()
-    for p in "${PB_PACKAGES[@]}"; do
+    for p in "${wanted[@]}"; do
         dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
             || missing+=("$p")
     done
@@ -31,6 +40,13 @@ pb_install_deps() {
     echo "==> installing ${#missing[@]} missing packages: ${missing[*]}"
     export DEBIAN_FRONTEND=noninteractive
     apt-get update -q && apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+# The weak GPUs' compilers (scripts/mesa-shim.sh) unless PB_MESA_SHIM=0: ./test.sh runs the
+# compile tests on them, and a cache makes this a no-op after the first build (about 10 min).
+pb_mesa_shim() {
+    [ "${PB_MESA_SHIM:-1}" = "0" ] && { echo "==> PB_MESA_SHIM=0: the weak GPUs' compilers are not built; their tests skip"; return 0; }
+    scripts/mesa-shim.sh
 }
 
 pb_build() {

@@ -19,8 +19,7 @@ set -euo pipefail
 # everything. vc4's 22.3.6 shim lacks ioctls and lima/etnaviv are GLES 2 parts; nouveau is
 # here for the Switch's Tegra X1 (its shim is built only with the gallium driver).
 PB_MESA_DRIVERS=freedreno,panfrost,v3d,nouveau
-PB_MESA_BUILD_PACKAGES=(meson ninja-build python3-mako bison flex libdrm-dev zlib1g-dev
-    libexpat1-dev pkg-config dpkg-dev xz-utils gcc g++)
+source "$(dirname "$0")/deps.sh" # PB_MESA_BUILD_PACKAGES, pb_install_deps
 # What the build needs of meson. Changing this list changes the cache key.
 PB_MESA_OPTIONS=(-Dbuildtype=plain -Doptimization=1 -Db_ndebug=true -Dplatforms=
     -Degl=enabled -Dgbm=disabled -Dglx=disabled -Dglvnd=false -Dgles1=disabled
@@ -45,16 +44,8 @@ cache_dir() {
 }
 
 install_build_packages() {
-    local missing=()
-    for p in "${PB_MESA_BUILD_PACKAGES[@]}"; do
-        dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" \
-            || missing+=("$p")
-    done
-    [ ${#missing[@]} -eq 0 ] && return 0
-    [ "$(id -u)" -eq 0 ] || die "missing build packages; install them with: sudo apt-get install -y ${missing[*]}"
-    echo "==> mesa-shim: installing ${#missing[@]} build packages: ${missing[*]}"
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}" \
-        || die "apt-get install failed for: ${missing[*]}"
+    pb_install_deps "${PB_MESA_BUILD_PACKAGES[@]}" \
+        || die "the build packages are missing (the line above installs them)"
 }
 
 # A deb-src entry for every archive the deb entries name, so `apt-get source` finds the same
