@@ -76,6 +76,7 @@ runShaderTargets(const ShaderRunInputs& in, const std::string& sceneName,
     run.mesaDir = install.dir;
     run.scene = sceneName;
     run.probes = in.probesPath;
+    run.camera = in.camera;
     run.width = in.plan.width;
     run.height = in.plan.height;
     run.pairs = shaders::switchPairs(plan);

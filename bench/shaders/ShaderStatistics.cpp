@@ -121,6 +121,7 @@ nlohmann::json toJson(const ShaderStatisticsRun& r) {
             {"mesa_dir", r.mesaDir},
             {"scene", r.scene},
             {"probes", r.probes},
+            {"camera", r.camera},
             {"width", r.width},
             {"height", r.height},
             {"switch_pairs", pairs},

@@ -61,6 +61,7 @@ struct TargetStatistics {
 struct ShaderStatisticsRun {
     std::string mesaVersion, mesaDir;
     std::string scene, probes;
+    std::string camera; // the view every variant rendered (--camera form)
     int width = 0, height = 0;
     std::vector<SwitchPair> pairs;
     std::vector<TargetStatistics> targets;

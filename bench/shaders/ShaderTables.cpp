@@ -98,7 +98,7 @@ std::string shaderMarkdown(const ShaderStatisticsRun& run, int level) {
     const std::string title(size_t(std::max(level, 1)), '#');
     md << title << " Shader statistics of the weak GPUs' compilers\n\n"
        << "Mesa " << run.mesaVersion << " (drm-shim, no hardware), scene " << run.scene
-       << ", probes " << run.probes << ". Figures are each compiler's own static estimates for "
+       << ", probes " << run.probes << ", camera " << run.camera << ". Figures are each compiler's own static estimates for "
        << "one fragment: deterministic for this Mesa version, comparable within one driver, "
           "not timings. A pass's figure is its heaviest fragment program; a loop's body is counted "
           "once (the loops column says how many a program has).\n";
