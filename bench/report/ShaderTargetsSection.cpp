@@ -97,7 +97,9 @@ std::string shaderTargetsHtml(const BenchResult& r) {
 
 std::string shaderTargetsMarkdown(const BenchResult& r) {
     if (r.shaderTargets.targets.empty()) return {};
-    return "\n" + shaders::shaderMarkdown(r.shaderTargets, 3);
+    std::string md = "\n"; // appended, not "\n" + ...: GCC 12 warns -Wrestrict on that
+    md += shaders::shaderMarkdown(r.shaderTargets, 3);
+    return md;
 }
 
 } // namespace pb::bench

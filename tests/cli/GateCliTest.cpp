@@ -385,3 +385,38 @@ TEST(GateCli, ErrorsAreOneLine) {
                              R"(gate-worker protocol 1, this gate 2 [^\n]*\n$)")))
         << r.output;
 }
+
+namespace {
+// Whether scripts/mesa-shim.sh has built the weak GPUs' compilers.
+bool gateCompilersBuilt() {
+    return runCommand({(sourceDir() / "scripts/mesa-shim.sh").string(), "--print"}).exitCode == 0;
+}
+} // namespace
+
+// The shader statistics are recorded by --update, compared exactly on the next run, and
+// --no-shaders leaves them out with a note (bench/gate/README.md "Shader statistics").
+TEST(GateCli, ShaderStatisticsAreRecordedComparedAndSkippedOnRequest) {
+    if (!gateCompilersBuilt()) {
+        if (underCi()) FAIL() << "the weak GPUs' compilers are not built under CI";
+        GTEST_SKIP() << "the weak GPUs' compilers are not built (scripts/mesa-shim.sh)";
+    }
+    const fs::path dir = outputDir();
+    const fs::path b = tinyBaseline(dir);
+    const nlohmann::json base = readJson(b);
+    ASSERT_TRUE(base.contains("shaders")) << base.dump().substr(0, 400);
+    ASSERT_EQ(base["shaders"].size(), 1u);
+    EXPECT_EQ(base["suite"]["shader_targets"],
+              nlohmann::json({"adreno-630", "mali-g52", "mali-g57"}));
+
+    auto r = runProbebench(gate(b, {"--no-timing", "--json", (dir / "out.json").string()}));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    const std::multiset<std::string> rows = verdicts(readJson(dir / "out.json"), "shaders");
+    EXPECT_GE(rows.size(), 9u); // three targets, three profiles, at least a pass each
+    for (const std::string& v : rows)
+        EXPECT_EQ(v, "ok");
+
+    r = runProbebench(gate(b, {"--no-timing", "--no-shaders", "--json", (dir / "skip.json").string()}));
+    EXPECT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("note: shaders: not run (--no-shaders)"), std::string::npos) << r.output;
+    EXPECT_TRUE(verdicts(readJson(dir / "skip.json"), "shaders").empty());
+}
