@@ -13,8 +13,10 @@ pb_build
 # out/; scripts/first-run.sh says how).
 scripts/first-run.sh build/probebench out
 echo "==> first run: $(pwd)/out/cornell_gi.png (probe GI) beside out/cornell_direct.png (direct light only)"
-# 512x288 for every profile keeps llvmpipe well under 5 minutes; 6 interleaved rounds is the
-# fewest that give a 95% interval for the deltas. --cache-dir keeps the baked probes in out/.
+# 512x288 for every profile keeps llvmpipe within minutes and puts every profile in one set of
+# interleaved rounds; 6 rounds is the fewest that give a 95% interval for the deltas; each round
+# times 3 steady frames per variant after an untimed switch frame. --cache-dir keeps the baked
+# probes in out/.
 # Where scripts/mesa-shim.sh has built the weak GPUs' compilers (./test.sh does), the report
 # also shows every profile's programs as the Adreno 630, Mali-G52 and Mali-G57 compilers see them.
 targets=()
@@ -24,6 +26,6 @@ else
     echo "==> the weak GPUs' compilers are not built: scripts/mesa-shim.sh builds them (about 10 min) for the report's compiler section"
 fi
 ./build/probebench bench --scene rooms --volumes bench/volumes/rooms_nested.toml --ablate \
-    --width 512 --height 288 --rounds 6 --frames 1 --warmup 2 --cache-dir out/cache \
+    --width 512 --height 288 --rounds 6 --frames 3 --warmup 2 --cache-dir out/cache \
     --json out/bench.json --html out/report.html "${targets[@]}"
 echo "==> report: $(pwd)/out/report.html (open in a browser; JSON: out/bench.json)"

@@ -24,6 +24,7 @@
 #include "bench/shaders/MesaShim.h"
 #include "bench/shaders_gl/TargetWorkers.h"
 #include "core/Error.h"
+#include "core/MachineState.h"
 #include "core/FileIO.h"
 #include "frame/FrameRenderer.h"
 #include "gl/DebugOutput.h"
@@ -51,6 +52,7 @@ struct BenchArgs {
     std::vector<std::string> profiles, sets;
     std::string reference = "reference";
     bool ablate = false, strict = false, noFloor = false, noCacheModel = false;
+    bool requireQuiet = false; // refuse to time on a busy machine
     int frames = 3, rounds = 7, warmup = 2, width = 0, height = 0;
     JsonOption json;
     std::string view, camera, probes, volumes = "auto", cacheDir, html, heatmaps,
@@ -251,6 +253,9 @@ void writeOutputs(const BenchArgs& a, bench::BenchResult& r,
 int runBench(const BenchArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
     validate(a);
+    if (a.requireQuiet)
+        if (const std::string noisy = noisyMachineNow(); !noisy.empty())
+            throw Error("--require-quiet: refusing to time: " + noisy);
     if (const std::string inj = render::giDebugInjectionSummary(); !inj.empty())
         std::fprintf(stderr, "warning: test-only fault injection active: %s\n", inj.c_str());
     const profile::ProfileSearch search = profileSearch();
@@ -451,6 +456,10 @@ const RegisterCommand registerBench{
          cmd.add_option("--target-timeout", a->targetTimeout,
                         "Seconds one target's compiler run may take")
              ->capture_default_str();
+         cmd.add_flag("--require-quiet", a->requireQuiet,
+                      "Refuse to time (exit 1) when the machine is busy before the run: load "
+                      "average or other processes' CPU use above half the CPUs, or more than 5% "
+                      "of the CPU time stolen by the host");
          cmd.add_flag("--strict", a->strict,
                       "Fail (writing nothing) when any variant cannot run, instead of reporting "
                       "it as not run");

@@ -4,6 +4,7 @@
 #include "bench/shaders/ShaderStatistics.h"
 #include "AblationPlan.h"
 #include "CacheModelSection.h"
+#include "core/MachineState.h"
 #include "metrics/Statistics.h"
 
 #include <nlohmann/json.hpp>
@@ -63,6 +64,9 @@ struct VariantResult {
     std::vector<double> frameSamples;    // whole frame, per measured frame
     stats::Summary frameMs;
     std::vector<double> roundMedians;        // frame ms per round (median of its frames)
+    // Per round, the first frame after switching to this variant from another (never in the
+    // statistics above): what a switch of profile at run time costs on top of a steady frame.
+    std::vector<double> switchFrameSamples;
     std::optional<SectionTiming> fetchFloor; // the GI pass's texture-fetch floor
     // One counted frame of the GI pass (GiPassStats, with the fetch floor only; 0 = not
     // counted): its full lookups and its target's texels. The floor does one lookup per texel.
@@ -88,6 +92,8 @@ struct SessionResult {
     Session session;
     std::vector<VariantResult> variants; // parallel to session.variants
     std::vector<DeltaResult> deltas;     // parallel to session.deltas
+    // The machine before and after the rounds this session's variants were timed in.
+    MachineState machineBefore, machineAfter;
     const VariantResult& profile() const { return variants[0]; }
     const VariantResult& reference() const { return variants[size_t(session.referenceVariant)]; }
     const DeltaResult* vsReference() const;

@@ -8,6 +8,7 @@
 #include "ResultJson.h"
 #include "ShaderTargetsSection.h"
 #include "SvgCharts.h"
+#include "TimingTrust.h"
 #include "TruthSection.h"
 
 #include <cmath>
@@ -38,9 +39,9 @@ std::string deltaCell(const DeltaResult* d) {
 void profileTable(std::ostringstream& h, const BenchResult& r) {
     h << "<table id=\"profiles\"><tr><th class=\"l\">profile</th><th>size</th><th>frame ms "
          "median ["
-      << htmlEscape(ciLabel(frameCiLevels(r))) << "]</th><th>min</th><th>IQR</th><th>Δ ms vs "
-      << "reference [" << htmlEscape(ciLabel(deltaCiLevels(r)))
-      << "]</th>"
+      << htmlEscape(ciLabel(frameCiLevels(r))) << "]</th><th>min</th><th>IQR</th><th>reference "
+      << "ms (same rounds)</th><th>Δ ms vs reference [" << htmlEscape(ciLabel(deltaCiLevels(r)))
+      << "]</th><th>switch-in ms</th>"
          "<th>budget ms</th><th>GI ms</th><th>fetch floor ms</th><th>GI / floor</th>"
          "<th>GI / floor per evaluation</th>"
          "<th>FLIP mean</th><th>FLIP max</th><th>PSNR dB</th><th>SSIM</th><th>rel. MSE GI</th>"
@@ -51,17 +52,24 @@ void profileTable(std::ostringstream& h, const BenchResult& r) {
         h << "<tr>" << cell(prof.name, "l")
           << cell(std::to_string(s.session.width) + "x" + std::to_string(s.session.height));
         if (!p.ok()) {
-            h << "<td class=\"l bad\" colspan=\"16\">not run: " << htmlEscape(p.error)
+            h << "<td class=\"l bad\" colspan=\"18\">not run: " << htmlEscape(p.error)
               << "</td></tr>\n";
             continue;
         }
         const DeltaResult* vs = s.vsReference();
         std::vector<double> gi = giPassSamples(p);
         double giMs = gi.empty() ? NAN : stats::summarize(gi).median;
+        const VariantResult& ref = s.reference();
+        const std::string renderer = r.context.value("gl_renderer", std::string());
         h << cell(msWithCi(p.frameMs)) << cell(fixed(p.frameMs.min, 2))
-          << cell(fixed(p.frameMs.iqr, 2)) << (vs ? deltaCell(vs) : cell("(reference)"))
-          << cell(fixed(prof.frameBudgetMs, 1),
-                  p.frameMs.median <= prof.frameBudgetMs ? "good" : "bad")
+          << cell(fixed(p.frameMs.iqr, 2))
+          << cell(ref.ok() ? fixed(ref.frameMs.median, 2) : std::string("n/a"))
+          << (vs ? deltaCell(vs) : cell("(reference)")) << cell(switchCostText(p))
+          << (budgetJudged(prof, renderer)
+                  ? cell(fixed(prof.frameBudgetMs, 1),
+                         p.frameMs.median <= prof.frameBudgetMs ? "good" : "bad")
+                  : cell(fixed(prof.frameBudgetMs, 1) + " (" + budgetOwnerText(prof) + ")",
+                         "ns"))
           << cell(fixed(giMs, 2)) << cell(p.fetchFloor ? fixed(p.fetchFloor->ms.median, 2) : "n/a")
           << cell(p.fetchFloor ? fixed(giMs / p.fetchFloor->ms.median, 2) : "n/a")
           << cell(std::isfinite(giOverFloorPerEvaluation(p)) ? fixed(giOverFloorPerEvaluation(p), 2)
@@ -75,7 +83,11 @@ void profileTable(std::ostringstream& h, const BenchResult& r) {
           << "</tr>\n";
     }
     h << "</table>\n<p class=\"note\">GI ms: median per frame of " << kGiSectionsText
-      << " (every pass that exists for GI).</p>\n";
+      << " (every pass that exists for GI). Reference ms: the reference's median in the same "
+         "rounds as the row (every session of one size is timed in one set of interleaved "
+         "rounds), the Δ's other side. Switch-in ms: the first frame after switching to the "
+         "variant, over its steady median (never in the statistics). A budget is coloured only "
+         "when timed on its own device ([budget] device).</p>\n";
 }
 
 void charts(std::ostringstream& h, const BenchResult& r) {
@@ -223,6 +235,9 @@ std::string htmlReport(const BenchResult& r) {
              "are hardware-independent.</p>\n";
     if (const std::string w = roundsWarning(r.settings.rounds); !w.empty())
         h << "<p class=\"note bad\" id=\"ci-warning\">Warning: " << htmlEscape(w) << ".</p>\n";
+    if (const std::string w = machineWarning(r); !w.empty())
+        h << "<p class=\"note bad\" id=\"machine-warning\">Warning: " << htmlEscape(w)
+          << ".</p>\n";
     h << "<h2>Profiles</h2>\n";
     profileTable(h, r);
     h << "<p class=\"note\">GI MiB: " << htmlEscape(profile::kGiMemoryDefinition)

@@ -7,6 +7,7 @@
 #include "ResultJson.h"
 #include "ShaderTargetsSection.h"
 #include "Spread.h"
+#include "TimingTrust.h"
 #include "TruthSection.h"
 
 #include <cmath>
@@ -58,34 +59,39 @@ std::string floorRatioCell(const VariantResult& p) {
 
 void markdownProfileTable(std::ostringstream& out, const BenchResult& r) {
     out << "| profile | size | frame ms median [" << ciLabel(frameCiLevels(r))
-        << "] | Δ ms vs reference [" << ciLabel(deltaCiLevels(r))
-        << "] | GI ms | "
+        << "] | reference ms (same rounds) | Δ ms vs reference [" << ciLabel(deltaCiLevels(r))
+        << "] | switch-in ms | GI ms | "
            "floor ms | GI / floor per eval. (per texel) | FLIP | PSNR dB | SSIM | rel. MSE GI | "
            "coverage | GI MiB (budget) |\n"
-        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const SessionResult& s : r.sessions) {
         const VariantResult& p = s.profile();
         out << "| " << s.session.profile.name << " | " << s.session.width << "x" << s.session.height
             << " | ";
         if (!p.ok()) {
             out << "not run: " << p.error << " |";
-            for (int i = 0; i < 10; ++i)
+            for (int i = 0; i < 12; ++i)
                 out << " - |";
             out << "\n";
             continue;
         }
         const DeltaResult* vs = s.vsReference();
         std::vector<double> gi = giPassSamples(p);
+        const VariantResult& ref = s.reference();
         out << msWithCi(p.frameMs) << " | "
+            << (ref.ok() ? fixed(ref.frameMs.median, 2) : std::string("n/a")) << " | "
             << (vs ? (vs->measured ? shiftWithCi(vs->ms) : std::string("n/a"))
                    : std::string("(is the reference)"))
-            << " | " << (gi.empty() ? "n/a" : fixed(stats::summarize(gi).median, 2)) << " | "
+            << " | " << switchCostText(p) << " | " << (gi.empty() ? "n/a" : fixed(stats::summarize(gi).median, 2)) << " | "
             << (p.fetchFloor ? fixed(p.fetchFloor->ms.median, 2) : std::string("n/a")) << " | "
             << floorRatioCell(p) << " | " << accuracyCells(p.accuracy) << " | "
             << fixed(p.coverage.fraction, 4) << " | " << fixed(p.giMemoryMiB, 2) << " ("
             << fixed(s.session.profile.giMemoryBudgetMiB, 1) << ") |\n";
     }
-    out << "\nGI ms: median per frame of " << kGiSectionsText
+    out << "\nReference ms: the reference's median in the same interleaved rounds as the row (the "
+           "Δ's other side). Switch-in ms: the first frame after switching to the variant, over "
+           "its steady median (never in the statistics).\n"
+        << "GI ms: median per frame of " << kGiSectionsText
         << " (every pass that exists for GI; absent passes count 0).\n"
         << "GI / floor: GI ms per evaluation (one lookup of one volume, one counted frame) over "
            "the fetch floor's ms per texel (one lookup's fetches); per texel in parentheses.\n"
@@ -164,6 +170,7 @@ std::string markdownSummary(const BenchResult& r) {
                "and coverage are hardware-independent.**";
     if (const std::string w = roundsWarning(r.settings.rounds); !w.empty())
         out << " **Warning: " << w << ".**";
+    if (const std::string w = machineWarning(r); !w.empty()) out << " **Warning: " << w << ".**";
     out << "\n\n";
     markdownProfileTable(out, r);
     out << responseMarkdown(r); // beside the frame times it is the price of

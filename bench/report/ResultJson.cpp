@@ -2,6 +2,7 @@
 
 #include "GiSections.h"
 #include "Spread.h"
+#include "TimingTrust.h"
 
 #include <cmath>
 
@@ -117,6 +118,8 @@ nlohmann::json variantJson(const VariantResult& v, const Session& s) {
     j["gi_probe_memory_mib"] = v.giProbeMemoryMiB;
     j["volumes_kept"] = v.volumesKept;
     j["round_medians_ms"] = v.roundMedians;
+    j["switch_frame_samples_ms"] = v.switchFrameSamples;
+    j["switch_cost_ms"] = finiteOrNull(switchCostMs(v));
     j["frame_samples_ms"] = v.frameSamples;
     return j;
 }
@@ -141,7 +144,7 @@ nlohmann::json deltaJson(const DeltaResult& d, const SessionResult& s) {
     return j;
 }
 
-nlohmann::json profileJson(const SessionResult& s) {
+nlohmann::json profileJson(const SessionResult& s, const std::string& renderer) {
     const VariantResult& p = s.profile();
     nlohmann::json j{{"name", s.session.profile.name},
                      {"profile", s.session.profile.toJson()},
@@ -153,11 +156,20 @@ nlohmann::json profileJson(const SessionResult& s) {
     if (!p.ok()) j["error"] = p.error;
     if (p.ok()) {
         j["frame_ms"] = summaryJson(p.frameMs);
+        // The other side of vs_reference, from the same interleaved rounds.
+        j["reference_frame_ms"] =
+            s.reference().ok() ? summaryJson(s.reference().frameMs) : nlohmann::json(nullptr);
+        j["machine"] = toJson(s.machineBefore, s.machineAfter);
         j["coverage"] = variantJson(p, s.session)["coverage"];
         j["gi_memory_mib"] = p.giMemoryMiB;
         j["gi_probe_memory_mib"] = p.giProbeMemoryMiB;
-        j["budget"] = {{"frame_ms", s.session.profile.frameBudgetMs},
-                       {"frame_within", p.frameMs.median <= s.session.profile.frameBudgetMs},
+        const bool judged = budgetJudged(s.session.profile, renderer);
+        j["budget"] = {{"device", s.session.profile.budgetDevice},
+                       {"judged_here", judged},
+                       {"frame_ms", s.session.profile.frameBudgetMs},
+                       {"frame_within", judged ? nlohmann::json(p.frameMs.median <=
+                                                                s.session.profile.frameBudgetMs)
+                                               : nlohmann::json(nullptr)},
                        {"gi_memory_mib", s.session.profile.giMemoryBudgetMiB},
                        {"gi_memory_within", p.giMemoryMiB <= s.session.profile.giMemoryBudgetMiB}};
         j["accuracy"] = accuracyJson(p.accuracy);
@@ -207,10 +219,11 @@ nlohmann::json benchJson(const BenchResult& r) {
                        {"timing_reason", r.settings.timingReason},
                        {"flip_pixels_per_degree", r.settings.pixelsPerDegree}}},
                      {"heatmap_scale", r.heatmapScale},
+                     {"machine_warning", machineWarning(r)},
                      {"seconds", r.seconds}};
     nlohmann::json profiles = nlohmann::json::array(), variants = nlohmann::json::array();
     for (const SessionResult& s : r.sessions) {
-        profiles.push_back(profileJson(s));
+        profiles.push_back(profileJson(s, r.context.value("gl_renderer", std::string())));
         for (const VariantResult& v : s.variants)
             variants.push_back(variantJson(v, s.session));
     }

@@ -2,6 +2,7 @@
 
 #include "AccuracyCapture.h"
 #include "FetchFloorPass.h"
+#include "core/MachineState.h"
 #include "core/Error.h"
 #include "frame/FrameRenderer.h"
 #include "passes/GiApplyPass.h"
@@ -121,23 +122,61 @@ void measureDeltas(SessionResult& s) {
     }
 }
 
-SessionResult runSession(const Session& session, const RunnerInputs& in, const RunnerOptions& o,
-                         const std::string& tag, AccuracyPictures* pictures, TruthMaps* truthMaps) {
+// The distinct variants of every session of one frame size (equal switches are one variant),
+// timed in the same interleaved rounds: each session's reference, profile and ablation rows
+// then come from the same rounds as every other session's, so no figure compares two moments
+// of a shared machine. `slots[s][i]`: session s's variant i as an index into `unique`.
+struct SizeGroup {
+    int width = 0, height = 0;
+    std::vector<size_t> sessions; // indices into the plan
+    std::vector<Variant> unique;
+    std::vector<std::vector<size_t>> slots;
+};
+
+std::vector<SizeGroup> groupBySize(const BenchPlan& plan) {
+    std::vector<SizeGroup> groups;
+    for (size_t s = 0; s < plan.sessions.size(); ++s) {
+        const Session& session = plan.sessions[s];
+        auto g = std::find_if(groups.begin(), groups.end(), [&](const SizeGroup& x) {
+            return x.width == session.width && x.height == session.height;
+        });
+        if (g == groups.end()) g = groups.insert(groups.end(), {session.width, session.height});
+        g->sessions.push_back(s);
+        std::vector<size_t> slots;
+        for (const Variant& v : session.variants) {
+            auto u = std::find_if(g->unique.begin(), g->unique.end(),
+                                  [&](const Variant& x) { return x.switches == v.switches; });
+            if (u == g->unique.end()) u = g->unique.insert(g->unique.end(), v);
+            // Profile and reference variants get the fetch floor: keep the most telling role.
+            if (v.role == VariantRole::Profile || v.role == VariantRole::Reference)
+                if (u->role != VariantRole::Profile && u->role != VariantRole::Reference)
+                    u->role = v.role;
+            slots.push_back(size_t(u - g->unique.begin()));
+        }
+        g->slots.push_back(std::move(slots));
+    }
+    return groups;
+}
+
+// Builds and warms up every variant of a group (a variant the renderer rejects is recorded as
+// unsupported), then times them in interleaved rounds: round r renders every variant in turn,
+// the order rotated by r, and per variant first one frame after the switch to it - untimed
+// for the statistics, its time kept apart as the cost of switching - then `frames` timed
+// frames of the steady state.
+void timeGroup(const SizeGroup& g, const RunnerInputs& in, const RunnerOptions& o,
+               const std::string& tag, std::vector<LiveVariant>& live,
+               std::vector<VariantResult>& results, const render::RenderView& rv) {
     auto say = [&](const std::string& line) {
         if (o.progress) o.progress(tag + " " + line);
     };
-    SessionResult out;
-    out.session = session;
-    const size_t n = session.variants.size();
-    std::vector<LiveVariant> live(n);
-    out.variants.resize(n);
-    const render::RenderView rv =
-        render::makeRenderView(in.view, in.scene->worldBounds(), session.width, session.height);
+    const size_t n = g.unique.size();
+    live.resize(n);
+    results.resize(n);
     say("building " + std::to_string(n) + " variant(s), " + std::to_string(o.warmup) +
         " warm-up frame(s) each");
     for (size_t i = 0; i < n; ++i) {
-        VariantResult& v = out.variants[i];
-        v.variant = session.variants[i];
+        VariantResult& v = results[i];
+        v.variant = g.unique[i];
         const std::uint64_t mark = in.debug ? in.debug->mark() : 0;
         try {
             render::GiOptions gi{in.probes, 0, v.variant.switches};
@@ -163,9 +202,12 @@ SessionResult runSession(const Session& session, const RunnerInputs& in, const R
         say("round " + std::to_string(r + 1) + "/" + std::to_string(o.rounds));
         for (size_t k = 0; k < n; ++k) {
             const size_t i = (k + size_t(r)) % n;
-            VariantResult& v = out.variants[i];
+            VariantResult& v = results[i];
             if (!v.ok()) continue;
             const std::uint64_t mark = in.debug ? in.debug->mark() : 0;
+            timer.beginFrame(); // the switch frame: the first after another variant's
+            live[i].renderer->render(rv, &timer);
+            if (timer.endFrame()) v.switchFrameSamples.push_back(timer.frameMs());
             const size_t first = v.frameSamples.size();
             for (int f = 0; f < o.frames; ++f)
                 timedFrame(live[i], v, timer, rv);
@@ -178,19 +220,39 @@ SessionResult runSession(const Session& session, const RunnerInputs& in, const R
         }
     }
     for (size_t i = 0; i < n; ++i) {
-        summarizeVariant(out.variants[i], live[i]);
-        if (out.variants[i].ok() && live[i].floor) countEvaluations(out.variants[i], live[i], rv);
+        summarizeVariant(results[i], live[i]);
+        if (results[i].ok() && live[i].floor) countEvaluations(results[i], live[i], rv);
     }
+}
 
-    say("accuracy against " + session.variants[size_t(session.referenceVariant)].id);
+// One session's result from its group's timed variants: its own variants (ids, labels, roles)
+// with the shared measurements, then accuracy against its reference and its deltas.
+SessionResult finishSession(const Session& session, const std::vector<size_t>& slots,
+                            const std::vector<LiveVariant>& live,
+                            const std::vector<VariantResult>& timed, const RunnerInputs& in,
+                            const RunnerOptions& o, const std::string& tag,
+                            const render::RenderView& rv, AccuracyPictures* pictures,
+                            TruthMaps* truthMaps) {
+    if (o.progress)
+        o.progress(tag + " accuracy against " +
+                   session.variants[size_t(session.referenceVariant)].id);
+    SessionResult out;
+    out.session = session;
+    const size_t n = session.variants.size();
+    out.variants.resize(n);
+    std::vector<render::FrameRenderer*> renderers(n, nullptr);
+    for (size_t i = 0; i < n; ++i) {
+        out.variants[i] = timed[slots[i]];
+        out.variants[i].variant = session.variants[i];
+        if (!out.variants[i].ok()) continue;
+        renderers[i] = live[slots[i]].renderer.get();
+    }
     // Accuracy is read from a frame right after a camera cut: on the bench's still camera a
     // temporal upsample would otherwise have converged to full resolution and look free. The
     // first frame after a cut is its worst case (= bilateral); its error under motion is what
     // `probebench render --path ... --compare-to full` measures (bench/README.md).
-    std::vector<render::FrameRenderer*> renderers(n, nullptr);
     for (size_t i = 0; i < n; ++i) {
-        renderers[i] = live[i].renderer.get();
-        if (!out.variants[i].ok() || !renderers[i]) continue;
+        if (!renderers[i]) continue;
         renderers[i]->resetGiHistory();
         renderers[i]->render(rv);
     }
@@ -224,16 +286,33 @@ std::vector<SessionResult> runBenchPlan(const BenchPlan& plan, const RunnerInput
     if (o.frames < 1 || o.rounds < 1 || o.warmup < 1)
         throw Error("--frames, --rounds and --warmup must be at least 1 (the first frame "
                     "compiles shaders and is never counted)");
-    std::vector<SessionResult> out;
+    std::vector<SessionResult> out(plan.sessions.size());
     if (pictures) pictures->assign(plan.sessions.size(), {});
     if (truthMaps) truthMaps->assign(plan.sessions.size(), {});
-    for (size_t s = 0; s < plan.sessions.size(); ++s) {
-        const Session& session = plan.sessions[s];
-        std::string tag = "[" + std::to_string(s + 1) + "/" + std::to_string(plan.sessions.size()) +
-                          "] " + session.profile.name + " " + std::to_string(session.width) + "x" +
-                          std::to_string(session.height) + ":";
-        out.push_back(runSession(session, in, o, tag, pictures ? &(*pictures)[s] : nullptr,
-                                 truthMaps ? &(*truthMaps)[s] : nullptr));
+    const std::vector<SizeGroup> groups = groupBySize(plan);
+    for (size_t gi = 0; gi < groups.size(); ++gi) {
+        const SizeGroup& g = groups[gi];
+        std::string names;
+        for (size_t s : g.sessions)
+            names += (names.empty() ? "" : ", ") + plan.sessions[s].profile.name;
+        const std::string tag = "[" + std::to_string(gi + 1) + "/" +
+                                std::to_string(groups.size()) + "] " + std::to_string(g.width) +
+                                "x" + std::to_string(g.height) + " (" + names + "):";
+        const render::RenderView rv =
+            render::makeRenderView(in.view, in.scene->worldBounds(), g.width, g.height);
+        std::vector<LiveVariant> live;
+        std::vector<VariantResult> timed;
+        MachineState before = sampleMachineState();
+        timeGroup(g, in, o, tag, live, timed, rv);
+        MachineState after = sampleMachineState();
+        for (size_t k = 0; k < g.sessions.size(); ++k) {
+            const size_t s = g.sessions[k];
+            out[s] = finishSession(plan.sessions[s], g.slots[k], live, timed, in, o, tag, rv,
+                                   pictures ? &(*pictures)[s] : nullptr,
+                                   truthMaps ? &(*truthMaps)[s] : nullptr);
+            out[s].machineBefore = before;
+            out[s].machineAfter = after;
+        }
     }
     return out;
 }

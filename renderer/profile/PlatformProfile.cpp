@@ -46,7 +46,8 @@ std::string PlatformProfile::summaryLine() const {
 bool PlatformProfile::sameSettings(const PlatformProfile& o) const {
     return switches == o.switches && width == o.width && height == o.height &&
            frameBudgetMs == o.frameBudgetMs && giMemoryBudgetMiB == o.giMemoryBudgetMiB &&
-           cachePreset == o.cachePreset && updateRaysPerFrame == o.updateRaysPerFrame &&
+           budgetDevice == o.budgetDevice && cachePreset == o.cachePreset &&
+           updateRaysPerFrame == o.updateRaysPerFrame &&
            updateUploadBytesPerFrame == o.updateUploadBytesPerFrame;
 }
 

@@ -30,6 +30,9 @@ struct PlatformProfile {
     int width = 1280, height = 720;    // output resolution
     double frameBudgetMs = 16.7;       // whole frame on the target hardware
     double giMemoryBudgetMiB = 8.0;    // GI memory (kGiMemoryDefinition), MiB
+    // The device the budgets are for, as its GL_RENDERER names it ("Tegra X1"); "" = the
+    // profile's target hardware, unnamed. A bench judges the frame budget only on that device.
+    std::string budgetDevice;
     std::string cachePreset;           // costmodel::cachePresetFor name
     // Incremental probe updates after a scene change (`probebench respond --profile`): the
     // rays and the probe-texture upload bytes one frame may spend; 0 = no limit.

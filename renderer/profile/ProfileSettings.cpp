@@ -67,6 +67,10 @@ std::vector<ProfileSetting> buildSettings() {
         number("budget.gi_memory_mib", Kind::Number, 0.0, 65536.0, true,
                "GPU memory for the probe data of one scenario (MiB)",
                &PlatformProfile::giMemoryBudgetMiB),
+        optional(textSetting("budget.device", false,
+                             "the device the budgets are for, as its GL_RENDERER names it; the "
+                             "bench colours the frame budget only when it times on it",
+                             &PlatformProfile::budgetDevice)),
         optional(integer("update.rays_per_frame", 0, 1 << 30,
                          "probe update budget: rays per frame after a scene change (probebench "
                          "respond; 0 = no limit)",

@@ -132,6 +132,54 @@ TEST_F(BenchRunnerTest, IrradianceSceneReadsBackTheAppliedGi) {
     EXPECT_GT(compared, e.width * e.height / 2);
 }
 
+// Sessions of one size share one set of interleaved rounds: every profile's row has the same
+// reference measurement (no row compares two moments of the machine), each round times its
+// frames after an untimed switch frame, and that frame is kept apart.
+TEST_F(BenchRunnerTest, SessionsOfOneSizeShareTheirRoundsAndTimeSteadyFrames) {
+    const scene::Scene& s = giTestScene();
+    profile::PlatformProfile ref, a, b;
+    ref.name = "reference";
+    a.name = "a";
+    a.switches.set("gi.loops", "split");
+    b.name = "b";
+    b.switches.set("gi.probe_order", "slice_first");
+    bench::BenchPlan plan = bench::makeBenchPlan({a, b}, ref, {true, 48, 27});
+    bench::RunnerInputs in{&s, &giTestProbes(probes::StorageFormat::Rgba16f),
+                           *s.findView("sunlit_room"), render::defaultFrameSettings(s),
+                           &debugOutput()};
+    bench::RunnerOptions o;
+    o.frames = 3;
+    o.rounds = 2;
+    o.warmup = 1;
+    o.fetchFloor = false;
+    o.timing = bench::chooseTiming("cpu", caps(), gl::detectDriverQuirks());
+    o.es = caps().es;
+    std::vector<std::string> lines;
+    o.progress = [&](const std::string& l) { lines.push_back(l); };
+    const auto sessions = bench::runBenchPlan(plan, in, o);
+    ASSERT_EQ(sessions.size(), 2u);
+    const bench::VariantResult& refA = sessions[0].reference();
+    const bench::VariantResult& refB = sessions[1].reference();
+    ASSERT_TRUE(refA.ok() && refB.ok());
+    EXPECT_EQ(refA.frameSamples, refB.frameSamples) << "one measurement of the reference";
+    EXPECT_EQ(refA.roundMedians, refB.roundMedians);
+    for (const auto& session : sessions)
+        for (const auto& v : session.variants) {
+            SCOPED_TRACE(v.variant.id);
+            ASSERT_TRUE(v.ok()) << v.error;
+            EXPECT_EQ(v.frameSamples.size(), 6u);      // rounds x frames, steady frames only
+            EXPECT_EQ(v.switchFrameSamples.size(), 2u); // one per round, apart
+            EXPECT_EQ(v.roundMedians.size(), 2u);
+        }
+    // The reference appears in both sessions' rounds once: 1 reference + 2 profiles + their
+    // reverted (= reference) and applied (= the profile's) variants: 3 distinct variants.
+    bool one = false;
+    for (const std::string& l : lines)
+        one = one || l.find("building 3 variant(s)") != std::string::npos;
+    EXPECT_TRUE(one) << "the two sessions were not timed together";
+    EXPECT_EQ(sessions[0].machineBefore.valid, true);
+}
+
 TEST_F(BenchRunnerTest, TinyPlanRunsAndReportsUnsupportedVariants) {
     const scene::Scene& s = giTestScene();
     profile::PlatformProfile ref, low;
@@ -157,6 +205,7 @@ TEST_F(BenchRunnerTest, TinyPlanRunsAndReportsUnsupportedVariants) {
     ASSERT_TRUE(refVariant.ok()) << refVariant.error;
     EXPECT_EQ(refVariant.frameSamples.size(), 2u);
     EXPECT_EQ(refVariant.roundMedians.size(), 2u);
+    EXPECT_EQ(refVariant.switchFrameSamples.size(), 2u);
     EXPECT_TRUE(refVariant.fetchFloor.has_value());
     EXPECT_DOUBLE_EQ(refVariant.accuracy.flipMean, 0.0) << "the reference against itself";
     EXPECT_TRUE(std::isinf(refVariant.accuracy.psnr));
