@@ -25,6 +25,7 @@
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "core/Gzip.h"
+#include "core/MachineState.h"
 #include "gl/DebugOutput.h"
 #include "passes/GiDebugInjection.h"
 #include "probes/bake/EmbreeIsa.h"
@@ -50,6 +51,7 @@ struct GateArgs {
     std::string baseline, against, cacheDir;
     bool quick = false, update = false, callgrind = false, noTiming = false, noShaders = false;
     bool keepProbes = false; // --update --keep-probes: measure with the committed probe data
+    bool requireQuiet = false; // refuse to time on a busy machine
     platform::PlatformOptions platform;
     GateSuiteArgs suite;
 };
@@ -138,6 +140,11 @@ void gateCheckGl(gl::DebugOutput& debug, std::uint64_t mark, const std::string& 
 
 // --against: this binary and the other one as two workers, every profile. Rows: frame and
 // GI passes per profile.
+// Seconds a verdict still unknown after the round budget may take (per profile).
+double timeBudget(const GateArgs& a, const gate::GateSuite& s) {
+    return a.quick ? s.timing.quickTimeBudgetSeconds : s.timing.timeBudgetSeconds;
+}
+
 std::vector<gate::GateRow> againstTiming(const GateArgs& a, const gate::GateSuite& s, int budget,
                                          const std::string& probesFile) {
     gate::WorkerProcess cand(workerArgs(gate::selfExecutable(), s, probesFile, a), {},
@@ -150,7 +157,7 @@ std::vector<gate::GateRow> againstTiming(const GateArgs& a, const gate::GateSuit
     for (const std::string& name : s.profiles) {
         auto say = [&](const std::string& l) { gateProgress("timing " + name + " against: " + l); };
         const gate::SequentialTiming t =
-            gate::timeAgainst(basew, cand, name, s.timing, budget, say);
+            gate::timeAgainst(basew, cand, name, s.timing, budget, timeBudget(a, s), say);
         for (const gate::TimedQuantity& q : t.quantities)
             rows.push_back(gate::timingRow(
                 name, (q.name == "gi" ? "GI passes ms vs " : "frame ms vs ") + a.against,
@@ -191,7 +198,8 @@ std::vector<gate::GateRow> ratioTiming(const GateArgs& a, gate::GateRecord& now,
         };
         if (!decide) say("recording " + std::to_string(budget) + " rounds");
         const gate::SequentialTiming t = gate::runSequential(
-            {"ratio"}, measure, {stored}, decide, s.timing, s.timing.ratioThreshold, budget, say);
+            {"ratio"}, measure, {stored}, decide, s.timing, s.timing.ratioThreshold, budget,
+            timeBudget(a, s), say);
         rec.ratioSamples = t.quantities[0].candidate;
         if (t.decided)
             rows.push_back(gate::timingRow(rec.name, "frame ratio to " + s.reference,
@@ -376,6 +384,9 @@ void updateBaseline(const GateArgs& a, const std::optional<gate::GateRecord>& ba
 
 int runGate(GateArgs& a) {
     const auto t0 = std::chrono::steady_clock::now();
+    if (a.requireQuiet)
+        if (const std::string noisy = noisyMachineNow(); !noisy.empty())
+            throw Error("--require-quiet: refusing to time: " + noisy);
     if (a.keepProbes && !a.update)
         throw Error("--keep-probes: only with --update (the gate always measures with the "
                     "committed probe data)");
@@ -411,13 +422,23 @@ int runGate(GateArgs& a) {
 
     std::vector<gate::GateRow> timingRows;
     const int budget = a.quick ? s.timing.quickMaxRounds : s.timing.maxRounds;
+    const MachineState machineBefore = sampleMachineState();
     if (!a.noTiming && !a.against.empty())
         timingRows = againstTiming(a, s, budget, g.probes.file);
     else if (!a.noTiming)
         timingRows =
             ratioTiming(a, now, base ? &*base : nullptr, renderers, ref, timing, caps.es, budget);
+    const MachineState machineAfter = sampleMachineState();
     gate::GateOutcome outcome;
     outcome.recording = a.update;
+    outcome.undecidedFails = gate::runningOnCi();
+    now.recorded["machine"] = toJson(machineBefore, machineAfter);
+    if (!a.noTiming)
+        if (const std::string noisy = noisyMachineText(machineBefore, machineAfter);
+            !noisy.empty())
+            outcome.notes.push_back("warning: the machine was not quiet while timing: " + noisy +
+                                    "; timing verdicts may stay unknown (--require-quiet "
+                                    "refuses to run instead)");
     gate::GateRecord empty;
     empty.suite = s;
     gate::compareRecords(base ? *base : empty, now, outcome);
@@ -477,6 +498,10 @@ const RegisterCommand registerGate{
                       "compiler and valgrind, skipped otherwise)");
          cmd.add_flag("--no-timing", a->noTiming,
                       "Skip the timing gate (counters and accuracy only)");
+         cmd.add_flag("--require-quiet", a->requireQuiet,
+                      "Refuse to run (exit 1) when the machine is busy before it: load average "
+                      "or other processes' CPU use above half the CPUs, or more than 5% of the "
+                      "CPU time stolen by the host");
          cmd.add_flag("--no-shaders", a->noShaders,
                       "Skip the weak GPUs' shader compiler statistics (otherwise measured when "
                       "scripts/mesa-shim.sh has built the compilers; --update then keeps the "

@@ -304,9 +304,18 @@ int GateOutcome::timingFailures() const {
                              [](const GateRow& r) { return r.status == RowStatus::Slower; }));
 }
 
+std::vector<std::string> GateOutcome::undecidedRows() const {
+    std::vector<std::string> out;
+    for (const GateRow& r : rows)
+        if (r.group == "timing" && r.status == RowStatus::Unknown)
+            out.push_back(r.profile + ": " + r.name);
+    return out;
+}
+
 int GateOutcome::exitCode() const {
     if (deterministicFailures() > 0) return kExitRegression;
     if (timingFailures() > 0) return kExitTimingRegression;
+    if (undecidedFails && !undecidedRows().empty()) return kExitUndecided;
     return 0;
 }
 

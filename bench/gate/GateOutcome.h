@@ -41,15 +41,22 @@ struct GateOutcome {
     std::vector<GateRow> rows;
     std::vector<std::string> notes; // one line each: skipped parts, warnings
     bool recording = false;         // --update: the rows show what changes in the baseline
+    // Under CI=true a timing row still "unknown" at the end of its budget fails the gate
+    // (exit 5): a real slowdown on a noisy runner must not land as "unknown".
+    bool undecidedFails = false;
     int deterministicFailures() const;
     int timingFailures() const;
-    // 0 pass, 3 a counter / accuracy / callgrind / shader / agreement failure, 4 only timing
-    // regressions (1 is every error: bad option, unreadable baseline, GL failure).
+    // The timing rows still unknown ("profile: what"), in table order.
+    std::vector<std::string> undecidedRows() const;
+    // 0 pass, 3 a counter / accuracy / callgrind / shader / agreement failure, 4 timing
+    // regressions, 5 only undecided timing rows with undecidedFails (1 is every error: bad
+    // option, unreadable baseline, GL failure, a busy machine with --require-quiet).
     int exitCode() const;
 };
 
 inline constexpr int kExitRegression = 3;
 inline constexpr int kExitTimingRegression = 4;
+inline constexpr int kExitUndecided = 5;
 
 // Probe data identity, every exact counter (grouped for display: gl.<pass>.*, cache.*, ...),
 // accuracy within the suite's tolerances, and the GL pass's pixels against the model's.

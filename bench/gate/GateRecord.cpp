@@ -74,6 +74,8 @@ json suiteJson(const GateSuite& s) {
               {"max_rounds", t.maxRounds},
               {"quick_max_rounds", t.quickMaxRounds},
               {"round_step", t.roundStep},
+              {"time_budget_s", t.timeBudgetSeconds},
+              {"quick_time_budget_s", t.quickTimeBudgetSeconds},
               {"alpha", t.alpha},
               {"threshold", t.threshold},
               {"ratio_threshold", t.ratioThreshold}}},
@@ -106,6 +108,9 @@ GateSuite suiteFrom(const json& j, const std::string& where) {
     ts.maxRounds = optionalField(t, "max_rounds", tw, ts.maxRounds);
     ts.quickMaxRounds = optionalField(t, "quick_max_rounds", tw, ts.quickMaxRounds);
     ts.roundStep = optionalField(t, "round_step", tw, ts.roundStep);
+    ts.timeBudgetSeconds = optionalField(t, "time_budget_s", tw, ts.timeBudgetSeconds);
+    ts.quickTimeBudgetSeconds =
+        optionalField(t, "quick_time_budget_s", tw, ts.quickTimeBudgetSeconds);
     ts.alpha = optionalField(t, "alpha", tw, ts.alpha);
     ts.threshold = optionalField(t, "threshold", tw, ts.threshold);
     ts.ratioThreshold = optionalField(t, "ratio_threshold", tw, ts.ratioThreshold);

@@ -24,6 +24,9 @@ struct TimingSettings {
     int maxRounds = 30;           // budget while the verdict is unknown
     int quickMaxRounds = 15;      // the same with --quick
     int roundStep = 6;            // rounds added per step while unknown
+    // Past the round budget, a verdict still unknown gets more steps until the timing has run
+    // this long (seconds; quick: with --quick): a noisy runner is given time to decide.
+    double timeBudgetSeconds = 90, quickTimeBudgetSeconds = 30;
     double alpha = 0.01;          // p for "different"
     double threshold = 0.03;      // --against: relative frame-time shift that matters
     double ratioThreshold = 0.10; // profile/reference ratio against the baseline's ratios

@@ -54,13 +54,21 @@ std::string gateTable(const GateOutcome& o) {
     for (const std::string& n : o.notes)
         out << "note: " << n << "\n";
     const int d = o.deterministicFailures(), t = o.timingFailures();
+    const std::vector<std::string> undecided = o.undecidedRows();
+    if (!o.recording && !undecided.empty()) {
+        std::string list;
+        for (const std::string& u : undecided)
+            list += (list.empty() ? "" : "; ") + u;
+        out << "gate: undecided (" << (o.undecidedFails ? "fails under CI=true, exit 5" : "passes outside CI")
+            << "): " << list << " - rerun on a quieter machine\n";
+    }
     if (o.recording)
         out << "gate: --update: " << o.rows.size() << " rows recorded, " << d
             << " of them new or different from the previous baseline\n";
     else
         out << "gate: " << (o.exitCode() == 0 ? "PASS" : "FAIL") << " - " << o.rows.size()
             << " rows, " << d << " counter/accuracy/instruction/shader failure(s), " << t
-            << " timing regression(s)\n";
+            << " timing regression(s), " << undecided.size() << " undecided\n";
     return out.str();
 }
 
@@ -80,6 +88,7 @@ nlohmann::json gateJson(const GateOutcome& o) {
             {"exit_code", o.exitCode()},
             {"deterministic_failures", o.deterministicFailures()},
             {"timing_regressions", o.timingFailures()},
+            {"undecided", o.undecidedRows()},
             {"rows", rows},
             {"notes", o.notes}};
 }

@@ -4,6 +4,8 @@
 #include "core/Error.h"
 #include "metrics/Statistics.h"
 
+#include <chrono>
+
 namespace pb::gate {
 
 double giSectionsMs(const std::vector<std::pair<std::string, double>>& sections) {
@@ -14,6 +16,9 @@ double giSectionsMs(const std::vector<std::pair<std::string, double>>& sections)
 }
 
 RoundTimes timeRound(GateRenderer& r, bench::SectionTimer& timer, int frames) {
+    // The first frame after the other side's is a switch frame (the bench's likewise): never
+    // timed, so a round's value is the steady state's.
+    r.frame(nullptr);
     std::vector<double> frame, gi;
     for (int f = 0; f < frames; ++f) {
         bool ok = false;
@@ -33,8 +38,12 @@ SequentialTiming
 runSequential(const std::vector<std::string>& names,
               const std::function<std::vector<std::pair<double, double>>(int)>& measure,
               const std::vector<std::vector<double>>& fixedBaselines, bool decide,
-              const TimingSettings& s, double threshold, int budget,
+              const TimingSettings& s, double threshold, int budget, double timeBudgetSeconds,
               const std::function<void(const std::string&)>& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto elapsed = [&] {
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
     SequentialTiming t;
     for (size_t q = 0; q < names.size(); ++q) {
         t.quantities.push_back({names[q], {}, {}, {}});
@@ -62,11 +71,18 @@ runSequential(const std::vector<std::string>& names,
         }
         if (progress) progress(line);
         if (!unknown) return t;
-        if (t.rounds >= budget) {
+        // The round budget, then the time budget for a verdict still unknown; a hard cap keeps
+        // a pathologically fast frame from running thousands of rounds.
+        const bool roundsLeft = t.rounds < budget;
+        const bool timeLeft = elapsed() < timeBudgetSeconds && t.rounds < kMaxRounds;
+        if (!roundsLeft && !timeLeft) {
             t.budgetReached = true;
             return t;
         }
-        target = std::min(budget, t.rounds + s.roundStep);
+        target = roundsLeft ? std::min(budget, t.rounds + s.roundStep) : t.rounds + s.roundStep;
+        if (!roundsLeft && progress)
+            progress("still unknown after the round budget: more rounds within the time budget (" +
+                     std::to_string(int(timeBudgetSeconds - elapsed())) + " s left)");
     }
 }
 

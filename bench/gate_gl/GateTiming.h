@@ -49,12 +49,14 @@ struct SequentialTiming {
 // alternates the order by round parity). A quantity whose `fixedBaselines` entry is non-empty
 // is compared with that sample (stored ratios) and measure's first value is ignored. With
 // `decide` false: exactly `budget` rounds, no comparison (recording a baseline). Otherwise
-// steps of rounds until no quantity is unknown, or the budget. `progress`: a line per step.
+// steps of rounds until no quantity is unknown, or the round budget is spent and the timing
+// has run `timeBudgetSeconds` (at most kMaxRounds). `progress`: a line per step.
+inline constexpr int kMaxRounds = 200;
 SequentialTiming
 runSequential(const std::vector<std::string>& names,
               const std::function<std::vector<std::pair<double, double>>(int)>& measure,
               const std::vector<std::vector<double>>& fixedBaselines, bool decide,
-              const TimingSettings& s, double threshold, int budget,
+              const TimingSettings& s, double threshold, int budget, double timeBudgetSeconds,
               const std::function<void(const std::string&)>& progress);
 
 } // namespace pb::gate

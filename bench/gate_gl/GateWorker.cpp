@@ -79,6 +79,7 @@ RoundTimes askRound(WorkerProcess& w, const std::string& profile, int frames) {
 
 SequentialTiming timeAgainst(WorkerProcess& baseline, WorkerProcess& candidate,
                              const std::string& profile, const TimingSettings& s, int budget,
+                             double timeBudgetSeconds,
                              const std::function<void(const std::string&)>& progress) {
     for (WorkerProcess* w : {&baseline, &candidate})
         if (const std::string r = w->request("load " + profile); r != "ok")
@@ -94,7 +95,8 @@ SequentialTiming timeAgainst(WorkerProcess& baseline, WorkerProcess& candidate,
         }
         return std::vector<std::pair<double, double>>{{a.frameMs, b.frameMs}, {a.giMs, b.giMs}};
     };
-    return runSequential({"frame", "gi"}, measure, {}, true, s, s.threshold, budget, progress);
+    return runSequential({"frame", "gi"}, measure, {}, true, s, s.threshold, budget,
+                         timeBudgetSeconds, progress);
 }
 
 } // namespace pb::gate

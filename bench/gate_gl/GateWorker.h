@@ -46,6 +46,7 @@ class WorkerProcess;
 // changes land, and a smaller denominator for them).
 SequentialTiming timeAgainst(WorkerProcess& baseline, WorkerProcess& candidate,
                              const std::string& profile, const TimingSettings& s, int budget,
+                             double timeBudgetSeconds,
                              const std::function<void(const std::string&)>& progress);
 
 } // namespace pb::gate

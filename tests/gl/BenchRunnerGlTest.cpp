@@ -5,6 +5,7 @@
 #include "gl/GiTestProbes.h"
 #include "gl/GlTestFixture.h"
 
+#include "bench/gate_gl/GateTiming.h"
 #include "bench/runner/FetchFloorPass.h"
 #include "bench/runner/IrradianceScene.h"
 #include "bench/runner/SectionTimer.h"
@@ -249,6 +250,33 @@ TEST_F(BenchRunnerTest, TinyPlanRunsAndReportsUnsupportedVariants) {
         << s2[0].profile().error;
     EXPECT_TRUE(s2[0].reference().ok());
     EXPECT_FALSE(s2[0].deltas[0].measured);
+}
+
+} // namespace
+} // namespace pb::test
+
+namespace pb::test {
+namespace {
+
+// Past its round budget a verdict still unknown gets more rounds within the time budget, and
+// stops at it: a noisy runner is given time to decide, never forever.
+TEST(GateSequentialTiming, AnUnknownVerdictRunsOnWithinTheTimeBudget) {
+    gate::TimingSettings s;
+    s.minRounds = 4;
+    s.roundStep = 2;
+    // Baseline and candidate drawn from the same noise, centred 5% apart: "unknown" for a
+    // 3% threshold at these sample sizes (neither clearly different nor inside +-3%).
+    auto measure = [](int round) {
+        const double noise = (round * 7919 % 13) / 13.0 - 0.5;
+        return std::vector<std::pair<double, double>>{{1.0 + 0.2 * noise, 1.05 + 0.2 * noise}};
+    };
+    const auto quick = gate::runSequential({"q"}, measure, {}, true, s, 0.03, 4, 0.0, {});
+    EXPECT_EQ(quick.rounds, 4);
+    EXPECT_TRUE(quick.budgetReached);
+    EXPECT_EQ(quick.quantities[0].comparison.verdict, gate::TimingVerdict::Unknown);
+    const auto longer = gate::runSequential({"q"}, measure, {}, true, s, 0.03, 4, 0.3, {});
+    EXPECT_GT(longer.rounds, 4) << "no rounds past the round budget within the time budget";
+    EXPECT_LE(longer.rounds, gate::kMaxRounds);
 }
 
 } // namespace
