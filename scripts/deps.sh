@@ -43,7 +43,7 @@ pb_install_deps() {
 }
 
 # The weak GPUs' compilers (scripts/mesa-shim.sh) unless PB_MESA_SHIM=0: ./test.sh runs the
-# compile tests on them, and a cache makes this a no-op after the first build (about 10 min).
+# compile tests on them, and a cache makes this a no-op after the first build (5-10 min).
 pb_mesa_shim() {
     [ "${PB_MESA_SHIM:-1}" = "0" ] && { echo "==> PB_MESA_SHIM=0: the weak GPUs' compilers are not built; their tests skip"; return 0; }
     scripts/mesa-shim.sh

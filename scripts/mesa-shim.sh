@@ -12,7 +12,7 @@
 # that is renamed into place last, so an interrupted build never leaves a half-installed cache.
 # Mesa's code never enters the repository: the source comes from apt (a deb-src entry for the
 # archive the machine already uses is added under /etc/apt/sources.list.d/), nothing else is
-# downloaded. About 10 minutes on 2 cores, 1 GiB of temporary disk, 20 MB in the cache.
+# downloaded. 5-10 minutes on 2 cores, 1 GiB of temporary disk, 21 MB in the cache.
 set -euo pipefail
 
 # Choose the set once: each gallium driver adds a global define, so adding one later rebuilds
@@ -69,7 +69,7 @@ main() {
     local print_only=0
     case "${1:-}" in
         --print) print_only=1 ;;
-        -h|--help) sed -n '2,16p' "$0" | sed 's/^# \{0,1\}//'; return 0 ;;
+        -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; return 0 ;;
         "") ;;
         *) die "unknown option '$1' (try --help)" ;;
     esac
@@ -110,7 +110,7 @@ main() {
     local src
     src=$(find "$work" -maxdepth 1 -type d -name 'mesa-*' | head -1)
     [ -n "$src" ] || die "the orig tarball $orig held no mesa-* folder"
-    echo "==> mesa-shim: building $PB_MESA_DRIVERS with drm-shim (about 10 min on 2 cores)"
+    echo "==> mesa-shim: building $PB_MESA_DRIVERS with drm-shim (5-10 min on 2 cores)"
     local stage="$dest.partial.$$"
     rm -rf "$stage"
     # Debian's python3 has mako; a python earlier on PATH (pyenv) may not. The prefix is the
