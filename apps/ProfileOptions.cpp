@@ -51,4 +51,20 @@ profile::PlatformProfile resolveProfile(const ProfileArgs& a) {
     return p;
 }
 
+std::vector<profile::PlatformProfile> loadProfilesWithSets(const std::vector<std::string>& names,
+                                                           const std::vector<std::string>& sets,
+                                                           const profile::ProfileSearch& search) {
+    std::vector<std::string> list = names;
+    if (list.empty() || (list.size() == 1 && list[0] == "all"))
+        list = profile::profileNames(search);
+    std::vector<profile::PlatformProfile> out;
+    for (const std::string& n : list) {
+        profile::PlatformProfile p = profile::loadProfile(n, search);
+        for (const std::string& kv : sets)
+            p.switches.applyOverride(kv);
+        out.push_back(std::move(p));
+    }
+    return out;
+}
+
 } // namespace pb::app

@@ -24,6 +24,12 @@ void addProfileOptions(CLI::App& cmd, ProfileArgs& args, const std::string& setH
 // cost model.
 profile::ProfileSearch profileSearch();
 
+// The profiles a bench-like command measures: `names` (names or .toml files; empty or "all":
+// every profile the search finds), each with every `sets` key=value applied.
+std::vector<profile::PlatformProfile> loadProfilesWithSets(const std::vector<std::string>& names,
+                                                           const std::vector<std::string>& sets,
+                                                           const profile::ProfileSearch& search);
+
 // The profile of --profile (or one named "defaults" with every switch at the table default and
 // 1280x720 when none is given) with every --set applied on top.
 profile::PlatformProfile resolveProfile(const ProfileArgs& args);

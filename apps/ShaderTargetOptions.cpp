@@ -29,16 +29,8 @@ std::string joined(const std::vector<std::string>& list) {
 
 bench::BenchPlan shaderBenchPlan(const ShaderPlanArgs& a) {
     const profile::ProfileSearch search = profileSearch();
-    std::vector<std::string> names = a.profiles;
-    if (names.empty() || (names.size() == 1 && names[0] == "all"))
-        names = profile::profileNames(search);
-    std::vector<profile::PlatformProfile> profiles;
-    for (const std::string& n : names) {
-        profile::PlatformProfile p = profile::loadProfile(n, search);
-        for (const std::string& kv : a.sets)
-            p.switches.applyOverride(kv);
-        profiles.push_back(std::move(p));
-    }
+    const std::vector<profile::PlatformProfile> profiles =
+        loadProfilesWithSets(a.profiles, a.sets, search);
     return bench::makeBenchPlan(profiles, profile::loadProfile(a.reference, search),
                                 {a.ablate, a.width, a.height});
 }

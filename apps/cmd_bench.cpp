@@ -168,20 +168,6 @@ nlohmann::json measureResponse(RespondRun& run, const BenchArgs& a,
     return out;
 }
 
-std::vector<profile::PlatformProfile> loadProfiles(const BenchArgs& a,
-                                                   const profile::ProfileSearch& search) {
-    std::vector<std::string> names = a.profiles;
-    if (names.empty()) names = profile::profileNames(search);
-    std::vector<profile::PlatformProfile> out;
-    for (const std::string& n : names) {
-        profile::PlatformProfile p = profile::loadProfile(n, search);
-        for (const std::string& kv : a.sets)
-            p.switches.applyOverride(kv);
-        out.push_back(std::move(p));
-    }
-    return out;
-}
-
 // The camera every variant renders: --camera, --view, or the worst-case view (searched at a
 // small size of the first session's aspect; every result records its own coverage).
 nlohmann::json chooseBenchView(const BenchArgs& a, const scene::Scene& s,
@@ -260,7 +246,8 @@ int runBench(const BenchArgs& a) {
         std::fprintf(stderr, "warning: test-only fault injection active: %s\n", inj.c_str());
     const profile::ProfileSearch search = profileSearch();
     profile::PlatformProfile reference = profile::loadProfile(a.reference, search);
-    std::vector<profile::PlatformProfile> profiles = loadProfiles(a, search);
+    std::vector<profile::PlatformProfile> profiles =
+        loadProfilesWithSets(a.profiles, a.sets, search);
     bench::BenchPlan plan =
         bench::makeBenchPlan(profiles, reference, {a.ablate, a.width, a.height});
     for (const char* opt : {"--json", "--html"}) {
