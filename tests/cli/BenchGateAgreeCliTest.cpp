@@ -94,11 +94,17 @@ TEST(BenchGateAgree, HandheldOverReferenceAgreesWithinTheirIntervals) {
     const double benchLow = (ref + d["ci_low"].get<double>()) / ref;
     const double benchHigh = (ref + d["ci_high"].get<double>()) / ref;
     const double benchRatio = (ref + d["estimate"].get<double>()) / ref;
+    // Agreement as the gate itself judges a ratio: within its ratio threshold (10%) of the
+    // gate's interval. The two runs are minutes apart on a machine CI shares with other tests,
+    // so a load change between them moves one against the other by a few percent; what this
+    // catches is the disagreement issue 41 found (bench 1.46x the reference, gate 0.88x).
+    const double slack = base["suite"]["timing"]["ratio_threshold"].get<double>() *
+                         0.5 * (gateLow + gateHigh);
     std::printf("[ agree ] gate ratio median interval [%.4f, %.4f] (%zu rounds); bench %.4f "
-                "[%.4f, %.4f]\n",
-                gateLow, gateHigh, ratios.size(), benchRatio, benchLow, benchHigh);
-    EXPECT_LE(benchLow, gateHigh) << "the bench's handheld is faster than the gate's";
-    EXPECT_GE(benchHigh, gateLow) << "the bench's handheld is slower than the gate's";
+                "[%.4f, %.4f]; slack %.4f\n",
+                gateLow, gateHigh, ratios.size(), benchRatio, benchLow, benchHigh, slack);
+    EXPECT_LE(benchLow, gateHigh + slack) << "the bench's handheld is faster than the gate's";
+    EXPECT_GE(benchHigh, gateLow - slack) << "the bench's handheld is slower than the gate's";
 }
 
 } // namespace
