@@ -42,7 +42,10 @@ json readJobOutput(const std::string& outDir, const SweepJob& job) {
 bool isTimingKey(const std::string& k) {
     static const std::set<std::string> named = {
         "context", "node", "nodes", "seconds", "ms", "bimodality_coefficient", "gi_over_floor",
-        "noise_flags", "frame_within"};
+        "noise_flags", "frame_within",
+        // the machine's state while timing (load, steal, other processes): of the run, not of
+        // the result
+        "machine", "machine_warning"};
     return named.count(k) > 0 || (k.size() > 3 && k.compare(k.size() - 3, 3, "_ms") == 0);
 }
 
