@@ -140,7 +140,12 @@ std::vector<SizeGroup> groupBySize(const BenchPlan& plan) {
         auto g = std::find_if(groups.begin(), groups.end(), [&](const SizeGroup& x) {
             return x.width == session.width && x.height == session.height;
         });
-        if (g == groups.end()) g = groups.insert(groups.end(), {session.width, session.height});
+        if (g == groups.end()) {
+            SizeGroup fresh;
+            fresh.width = session.width;
+            fresh.height = session.height;
+            g = groups.insert(groups.end(), std::move(fresh));
+        }
         g->sessions.push_back(s);
         std::vector<size_t> slots;
         for (const Variant& v : session.variants) {
