@@ -128,4 +128,9 @@ struct BenchResult {
     shaders::ShaderStatisticsRun shaderTargets;
 };
 
+// Fills `s.deltas` from its plan and its variants' measurements: each delta the paired shift of
+// the two sides' round medians (Hodges-Lehmann, Wilcoxon CI), and the accuracy differences
+// where both sides were measured. The runner's last step, GL-free.
+void pairDeltas(SessionResult& s);
+
 } // namespace pb::bench

@@ -102,26 +102,6 @@ void summarizeVariant(VariantResult& v, const LiveVariant& live) {
     }
 }
 
-void measureDeltas(SessionResult& s) {
-    for (const PlannedDelta& p : s.session.deltas) {
-        DeltaResult d;
-        d.planned = p;
-        const VariantResult &off = s.variants[size_t(p.off)], &on = s.variants[size_t(p.on)];
-        if (off.ok() && on.ok() && !off.roundMedians.empty() &&
-            off.roundMedians.size() == on.roundMedians.size()) {
-            d.measured = true;
-            d.ms = stats::pairedShift(off.roundMedians, on.roundMedians);
-            if (off.accuracy.measured && on.accuracy.measured) {
-                d.flip = on.accuracy.flipMean - off.accuracy.flipMean;
-                d.psnr = on.accuracy.psnr - off.accuracy.psnr; // NaN/inf when one is identical
-                d.ssim = on.accuracy.ssim - off.accuracy.ssim;
-                d.relativeMseGi = on.accuracy.relativeMseGi - off.accuracy.relativeMseGi;
-            }
-        }
-        s.deltas.push_back(d);
-    }
-}
-
 // The distinct variants of every session of one frame size (equal switches are one variant),
 // timed in the same interleaved rounds: each session's reference, profile and ablation rows
 // then come from the same rounds as every other session's, so no figure compares two moments
@@ -278,7 +258,7 @@ SessionResult finishSession(const Session& session, const std::vector<size_t>& s
         captureTruthAccuracy(out, renderers, it->second, in.settings.exposure, o.pixelsPerDegree,
                              truthMaps);
     }
-    measureDeltas(out);
+    pairDeltas(out);
     return out;
 }
 

@@ -57,14 +57,7 @@ BenchResult disagreeingSessions() {
         for (const Variant& v : s.variants)
             sr.variants.push_back(
                 trustVariant(v, v.role == VariantRole::Reference ? refMs[k] : profMs[k]));
-        for (const PlannedDelta& p : s.deltas) {
-            DeltaResult d;
-            d.planned = p;
-            d.measured = true;
-            d.ms = stats::pairedShift(sr.variants[size_t(p.off)].roundMedians,
-                                      sr.variants[size_t(p.on)].roundMedians);
-            sr.deltas.push_back(d);
-        }
+        pairDeltas(sr); // as the runner does
         r.sessions.push_back(sr);
     }
     return r;
