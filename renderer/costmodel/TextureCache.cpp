@@ -19,12 +19,12 @@ void CacheConfig::validate() const {
     if (lineBytes < 4 || !powerOfTwo(std::uint64_t(lineBytes)) || lineBytes > 4096)
         throw Error(what + "line size must be a power of two in 4..4096 bytes");
     if (ways < 1 || ways > 256) throw Error(what + "associativity must be in 1..256 ways");
-    if (!powerOfTwo(sizeBytes) || sizeBytes > (std::uint64_t(1) << 30))
-        throw Error(what + "size must be a power of two of at most 1 GiB");
+    if (sizeBytes == 0 || sizeBytes > (std::uint64_t(1) << 30))
+        throw Error(what + "size must be in 1 B..1 GiB");
+    // Any whole number of sets: real caches come in 24 KiB (Maxwell's texture L1) or 50 MiB
+    // (Hopper's L2); a power-of-two set count indexes by mask, any other by remainder.
     if (sizeBytes % (std::uint64_t(lineBytes) * std::uint64_t(ways)) != 0 || sets() < 1)
         throw Error(what + "size must hold a whole number of sets (size >= line x ways)");
-    if (!powerOfTwo(std::uint64_t(sets())))
-        throw Error(what + "size / (line x ways) must be a power of two (sets)");
 }
 
 std::string CacheConfig::describe() const {
@@ -38,7 +38,8 @@ LruCache::LruCache(const CacheConfig& config) {
     lineBytes_ = config.lineBytes;
     lineShift_ = std::countr_zero(std::uint64_t(config.lineBytes));
     ways_ = config.ways;
-    setMask_ = std::uint64_t(config.sets()) - 1;
+    sets_ = std::uint64_t(config.sets());
+    setMask_ = powerOfTwo(sets_) ? sets_ - 1 : 0;
     lines_.assign(std::size_t(config.sets()) * std::size_t(ways_), kEmpty);
 }
 
@@ -48,7 +49,8 @@ void LruCache::clear() {
 
 bool LruCache::access(std::uint64_t address) {
     const std::uint64_t line = address >> lineShift_;
-    std::uint64_t* set = lines_.data() + std::size_t(line & setMask_) * std::size_t(ways_);
+    const std::uint64_t index = setMask_ ? (line & setMask_) : (sets_ > 1 ? line % sets_ : 0);
+    std::uint64_t* set = lines_.data() + std::size_t(index) * std::size_t(ways_);
     // Move-to-front: the set's array is its recency order, so the last slot is the victim.
     int at = ways_ - 1;
     bool hit = false;

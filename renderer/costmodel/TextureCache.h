@@ -16,8 +16,8 @@ struct CacheConfig {
     std::string source; // where the figures come from (or "assumption")
 
     int sets() const { return int(sizeBytes / std::uint64_t(lineBytes) / std::uint64_t(ways)); }
-    // Throws pb::Error naming the problem: sizes must be powers of two and size a multiple
-    // of lineBytes * ways.
+    // Throws pb::Error naming the problem: the line size must be a power of two and the size a
+    // whole number of sets (a multiple of lineBytes * ways).
     void validate() const;
     std::string describe() const; // "16 KiB, 64 B lines, 4-way"
 };
@@ -33,7 +33,8 @@ public:
 
 private:
     int lineShift_ = 6, ways_ = 4;
-    std::uint64_t setMask_ = 0;
+    std::uint64_t sets_ = 1;
+    std::uint64_t setMask_ = 0; // sets_ - 1 when sets_ is a power of two, else 0 (remainder)
     int lineBytes_ = 64;
     // Per set, `ways_` line numbers, most recently used first; ~0 = empty.
     std::vector<std::uint64_t> lines_;

@@ -64,14 +64,25 @@ TEST(LruCache, LineSizeDecidesWhichNeighboursComeForFree) {
     EXPECT_EQ(textureCacheRun(clearMe, {0}), "M");
 }
 
+// A set count that is not a power of two indexes by remainder: with 3 direct-mapped sets, lines
+// 0 and 3 share set 0, lines 0 and 1 do not.
+TEST(LruCache, NonPowerOfTwoSetsIndexByRemainder) {
+    LruCache three(cfg(192, 64, 1));
+    EXPECT_EQ(textureCacheRun(three, {0, 192, 0}), "MMM");
+    three.clear();
+    EXPECT_EQ(textureCacheRun(three, {0, 64, 128, 0, 64, 128}), "MMMHHH");
+}
+
 TEST(LruCache, ConfigurationsAreValidated) {
     EXPECT_EQ(cfg(16384, 64, 4).sets(), 64);
     EXPECT_NO_THROW(cfg(16384, 64, 4).validate());
     EXPECT_THROW(cfg(16384, 48, 4).validate(), pb::Error); // line not a power of two
-    EXPECT_THROW(cfg(12000, 64, 4).validate(), pb::Error); // size not a power of two
+    EXPECT_THROW(cfg(12000, 64, 4).validate(), pb::Error); // not a whole number of sets
     EXPECT_THROW(cfg(128, 64, 4).validate(), pb::Error);   // smaller than one set
     EXPECT_THROW(cfg(16384, 64, 0).validate(), pb::Error); // no ways
-    EXPECT_THROW(cfg(16384, 64, 3).validate(), pb::Error); // sets not a power of two
+    EXPECT_THROW(cfg(16384, 64, 3).validate(), pb::Error); // not a whole number of sets
+    EXPECT_NO_THROW(cfg(24576, 128, 4).validate());        // Maxwell's 24 KiB: 48 sets
+    EXPECT_EQ(cfg(24576, 128, 4).sets(), 48);
     EXPECT_EQ(cfg(16384, 64, 4).describe(), "16 KiB, 64 B lines, 4-way");
 }
 
