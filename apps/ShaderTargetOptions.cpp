@@ -62,6 +62,7 @@ runShaderTargets(const ShaderRunInputs& in, const std::string& sceneName,
     for (const std::string& s : in.plan.sets)
         launch.argv.insert(launch.argv.end(), {"--set", s});
     if (!in.plan.ablate) launch.argv.push_back("--no-ablate");
+    if (in.plan.fusedTwins) launch.argv.push_back("--fused-twins");
 
     shaders::ShaderStatisticsRun run;
     run.mesaVersion = install.mesaVersion;

@@ -17,6 +17,7 @@ struct ShaderPlanArgs {
     std::string reference = "reference";
     std::vector<std::string> sets;
     bool ablate = true;
+    bool fusedTwins = false; // each split-loops variant's fused twin too (ShaderPlan.h)
     int width = 160, height = 90; // the frame each variant renders once to build its programs
 };
 

@@ -5,6 +5,7 @@
 // With --respond, after the timed sessions, each profile's response to a scene change
 // (respond's measurement, RespondRun.h) with its switches and [update] budget.
 #include "CommandRegistry.h"
+#include "DeviceOptions.h"
 #include "JsonOption.h"
 #include "PlatformOptions.h"
 #include "ProbeOptions.h"
@@ -18,7 +19,9 @@
 #include "bench/report/ResultJson.h"
 #include "bench/runner/BenchContext.h"
 #include "bench/runner/BenchTruth.h"
+#include "bench/report/PredictionMeasured.h"
 #include "bench/runner/CacheModelRun.h"
+#include "bench/runner/PredictionRun.h"
 #include "bench/runner/ProbeCache.h"
 #include "bench/runner/SessionRunner.h"
 #include "bench/shaders/MesaShim.h"
@@ -63,6 +66,7 @@ struct BenchArgs {
     std::vector<std::string> respond; // --respond EVENT (respond's --event); empty: no response
     int respondFrames = 150;
     std::string targets; // --targets: the weak GPUs' compilers (bench/shaders/README.md)
+    std::string predict; // --predict: device files for the device model (bench/devicemodel)
     int targetTimeout = 600;
 };
 
@@ -101,6 +105,7 @@ void validate(const BenchArgs& a) {
     if (a.respondFrames < 2 || a.respondFrames > 10000)
         throw Error("--respond-frames must be in 2..10000");
     if (a.targetTimeout < 1) throw Error("--target-timeout must be at least 1 s");
+    if (!a.predict.empty()) shaders::findMesaShim(); // the model needs the compilers
     if (!a.targets.empty()) {
         // Said before the bake and the timing: names, and whether the compilers are built.
         shaders::parseShaderTargets(a.targets);
@@ -250,6 +255,9 @@ int runBench(const BenchArgs& a) {
         loadProfilesWithSets(a.profiles, a.sets, search);
     bench::BenchPlan plan =
         bench::makeBenchPlan(profiles, reference, {a.ablate, a.width, a.height});
+    const std::vector<devicemodel::DeviceSpec> devices =
+        a.predict.empty() ? std::vector<devicemodel::DeviceSpec>{}
+                          : resolvePredictDevices(a.predict, profiles);
     for (const char* opt : {"--json", "--html"}) {
         const std::string path = std::string(opt) == "--json" ? a.json.file() : a.html;
         if (!path.empty()) ensureParent(path, opt);
@@ -278,6 +286,19 @@ int runBench(const BenchArgs& a) {
         progress("compiling every variant's programs on the targets " + a.targets);
         result.shaderTargets = runShaderTargets(
             in, s.name, [](const std::string& line) { progress("targets: " + line); });
+    }
+    shaders::ShaderStatisticsRun modelStats; // the device model's compilers, twins included
+    if (!devices.empty()) {
+        ShaderRunInputs in;
+        in.targets = bench::predictionTargets(devices);
+        in.plan = {a.profiles, a.reference, a.sets, a.ablate, true};
+        in.scene = a.scene;
+        in.probesPath = probesPath;
+        in.camera = cameraSpec(view);
+        in.timeoutSeconds = a.targetTimeout;
+        progress("device model: compiling every variant's programs on " + in.targets);
+        modelStats = runShaderTargets(
+            in, s.name, [](const std::string& line) { progress("device model: " + line); });
     }
     auto platform = platform::createPlatform(timingPlatform(a.platform));
     gl::DebugOutput debug;
@@ -321,6 +342,11 @@ int runBench(const BenchArgs& a) {
     std::vector<bench::TruthMaps> truthMaps;
     result.sessions = bench::runBenchPlan(plan, in, o, &pictures, a.truth ? &truthMaps : nullptr);
     if (!a.noCacheModel) result.cacheModel = bench::cacheModelEntries(plan, s, set, view, progress);
+    if (!devices.empty()) {
+        bench::PredictionRequest req{devices, a.predict == "own", progress};
+        result.predictions = bench::predictDevices(plan, s, set, view, modelStats, req);
+        bench::attachMeasured(result.predictions, result.sessions);
+    }
     if (respond) result.response = measureResponse(*respond, a, result.sessions, debug);
     result.context["load_average_end"] = bench::loadAverage();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -331,6 +357,8 @@ int runBench(const BenchArgs& a) {
             if (!v.ok()) skipped.push_back(v.variant.id + ": " + v.error);
     for (const std::string& p : shaders::shaderRunProblems(result.shaderTargets))
         skipped.push_back("--targets " + p);
+    for (const bench::DevicePrediction& d : result.predictions)
+        if (!d.error.empty()) skipped.push_back("--predict " + d.device + ": " + d.error);
     if (a.strict && !skipped.empty())
         throw Error("--strict: " + std::to_string(skipped.size()) +
                     " variant(s) could not run, nothing written; first: " + skipped.front());
@@ -352,6 +380,14 @@ int runBench(const BenchArgs& a) {
         std::fprintf(stderr, "warning: not run (%s): %s\n", why.c_str(), ids.c_str());
     for (const std::string& p : shaders::shaderRunProblems(result.shaderTargets))
         std::fprintf(stderr, "warning: --targets %s\n", p.c_str());
+    for (const bench::DevicePrediction& d : result.predictions) {
+        if (!d.error.empty())
+            std::fprintf(stderr, "warning: --predict %s: %s\n", d.device.c_str(), d.error.c_str());
+        for (const bench::PredictedSession& ps : d.sessions)
+            if (ps.overBudget())
+                std::fprintf(stderr, "warning: model: %s: %s predicted %.2f ms, over its %.1f ms budget\n",
+                             d.device.c_str(), ps.profile.c_str(), ps.budgetFrameMs(), ps.budgetMs);
+    }
     if (!a.json.file().empty()) std::cout << "\nwrote " << a.json.file() << "\n";
     if (!a.html.empty())
         std::cout << (a.json.file().empty() ? "\n" : "") << "wrote " << a.html << "\n";
@@ -440,6 +476,11 @@ const RegisterCommand registerBench{
                         "Also compile every variant's programs with these weak GPUs' own "
                         "compilers (probebench shaders --list-targets; all) and report their "
                         "statistics beside the timings; needs scripts/mesa-shim.sh");
+         cmd.add_option("--predict", a->predict,
+                        "Also predict every profile's frame, passes and switch deltas on these "
+                        "devices with the device model (probebench devices; NAME[,NAME...], all, "
+                        "or own: each profile on the device its [budget] model names), beside the "
+                        "measured ones; needs scripts/mesa-shim.sh");
          cmd.add_option("--target-timeout", a->targetTimeout,
                         "Seconds one target's compiler run may take")
              ->capture_default_str();

@@ -41,7 +41,7 @@ int runShadersWorker(ShadersWorkerArgs& a) {
     in.width = a.plan.width;
     in.height = a.plan.height;
     const shaders::TargetStatistics t = shaders::collectShaderStatistics(
-        in, shaders::plannedVariants(plan), debug, [](const std::string& line) {
+        in, shaders::plannedVariants(plan, a.plan.fusedTwins), debug, [](const std::string& line) {
             std::fprintf(stderr, "shaders-worker: %s\n", line.c_str());
         });
     const std::string text = shaders::toJson(t).dump(1) + "\n";
@@ -61,6 +61,9 @@ const RegisterCommand registerShadersWorker{
          cmd.add_option("--reference", a->plan.reference, "The reference profile");
          cmd.add_option("--set", a->plan.sets, "Switch key=value on every profile");
          cmd.add_flag("--no-ablate", a->noAblate, "No single-switch variants");
+         cmd.add_flag("--fused-twins", a->plan.fusedTwins,
+                      "Also each gi.loops=split variant with fused loops (the device model's ALU "
+                      "figure)");
          cmd.add_option("--width", a->plan.width, "Frame width");
          cmd.add_option("--height", a->plan.height, "Frame height");
          cmd.add_option("--out", a->out, "The JSON result")->required();

@@ -4,6 +4,7 @@
 #include "bench/shaders/ShaderStatistics.h"
 #include "AblationPlan.h"
 #include "CacheModelSection.h"
+#include "DevicePrediction.h"
 #include "core/MachineState.h"
 #include "metrics/Statistics.h"
 
@@ -126,6 +127,9 @@ struct BenchResult {
     // `bench --targets`: every profile's programs compiled by the weak GPUs' compilers
     // (bench/shaders/README.md); no targets when not asked for.
     shaders::ShaderStatisticsRun shaderTargets;
+    // `bench --predict`: per device the model's frame and pass times and switch deltas beside
+    // this machine's (DevicePrediction.h); empty when not asked for.
+    std::vector<DevicePrediction> predictions;
 };
 
 // Fills `s.deltas` from its plan and its variants' measurements: each delta the paired shift of

@@ -247,6 +247,7 @@ std::string htmlReport(const BenchResult& r) {
     ablation(h, r);
     h << cacheModelHtml(r.cacheModel);
     h << shaderTargetsHtml(r);
+    h << predictionsHtml(r.predictions);
     heatmaps(h, r);
     h << truthHtml(r);
     context(h, r);

@@ -178,6 +178,7 @@ std::string markdownSummary(const BenchResult& r) {
     ablationTables(out, r);
     out << cacheModelMarkdown(r.cacheModel);
     out << shaderTargetsMarkdown(r);
+    out << predictionsMarkdown(r.predictions);
     out << truthMarkdown(r);
     return out.str();
 }

@@ -233,6 +233,7 @@ nlohmann::json benchJson(const BenchResult& r) {
     j["truth"] = r.truth; // null without --truth
     if (!r.response.is_null()) j["response"] = r.response; // only with --respond
     if (!r.shaderTargets.targets.empty()) j["shader_targets"] = shaders::toJson(r.shaderTargets);
+    if (!r.predictions.empty()) j["device_model"] = predictionsJson(r.predictions);
     return j;
 }
 

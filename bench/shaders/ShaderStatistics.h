@@ -28,7 +28,7 @@ struct VariantStatistics {
     std::string id;            // the bench plan's variant id: "handheld", "handheld -gi.loops"
     std::string label;         // "-gi.loops (split -> fused)"
     std::string profile;       // the session's profile name
-    std::string role;          // profile, reference, reverted, applied
+    std::string role;          // profile, reference, reverted, applied, twin (ShaderPlan.h)
     std::string switchKey;     // reverted/applied: the one switch
     std::string notRun;        // why this target cannot run it ("" when it compiled)
     std::vector<int> programs; // indices into TargetStatistics::programs, in build order
@@ -66,6 +66,9 @@ struct ShaderStatisticsRun {
     std::vector<SwitchPair> pairs;
     std::vector<TargetStatistics> targets;
 };
+
+// The id of a variant's gi.loops=fused twin (bench/shaders_gl/ShaderPlan.h).
+inline std::string fusedTwinId(const std::string& variantId) { return variantId + " [fused twin]"; }
 
 nlohmann::json toJson(const StageStatistics& s);
 nlohmann::json toJson(const TargetStatistics& t);

@@ -4,7 +4,7 @@
 
 namespace pb::shaders {
 
-std::vector<PlannedVariant> plannedVariants(const bench::BenchPlan& plan) {
+std::vector<PlannedVariant> plannedVariants(const bench::BenchPlan& plan, bool fusedTwins) {
     std::vector<PlannedVariant> out;
     std::set<std::string> ids;
     for (const bench::Session& s : plan.sessions)
@@ -18,6 +18,14 @@ std::vector<PlannedVariant> plannedVariants(const bench::BenchPlan& plan) {
             meta.role = bench::roleName(v.role);
             meta.switchKey = v.switchKey;
             out.push_back({meta, v.switches});
+            if (!fusedTwins || v.switches.gi.loops != profile::GiLoops::Split) continue;
+            VariantStatistics twin = meta;
+            twin.id = fusedTwinId(v.id);
+            twin.label = v.label + " [fused twin]";
+            twin.role = "twin";
+            profile::Profile fused = v.switches;
+            fused.gi.loops = profile::GiLoops::Fused;
+            if (ids.insert(twin.id).second) out.push_back({twin, fused});
         }
     return out;
 }

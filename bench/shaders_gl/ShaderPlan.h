@@ -10,7 +10,11 @@
 
 namespace pb::shaders {
 
-std::vector<PlannedVariant> plannedVariants(const bench::BenchPlan& plan);
+// With `fusedTwins`, every variant with gi.loops=split is followed by its twin with
+// gi.loops=fused (id: fusedTwinId(id), role "twin"): the compilers count a loop's body once, so
+// the device model (bench/devicemodel) reads the split program's arithmetic off the written-out
+// fused one. Twins are in no table and no pair.
+std::vector<PlannedVariant> plannedVariants(const bench::BenchPlan& plan, bool fusedTwins = false);
 std::vector<SwitchPair> switchPairs(const bench::BenchPlan& plan);
 
 } // namespace pb::shaders

@@ -46,7 +46,7 @@ std::string PlatformProfile::summaryLine() const {
 bool PlatformProfile::sameSettings(const PlatformProfile& o) const {
     return switches == o.switches && width == o.width && height == o.height &&
            frameBudgetMs == o.frameBudgetMs && giMemoryBudgetMiB == o.giMemoryBudgetMiB &&
-           budgetDevice == o.budgetDevice && cachePreset == o.cachePreset &&
+           budgetDevice == o.budgetDevice && modelDevice == o.modelDevice && cachePreset == o.cachePreset &&
            updateRaysPerFrame == o.updateRaysPerFrame &&
            updateUploadBytesPerFrame == o.updateUploadBytesPerFrame;
 }

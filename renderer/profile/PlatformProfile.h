@@ -33,6 +33,9 @@ struct PlatformProfile {
     // The device the budgets are for, as its GL_RENDERER names it ("Tegra X1"); "" = the
     // profile's target hardware, unnamed. A bench judges the frame budget only on that device.
     std::string budgetDevice;
+    // The device file (profiles/devices/NAME.toml) the device model judges the budgets on
+    // (`bench --predict own`); "" = none named.
+    std::string modelDevice;
     std::string cachePreset;           // costmodel::cachePresetFor name
     // Incremental probe updates after a scene change (`probebench respond --profile`): the
     // rays and the probe-texture upload bytes one frame may spend; 0 = no limit.

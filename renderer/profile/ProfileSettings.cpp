@@ -71,6 +71,10 @@ std::vector<ProfileSetting> buildSettings() {
                              "the device the budgets are for, as its GL_RENDERER names it; the "
                              "bench colours the frame budget only when it times on it",
                              &PlatformProfile::budgetDevice)),
+        optional(textSetting("budget.model", false,
+                             "the device file (profiles/devices/NAME.toml) the budgets are "
+                             "judged on by the device model (bench --predict own)",
+                             &PlatformProfile::modelDevice)),
         optional(integer("update.rays_per_frame", 0, 1 << 30,
                          "probe update budget: rays per frame after a scene change (probebench "
                          "respond; 0 = no limit)",
