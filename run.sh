@@ -18,12 +18,15 @@ echo "==> first run: $(pwd)/out/cornell_gi.png (probe GI) beside out/cornell_dir
 # times 3 steady frames per variant after an untimed switch frame. --cache-dir keeps the baked
 # probes in out/.
 # Where scripts/mesa-shim.sh has built the weak GPUs' compilers (./test.sh does), the report
-# also shows every profile's programs as the Adreno 630, Mali-G52 and Mali-G57 compilers see them.
+# also shows every profile's programs as the Adreno 630, Mali-G52 and Mali-G57 compilers see them,
+# and the device model's prediction of every profile on its own target device ([budget] model:
+# the Switch, the Xbox One, the GTX 1080), its budget judged there (bench/README.md "Frame time
+# on the target devices").
 targets=()
 if scripts/mesa-shim.sh --print > /dev/null 2>&1; then
-    targets=(--targets adreno-630,mali-g52,mali-g57)
+    targets=(--targets adreno-630,mali-g52,mali-g57 --predict own)
 else
-    echo "==> the weak GPUs' compilers are not built: scripts/mesa-shim.sh builds them (about 10 min) for the report's compiler section"
+    echo "==> the weak GPUs' compilers are not built: scripts/mesa-shim.sh builds them (about 10 min) for the report's compiler and device-model sections"
 fi
 ./build/probebench bench --scene rooms --volumes bench/volumes/rooms_nested.toml --ablate \
     --width 512 --height 288 --rounds 6 --frames 3 --warmup 2 --cache-dir out/cache \
