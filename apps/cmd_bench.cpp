@@ -343,7 +343,7 @@ int runBench(const BenchArgs& a) {
     result.sessions = bench::runBenchPlan(plan, in, o, &pictures, a.truth ? &truthMaps : nullptr);
     if (!a.noCacheModel) result.cacheModel = bench::cacheModelEntries(plan, s, set, view, progress);
     if (!devices.empty()) {
-        bench::PredictionRequest req{devices, a.predict == "own", progress};
+        bench::PredictionRequest req{devices, a.predict == "own", true, progress};
         result.predictions = bench::predictDevices(plan, s, set, view, modelStats, req);
         bench::attachMeasured(result.predictions, result.sessions);
     }

@@ -6,19 +6,23 @@
 // compilers' statistics (exact, keyed by Mesa) - prints a table and exits non-zero on a
 // regression. --update rewrites the baseline on purpose.
 #include "CommandRegistry.h"
+#include "DeviceOptions.h"
 #include "GateSuiteOptions.h"
 #include "JsonOption.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
 #include "SceneOptions.h"
 #include "ShaderTargetOptions.h"
+#include "bench/gate/GateEnvironment.h"
 #include "bench/gate/GateOutcome.h"
 #include "bench/gate/ShaderComparison.h"
+#include "bench/gate/PredictionCounters.h"
 #include "bench/gate/ShaderCounters.h"
 #include "bench/gate_gl/CallgrindFrame.h"
 #include "bench/gate_gl/GateWorker.h"
 #include "bench/gate_gl/WorkerProcess.h"
 #include "bench/runner/BenchContext.h"
+#include "bench/runner/PredictionRun.h"
 #include "bench/runner/ProbeCache.h"
 #include "bench/shaders/MesaShim.h"
 #include "bench/shaders_gl/TargetWorkers.h"
@@ -307,6 +311,51 @@ void callgrindStage(const GateArgs& a, const std::string& probesFile, const gl::
     gate::compareCallgrind(base, cg, outcome);
 }
 
+// The device model's predictions of the suite (bench/gate/README.md "Shader statistics"): each
+// suite profile on the device its [budget] model names, at the suite's size and view, as exact
+// counters under "model:<device>" in the shader record. Profiles that name no device are left
+// out; a compiler that could not run is a problem like any target's.
+void modelStage(const gate::GateSuite& s, const GateSetup& g, gate::ShaderRecord& record,
+                std::vector<std::string>& problems) {
+    const profile::ProfileSearch search = profileSearch();
+    std::vector<profile::PlatformProfile> profiles;
+    for (const std::string& name : s.profiles) {
+        profile::PlatformProfile p = profile::loadProfile(name, search);
+        if (!p.modelDevice.empty()) profiles.push_back(std::move(p));
+    }
+    if (profiles.empty()) return;
+    const std::vector<devicemodel::DeviceSpec> devices = resolvePredictDevices("own", profiles);
+    ShaderRunInputs in;
+    in.targets = bench::predictionTargets(devices);
+    in.plan.profiles.clear();
+    for (const profile::PlatformProfile& p : profiles)
+        in.plan.profiles.push_back(p.name);
+    in.plan.reference = s.reference;
+    in.plan.ablate = false;
+    in.plan.fusedTwins = true;
+    in.plan.width = s.width;
+    in.plan.height = s.height;
+    in.scene.scene = s.scene;
+    in.probesPath = g.probes.file;
+    in.camera = s.camera;
+    gateProgress("shaders: the device model of every profile on its own device (" + in.targets + ")");
+    const shaders::ShaderStatisticsRun run = runShaderTargets(
+        in, g.scene.name, [](const std::string& l) { gateProgress("shaders: model: " + l); });
+    for (const std::string& p : shaders::shaderRunProblems(run))
+        problems.push_back("model: " + p);
+    const bench::BenchPlan plan = bench::makeBenchPlan(
+        profiles, profile::loadProfile(s.reference, search), {false, s.width, s.height});
+    bench::PredictionRequest req{devices, true, false, [](const std::string& l) { gateProgress(l); }};
+    for (const bench::DevicePrediction& d :
+         bench::predictDevices(plan, g.scene, g.probes.set, g.view, run, req)) {
+        if (!d.error.empty()) {
+            problems.push_back("model:" + d.device + ": " + d.error);
+            continue;
+        }
+        record.targets.push_back(gate::predictionRecord(d));
+    }
+}
+
 // The weak GPUs' compiler statistics (bench/gate/README.md "Shader statistics"): every suite
 // profile compiled as itself (no ablation) by each of the suite's shader targets, rendering the
 // suite's view with the probe data every other figure is measured with, compared exactly with
@@ -349,9 +398,14 @@ void shaderStage(const GateArgs& a, const GateSetup& g, const gate::GateRecord& 
     if (a.update && !problems.empty())
         throw Error("shaders: " + problems.front() +
                     " (baseline not updated; --no-shaders keeps its shader statistics)");
-    const gate::ShaderRecord record = gate::shaderRecordOf(run, install.drivers, s.profiles);
+    gate::ShaderRecord record = gate::shaderRecordOf(run, install.drivers, s.profiles);
+    std::vector<std::string> all = problems;
+    modelStage(s, g, record, all);
+    if (a.update && all.size() > problems.size())
+        throw Error("shaders: " + all[problems.size()] +
+                    " (baseline not updated; --no-shaders keeps its shader statistics)");
     now.shaders = {record};
-    gate::compareShaders(base, record, problems, outcome);
+    gate::compareShaders(base, record, all, outcome, gate::otherMachine(base, now));
 }
 
 // --update: the baseline rewritten from this run (callgrind counts of other toolchains kept),

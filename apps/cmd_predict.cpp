@@ -81,7 +81,7 @@ int runPredict(const PredictArgs& a) {
     const shaders::ShaderStatisticsRun stats =
         runShaderTargets(in, s.name, [](const std::string& line) { say(line); });
     const std::vector<bench::DevicePrediction> p = bench::predictDevices(
-        plan, s, set, view, stats, {devices, a.devices == "own", say});
+        plan, s, set, view, stats, {devices, a.devices == "own", true, say});
 
     std::cout << "Scene " << s.name << ", camera " << cameraSpec(view) << ", probes " << probesPath
               << ", compilers of Mesa " << stats.mesaVersion << ".\n";

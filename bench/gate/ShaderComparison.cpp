@@ -1,5 +1,7 @@
 #include "ShaderComparison.h"
 
+#include "GateEnvironment.h"
+
 #include "ShaderCounters.h"
 
 #include <algorithm>
@@ -96,8 +98,22 @@ std::string problemTarget(const std::string& line) {
 
 } // namespace
 
+// A model row that moved only within the other-machine tolerance (every counter).
+static bool modelWithinOtherMachineTolerance(const ShaderPassRecord& base, const ShaderPassRecord& now) {
+    if (base.counters.size() != now.counters.size()) return false;
+    for (const auto& [k, v] : now.counters) {
+        auto it = std::find_if(base.counters.begin(), base.counters.end(),
+                               [&](const auto& kv) { return kv.first == k; });
+        if (it == base.counters.end()) return false;
+        const double b = double(it->second), n = double(v);
+        if (std::abs(n - b) > kOtherMachineCacheTolerance * std::max(std::abs(b), 1.0)) return false;
+    }
+    return true;
+}
+
 void compareShaders(const GateRecord& baseline, const ShaderRecord& now,
-                    const std::vector<std::string>& problems, GateOutcome& out) {
+                    const std::vector<std::string>& problems, GateOutcome& out,
+                    bool otherMachine) {
     std::set<std::string> failed;
     for (const std::string& p : problems) {
         failed.insert(problemTarget(p));
@@ -122,9 +138,16 @@ void compareShaders(const GateRecord& baseline, const ShaderRecord& now,
     for (const ShaderTargetRecord& t : now.targets) {
         if (failed.count(t.target)) continue;
         const ShaderTargetRecord* bt = b.target(t.target);
-        for (const ShaderPassRecord& p : t.passes)
-            out.rows.push_back(
-                shaderPassRow(t.target, bt ? bt->pass(p.profile, p.pass) : nullptr, &p));
+        for (const ShaderPassRecord& p : t.passes) {
+            const ShaderPassRecord* bp = bt ? bt->pass(p.profile, p.pass) : nullptr;
+            GateRow row = shaderPassRow(t.target, bp, &p);
+            if (row.status == RowStatus::Changed && otherMachine && bp &&
+                t.target.rfind("model:", 0) == 0 && modelWithinOtherMachineTolerance(*bp, p)) {
+                row.status = RowStatus::Ok;
+                row.note += " (within 0.05% on another machine)";
+            }
+            out.rows.push_back(row);
+        }
         if (bt)
             for (const ShaderPassRecord& p : bt->passes)
                 if (!t.pass(p.profile, p.pass))

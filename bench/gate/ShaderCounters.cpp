@@ -47,7 +47,9 @@ ShaderRecord shaderRecordOf(const shaders::ShaderStatisticsRun& run,
 std::string shaderCounterLabel(const std::string& counter) {
     static const std::pair<const char*, const char*> kLabels[] = {
         {"instructions", "inst"},   {"milli_cycles", "mcycles"}, {"registers_full", "full"},
-        {"registers_half", "half"}, {"occupancy", "occ"},        {"local_bytes", "local B"}};
+        {"registers_half", "half"}, {"occupancy", "occ"},        {"local_bytes", "local B"},
+        {"predicted_ns", "ns"},     {"alu_ns", "alu ns"},        {"texture_ns", "tex ns"},
+        {"memory_ns", "mem ns"},    {"rop_ns", "rop ns"}};
     for (const auto& [name, label] : kLabels)
         if (counter == name) return label;
     return counter;

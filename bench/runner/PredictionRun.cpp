@@ -216,7 +216,7 @@ std::vector<DevicePrediction> predictDevices(const BenchPlan& plan, const scene:
             ps.budgetMs = s.profile.frameBudgetMs;
             for (const Variant& v : s.variants)
                 ps.variants.push_back(predictVariant(dev, t, v, s.width, s.height, facts, replays));
-            if (own) { // the budget's frame: the profile at its own output size
+            if (own && request.budgetFrames) { // the budget's frame: the profile at its own output size
                 ps.ownWidth = s.profile.width;
                 ps.ownHeight = s.profile.height;
                 const PredictedVariant& at =

@@ -23,6 +23,9 @@ struct PredictionRequest {
     // Each session only on the device its profile names ([budget] model); sessions without
     // one are left out. Otherwise every session on every device.
     bool ownDevicesOnly = false;
+    // On its own device, the profile also at its own output size when the session runs at
+    // another (the budget's frame). The gate, which keeps the suite's size only, turns it off.
+    bool budgetFrames = true;
     std::function<void(const std::string&)> progress;
 };
 

@@ -8,6 +8,7 @@
 // baseline that has shader statistics.
 #include "bench/gate/GateOutcome.h"
 #include "bench/gate/GateRecord.h"
+#include "bench/gate/PredictionCounters.h"
 #include "bench/gate/ShaderComparison.h"
 #include "bench/gate/ShaderCounters.h"
 #include "bench/shaders/DriverStatistics.h"
@@ -334,4 +335,49 @@ TEST(GateShaderComparison, OnlyCiEqualToTrueCountsAsCi) {
     unsetenv("CI");
     EXPECT_FALSE(runningOnCi());
     if (old) setenv("CI", saved.c_str(), 1);
+}
+
+// The device model's predictions as exact counters (PredictionCounters.h): per pass the time and
+// each unit's in whole nanoseconds, and the frame. A change fails on the recording machine; on
+// another machine a move within 0.05% (the cache replay's last line) passes with a note.
+TEST(GateShaderComparison, ModelRowsAreExactOnTheRecordingMachineAndWithinToleranceElsewhere) {
+    pb::bench::DevicePrediction d;
+    d.device = "switch-handheld";
+    pb::bench::PredictedSession s;
+    s.profile = "handheld";
+    pb::bench::PredictedVariant v;
+    v.id = "handheld";
+    v.ms = 3.5452384;
+    v.passes.push_back({"gi-apply", "alu", 0.2248144, NAN,
+                        {{"predicted_unit_ms",
+                          {{"alu", 0.2248144}, {"texture", 0.113608}, {"memory", 0.050195}, {"rop", 0.0084}}}}});
+    s.variants.push_back(v);
+    d.sessions.push_back(s);
+    const ShaderTargetRecord t = predictionRecord(d);
+    EXPECT_EQ(t.target, "model:switch-handheld");
+    ASSERT_EQ(t.passes.size(), 2u);
+    EXPECT_EQ(t.passes[0].counters,
+              (Counters{{"predicted_ns", 224814}, {"alu_ns", 224814}, {"texture_ns", 113608},
+                        {"memory_ns", 50195}, {"rop_ns", 8400}}));
+    EXPECT_EQ(t.passes[1].pass, "frame");
+    EXPECT_EQ(t.passes[1].counters, (Counters{{"predicted_ns", 3545238}}));
+
+    GateRecord base;
+    base.shaders.push_back({{"22.3.6", {"nouveau"}}, {t}});
+    ShaderRecord now = base.shaders[0];
+    now.targets[0].passes[0].counters[3].second += 20; // memory_ns: 0.04%
+    GateOutcome same;
+    compareShaders(base, now, {}, same, false);
+    EXPECT_EQ(gateShaderRow(same, "handheld", "model:switch-handheld gi-apply")->status,
+              RowStatus::Changed);
+    GateOutcome other;
+    compareShaders(base, now, {}, other, true);
+    const GateRow* row = gateShaderRow(other, "handheld", "model:switch-handheld gi-apply");
+    EXPECT_EQ(row->status, RowStatus::Ok);
+    EXPECT_NE(row->note.find("within 0.05% on another machine"), std::string::npos) << row->note;
+    now.targets[0].passes[0].counters[1].second += 2000; // alu_ns: a shader change, 0.9%
+    GateOutcome moved;
+    compareShaders(base, now, {}, moved, true);
+    EXPECT_EQ(gateShaderRow(moved, "handheld", "model:switch-handheld gi-apply")->status,
+              RowStatus::Changed);
 }
