@@ -1,16 +1,21 @@
 // probebench tune: searches the switch space for the most accurate configuration that fits a
-// frame-time budget on THIS device and a GI memory budget (probe textures under gi.volume_lod +
+// frame-time budget on THIS device (or, with --timing model:NAME, on device NAME as the device
+// model predicts it: bench/devicemodel) and a GI memory budget (probe textures under gi.volume_lod +
 // GI targets), measuring every candidate with the bench runner (pb_bench: interleaved rounds,
 // FLIP against the reference profile on the same frame); prints the Pareto front (time,
 // memory, FLIP), writes the winner as a profile inheriting the base, loads it back and
 // re-measures it. The search itself is bench/tune (GL-free); this file wires it to GL.
 #include "CommandRegistry.h"
+#include "DeviceOptions.h"
 #include "JsonOption.h"
 #include "ProbeOptions.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
 #include "profile/PlatformProfile.h"
 #include "SceneOptions.h"
+#include "ShaderTargetOptions.h"
+#include "bench/runner/PredictionRun.h"
+#include "bench/shaders/MesaShim.h"
 #include "bench/runner/BenchContext.h"
 #include "bench/runner/BenchTruth.h"
 #include "bench/runner/ProbeCache.h"
@@ -27,6 +32,8 @@
 #include "passes/DynamicObjects.h"
 #include "probes/store/VolumeRanksFile.h"
 #include "views/WorstCaseView.h"
+
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
@@ -76,6 +83,16 @@ void validateTune(const TuneArgs& a) {
     if (a.maxExhaustive < 1 || a.maxPasses < 1)
         throw Error("--max-exhaustive and --max-passes must be at least 1");
     if (!a.view.empty() && !a.camera.empty()) throw Error("give --view or --camera, not both");
+    if (a.timing.rfind("model:", 0) == 0) {
+        // Said before the bake: the device, and whether the compilers are built.
+        resolvePredictDevices(a.timing.substr(6), {});
+        shaders::findMesaShim();
+    }
+}
+
+// `--timing model:NAME`: the device the device model predicts for; empty for a measured timing.
+std::string modelDeviceName(const TuneArgs& a) {
+    return a.timing.rfind("model:", 0) == 0 ? a.timing.substr(6) : "";
 }
 
 // What `inherit` in the written file says for the base: its name, or its path from the file.
@@ -117,6 +134,7 @@ public:
         if (a_.truth) in.truth = &truth_;
         const std::vector<bench::SessionResult> got = bench::runBenchPlan(plan, in, options_);
         const bench::SessionResult& r = got.front();
+        const std::vector<double> predicted = predict(batch);
         std::vector<bench::TuneMeasurement> out;
         for (size_t i = 0; i < batch.size(); ++i) {
             const bench::VariantResult& v = r.variants[i];
@@ -125,7 +143,11 @@ public:
             m.error = !v.ok() ? v.error
                       : m.ok  ? ""
                               : "the reference did not run: " + r.reference().error;
-            m.frameMs = v.frameMs.median;
+            m.frameMs = predicted.empty() ? v.frameMs.median : predicted[i];
+            if (!predicted.empty() && !std::isfinite(predicted[i])) {
+                m.ok = false;
+                m.error = "the device model could not predict it";
+            }
             // The objective: FLIP against the reference, or with --truth against the truth.
             m.flip = a_.truth ? v.vsTruth.flipMean : v.accuracy.flipMean;
             m.relativeMseGi = v.accuracy.relativeMseGi;
@@ -139,14 +161,67 @@ public:
     const nlohmann::json& truthInfo() const { return truthInfo_; }
     // "cpu-finish (...why)": how frame ms were taken (cpu-time: process CPU-ms, all threads).
     std::string timing() const {
+        if (!device_.name.empty())
+            return "model:" + device_.name + " (the device model's prediction for " + device_.label +
+                   "; bench/devicemodel/README.md)";
         return options_.timing.name + " (" + options_.timing.reason + ")";
     }
-    const std::string& timingName() const { return options_.timing.name; }
+    std::string timingName() const {
+        return device_.name.empty() ? options_.timing.name : "model:" + device_.name;
+    }
     // Frames rendered per session of n candidates (+ the reference): warm-up, timed rounds,
     // the accuracy frame after a cut and the irradiance-only frame.
-    int rendersPerVariant() const { return a_.warmup + a_.rounds * a_.frames + 2; }
+    int rendersPerVariant() const {
+        return options_.warmup + options_.rounds * options_.frames + 2;
+    }
 
 private:
+    // `--timing model:NAME`: each candidate's predicted frame on the device (NaN where it could
+    // not be predicted); empty for a measured timing. The candidates go to the compilers as
+    // profile files (the base plus their switches) in a folder of their own.
+    std::vector<double> predict(const std::vector<profile::Profile>& batch) {
+        if (device_.name.empty()) return {};
+        const fs::path dir = fs::temp_directory_path() /
+                             ("probebench-tune-" + std::to_string(::getpid()) + "-" +
+                              std::to_string(++batches_));
+        fs::create_directories(dir);
+        std::vector<std::string> files;
+        std::vector<profile::PlatformProfile> profiles;
+        bench::TunedProfileInfo info;
+        info.inherit = base_.file.empty() ? base_.name : fs::absolute(base_.file).string();
+        info.description = "tune candidate";
+        info.width = width_;
+        info.height = height_;
+        info.budgetMs = base_.frameBudgetMs;
+        info.budgetMiB = base_.giMemoryBudgetMiB;
+        for (size_t i = 0; i < batch.size(); ++i) {
+            const fs::path f = dir / ("candidate-" + std::to_string(i + 1) + ".toml");
+            const std::string text = bench::tunedProfileToml(base_.switches, batch[i], info);
+            writeFileAtomic(f.string(), text.data(), text.size());
+            files.push_back(f.string());
+            profiles.push_back(profile::loadProfile(f.string(), profileSearch()));
+        }
+        ShaderRunInputs in;
+        in.targets = bench::predictionTargets({device_});
+        in.plan = {files, reference_.name, {}, false, true, width_, height_};
+        in.scene = a_.scene;
+        in.probesPath = probesPath_;
+        in.camera = cameraSpec(view_);
+        const shaders::ShaderStatisticsRun stats = runShaderTargets(
+            in, scene_.name, [](const std::string& l) { tuneProgress("  model: " + l); });
+        const bench::BenchPlan plan =
+            bench::makeBenchPlan(profiles, reference_, {false, width_, height_});
+        const std::vector<bench::DevicePrediction> p = bench::predictDevices(
+            plan, scene_, set_, view_, stats, {{device_}, false, false, {}});
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+        if (!p.at(0).error.empty()) throw Error("--timing " + a_.timing + ": " + p[0].error);
+        std::vector<double> out;
+        for (const bench::PredictedSession& ps : p[0].sessions)
+            out.push_back(ps.variants.at(0).error.empty() ? ps.variants[0].ms : NAN);
+        return out;
+    }
+
     void start() {
         if (platform_) return;
         if (!a_.camera.empty() || !a_.view.empty()) {
@@ -174,7 +249,15 @@ private:
         options_.frames = a_.frames;
         options_.rounds = a_.rounds;
         options_.warmup = a_.warmup;
-        options_.timing = bench::chooseTiming(a_.timing, caps, gl::detectDriverQuirks());
+        // With the device model the frame time is predicted: llvmpipe only renders for the
+        // accuracy, one round of one frame.
+        if (!modelDeviceName(a_).empty()) {
+            device_ = resolvePredictDevices(modelDeviceName(a_), {}).at(0);
+            options_.frames = 1;
+            options_.rounds = 1;
+        }
+        options_.timing = bench::chooseTiming(device_.name.empty() ? a_.timing : "cpu", caps,
+                                              gl::detectDriverQuirks());
         options_.es = caps.es;
         options_.fetchFloor = false;
         options_.pixelsPerDegree = a_.ppd;
@@ -198,6 +281,11 @@ private:
     nlohmann::json context_;
     bench::TruthBySize truth_; // --truth: the truth of view_ at width_ x height_
     nlohmann::json truthInfo_;
+    devicemodel::DeviceSpec device_; // --timing model:NAME; name "" otherwise
+    int batches_ = 0;
+
+public:
+    std::string probesPath_; // the probe file the compilers' workers read (--timing model:)
 };
 
 probes::ProbeSet tuneProbes(const TuneArgs& a, const scene::Scene& s, std::string& path) {
@@ -257,6 +345,7 @@ int runTune(const TuneArgs& a) {
         }
     };
     Measurer measurer(a, s, set, base, reference, width, height);
+    measurer.probesPath_ = probesPath;
     const bench::MeasureFn measure = [&](const std::vector<profile::Profile>& batch) {
         return measurer(batch);
     };
@@ -266,6 +355,7 @@ int runTune(const TuneArgs& a) {
     o.maxExhaustive = a.maxExhaustive;
     o.maxPasses = a.maxPasses;
     o.progress = tuneProgress;
+    if (!modelDeviceName(a).empty()) o.timeSource = "model: " + modelDeviceName(a);
     const bench::TuneResult r = bench::runTune(space, memory, measure, o);
     if (r.chosen < 0) throw Error("tune: " + bench::nothingFitsMessage(r, o));
     const bench::TuneCandidate& best = r.candidates[size_t(r.chosen)];
@@ -294,7 +384,12 @@ int runTune(const TuneArgs& a) {
     info.comments = {
         "Written by `probebench tune`: the most accurate configuration found that fits the "
         "budgets below on the device named here.",
-        "device: " + measurer.context().value("gl_renderer", std::string("?")) + "; load average " +
+        "device: " +
+            (modelDeviceName(a).empty()
+                 ? measurer.context().value("gl_renderer", std::string("?"))
+                 : "model:" + modelDeviceName(a) + " (predicted frame; accuracy rendered on " +
+                       measurer.context().value("gl_renderer", std::string("?")) + ")") +
+            "; load average " +
             bench::loadAverage(),
         "scene " + s.name + ", probes " + probesPath + ", search: " + r.method + ", " +
             std::to_string(r.variantsMeasured) + " candidate measurement(s) in " +
@@ -429,7 +524,10 @@ const RegisterCommand registerTune{
              ->capture_default_str();
          cmd.add_option("--warmup", a->warmup, "Untimed frames per candidate first")
              ->capture_default_str();
-         cmd.add_option("--timing", a->timing, "auto, cpu, cpu-time or query (as bench)")
+         cmd.add_option("--timing", a->timing,
+                        "auto, cpu, cpu-time or query (as bench), or model:NAME: the device "
+                        "model's predicted frame on device NAME (probebench devices) instead of "
+                        "this machine's; needs scripts/mesa-shim.sh")
              ->capture_default_str();
          cmd.add_option("--max-exhaustive", a->maxExhaustive,
                         "Measure every candidate when at most this many fit the memory budget; "

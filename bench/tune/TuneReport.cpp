@@ -26,7 +26,8 @@ std::string paretoTable(const TuneResult& r, const TuneOptions& o) {
     std::ostringstream out;
     char line[400];
     out << "Pareto front of " << r.pareto.size() << " out of " << r.variantsMeasured
-        << " measured candidate(s) (frame ms on this device; FLIP vs the reference; * = chosen;\n"
+        << " measured candidate(s) (frame ms: " << o.timeSource
+        << "; FLIP vs the reference; * = chosen;\n"
         << "  " << profile::kGiMemoryDefinition << "):\n";
     std::snprintf(line, sizeof line, "  %1s %9s %9s %8s %11s %5s  %s\n", "", "frame ms", "GI MiB",
                   "FLIP", "relMSE GI", "fits", "switches vs the base");

@@ -38,6 +38,8 @@ struct TuneOptions {
     int maxExhaustive = 24; // exhaustive when the candidates within memory are this few
     int maxPasses = 2;      // coordinate descent passes
     int sessionSize = 8;    // candidates per measured session (exhaustive)
+    // Where the frame ms come from, for the tables: "this device", or "model: switch-handheld".
+    std::string timeSource = "this device";
     std::function<void(const std::string&)> progress;
 };
 

@@ -142,5 +142,34 @@ TEST(PredictCli, BenchPutsEachProfileOnItsOwnDeviceBesideTheMeasuredTimes) {
     EXPECT_NE(text.find("model: switch-handheld"), std::string::npos);
 }
 
+TEST(PredictCli, TuneForADeviceUsesItsPredictedFrame) {
+    const fs::path out = outputDir();
+    const CommandResult bad = runProbebench(
+        {"tune", "--base", "handheld", "--budget-ms", "30", "--budget-mib", "64", "--timing",
+         "model:nosuch", "--out", (out / "bad.toml").string(), "--cache-dir", (out / "cache").string()});
+    EXPECT_NE(bad.exitCode, 0) << bad.output;
+    EXPECT_NE(bad.output.find("device 'nosuch'"), std::string::npos) << bad.output;
+    EXPECT_FALSE(fs::exists(out / "cache")) << "it baked before saying so";
+
+    PREDICT_REQUIRE_COMPILERS();
+    const fs::path probes = bakeCoarseRooms(out / "rooms.probes");
+    const CommandResult r = runProbebench(
+        {"tune", "--scene", "rooms", "--base", "handheld", "--search", "gi.resolution",
+         "--budget-ms", "30", "--budget-mib", "64", "--timing", "model:switch-handheld",
+         "--probes", probes.string(), "--camera", kPredictCamera, "--width", "64", "--height",
+         "36", "--out", (out / "tuned.toml").string(), "--json", (out / "tune.json").string()});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_NE(r.output.find("frame ms: model: switch-handheld"), std::string::npos) << r.output;
+    std::ifstream in(out / "tune.json");
+    const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+    ASSERT_TRUE(j.is_object());
+    EXPECT_EQ(j["timing"].get<std::string>().rfind("model:switch-handheld", 0), 0u) << j["timing"];
+    // The model is deterministic: the re-measure of the written profile predicts the same frame.
+    EXPECT_NE(r.output.find("(+0.0%)"), std::string::npos) << r.output;
+    std::ifstream toml(out / "tuned.toml");
+    const std::string text((std::istreambuf_iterator<char>(toml)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("device: model:switch-handheld"), std::string::npos) << text;
+}
+
 } // namespace
 } // namespace pb::test
