@@ -1,5 +1,7 @@
 #include "ShaderTargetOptions.h"
 
+#include "bench/runner/PredictionRun.h"
+
 #include "ProfileOptions.h"
 #include "bench/shaders/MesaShim.h"
 #include "bench/shaders_gl/ShaderPlan.h"
@@ -75,6 +77,23 @@ runShaderTargets(const ShaderRunInputs& in, const std::string& sceneName,
     run.pairs = shaders::switchPairs(plan);
     run.targets = shaders::collectOnTargets(targets, install, launch, progress);
     return run;
+}
+
+shaders::ShaderStatisticsRun
+runModelCompilers(const std::vector<devicemodel::DeviceSpec>& devices, ShaderPlanArgs plan,
+                  const SceneArgs& scene, const std::string& probesPath, const std::string& camera,
+                  int timeoutSeconds, const std::string& sceneName,
+                  const std::function<void(const std::string&)>& progress) {
+    ShaderRunInputs in;
+    in.targets = bench::predictionTargets(devices);
+    plan.fusedTwins = true;
+    in.plan = std::move(plan);
+    in.scene = scene;
+    in.probesPath = probesPath;
+    in.camera = camera;
+    in.timeoutSeconds = timeoutSeconds;
+    if (progress) progress("compiling every variant's programs on " + in.targets);
+    return runShaderTargets(in, sceneName, progress);
 }
 
 } // namespace pb::app

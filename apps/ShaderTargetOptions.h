@@ -4,6 +4,7 @@
 // and the run across targets. The measuring itself is bench/shaders_gl's.
 #include "SceneOptions.h"
 #include "bench/report/AblationPlan.h"
+#include "bench/devicemodel/DeviceSpec.h"
 #include "bench/shaders/ShaderStatistics.h"
 
 #include <functional>
@@ -37,5 +38,13 @@ struct ShaderRunInputs {
 shaders::ShaderStatisticsRun
 runShaderTargets(const ShaderRunInputs& in, const std::string& sceneName,
                  const std::function<void(const std::string&)>& progress);
+
+// The compilers the device model needs for `devices` (bench::predictionTargets: each device's
+// stand-in and ir3's texture counts), every variant of `plan` with its fused twin.
+shaders::ShaderStatisticsRun
+runModelCompilers(const std::vector<devicemodel::DeviceSpec>& devices, ShaderPlanArgs plan,
+                  const SceneArgs& scene, const std::string& probesPath, const std::string& camera,
+                  int timeoutSeconds, const std::string& sceneName,
+                  const std::function<void(const std::string&)>& progress);
 
 } // namespace pb::app

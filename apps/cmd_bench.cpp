@@ -288,18 +288,11 @@ int runBench(const BenchArgs& a) {
             in, s.name, [](const std::string& line) { progress("targets: " + line); });
     }
     shaders::ShaderStatisticsRun modelStats; // the device model's compilers, twins included
-    if (!devices.empty()) {
-        ShaderRunInputs in;
-        in.targets = bench::predictionTargets(devices);
-        in.plan = {a.profiles, a.reference, a.sets, a.ablate, true};
-        in.scene = a.scene;
-        in.probesPath = probesPath;
-        in.camera = cameraSpec(view);
-        in.timeoutSeconds = a.targetTimeout;
-        progress("device model: compiling every variant's programs on " + in.targets);
-        modelStats = runShaderTargets(
-            in, s.name, [](const std::string& line) { progress("device model: " + line); });
-    }
+    if (!devices.empty())
+        modelStats = runModelCompilers(
+            devices, {a.profiles, a.reference, a.sets, a.ablate}, a.scene, probesPath,
+            cameraSpec(view), a.targetTimeout, s.name,
+            [](const std::string& line) { progress("device model: " + line); });
     auto platform = platform::createPlatform(timingPlatform(a.platform));
     gl::DebugOutput debug;
     const gl::GlCaps caps = gl::queryCaps();

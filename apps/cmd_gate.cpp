@@ -325,29 +325,26 @@ void modelStage(const gate::GateSuite& s, const GateSetup& g, gate::ShaderRecord
     }
     if (profiles.empty()) return;
     const std::vector<devicemodel::DeviceSpec> devices = resolvePredictDevices("own", profiles);
-    ShaderRunInputs in;
-    in.targets = bench::predictionTargets(devices);
-    in.plan.profiles.clear();
+    ShaderPlanArgs plan;
     for (const profile::PlatformProfile& p : profiles)
-        in.plan.profiles.push_back(p.name);
-    in.plan.reference = s.reference;
-    in.plan.ablate = false;
-    in.plan.fusedTwins = true;
-    in.plan.width = s.width;
-    in.plan.height = s.height;
-    in.scene.scene = s.scene;
-    in.probesPath = g.probes.file;
-    in.camera = s.camera;
-    gateProgress("shaders: the device model of every profile on its own device (" + in.targets + ")");
-    const shaders::ShaderStatisticsRun run = runShaderTargets(
-        in, g.scene.name, [](const std::string& l) { gateProgress("shaders: model: " + l); });
+        plan.profiles.push_back(p.name);
+    plan.reference = s.reference;
+    plan.ablate = false;
+    plan.width = s.width;
+    plan.height = s.height;
+    SceneArgs scene;
+    scene.scene = s.scene;
+    gateProgress("shaders: the device model of every profile on its own device");
+    const shaders::ShaderStatisticsRun run =
+        runModelCompilers(devices, plan, scene, g.probes.file, s.camera, 600, g.scene.name,
+                          [](const std::string& l) { gateProgress("shaders: model: " + l); });
     for (const std::string& p : shaders::shaderRunProblems(run))
         problems.push_back("model: " + p);
-    const bench::BenchPlan plan = bench::makeBenchPlan(
+    const bench::BenchPlan benchPlan = bench::makeBenchPlan(
         profiles, profile::loadProfile(s.reference, search), {false, s.width, s.height});
     bench::PredictionRequest req{devices, true, false, [](const std::string& l) { gateProgress(l); }};
     for (const bench::DevicePrediction& d :
-         bench::predictDevices(plan, g.scene, g.probes.set, g.view, run, req)) {
+         bench::predictDevices(benchPlan, g.scene, g.probes.set, g.view, run, req)) {
         if (!d.error.empty()) {
             problems.push_back("model:" + d.device + ": " + d.error);
             continue;

@@ -70,16 +70,9 @@ int runPredict(const PredictArgs& a) {
         say("searching the worst-case view at " + std::to_string(w) + "x" + std::to_string(h));
         view = views::findWorstCaseView(s, set, w, h).view;
     }
-    ShaderRunInputs in;
-    in.targets = bench::predictionTargets(devices);
-    in.plan = {a.profiles, a.reference, a.sets, a.ablate, true};
-    in.scene = a.scene;
-    in.probesPath = probesPath;
-    in.camera = cameraSpec(view);
-    in.timeoutSeconds = a.timeout;
-    say("compiling every variant's programs on " + in.targets);
     const shaders::ShaderStatisticsRun stats =
-        runShaderTargets(in, s.name, [](const std::string& line) { say(line); });
+        runModelCompilers(devices, {a.profiles, a.reference, a.sets, a.ablate}, a.scene,
+                          probesPath, cameraSpec(view), a.timeout, s.name, say);
     const std::vector<bench::DevicePrediction> p = bench::predictDevices(
         plan, s, set, view, stats, {devices, a.devices == "own", true, say});
 

@@ -201,14 +201,10 @@ private:
             files.push_back(f.string());
             profiles.push_back(profile::loadProfile(f.string(), profileSearch()));
         }
-        ShaderRunInputs in;
-        in.targets = bench::predictionTargets({device_});
-        in.plan = {files, reference_.name, {}, false, true, width_, height_};
-        in.scene = a_.scene;
-        in.probesPath = probesPath_;
-        in.camera = cameraSpec(view_);
-        const shaders::ShaderStatisticsRun stats = runShaderTargets(
-            in, scene_.name, [](const std::string& l) { tuneProgress("  model: " + l); });
+        const shaders::ShaderStatisticsRun stats = runModelCompilers(
+            {device_}, {files, reference_.name, {}, false, false, width_, height_}, a_.scene,
+            probesPath_, cameraSpec(view_), 600, scene_.name,
+            [](const std::string& l) { tuneProgress("  model: " + l); });
         const bench::BenchPlan plan =
             bench::makeBenchPlan(profiles, reference_, {false, width_, height_});
         const std::vector<bench::DevicePrediction> p = bench::predictDevices(
