@@ -657,6 +657,12 @@ int runBake(const BakeArgs& a) {
         if (!parent.empty() && !fs::is_directory(parent))
             throw Error("--write-volumes " + a.writeVolumes + ": folder does not exist");
     }
+    // Said before the placement and the bake (minutes on a large scene), not after them.
+    if (!a.out.empty()) {
+        const fs::path parent = fs::path(a.out).parent_path();
+        if (!parent.empty() && !fs::is_directory(parent))
+            throw Error("--out " + a.out + ": folder '" + parent.string() + "' does not exist");
+    }
     scene::Scene s = loadSceneWithOverrides(a.scene);
     times.load = CommandTimes::since(times.start);
     // A wrong split is refused before the placement runs (seconds to minutes) and prints.

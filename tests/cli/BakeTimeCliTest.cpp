@@ -33,3 +33,17 @@ TEST(BakeTimeCli, TheTimeLineCoversTheWholeCommand) {
     EXPECT_NE(text.output.find(" s in all: scene "), std::string::npos) << text.output;
     EXPECT_NE(text.output.find("(lattice search "), std::string::npos) << text.output;
 }
+
+// An --out whose folder does not exist is refused before the placement and the bake: a user
+// waited 11 s on cornell (about 85 s on a street scene) to be told the folder was missing.
+TEST(BakeTimeCli, AMissingOutputFolderIsRefusedBeforeAnyWork) {
+    const fs::path missing = outputDir() / "nodir" / "x.probes";
+    const CommandResult r = runProbebench({"bake", "--scene", "cornell", "--out", missing.string()});
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find("folder '" + missing.parent_path().string() + "' does not exist"),
+              std::string::npos)
+        << r.output;
+    EXPECT_EQ(r.output.find("placement"), std::string::npos) << "it placed before saying so:\n" << r.output;
+    EXPECT_EQ(r.output.find("baking"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(missing.parent_path()));
+}
