@@ -9,6 +9,15 @@
 
 namespace pb::bench {
 
+std::unique_ptr<views::CoverageTester> keptVolumesTester(const scene::Scene& scene,
+                                                         const probes::ProbeSet& set,
+                                                         const std::string& volumeLod) {
+    std::vector<bool> kept(set.volumes.size(), false);
+    for (int v : profile::selectVolumes(set, profile::parseVolumeLod(volumeLod)))
+        kept[size_t(v)] = true;
+    return std::make_unique<views::CoverageTester>(scene, set, kept);
+}
+
 std::vector<CacheModelEntry>
 cacheModelEntries(const BenchPlan& plan, const scene::Scene& scene, const probes::ProbeSet& set,
                   const scene::View& view,
@@ -19,13 +28,7 @@ cacheModelEntries(const BenchPlan& plan, const scene::Scene& scene, const probes
         const profile::PlatformProfile& p = s.profile;
         if (progress) progress("texture-cache model of " + p.name);
         auto& tester = testers[p.switches.gi.volumeLod];
-        if (!tester) {
-            std::vector<bool> kept(set.volumes.size(), false);
-            for (int v :
-                 profile::selectVolumes(set, profile::parseVolumeLod(p.switches.gi.volumeLod)))
-                kept[size_t(v)] = true;
-            tester = std::make_unique<views::CoverageTester>(scene, set, kept);
-        }
+        if (!tester) tester = keptVolumesTester(scene, set, p.switches.gi.volumeLod);
         costmodel::CostModelOptions o;
         o.width = s.width;
         o.height = s.height;

@@ -8,11 +8,20 @@
 #include "probes/ProbeSet.h"
 #include "scene/Scene.h"
 
+#include "views/WorstCaseView.h"
+
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace pb::bench {
+
+// The cost model's coverage tester of the volumes gi.volume_lod `volumeLod` keeps (the one place
+// the report's cache section and the device model build it).
+std::unique_ptr<views::CoverageTester> keptVolumesTester(const scene::Scene& scene,
+                                                         const probes::ProbeSet& set,
+                                                         const std::string& volumeLod);
 
 std::vector<CacheModelEntry>
 cacheModelEntries(const BenchPlan& plan, const scene::Scene& scene, const probes::ProbeSet& set,

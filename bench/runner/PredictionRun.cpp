@@ -1,5 +1,6 @@
 #include "PredictionRun.h"
 
+#include "CacheModelRun.h"
 #include "bench/devicemodel/FrameDemand.h"
 #include "bench/devicemodel/PassModel.h"
 #include "bench/devicemodel/ShaderCost.h"
@@ -9,7 +10,6 @@
 #include "frame/FrameSkips.h"
 #include "gl/TextureFormat.h"
 #include "passes/GBufferLayout.h"
-#include "profile/GiVolumeLod.h"
 
 #include <map>
 #include <memory>
@@ -78,12 +78,7 @@ public:
         auto it = reports_.find(k);
         if (it != reports_.end()) return it->second;
         auto& tester = testers_[key.gi.volumeLod];
-        if (!tester) {
-            std::vector<bool> kept(set_.volumes.size(), false);
-            for (int v : profile::selectVolumes(set_, profile::parseVolumeLod(key.gi.volumeLod)))
-                kept[size_t(v)] = true;
-            tester = std::make_unique<views::CoverageTester>(scene_, set_, kept);
-        }
+        if (!tester) tester = keptVolumesTester(scene_, set_, key.gi.volumeLod);
         if (progress_)
             progress_("device model: replaying the GI pass (" + std::to_string(reports_.size() + 1) +
                       ") " + std::to_string(width) + "x" + std::to_string(height));
