@@ -10,7 +10,7 @@
 #include "PlatformOptions.h"
 #include "ProbeOptions.h"
 #include "ProfileOptions.h"
-#include "RespondRun.h"
+#include "bench/respond/RespondRun.h"
 #include "SceneOptions.h"
 #include "ShaderTargetOptions.h"
 #include "bench/report/CiLevels.h"
@@ -118,11 +118,11 @@ void validate(const BenchArgs& a) {
 
 // `bench --respond`: respond's measurement at the bench's --width/--height (respond's 160x90
 // without), every check done here, before anything is timed. Null without --respond.
-std::unique_ptr<RespondRun> prepareResponse(const BenchArgs& a, const scene::Scene& s,
+std::unique_ptr<bench::RespondRun> prepareResponse(const BenchArgs& a, const scene::Scene& s,
                                             const probes::ProbeSet& set,
                                             const std::string& probesPath) {
     if (a.respond.empty()) return nullptr;
-    RespondSettings rs;
+    bench::RespondSettings rs;
     rs.probesName = probesPath;
     rs.events = a.respond;
     rs.frames = a.respondFrames;
@@ -132,7 +132,7 @@ std::unique_ptr<RespondRun> prepareResponse(const BenchArgs& a, const scene::Sce
     }
     rs.cacheDir = a.cacheDir;
     try {
-        return std::make_unique<RespondRun>(
+        return std::make_unique<bench::RespondRun>(
             s, set, rs, [](const std::string& line) { progress("respond: " + line); });
     } catch (const Error& e) {
         throw Error(std::string("--respond: ") + e.what());
@@ -141,7 +141,7 @@ std::unique_ptr<RespondRun> prepareResponse(const BenchArgs& a, const scene::Sce
 
 // Per profile (its variant 0: the profile with the run's --set), respond's figures without the
 // error curves; profiles that could not run are listed with why.
-nlohmann::json measureResponse(RespondRun& run, const BenchArgs& a,
+nlohmann::json measureResponse(bench::RespondRun& run, const BenchArgs& a,
                                const std::vector<bench::SessionResult>& sessions,
                                gl::DebugOutput& debug) {
     nlohmann::json out = {{"events", a.respond}, {"frames", a.respondFrames}};
@@ -270,7 +270,7 @@ int runBench(const BenchArgs& a) {
                                  a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir,
                                  &probesPath, progress)
             : readProbesForScene(a.probes, s, a.force);
-    const std::unique_ptr<RespondRun> respond = prepareResponse(a, s, set, probesPath);
+    const std::unique_ptr<bench::RespondRun> respond = prepareResponse(a, s, set, probesPath);
 
     bench::BenchResult result;
     scene::View view;

@@ -3,14 +3,14 @@
 // probes, shaped by the profile switches (--set key=value, renderer/profile/SwitchTable.cpp);
 // --debug NAME shows a GI debug view, --verbose / --json report the GI pass per volume.
 #include "CommandRegistry.h"
-#include "WindowFrameTimes.h"
+#include "bench/report/WindowFrameTimes.h"
 #include "JsonOption.h"
 #include "OutputPaths.h"
 #include "ProbeOptions.h"
 #include "FlyCamera.h"
 #include "PlatformOptions.h"
 #include "ProfileOptions.h"
-#include "RenderPath.h"
+#include "bench/path/RenderPath.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
 #include "frame/FrameRenderer.h"
@@ -89,7 +89,7 @@ int runInteractive(platform::Platform& p, render::FrameRenderer& r, const scene:
     FlyCamera cam(start, s.worldBounds());
     platform::InputState input;
     auto last = std::chrono::steady_clock::now();
-    WindowFrameTimes times;
+    bench::WindowFrameTimes times;
     std::cout << "window open: WASD move, Q/E down/up, Shift faster, drag to look, ESC quits\n";
     for (int frame = 0; maxFrames <= 0 || frame < maxFrames; ++frame) {
         input = {};
@@ -294,7 +294,7 @@ int runRender(RenderArgs& a) {
     render::FrameSettings settings = render::defaultFrameSettings(s);
     if (a.exposure > 0) settings.exposure = a.exposure;
     if (!a.path.empty())
-        return renderPath({&s, view, gi, settings, a.path, a.outDir, a.compareTo, a.frames, a.width,
+        return bench::renderPath({&s, view, gi, settings, a.path, a.outDir, a.compareTo, a.frames, a.width,
                            a.height, &debug});
     render::FrameRenderer renderer(s, settings, gi);
     // Counting reads the GPU back after every volume: only when asked for.

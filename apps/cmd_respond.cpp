@@ -1,5 +1,5 @@
 // probebench respond: how fast the GI follows a scene change under each probe update schedule,
-// and what the speed costs (issue 20). The measurement itself is RespondRun (shared with
+// and what the speed costs (issue 20). The measurement itself is bench::RespondRun (shared with
 // `bench --respond`); this command reads its options, the scene and the probe file, and writes
 // the JSON, the frames and the report.
 #include "CommandRegistry.h"
@@ -7,8 +7,8 @@
 #include "PlatformOptions.h"
 #include "ProbeOptions.h"
 #include "ProfileOptions.h"
-#include "RespondReport.h"
-#include "RespondRun.h"
+#include "bench/respond/RespondReport.h"
+#include "bench/respond/RespondRun.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
@@ -27,7 +27,7 @@ struct RespondArgs {
     SceneArgs scene;
     platform::PlatformOptions platform;
     std::string probes;
-    RespondSettings run;
+    bench::RespondSettings run;
     int raysPerFrame = 0;
     long long uploadBytesPerFrame = 0; // 0: no limit
     ProfileArgs profileArgs;           // --profile: switches and its [update] budget
@@ -44,7 +44,7 @@ void respondProgress(const std::string& line) {
 int go(RespondArgs& a) {
     // A profile's update budget applies unless the command line gives one.
     const profile::PlatformProfile platformProfile = resolveProfile(a.profileArgs);
-    RespondBudget budget{
+    bench::RespondBudget budget{
         platformProfile.name, platformProfile.switches,
         a.raysOption->count() ? a.raysPerFrame : platformProfile.updateRaysPerFrame,
         a.bytesOption->count() ? a.uploadBytesPerFrame : platformProfile.updateUploadBytesPerFrame};
@@ -55,7 +55,7 @@ int go(RespondArgs& a) {
     probes::ProbeSet set = readProbesForScene(a.probes, scene, a.force);
     a.run.probesName = a.probes;
     a.run.keepFrames = !a.outDir.empty();
-    RespondRun run(std::move(scene), std::move(set), a.run, respondProgress);
+    bench::RespondRun run(std::move(scene), std::move(set), a.run, respondProgress);
 
     auto platform = platform::createPlatform([&] {
         auto p = a.platform;
@@ -64,7 +64,7 @@ int go(RespondArgs& a) {
         return p;
     }());
     gl::DebugOutput debug;
-    RespondFrames pngs;
+    bench::RespondFrames pngs;
     const nlohmann::json result = run.measure(budget, debug, &pngs);
     if (!a.outDir.empty()) {
         std::filesystem::create_directories(std::filesystem::path(a.outDir) / "frames");
@@ -75,7 +75,7 @@ int go(RespondArgs& a) {
                 image::writePng((std::filesystem::path(a.outDir) / "frames" / file).string(),
                                 images[f]);
             }
-        const std::string html = respondReportHtml(result);
+        const std::string html = bench::respondReportHtml(result);
         writeFileAtomic((std::filesystem::path(a.outDir) / "report.html").string(), html.data(),
                         html.size());
     }

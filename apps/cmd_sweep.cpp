@@ -3,8 +3,8 @@
 // HTML report and Markdown summary (bench/README.md "Sweeps"; bench/sweep/ holds the GL-free
 // plan, state and merge, SweepEngines.h the two engines).
 #include "CommandRegistry.h"
-#include "SweepEngines.h"
-#include "SweepFinish.h"
+#include "bench/sweep/SweepEngines.h"
+#include "bench/sweep/SweepFinish.h"
 #include "bench/gate_gl/WorkerProcess.h"
 #include "bench/sweep/SweepPlan.h"
 #include "bench/sweep/SweepState.h"
@@ -104,14 +104,14 @@ int runSweep(const SweepArgs& a) {
     const std::string dir = sweep::canonicalDir(a.out);
     const sweep::PlanState state = prepareFolder(a, dir, fresh);
 
-    for (const char* f : {kSweepJson, kSweepHtml, kSweepMarkdown})
+    for (const char* f : {sweep::kSweepJson, sweep::kSweepHtml, sweep::kSweepMarkdown})
         fs::remove(fs::path(dir) / f); // a merged result always belongs to this run
     const std::vector<std::size_t> tasks = sweep::unfinishedTasks(dir, state);
     std::cerr << "sweep: plan '" << state.name << "' (" << state.id << "): "
               << state.jobs.size() << " job(s) in " << state.tasks() << " task(s), "
               << tasks.size() << " to run, engine " << a.engine << "\n";
 
-    EngineOptions o;
+    sweep::EngineOptions o;
     o.outDir = dir;
     o.binary = a.binary.empty() ? gate::selfExecutable() : a.binary;
     o.maxParallel = a.maxParallel;
@@ -120,9 +120,9 @@ int runSweep(const SweepArgs& a) {
     bool merged = false;
     if (!tasks.empty()) {
         if (a.engine == "local")
-            runLocal(state, tasks, o);
+            sweep::runLocal(state, tasks, o);
         else
-            merged = runSlurm(state, tasks, o);
+            merged = sweep::runSlurm(state, tasks, o);
     }
     if (!sweep::unfinishedJobs(dir, state).empty()) {
         std::cerr << failureReport(state, dir);
@@ -132,14 +132,14 @@ int runSweep(const SweepArgs& a) {
                     "; --resume runs only the failed ones again");
     }
     // The local engine merges here; Slurm's merge job did (an empty resume merges here too).
-    if (a.engine == "local" || tasks.empty()) finishSweep(dir);
-    if (!fs::exists(fs::path(dir) / kSweepJson))
-        throw Error("sweep: the merge job wrote no " + std::string(kSweepJson) + " (merged " +
+    if (a.engine == "local" || tasks.empty()) sweep::finishSweep(dir);
+    if (!fs::exists(fs::path(dir) / sweep::kSweepJson))
+        throw Error("sweep: the merge job wrote no " + std::string(sweep::kSweepJson) + " (merged " +
                     (merged ? "" : "not ") + "run; see " + dir + "/logs/merge.err)");
-    std::ifstream md(fs::path(dir) / kSweepMarkdown);
+    std::ifstream md(fs::path(dir) / sweep::kSweepMarkdown);
     std::cout << md.rdbuf();
-    std::cout << "\nwrote " << dir << "/" << kSweepJson << ", " << kSweepHtml << ", "
-              << kSweepMarkdown << "\n";
+    std::cout << "\nwrote " << dir << "/" << sweep::kSweepJson << ", " << sweep::kSweepHtml << ", "
+              << sweep::kSweepMarkdown << "\n";
     return 0;
 }
 

@@ -6,8 +6,8 @@
 //                                   means the job's output is complete
 //   sweep-merge --out DIR           the merge (SweepFinish.h); Slurm's dependent merge job
 #include "CommandRegistry.h"
-#include "Subprocess.h"
-#include "SweepFinish.h"
+#include "bench/sweep/Subprocess.h"
+#include "bench/sweep/SweepFinish.h"
 #include "bench/gate_gl/WorkerProcess.h"
 #include "bench/sweep/SweepState.h"
 #include "core/Error.h"
@@ -45,9 +45,9 @@ int runTask(const std::string& outDir, std::size_t task) {
         for (const std::string& a : sweep::substituteOut(job.args, outDir))
             argv.push_back(a);
         const auto t0 = std::chrono::steady_clock::now();
-        const int pid = startLogged(argv, sweep::logPath(outDir, j, "out"),
+        const int pid = sweep::startLogged(argv, sweep::logPath(outDir, j, "out"),
                                     sweep::logPath(outDir, j, "err"));
-        const int rc = waitFor(pid);
+        const int rc = sweep::waitFor(pid);
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         sweep::writeJobStatus(outDir, {j, rc, node, seconds});
@@ -85,7 +85,7 @@ const RegisterCommand merge{{
         auto out = std::make_shared<std::string>();
         cmd.add_option("--out", *out, "The sweep's output folder")->required();
         return [out] {
-            finishSweep(sweep::canonicalDir(*out));
+            sweep::finishSweep(sweep::canonicalDir(*out));
             return 0;
         };
     },

@@ -17,7 +17,7 @@
 
 namespace fs = std::filesystem;
 
-namespace pb::app {
+namespace pb::bench {
 
 namespace {
 
@@ -154,4 +154,4 @@ int renderPath(const PathRenderRequest& r) {
     return 0;
 }
 
-} // namespace pb::app
+} // namespace pb::bench

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace pb::app {
+namespace pb::bench {
 
 class WindowFrameTimes {
 public:
@@ -24,4 +24,4 @@ private:
     int presented_ = 0;
 };
 
-} // namespace pb::app
+} // namespace pb::bench

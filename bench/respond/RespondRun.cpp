@@ -20,7 +20,7 @@
 #include <chrono>
 #include <cmath>
 
-namespace pb::app {
+namespace pb::bench {
 
 using namespace pb::respond;
 
@@ -377,4 +377,4 @@ nlohmann::json RespondRun::measure(const RespondBudget& budget, gl::DebugOutput&
     return result;
 }
 
-} // namespace pb::app
+} // namespace pb::bench

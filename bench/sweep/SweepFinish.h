@@ -4,7 +4,7 @@
 // results into DIR/sweep.json, DIR/report.html and DIR/summary.md (bench/sweep/SweepMerge.h).
 #include <string>
 
-namespace pb::app {
+namespace pb::sweep {
 
 inline constexpr const char* kSweepJson = "sweep.json";
 inline constexpr const char* kSweepHtml = "report.html";
@@ -13,4 +13,4 @@ inline constexpr const char* kSweepMarkdown = "summary.md";
 // Throws pb::Error when a job has not finished cleanly or an output is missing or damaged.
 void finishSweep(const std::string& outDir);
 
-} // namespace pb::app
+} // namespace pb::sweep

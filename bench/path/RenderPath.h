@@ -10,7 +10,7 @@
 
 #include <string>
 
-namespace pb::app {
+namespace pb::bench {
 
 struct PathRenderRequest {
     const scene::Scene* scene = nullptr;
@@ -28,4 +28,4 @@ struct PathRenderRequest {
 // Throws pb::Error on bad options or a GL error; nothing is left in outDir then.
 int renderPath(const PathRenderRequest& request);
 
-} // namespace pb::app
+} // namespace pb::bench

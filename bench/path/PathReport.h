@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace pb::app {
+namespace pb::bench {
 
 struct PathFrameError {
     int frame = 0;
@@ -51,4 +51,4 @@ nlohmann::json pathErrorsJson(const std::vector<PathFrameError>& frames, nlohman
 // A few readable lines for the terminal.
 std::string pathSummaryText(const std::vector<PathFrameError>& frames);
 
-} // namespace pb::app
+} // namespace pb::bench

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-namespace pb::app {
+namespace pb::sweep {
 
 // Starts argv[0] (a path, or a name looked up in PATH) with its stdout written to `outFile`
 // and its stderr to `errFile` (both truncated). Returns the pid; throws pb::Error when it cannot.
@@ -24,4 +24,4 @@ Captured capture(const std::vector<std::string>& argv);
 // `s` quoted for /bin/sh (single quotes).
 std::string shellQuote(const std::string& s);
 
-} // namespace pb::app
+} // namespace pb::sweep

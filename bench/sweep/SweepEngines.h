@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace pb::app {
+namespace pb::sweep {
 
 struct EngineOptions {
     std::string outDir;  // canonical (SweepState.h)
@@ -28,4 +28,4 @@ void runLocal(const sweep::PlanState& plan, const std::vector<std::size_t>& task
 bool runSlurm(const sweep::PlanState& plan, const std::vector<std::size_t>& tasks,
               const EngineOptions& o);
 
-} // namespace pb::app
+} // namespace pb::sweep

@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <numeric>
 
-namespace pb::app {
+namespace pb::bench {
 
 void WindowFrameTimes::framePresented() {
     const auto now = std::chrono::steady_clock::now();
@@ -28,4 +28,4 @@ std::string WindowFrameTimes::summary() const {
     return line;
 }
 
-} // namespace pb::app
+} // namespace pb::bench

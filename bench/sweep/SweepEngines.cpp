@@ -12,7 +12,7 @@
 #include <sys/wait.h>
 #include <thread>
 
-namespace pb::app {
+namespace pb::sweep {
 namespace {
 namespace fs = std::filesystem;
 
@@ -141,4 +141,4 @@ bool runSlurm(const sweep::PlanState& plan, const std::vector<std::size_t>& task
            sweep::unfinishedJobs(o.outDir, plan).empty();
 }
 
-} // namespace pb::app
+} // namespace pb::sweep

@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 
-namespace pb::app {
+namespace pb::sweep {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
@@ -60,4 +60,4 @@ void finishSweep(const std::string& outDir) {
     writeSweepText((fs::path(outDir) / kSweepMarkdown).string(), sweep::sweepMarkdown(merged));
 }
 
-} // namespace pb::app
+} // namespace pb::sweep

@@ -7,7 +7,7 @@
 #include <cstdio>
 #include <sstream>
 
-namespace pb::app {
+namespace pb::bench {
 
 namespace {
 constexpr double kConvergedRelative = 0.1, kConvergedAbsolute = 1e-4;
@@ -218,4 +218,4 @@ std::string pathSummaryText(const std::vector<PathFrameError>& frames) {
     return out;
 }
 
-} // namespace pb::app
+} // namespace pb::bench

@@ -11,7 +11,7 @@
 
 extern char** environ;
 
-namespace pb::app {
+namespace pb::sweep {
 namespace {
 
 std::vector<char*> cArgs(const std::vector<std::string>& argv) {
@@ -91,4 +91,4 @@ std::string shellQuote(const std::string& s) {
     return out + "'";
 }
 
-} // namespace pb::app
+} // namespace pb::sweep

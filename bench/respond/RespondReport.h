@@ -4,11 +4,11 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-namespace pb::app {
+namespace pb::bench {
 
 // `result` is respond's JSON (schedules[] with "error_curve"). Returns the whole page.
 std::string respondReportHtml(const nlohmann::json& result);
 // Only the chart (used by the page; tests can check it on its own).
 std::string convergenceSvg(const nlohmann::json& result);
 
-} // namespace pb::app
+} // namespace pb::bench

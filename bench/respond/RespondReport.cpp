@@ -1,28 +1,15 @@
 #include "RespondReport.h"
 
+#include "bench/report/Html.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-namespace pb::app {
+namespace pb::bench {
 namespace {
 
 const char* kColours[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e"};
-
-std::string esc(const std::string& s) {
-    std::string o;
-    for (char c : s) {
-        if (c == '<')
-            o += "&lt;";
-        else if (c == '>')
-            o += "&gt;";
-        else if (c == '&')
-            o += "&amp;";
-        else
-            o += c;
-    }
-    return o;
-}
 
 } // namespace
 
@@ -56,7 +43,7 @@ std::string convergenceSvg(const nlohmann::json& r) {
         for (const auto& e : s["error_curve"])
             o << x(n++) << "," << y(e.get<double>()) << " ";
         o << "'/>\n<text x='" << w - right + 6 << "' y='" << top + 14 * (i + 1) << "' fill='"
-          << colour << "'>" << esc(s["schedule"].get<std::string>()) << "</text>\n";
+          << colour << "'>" << htmlEscape(s["schedule"].get<std::string>()) << "</text>\n";
         ++i;
     }
     if (r.contains("closed_form_hysteresis")) {
@@ -76,9 +63,9 @@ std::string respondReportHtml(const nlohmann::json& r) {
     o << "<!doctype html><html><head><meta charset='utf-8'><title>probebench respond</title>"
       << "<style>body{font-family:sans-serif}td,th{padding:2px 8px;text-align:right}</style>"
       << "</head><body><h1>Responsive probe updates</h1><p>scene "
-      << esc(r["scene"].get<std::string>()) << ", events:";
+      << htmlEscape(r["scene"].get<std::string>()) << ", events:";
     for (const auto& e : r["events"])
-        o << " <code>" << esc(e.get<std::string>()) << "</code>";
+        o << " <code>" << htmlEscape(e.get<std::string>()) << "</code>";
     o << "; " << r["width"] << "x" << r["height"] << ", " << r["frames"] << " frames</p>\n"
       << "<h2>Convergence</h2>\n"
       << convergenceSvg(r)
@@ -86,7 +73,7 @@ std::string respondReportHtml(const nlohmann::json& r) {
       << "<th>overshoot</th><th>flicker (CV)</th><th>far drift</th><th>rays/frame</th>"
       << "<th>CPU ms/frame</th><th>bytes uploaded</th></tr>\n";
     for (const auto& s : r["schedules"])
-        o << "<tr><td>" << esc(s["schedule"].get<std::string>()) << "</td><td>" << s["t95_frames"]
+        o << "<tr><td>" << htmlEscape(s["schedule"].get<std::string>()) << "</td><td>" << s["t95_frames"]
           << "</td><td>" << s["t99_frames"] << "</td><td>" << s["overshoot"] << "</td><td>"
           << s["flicker"] << "</td><td>" << s["far_drift"] << "</td><td>" << s["rays_per_frame"]
           << "</td><td>" << s["cpu_ms_per_frame"] << "</td><td>" << s["bytes_uploaded"]
@@ -96,4 +83,4 @@ std::string respondReportHtml(const nlohmann::json& r) {
     return o.str();
 }
 
-} // namespace pb::app
+} // namespace pb::bench

@@ -21,7 +21,7 @@ namespace pb::gl {
 class DebugOutput;
 }
 
-namespace pb::app {
+namespace pb::bench {
 
 struct RespondSettings {
     std::string probesName; // the probe file, as errors and the JSON name it
@@ -68,4 +68,4 @@ private:
     std::unique_ptr<Impl> impl_;
 };
 
-} // namespace pb::app
+} // namespace pb::bench
