@@ -12,7 +12,7 @@
 #include "probes/ProbeCounts.h"
 #include "probes/store/ProbeFile.h"
 #include "probes/store/ProbeFileParts.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/store/SparseLayout.h"
 #include "probes/store/SparseStorage.h"
 #include "probes/store/VolumeFile.h"
@@ -342,7 +342,7 @@ BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo
         for (const ProbeVolume& v : vf.volumes)
             placement.result.probes += v.probeCount();
         std::vector<std::size_t> kept;
-        if (sparse) kept = sparseProbeCounts(vf.volumes, staticBakeTriangles(s));
+        if (sparse) kept = sparseProbeCounts(vf.volumes, raytrace::staticBakeTriangles(s));
         placement.result.bytes =
             memoryReport(vf.volumes, format, sparse ? &kept : nullptr).total.storedTotal();
         if (a.budgetMib > 0.0 && double(placement.result.bytes) > a.budgetMib * 1024.0 * 1024.0)
@@ -441,7 +441,7 @@ float scenarioScale(const ProbeSet& set, std::size_t s) {
 // and is not classified against the scene's triangles (an up-to-date run stays quick).
 std::size_t freeSpaceProbes(const ProbeSet& set, const scene::Scene& s) {
     if (set.storedCount() == set.probeCount()) return 0;
-    return freeSpaceOnlyProbes(set, staticBakeTriangles(s));
+    return freeSpaceOnlyProbes(set, raytrace::staticBakeTriangles(s));
 }
 
 // The bytes the irradiance-only probes' tiles add (one scenario, in the file's format): what

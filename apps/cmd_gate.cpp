@@ -32,8 +32,8 @@
 #include "core/MachineState.h"
 #include "gl/DebugOutput.h"
 #include "passes/GiDebugInjection.h"
-#include "probes/bake/EmbreeIsa.h"
-#include "probes/store/Hash.h"
+#include "raytrace/EmbreeIsa.h"
+#include "core/Hash.h"
 #include "probes/store/ProbeFile.h"
 #include "views/WorstCaseView.h"
 
@@ -67,7 +67,7 @@ void gateProgress(const std::string& line) {
 
 std::string probeIdentity(const probes::ProbeSet& set, const std::string& file) {
     // FNV-1a 64 of the probe file, with the offset basis this function always used
-    // (1469598103934665603, not FNV's 14695981039346656037 of probes::fnv1a64): every recorded
+    // (1469598103934665603, not FNV's 14695981039346656037 of pb::fnv1a64): every recorded
     // baseline's `probes` and `bake` identities were written with it.
     std::uint64_t h = 1469598103934665603ull;
     for (unsigned char b : readFileBytes(file))
@@ -100,7 +100,7 @@ GateProbes gateProbes(const GateArgs& a, const gate::GateSuite& s, const scene::
     const std::string committed = gate::committedProbesPath(a.baseline);
     if ((a.update && !a.keepProbes) || !fs::exists(committed)) return out;
     const std::vector<unsigned char> gz = readFileBytes(committed);
-    const std::uint64_t h = probes::fnv1a64(gz.data(), gz.size()); // its cache name
+    const std::uint64_t h = pb::fnv1a64(gz.data(), gz.size()); // its cache name
     char name[64];
     std::snprintf(name, sizeof name, "gate-committed-%016llx.pbp",
                   static_cast<unsigned long long>(h));
@@ -240,8 +240,8 @@ GateSetup setUpSuite(const GateArgs& a, gate::GateRecord& now) {
     gate::GateSuite& s = now.suite;
     // Every ray of this run (the bake, the cost model) on one Embree ISA on any x86-64 machine
     // (GateRecord.h; PB_EMBREE_ISA still overrides it, for experiments).
-    probes::pinEmbreeIsa(gate::kGateEmbreeIsa);
-    now.environment.embreeIsa = probes::embreeIsa();
+    raytrace::pinEmbreeIsa(gate::kGateEmbreeIsa);
+    now.environment.embreeIsa = raytrace::embreeIsa();
     now.environment.cpu = bench::cpuModel();
     SceneArgs sceneArgs;
     sceneArgs.scene = s.scene;

@@ -17,7 +17,7 @@
 #include "core/ParallelFor.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/RayDirections.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "scene/SceneLoader.h"
 
 #include <algorithm>
@@ -56,7 +56,7 @@ struct Setup {
     pb::scene::Scene scene;
     BakeRequest request;
     ProbeSet baked;
-    std::vector<RecordedRay> rays; // primary first, then shadow rays
+    std::vector<pb::raytrace::RecordedRay> rays; // primary first, then shadow rays
     std::size_t primary = 0;
 };
 
@@ -72,8 +72,8 @@ Setup& setup() {
         out.baked = bakeProbes(out.scene, out.request); // also the warm-up run
         out.request.recordRays = nullptr;
         std::stable_partition(out.rays.begin(), out.rays.end(),
-                              [](const RecordedRay& r) { return !r.shadow; });
-        for (const RecordedRay& r : out.rays)
+                              [](const pb::raytrace::RecordedRay& r) { return !r.shadow; });
+        for (const pb::raytrace::RecordedRay& r : out.rays)
             out.primary += r.shadow ? 0 : 1;
         return out;
     }();
@@ -85,7 +85,7 @@ struct ReplayTime {
 };
 
 // Bare Embree over [begin, end) of the recorded rays, on `threads` threads.
-ReplayTime replay(RTCScene scene, const std::vector<RecordedRay>& rays, std::size_t begin,
+ReplayTime replay(RTCScene scene, const std::vector<pb::raytrace::RecordedRay>& rays, std::size_t begin,
                   std::size_t end, int threads) {
     const std::size_t chunk = 1024, items = (end - begin + chunk - 1) / chunk;
     auto t0 = Clock::now();
@@ -97,7 +97,7 @@ ReplayTime replay(RTCScene scene, const std::vector<RecordedRay>& rays, std::siz
         rtcInitIntersectContext(&ctx);
         std::size_t lo = begin + item * chunk, hi = std::min(end, lo + chunk);
         for (std::size_t i = lo; i < hi; ++i) {
-            const RecordedRay& r = rays[i];
+            const pb::raytrace::RecordedRay& r = rays[i];
             RTCRayHit rh;
             rh.ray.org_x = r.origin.x, rh.ray.org_y = r.origin.y, rh.ray.org_z = r.origin.z;
             rh.ray.dir_x = r.dir.x, rh.ray.dir_y = r.dir.y, rh.ray.dir_z = r.dir.z;
@@ -121,7 +121,7 @@ ReplayTime replay(RTCScene scene, const std::vector<RecordedRay>& rays, std::siz
 void BM_BakeVsEmbree(benchmark::State& state) {
     Setup& s = setup();
     const int threads = resolveThreadCount(0);
-    RayScene raw(s.scene); // same static geometry, same build quality as the bake's
+    pb::raytrace::RayScene raw(s.scene); // same static geometry, same build quality as the bake's
     for (auto _ : state) {
         BakeStats st;
         ProbeSet set = bakeProbes(s.scene, s.request, &st);

@@ -28,7 +28,7 @@
 #include "probes/ProbeLayout.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/Baker.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/bake/SurfaceGather.h"
 #include "probes/placement/AutoPlacement.h"
 #include "probes/placement/LatticeScore.h"
@@ -265,7 +265,7 @@ int main(int argc, char** argv) {
     if (scenePath.empty()) scenePath = pb::bench::sharedScenes()[0];
     try {
         const scene::Scene s = scene::loadScene(scenePath);
-        const RayScene rs(s);
+        const pb::raytrace::RayScene rs(s);
         AutoPlacementRequest req;
         req.mode = AutoMode::Uniform;
         const std::vector<ProbeVolume> uniform = placeAutoVolumes(s, req).volumes;
@@ -281,7 +281,7 @@ int main(int argc, char** argv) {
                 for (int i = 0; i < kSamplesPerLine; ++i) {
                     const glm::vec3 o(patch.x + step * float(i), below,
                                       patch.y + step * float(row));
-                    const RayHit h = rs.intersect(o, {0, -1, 0});
+                    const pb::raytrace::RayHit h = rs.intersect(o, {0, -1, 0});
                     if (!h.hit() || std::abs(rs.faceNormal(h.geomID, h.primID).y) < 0.9f) {
                         std::fprintf(stderr, "row %d dropped at x %.2f (no flat floor)\n", row,
                                      o.x);

@@ -31,7 +31,7 @@
 #include "core/ReuseFreedMemory.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/Baker.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/bake/SurfaceGather.h"
 #include "probes/placement/AutoPlacement.h"
 #include "probes/placement/LatticeScore.h"
@@ -139,7 +139,7 @@ nlohmann::json scorePlacement(const std::string& name, const ProbeSet& set,
 
 nlohmann::json runScene(const std::string& path, const Options& o) {
     const scene::Scene s = scene::loadScene(path);
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     AutoPlacementRequest uniformReq;
     uniformReq.mode = AutoMode::Uniform;
     const std::vector<ProbeVolume> uniform = placeAutoVolumes(s, uniformReq).volumes;

@@ -43,7 +43,7 @@
 #include "probes/StorageFormat.h"
 #include "probes/bake/Baker.h"
 #include "probes/bake/MidAirSamples.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/placement/AutoPlacement.h"
 #include "probes/placement/AutoVolume.h"
 #include "probes/store/FreeSpaceTiles.h"
@@ -316,7 +316,7 @@ struct ChangedQueries {
     float floor = 0.0f;
 };
 
-ChangedQueries changedQueries(const RayScene& rs, const ProbeSet& dense, const ProbeSampler& ds,
+ChangedQueries changedQueries(const pb::raytrace::RayScene& rs, const ProbeSet& dense, const ProbeSampler& ds,
                               const ProbeSampler& ss) {
     ChangedQueries out;
     double total = 0;
@@ -340,7 +340,7 @@ ChangedQueries changedQueries(const RayScene& rs, const ProbeSet& dense, const P
 struct DenseAndSparse {
     pb::scene::Scene scene;
     BakeRequest request;
-    std::vector<WorldTriangle> tris;
+    std::vector<pb::raytrace::WorldTriangle> tris;
     ProbeSet dense, sparse, irradianceOnly;
     double placementSlack = -1.0; // --default-placement: 1 - the placement's bytes / its budget
 };
@@ -360,13 +360,13 @@ DenseAndSparse bakeDenseAndSparse(const char* name) {
         r.volumes = a.volumes;
         b.placementSlack = 1.0 - double(a.bytes) / a.budgetBytes;
     } else {
-        r.volumes.push_back(fitAutoVolume(staticBakeBounds(b.scene), 0.0f, gMaxProbes).volume);
+        r.volumes.push_back(fitAutoVolume(pb::raytrace::staticBakeBounds(b.scene), 0.0f, gMaxProbes).volume);
     }
     r.scenarios = resolveScenarios({"day"}, {}, b.scene);
     r.settings.raysPerProbe = gRays;
     r.settings.bounces = 2;
     b.dense = bakeProbes(b.scene, r);
-    b.tris = staticBakeTriangles(b.scene);
+    b.tris = pb::raytrace::staticBakeTriangles(b.scene);
     b.irradianceOnly = b.sparse = b.dense;
     applySparseStorage(b.irradianceOnly, b.tris, FreeSpace::Irradiance);
     applySparseStorage(b.sparse, b.tris);
@@ -383,7 +383,7 @@ void run(const char* name) {
     const ProbeVolume& v = dense.volumes[0];
     std::printf("%s: counts %d %d %d cell %.3f %.3f %.3f\n", name, v.counts.x, v.counts.y,
                 v.counts.z, v.cellSize().x, v.cellSize().y, v.cellSize().z);
-    const RayScene rs(scene);
+    const pb::raytrace::RayScene rs(scene);
     const ProbeSampler ds(dense, 0), ss(sparse, 0);
     const ChangedQueries cq = changedQueries(rs, dense, ds, ss);
     const std::vector<Q>& changed = cq.queries;
@@ -410,7 +410,7 @@ void run(const char* name) {
                 for (int dy = -1; dy <= 1; ++dy)
                     for (int dx = -1; dx <= 1; ++dx) {
                         if (!dx && !dy && !dz) continue;
-                        const RayHit h = rs.intersect(q.p, glm::normalize(glm::vec3(dx, dy, dz)));
+                        const pb::raytrace::RayHit h = rs.intersect(q.p, glm::normalize(glm::vec3(dx, dy, dz)));
                         if (h.hit()) near = std::min(near, h.t);
                     }
             std::printf("  #%d rel %.3f p (%.2f %.2f %.2f) n (%g %g %g) dense %.4f sparse %.4f "
@@ -631,7 +631,7 @@ void run(const char* name) {
 
 namespace {
 std::vector<std::uint8_t> grownKeep(const ProbeVolume& v, bool root,
-                                    const std::vector<WorldTriangle>& tris, int grow) {
+                                    const std::vector<pb::raytrace::WorldTriangle>& tris, int grow) {
     std::vector<std::uint8_t> surf = surfaceCornerProbes(v, root, tris);
     std::vector<std::uint8_t> keep = sparseKeptProbes(v, root, tris);
     for (int i = 0; i < v.probeCount(); ++i) {
@@ -655,7 +655,7 @@ void placementCost(const char* name) {
     req.sparse = true;
     req.latticeSearch = false;
     const AutoPlacementResult res = placeAutoVolumes(scene, req);
-    const auto tris = staticBakeTriangles(scene);
+    const auto tris = pb::raytrace::staticBakeTriangles(scene);
     const std::vector<int> parents = validateVolumes(res.volumes, "x");
     std::size_t grid = 0, kept = 0, surf = 0, grown = 0;
     for (std::size_t i = 0; i < res.volumes.size(); ++i) {
@@ -759,7 +759,7 @@ void fillVariants(const char* name) {
     const auto& tris = b.tris;
     ProbeSet& sparse = b.sparse;
     const ProbeVolume& v = dense.volumes[0];
-    const RayScene rs(scene);
+    const pb::raytrace::RayScene rs(scene);
     const ProbeSampler ds(dense, 0), ss(sparse, 0);
     const ChangedQueries cq = changedQueries(rs, dense, ds, ss);
     const std::vector<Q>& changed = cq.queries;
@@ -790,7 +790,7 @@ void fillVariants(const char* name) {
 void slackVariants(const char* name) {
     DenseAndSparse b = bakeDenseAndSparse(name);
     const ProbeVolume& v = b.dense.volumes[0];
-    const RayScene rs(b.scene);
+    const pb::raytrace::RayScene rs(b.scene);
     const ProbeSampler ds(b.dense, 0), ss(b.sparse, 0);
     const ChangedQueries cq = changedQueries(rs, b.dense, ds, ss);
     std::vector<float> dense;

@@ -56,8 +56,8 @@
 #include "probes/store/MemoryReport.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/RayDirections.h"
-#include "probes/bake/RayScene.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/RayScene.h"
+#include "raytrace/StaticTriangles.h"
 #include "probes/bake/SurfaceGather.h"
 #include "probes/bake/MidAirSamples.h"
 #include "probes/bake/SurfaceSamples.h"
@@ -143,7 +143,7 @@ void sampleAll(Candidate& c, const std::vector<GatherPoint>& pts,
 
 nlohmann::json runScene(const std::string& path, const Options& o) {
     pb::scene::Scene s = pb::scene::loadScene(path);
-    const pb::scene::Bounds bounds = staticBakeBounds(s);
+    const pb::scene::Bounds bounds = pb::raytrace::staticBakeBounds(s);
     const float uniformSpacing = defaultUniformSpacing(bounds);
 
     Candidate ref;
@@ -216,9 +216,9 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
                         .volume);
                 sweep.push_back(c);
             }
-    RayScene rays(s);
+    pb::raytrace::RayScene rays(s);
     const glm::vec3 refCell = ref.volumes[0].cellSize();
-    const std::vector<WorldTriangle> tris = staticBakeTriangles(s);
+    const std::vector<pb::raytrace::WorldTriangle> tris = pb::raytrace::staticBakeTriangles(s);
     const std::vector<GatherPoint> pts =
         surfaceSamples(tris, rays, o.points, std::min(refCell.x, std::min(refCell.y, refCell.z)));
 

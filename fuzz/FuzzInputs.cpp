@@ -1,7 +1,7 @@
 #include "fuzz/FuzzInputs.h"
 
 #include "core/FileIO.h"
-#include "probes/store/Hash.h"
+#include "core/Hash.h"
 #include "probes/store/ProbeFile.h"
 #include "probes/ProbeSampler.h"
 #include "profile/ProfileLoader.h"
@@ -100,7 +100,7 @@ Outcome runProbeFile(const std::uint8_t* data, std::size_t size) {
     if (bytes.size() >= 28) {
         const std::uint64_t total = bytes.size();
         std::memcpy(bytes.data() + 12, &total, 8);
-        const std::uint64_t sum = probes::fnv1a64(bytes.data(), bytes.size() - 8);
+        const std::uint64_t sum = pb::fnv1a64(bytes.data(), bytes.size() - 8);
         std::memcpy(bytes.data() + bytes.size() - 8, &sum, 8);
         if (expectCleanResult("fuzz.pbp", parseAndSample) == Outcome::Loaded)
             outcome = Outcome::Loaded;

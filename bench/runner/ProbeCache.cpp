@@ -3,7 +3,7 @@
 #include "core/Error.h"
 #include "probes/placement/AutoPlacement.h"
 #include "probes/bake/Baker.h"
-#include "probes/bake/EmbreeIsa.h"
+#include "raytrace/EmbreeIsa.h"
 #include "probes/store/ProbeFile.h"
 #include "probes/Scenario.h"
 #include "probes/store/VolumeFile.h"
@@ -51,7 +51,7 @@ probes::ProbeSet benchProbes(const scene::Scene& s, const std::string& volumes,
     // gate (which pins SSE2) must not pick up a bench's native bake or the other way round.
     char name[96];
     std::snprintf(name, sizeof name, "-%016llx-%s.pbp", static_cast<unsigned long long>(hash),
-                  probes::embreeIsa().c_str());
+                  raytrace::embreeIsa().c_str());
     std::error_code ec;
     fs::create_directories(cacheDir, ec);
     if (ec) throw fileError(cacheDir, "cannot create the probe cache folder: " + ec.message());

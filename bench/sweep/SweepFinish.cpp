@@ -3,7 +3,7 @@
 #include "bench/sweep/SweepMerge.h"
 #include "core/Error.h"
 #include "core/FileIO.h"
-#include "probes/store/Hash.h"
+#include "core/Hash.h"
 #include "probes/store/ProbeFile.h"
 #include "probes/store/ProbeFileParts.h"
 
@@ -36,7 +36,7 @@ json mergeBakes(const sweep::PlanState& plan, const std::string& outDir) {
         const std::vector<unsigned char> bytes = readFileBytes(file);
         char hash[17];
         std::snprintf(hash, sizeof hash, "%016llx",
-                      static_cast<unsigned long long>(probes::fnv1a64(bytes.data(), bytes.size())));
+                      static_cast<unsigned long long>(pb::fnv1a64(bytes.data(), bytes.size())));
         bakes.push_back({{"scene", g.scene},
                          {"parts", g.jobs.size()},
                          {"file", g.merged},

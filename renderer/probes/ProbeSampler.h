@@ -11,7 +11,7 @@
 // Outside every volume the result is irradiance 0 with weight 0: the caller decides the
 // fallback (e.g. ambient). All probes invalid, or all weights zero, also give weight 0 and
 // irradiance 0 - never NaN.
-#include "probes/HugePages.h"
+#include "core/HugePages.h"
 #include "probes/ProbeSet.h"
 
 #include <algorithm>

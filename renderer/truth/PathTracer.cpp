@@ -3,7 +3,7 @@
 #include "core/Error.h"
 #include "core/Luminance.h"
 #include "core/ParallelFor.h"
-#include "probes/bake/AliasTable.h"
+#include "raytrace/AliasTable.h"
 #include "truth/CameraRays.h"
 #include "truth/TruthScene.h"
 
@@ -67,7 +67,7 @@ float powerHeuristic(float a, float b) {
 struct Integrator {
     const scene::Scene& scene;
     const TruthScene& ts;
-    const probes::AliasTable& lights;
+    const raytrace::AliasTable& lights;
     int maxDepth;
 
     // Sun and punctual lights at x (delta lights: NEE only), as lighting_direct.frag weighs
@@ -241,7 +241,7 @@ TruthResult renderTruth(const scene::Scene& scene, const scene::View& view,
     std::vector<double> weights;
     for (const EmissiveTriangle& t : ts.emissiveTriangles())
         weights.push_back(double(t.area) * double(luminance(t.meanEmission)) * (t.twoSided ? 2.0 : 1.0));
-    const probes::AliasTable lightTable(weights);
+    const raytrace::AliasTable lightTable(weights);
     const Integrator integrator{scene, ts, lightTable, settings.maxDepth};
 
     // Per pixel: the mean colour and the sample variance of its luminance.

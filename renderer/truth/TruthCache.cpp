@@ -2,7 +2,7 @@
 
 #include "core/Error.h"
 #include "core/FileIO.h"
-#include "probes/store/SceneHash.h"
+#include "raytrace/SceneHash.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -11,7 +11,7 @@
 namespace pb::truth {
 namespace {
 
-void hashScene(probes::Hasher& h, const scene::Scene& s) {
+void hashScene(Hasher& h, const scene::Scene& s) {
     h.pod(std::uint64_t(s.materials.size()));
     for (const scene::Material& m : s.materials) {
         h.pod(m.baseColor);
@@ -35,14 +35,14 @@ void hashScene(probes::Hasher& h, const scene::Scene& s) {
         h.pod(std::int32_t(inst.primitive));
         if (inst.primitive < 0 || inst.primitive >= int(s.primitives.size())) continue;
         const scene::Primitive& p = s.primitives[size_t(inst.primitive)];
-        hashPrimitiveGeometry(h, p);
+        raytrace::hashPrimitiveGeometry(h, p);
         h.pod(std::uint64_t(p.normals.size()));
         h.bytes(p.normals.data(), p.normals.size() * sizeof(glm::vec3));
         h.pod(std::uint64_t(p.uvs.size()));
         h.bytes(p.uvs.data(), p.uvs.size() * sizeof(glm::vec2));
     }
-    hashLights(h, s.lights);
-    hashSun(h, s.sun);
+    raytrace::hashLights(h, s.lights);
+    raytrace::hashSun(h, s.sun);
     h.pod(s.sky.radiance);
 }
 
@@ -54,7 +54,7 @@ std::string sidecarPath(const std::string& pfm) {
 
 std::uint64_t truthInputHash(const scene::Scene& scene, const scene::View& view,
                              const TruthSettings& settings) {
-    probes::Hasher h;
+    Hasher h;
     h.pod(kTruthAlgorithmVersion);
     hashScene(h, scene);
     h.pod(view.position);

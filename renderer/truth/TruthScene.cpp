@@ -1,8 +1,8 @@
 #include "truth/TruthScene.h"
 
 #include "core/Error.h"
-#include "probes/bake/EmbreeIsa.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/EmbreeIsa.h"
+#include "raytrace/RayScene.h"
 
 #include <array>
 #include <cmath>
@@ -61,7 +61,7 @@ glm::vec3 meanTextureColour(const scene::Scene& s, int texture) {
 } // namespace
 
 TruthScene::TruthScene(const scene::Scene& s) : scene_(s) {
-    const std::string config = probes::embreeDeviceConfig(); // PB_EMBREE_ISA
+    const std::string config = raytrace::embreeDeviceConfig(); // PB_EMBREE_ISA
     device_ = rtcNewDevice(config.empty() ? nullptr : config.c_str());
     if (!device_) throw Error("Embree: cannot create a device");
     rtc_ = rtcNewScene(device_);
@@ -246,7 +246,7 @@ SurfaceHit TruthScene::intersect(const glm::vec3& o, const glm::vec3& d, float t
         RTCIntersectContext ctx;
         rtcInitIntersectContext(&ctx);
         RTCRayHit rh;
-        probes::initEmbreeRay(rh.ray, o, d, tnear, tfar);
+        raytrace::initEmbreeRay(rh.ray, o, d, tnear, tfar);
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(rtc_, &ctx, &rh);
@@ -267,7 +267,7 @@ bool TruthScene::occluded(const glm::vec3& o, const glm::vec3& d, float tnear, f
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     RTCRay r;
-    probes::initEmbreeRay(r, o, d, tnear, tfar);
+    raytrace::initEmbreeRay(r, o, d, tnear, tfar);
     rtcOccluded1(rtc_, &ctx, &r);
     return r.tfar < 0.0f; // Embree sets tfar to -inf on a hit
 }

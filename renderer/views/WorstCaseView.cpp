@@ -2,7 +2,7 @@
 
 #include "core/Error.h"
 #include "core/ParallelFor.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -104,7 +104,7 @@ constexpr int kVerified = 16; // coarse poses checked at full resolution when no
 CoverageTester::CoverageTester(const scene::Scene& scene, const probes::ProbeSet& probes,
                                std::vector<bool> keptVolumes)
     : probes_(probes), kept_(std::move(keptVolumes)), views_(scene.views),
-      rays_(std::make_unique<probes::RayScene>(scene)) {
+      rays_(std::make_unique<raytrace::RayScene>(scene)) {
     // Dynamic objects are in the GBuffer and lit per pixel like any surface (gi.dynamic): the
     // primary rays see them too, through a scene of them alone (the bake's RayScene leaves
     // them out). Without any, nothing changes.
@@ -116,7 +116,7 @@ CoverageTester::CoverageTester(const scene::Scene& scene, const probes::ProbeSet
             dynamicOnly.instances.back().dynamic = false;
         }
     if (!dynamicOnly.instances.empty())
-        dynamicRays_ = std::make_unique<probes::RayScene>(dynamicOnly);
+        dynamicRays_ = std::make_unique<raytrace::RayScene>(dynamicOnly);
     if (!kept_.empty() && kept_.size() != probes.volumes.size())
         throw Error("coverage: " + std::to_string(kept_.size()) + " kept flags for " +
                     std::to_string(probes.volumes.size()) + " volumes");
@@ -129,26 +129,26 @@ CoverageTester::~CoverageTester() = default;
 namespace {
 // The first hit of a primary ray among the static scene and the dynamic objects.
 struct PrimaryHit {
-    probes::RayHit hit;
-    const probes::RayScene* scene = nullptr; // whose geomID the hit names
+    raytrace::RayHit hit;
+    const raytrace::RayScene* scene = nullptr; // whose geomID the hit names
     bool dynamic = false;
 };
 struct PrimaryRays {
-    const probes::RayScene& statics;
-    const probes::RayScene* dynamics; // null: the scene has none
+    const raytrace::RayScene& statics;
+    const raytrace::RayScene* dynamics; // null: the scene has none
     // Hit distances from RayScene::portableDistance: the same on every CPU (the gate's model
     // counters and the worst-case view search must not depend on Embree's rounding).
     PrimaryHit intersect(const glm::vec3& eye, const glm::vec3& d) const {
         PrimaryHit h{portable(statics, eye, d), &statics, false};
         if (dynamics) {
-            const probes::RayHit dh = portable(*dynamics, eye, d);
+            const raytrace::RayHit dh = portable(*dynamics, eye, d);
             if (dh.hit() && (!h.hit.hit() || dh.t < h.hit.t)) h = {dh, dynamics, true};
         }
         return h;
     }
-    static probes::RayHit portable(const probes::RayScene& s, const glm::vec3& eye,
+    static raytrace::RayHit portable(const raytrace::RayScene& s, const glm::vec3& eye,
                                    const glm::vec3& d) {
-        probes::RayHit hit = s.intersect(eye, d);
+        raytrace::RayHit hit = s.intersect(eye, d);
         hit.t = s.portableDistance(eye, d, hit);
         return hit;
     }
@@ -161,7 +161,7 @@ Tally tallyRow(const PrimaryRays& rays, const probes::ProbeSet& set,
     for (int x = 0; x < cam.width; ++x) {
         const glm::vec3 d = cam.ray(x, y);
         const PrimaryHit primary = rays.intersect(cam.eye, d);
-        const probes::RayHit& hit = primary.hit;
+        const raytrace::RayHit& hit = primary.hit;
         if (overlapRow) overlapRow[x] = 0;
         if (!hit.hit()) continue; // sky: no GI
         const glm::vec3 p = cam.eye + d * hit.t;
@@ -216,7 +216,7 @@ CoverageTester::surfacePoints(const scene::View& view, int width, int height,
         for (size_t i = chunk * kChunk; i < end; ++i) {
             const glm::vec3 d = cam.ray(pixels[i].x, pixels[i].y);
             const PrimaryHit primary = PrimaryRays{*rays_, dynamicRays_.get()}.intersect(cam.eye, d);
-            const probes::RayHit& hit = primary.hit;
+            const raytrace::RayHit& hit = primary.hit;
             if (!hit.hit()) continue;
             SurfacePoint& s = out[i];
             s.hit = true;
@@ -266,10 +266,10 @@ bool CoverageTester::eyeIsClear(const glm::vec3& eye) const {
             d = glm::normalize(glm::vec3((i & 1) ? 1 : -1, (i & 2) ? 1 : -1, (i & 4) ? 1 : -1));
         // Dynamic objects too: an eye inside one of them sees nothing else.
         const PrimaryHit primary = PrimaryRays{*rays_, dynamicRays_.get()}.intersect(eye, d);
-        const probes::RayHit& hit = primary.hit;
+        const raytrace::RayHit& hit = primary.hit;
         if (!hit.hit()) continue;
         if (hit.t < clearance) return false;
-        const probes::RayScene& rs = *primary.scene;
+        const raytrace::RayScene& rs = *primary.scene;
         const bool singleSided = !rs.surface(hit.geomID).doubleSided;
         if (singleSided && glm::dot(rs.faceNormal(hit.geomID, hit.primID), d) > 0.0f)
             ++backFaces;

@@ -16,7 +16,7 @@
 #include <memory>
 #include <vector>
 
-namespace pb::probes {
+namespace pb::raytrace {
 class RayScene;
 }
 
@@ -68,8 +68,8 @@ private:
     const probes::ProbeSet& probes_;
     std::vector<bool> kept_;
     std::vector<scene::View> views_;
-    std::unique_ptr<probes::RayScene> rays_;
-    std::unique_ptr<probes::RayScene> dynamicRays_; // the dynamic objects alone; null: none
+    std::unique_ptr<raytrace::RayScene> rays_;
+    std::unique_ptr<raytrace::RayScene> dynamicRays_; // the dynamic objects alone; null: none
     float sceneSize_ = 1.0f;
 };
 

@@ -20,7 +20,7 @@
 #include "passes/GiApplyPass.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/Baker.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/placement/AutoVolume.h"
 #include "probes/store/SparseStorage.h"
 #include "scene/SceneLoader.h"
@@ -52,13 +52,13 @@ const Bakes& bakes() {
         const scene::Scene& s = dynamicScene();
         probes::BakeRequest r;
         r.volumes.push_back(
-            probes::fitAutoVolume(probes::staticBakeBounds(s), 0.0f, 1500).volume);
+            probes::fitAutoVolume(raytrace::staticBakeBounds(s), 0.0f, 1500).volume);
         r.scenarios = probes::resolveScenarios({"day"}, {}, s);
         r.settings.raysPerProbe = 64;
         r.settings.bounces = 2;
         Bakes out{probes::bakeProbes(s, r), {}};
         out.sparse = out.dense;
-        probes::applySparseStorage(out.sparse, probes::staticBakeTriangles(s));
+        probes::applySparseStorage(out.sparse, raytrace::staticBakeTriangles(s));
         return out;
     }();
     return b;

@@ -10,7 +10,7 @@
 #include "core/Error.h"
 #include "frame/GiPointEvaluator.h"
 #include "probes/ShSampler.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/StaticTriangles.h"
 #include "probes/store/SparseStorage.h"
 
 #include <algorithm>
@@ -107,7 +107,7 @@ TEST_P(GiShCrossCheckTest, GpuMatchesTheCpuShSamplerForEveryTechniqueAndLeakMode
 // upload and the CPU sampler fill them alike, in every mode.
 TEST_P(GiShCrossCheckTest, SparseSetGpuMatchesTheCpuShSampler) {
     probes::ProbeSet set = giTestProbes(probes::StorageFormat::Rgba16f);
-    probes::applySparseStorage(set, probes::staticBakeTriangles(giTestScene()));
+    probes::applySparseStorage(set, raytrace::staticBakeTriangles(giTestScene()));
     ASSERT_LT(set.storedCount(), set.probeCount()) << "nothing absent: vacuous";
     for (const char* technique : {"sh_l1", "sh_l2"})
         for (const char* leak : {"none", "weight", "validity_mask"}) {

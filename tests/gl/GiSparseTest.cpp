@@ -18,7 +18,7 @@
 #include "profile/GiVolumeLod.h"
 #include "probes/ProbeSampler.h"
 #include "probes/store/SparseStorage.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/StaticTriangles.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -34,7 +34,7 @@ constexpr int kGiSparseW = 160, kGiSparseH = 90;
 const probes::ProbeSet& sparseProbes() {
     static const probes::ProbeSet set = [] {
         probes::ProbeSet s = giTestProbes(probes::StorageFormat::Rgba16f);
-        probes::applySparseStorage(s, probes::staticBakeTriangles(giTestScene()));
+        probes::applySparseStorage(s, raytrace::staticBakeTriangles(giTestScene()));
         return s;
     }();
     return set;

@@ -4,7 +4,7 @@
 // edge fade, relocation and invalid probes are all exercised. Cached per format per process.
 #include "probes/placement/AutoVolume.h"
 #include "probes/bake/Baker.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/Scenario.h"
 #include "scene/SceneLoader.h"
 
@@ -24,7 +24,7 @@ inline const probes::ProbeSet& giTestProbes(probes::StorageFormat format) {
     if (!slot) {
         const scene::Scene& s = giTestScene();
         probes::BakeRequest r;
-        probes::AutoVolume root = probes::fitAutoVolume(probes::staticBakeBounds(s), 0.0f, 400);
+        probes::AutoVolume root = probes::fitAutoVolume(raytrace::staticBakeBounds(s), 0.0f, 400);
         r.volumes.push_back(root.volume);
         probes::ProbeVolume child;
         child.name = "child";

@@ -6,8 +6,8 @@
 #include "probes/placement/BoxMerge.h"
 #include "probes/store/FreeSpaceTiles.h"
 #include "probes/store/MemoryReport.h"
-#include "probes/bake/RayScene.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/RayScene.h"
+#include "raytrace/StaticTriangles.h"
 #include "probes/store/VolumeFile.h"
 #include "scene/SceneLoader.h"
 
@@ -56,7 +56,7 @@ void expectSurfacesAtFinestSpacing(const pb::scene::Scene& s, const AutoPlacemen
     float finest = spacingOf(r.volumes[0]);
     for (const ProbeVolume& v : r.volumes)
         finest = std::min(finest, spacingOf(v));
-    for (const WorldTriangle& t : staticBakeTriangles(s))
+    for (const pb::raytrace::WorldTriangle& t : pb::raytrace::staticBakeTriangles(s))
         for (glm::vec3 p : {t.a, t.b, t.c, (t.a + t.b + t.c) / 3.0f}) {
             float best = std::numeric_limits<float>::infinity();
             for (const ProbeVolume* v : volumesAt(r.volumes, p))

@@ -39,7 +39,7 @@ TEST(BakeDirectLight, SunIsIntensityTimesCosineAndShadowed) {
     pb::scene::Scene s = emptyScene(glm::vec3(0.0f));
     int m = addMaterial(s, glm::vec3(0.5f));
     addInstance(s, boxPrimitive({-0.5f, 2, -0.5f}, {0.5f, 2.2f, 0.5f}, false, m)); // a roof
-    RayScene rs(s);
+    pb::raytrace::RayScene rs(s);
     Scenario sc = noSun();
     sc.sun.enabled = true;
     sc.sun.intensity = 3.0f;
@@ -56,7 +56,7 @@ TEST(BakeDirectLight, SunIsIntensityTimesCosineAndShadowed) {
 
 TEST(BakeDirectLight, PointLightFollowsInverseSquareAndRange) {
     pb::scene::Scene s = emptyScene(glm::vec3(0.0f));
-    RayScene rs(s);
+    pb::raytrace::RayScene rs(s);
     std::uint64_t shadow = 0;
     std::vector<pb::scene::Light> lights{pointLight({0, 2, 0}, 8.0f)};
     EXPECT_NEAR(directIrradiance(rs, noSun(), lights, {0, 0, 0}, {0, 1, 0}, shadow).x, 2.0f, 1e-5f);
@@ -74,7 +74,7 @@ TEST(BakeDirectLight, SpotConeAndShadowRays) {
     pb::scene::Scene s = emptyScene(glm::vec3(0.0f));
     int m = addMaterial(s, glm::vec3(0.5f));
     addInstance(s, boxPrimitive({2.9f, 0.5f, -0.5f}, {3.1f, 1.5f, 0.5f}, false, m)); // occluder
-    RayScene rs(s);
+    pb::raytrace::RayScene rs(s);
     pb::scene::Light spot = pointLight({0, 4, 0}, 16.0f);
     spot.type = pb::scene::LightType::Spot;
     spot.direction = {0, -1, 0};

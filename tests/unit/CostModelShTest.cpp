@@ -7,7 +7,7 @@
 #include "costmodel/CostModel.h"
 #include "costmodel/ShFetchStream.h"
 #include "costmodel/TextureMemory.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/StaticTriangles.h"
 #include "probes/bake/Baker.h"
 #include "probes/placement/AutoVolume.h"
 #include "scene/SceneLoader.h"
@@ -32,7 +32,7 @@ const Baked& baked() {
         Baked x{scene::makeBuiltinScene("rooms"), {}};
         probes::BakeRequest r;
         r.volumes.push_back(
-            probes::fitAutoVolume(probes::staticBakeBounds(x.scene), 0.0f, 800).volume);
+            probes::fitAutoVolume(raytrace::staticBakeBounds(x.scene), 0.0f, 800).volume);
         r.scenarios = probes::resolveScenarios({"day"}, {}, x.scene);
         r.settings.raysPerProbe = 16;
         r.settings.bounces = 1;

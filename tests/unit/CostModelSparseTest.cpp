@@ -12,10 +12,10 @@
 #include "probes/bake/Baker.h"
 #include "probes/AbsentProbeFill.h"
 #include "probes/ProbeSampler.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/store/SparseLayout.h"
 #include "probes/store/SparseStorage.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/StaticTriangles.h"
 #include "scene/SceneLoader.h"
 #include "views/WorstCaseView.h"
 
@@ -224,13 +224,13 @@ TEST(CostModelSparse, AbsentProbesCostWhatInvalidOnesCost) {
 TEST(CostModelSparse, ABakedSparseSetReadsTheDenseSetsTexelsFromPackedTextures) {
     const scene::Scene s = scene::makeBuiltinScene("courtyard");
     probes::BakeRequest r;
-    r.volumes.push_back(probes::fitAutoVolume(probes::staticBakeBounds(s), 0.0f, 800).volume);
+    r.volumes.push_back(probes::fitAutoVolume(raytrace::staticBakeBounds(s), 0.0f, 800).volume);
     r.scenarios = probes::resolveScenarios({"day"}, {}, s);
     r.settings.raysPerProbe = 16;
     r.settings.bounces = 1;
     const probes::ProbeSet dense = probes::bakeProbes(s, r);
     probes::ProbeSet sparse = dense;
-    probes::applySparseStorage(sparse, probes::staticBakeTriangles(s));
+    probes::applySparseStorage(sparse, raytrace::staticBakeTriangles(s));
     ASSERT_LT(sparse.storedCount(), dense.probeCount() - dense.invalidCount());
 
     CostModelOptions o;

@@ -2,7 +2,7 @@
 // A built-in scene's dense bake of one root volume over its static bounds (64 rays, 2 bounces,
 // the "day" scenario), and the same set stored sparse with `freeSpace` - exactly what a sparse bake of that grid
 // gives (SparseStorageTest). The mid-air tests compare lookups of the two.
-#include "probes/StaticTriangles.h"
+#include "raytrace/StaticTriangles.h"
 #include "probes/bake/Baker.h"
 #include "probes/placement/AutoPlacement.h"
 #include "probes/placement/AutoVolume.h"
@@ -23,13 +23,13 @@ inline DenseAndSparse bakeDenseAndSparse(const std::string& builtin, int maxProb
     DenseAndSparse b{pb::scene::makeBuiltinScene(builtin), {}, {}};
     probes::BakeRequest r;
     r.volumes.push_back(
-        probes::fitAutoVolume(probes::staticBakeBounds(b.scene), 0.0f, maxProbes).volume);
+        probes::fitAutoVolume(raytrace::staticBakeBounds(b.scene), 0.0f, maxProbes).volume);
     r.scenarios = probes::resolveScenarios({"day"}, {}, b.scene);
     r.settings.raysPerProbe = 64;
     r.settings.bounces = 2;
     b.dense = probes::bakeProbes(b.scene, r);
     b.sparse = b.dense;
-    probes::applySparseStorage(b.sparse, probes::staticBakeTriangles(b.scene), freeSpace);
+    probes::applySparseStorage(b.sparse, raytrace::staticBakeTriangles(b.scene), freeSpace);
     return b;
 }
 
@@ -53,7 +53,7 @@ inline DenseAndSparse bakeDefaultDenseAndSparse(const std::string& builtin, doub
     r.settings.bounces = 2;
     b.dense = probes::bakeProbes(b.scene, r);
     b.sparse = b.dense;
-    probes::applySparseStorage(b.sparse, probes::staticBakeTriangles(b.scene),
+    probes::applySparseStorage(b.sparse, raytrace::staticBakeTriangles(b.scene),
                                probes::FreeSpace::Ranked, budget);
     return b;
 }

@@ -10,11 +10,11 @@
 #include "probes/Octahedral.h"
 #include "probes/ProbeLayout.h"
 #include "probes/bake/Baker.h"
-#include "probes/bake/EmitterTable.h"
+#include "raytrace/EmitterTable.h"
 #include "probes/bake/ProbeConvolution.h"
 #include "probes/bake/RadiancePass.h"
 #include "probes/bake/RayDirections.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/bake/SeedDifference.h"
 #include "probes/placement/AutoPlacement.h"
 #include "scene/BuiltinScenes.h"
@@ -29,7 +29,7 @@ using namespace pb::test;
 
 namespace {
 
-EmissiveTriangle tri(glm::vec3 a, glm::vec3 b, glm::vec3 c, float le, bool twoSided = false) {
+pb::raytrace::EmissiveTriangle tri(glm::vec3 a, glm::vec3 b, glm::vec3 c, float le, bool twoSided = false) {
     return {a, b, c, glm::normalize(glm::cross(b - a, c - a)), glm::vec3(le), twoSided, 0.0f, 0, 0};
 }
 
@@ -63,7 +63,7 @@ float panelIrradiance(float le, glm::vec3 n) {
 }
 
 // One probe at the origin, traced and convolved: its 6x6 interior texels (RGB).
-std::vector<float> probeTexels(const RayScene& rs, const scene::Scene& s, int rays,
+std::vector<float> probeTexels(const pb::raytrace::RayScene& rs, const scene::Scene& s, int rays,
                                int emitterSamples, std::uint64_t stream) {
     RadianceSlab slab;
     slab.reset(1, rays);
@@ -99,13 +99,13 @@ BakeRequest oneVolumeBake(const scene::Scene& s, glm::vec3 center, glm::vec3 hal
 TEST(EmitterTable, PicksTrianglesInProportionToTheirPower) {
     // Powers 1 : 3 (twice the radiance) : 0 (left out) : 2 (double-sided, same area and radiance
     // as the first).
-    std::vector<EmissiveTriangle> ts{tri({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0f),
+    std::vector<pb::raytrace::EmissiveTriangle> ts{tri({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0f),
                                      tri({0, 0, 0}, {1, 0, 0}, {0, 1.5f, 0}, 2.0f),
                                      tri({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 0.0f),
                                      tri({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 1.0f, true)};
     ts[1].geomID = 7;
     ts[1].primID = 3;
-    const EmitterTable table(ts);
+    const pb::raytrace::EmitterTable table(ts);
     ASSERT_EQ(table.size(), 3u);
     EXPECT_EQ(table.find(7, 3), 1);
     EXPECT_EQ(table.find(7, 2), -1);
@@ -120,11 +120,11 @@ TEST(EmitterTable, PicksTrianglesInProportionToTheirPower) {
     std::uint64_t state = 42;
     const int n = 60000;
     for (int i = 0; i < n; ++i) {
-        const EmitterSample s =
+        const pb::raytrace::EmitterSample s =
             table.sample(uniformFloat(state), uniformFloat(state), uniformFloat(state));
         ASSERT_GE(s.triangle, 0);
         ++hits[size_t(s.triangle)];
-        const EmissiveTriangle& t = table.triangle(s.triangle);
+        const pb::raytrace::EmissiveTriangle& t = table.triangle(s.triangle);
         EXPECT_NEAR(glm::dot(s.point - t.a, t.normal), 0.0f, 1e-5f);
         EXPECT_GE(s.point.x, -1e-6f);
         EXPECT_GE(s.point.y, -1e-6f);
@@ -132,13 +132,13 @@ TEST(EmitterTable, PicksTrianglesInProportionToTheirPower) {
     EXPECT_NEAR(hits[0] / double(n), 1.0 / 6.0, 0.01);
     EXPECT_NEAR(hits[1] / double(n), 3.0 / 6.0, 0.01);
     EXPECT_NEAR(hits[2] / double(n), 2.0 / 6.0, 0.01);
-    EXPECT_TRUE(EmitterTable().empty());
+    EXPECT_TRUE(pb::raytrace::EmitterTable().empty());
 }
 
 TEST(EmitterSampling, AProbeUnderAPanelMatchesTheQuadratureWithoutBias) {
     const float le = 10.0f;
     const scene::Scene s = panelScene(le);
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     ASSERT_EQ(rs.emitters().size(), 2u);
     const float top = panelIrradiance(le, {0, 1, 0});
     ASSERT_GT(top, 1.0f);
@@ -179,7 +179,7 @@ TEST(EmitterSampling, AProbeUnderAPanelMatchesTheQuadratureWithoutBias) {
 
 TEST(EmitterSampling, WithoutEmittersTheSamplesChangeNothing) {
     const scene::Scene s = sunlitFloor();
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     ASSERT_TRUE(rs.emitters().empty());
     BakeRequest req = oneVolumeBake(s, {0, 1, 0}, {2, 1, 2}, {4, 3, 4});
     req.settings.emitterSamples = 0;

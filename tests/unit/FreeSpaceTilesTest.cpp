@@ -25,7 +25,7 @@ const pb::test::DenseAndSparse& rooms() {
 
 std::vector<std::vector<std::uint8_t>> keepOf(const ProbeSet& set,
                                               const pb::scene::Scene& scene) {
-    return {sparseKeptProbes(set.volumes[0], true, staticBakeTriangles(scene))};
+    return {sparseKeptProbes(set.volumes[0], true, pb::raytrace::staticBakeTriangles(scene))};
 }
 
 // The set's memory with these tiles, as the budget counts it.

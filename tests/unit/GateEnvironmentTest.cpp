@@ -8,8 +8,8 @@
 #include "bench/gate/GateOutcome.h"
 #include "bench/gate/GateRecord.h"
 #include "core/Error.h"
-#include "probes/bake/EmbreeIsa.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/EmbreeIsa.h"
+#include "raytrace/RayScene.h"
 #include "scene/BuiltinScenes.h"
 
 #include <gtest/gtest.h>
@@ -173,17 +173,17 @@ TEST(GateEnvironment, AnotherGlRendererIsNotedNotRelaxed) {
 TEST(EmbreeIsa, AnUnknownNameIsAnErrorAndThePinIsUsed) {
     const pb::scene::Scene s = pb::scene::makeCornellScene();
     ::setenv("PB_EMBREE_ISA", "avx512skx", 1); // Embree would quietly run SSE2 for this
-    EXPECT_THROW(pb::probes::RayScene{s}, pb::Error);
-    EXPECT_THROW(pb::probes::embreeIsa(), pb::Error);
+    EXPECT_THROW(pb::raytrace::RayScene{s}, pb::Error);
+    EXPECT_THROW(pb::raytrace::embreeIsa(), pb::Error);
     ::setenv("PB_EMBREE_ISA", "sse2", 1);
-    EXPECT_EQ(pb::probes::embreeIsa(), "sse2");
-    EXPECT_EQ(pb::probes::embreeDeviceConfig(), "isa=sse2");
+    EXPECT_EQ(pb::raytrace::embreeIsa(), "sse2");
+    EXPECT_EQ(pb::raytrace::embreeDeviceConfig(), "isa=sse2");
     ::unsetenv("PB_EMBREE_ISA");
-    EXPECT_THROW(pb::probes::pinEmbreeIsa("avx3"), pb::Error);
-    pb::probes::pinEmbreeIsa("sse2");
-    EXPECT_EQ(pb::probes::embreeIsa(), "sse2");
-    const pb::probes::RayScene rays(s); // traced with it
+    EXPECT_THROW(pb::raytrace::pinEmbreeIsa("avx3"), pb::Error);
+    pb::raytrace::pinEmbreeIsa("sse2");
+    EXPECT_EQ(pb::raytrace::embreeIsa(), "sse2");
+    const pb::raytrace::RayScene rays(s); // traced with it
     EXPECT_TRUE(rays.intersect({0.0f, 1.0f, 0.0f}, {0.0f, -1.0f, 0.0f}).hit());
-    pb::probes::pinEmbreeIsa(""); // Embree chooses again, for the tests after this one
+    pb::raytrace::pinEmbreeIsa(""); // Embree chooses again, for the tests after this one
 }
 #endif

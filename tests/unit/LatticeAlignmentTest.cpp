@@ -12,7 +12,7 @@ using namespace pb::probes;
 namespace {
 
 // A 1 x 1 wall at x = `x` facing `normal`'s way (two triangles).
-std::vector<WorldTriangle> wallAt(float x, glm::vec3 normal = {1, 0, 0}) {
+std::vector<pb::raytrace::WorldTriangle> wallAt(float x, glm::vec3 normal = {1, 0, 0}) {
     const glm::vec3 a{x, 0.2f, 0.2f}, b{x, 1.2f, 0.2f}, c{x, 1.2f, 1.2f}, d{x, 0.2f, 1.2f};
     return {{a, b, c, normal, false}, {a, c, d, normal, false}};
 }
@@ -37,14 +37,14 @@ TEST(LatticeAlignment, AWallOnAProbePlaneCountsAndOneMidCellDoesNot) {
     EXPECT_NEAR(surfaceOnProbePlanes(v, wallAt(2.05f)), 1.0f - 0.05f / kOnPlaneCells, 1e-4f);
     EXPECT_FLOAT_EQ(surfaceOnProbePlanes(v, wallAt(2.0f + kOnPlaneCells + 0.01f)), 0.0f);
     // A slanted surface lies on no plane; the share is by area over the surface in the volume.
-    std::vector<WorldTriangle> mixed = wallAt(1.0f);
-    for (WorldTriangle t : wallAt(2.5f))
+    std::vector<pb::raytrace::WorldTriangle> mixed = wallAt(1.0f);
+    for (pb::raytrace::WorldTriangle t : wallAt(2.5f))
         mixed.push_back(t);
     EXPECT_NEAR(surfaceOnProbePlanes(v, mixed), 0.5f, 1e-6f);
-    std::vector<WorldTriangle> slanted = wallAt(2.0f, glm::normalize(glm::vec3(1, 1, 0)));
+    std::vector<pb::raytrace::WorldTriangle> slanted = wallAt(2.0f, glm::normalize(glm::vec3(1, 1, 0)));
     EXPECT_FLOAT_EQ(surfaceOnProbePlanes(v, slanted), 0.0f);
-    std::vector<WorldTriangle> outside = wallAt(9.0f);
-    for (WorldTriangle t : wallAt(2.5f))
+    std::vector<pb::raytrace::WorldTriangle> outside = wallAt(9.0f);
+    for (pb::raytrace::WorldTriangle t : wallAt(2.5f))
         outside.push_back(t);
     EXPECT_FLOAT_EQ(surfaceOnProbePlanes(v, outside), 0.0f); // the wall at 9 is not in it
 }
@@ -54,7 +54,7 @@ TEST(LatticeAlignment, AutoKeepsTheBoundaryWallsOffItsProbePlanes) {
     // its outer probe planes on them; auto's lattice puts them half a cell outside and, under a
     // budget, picks among the spacings that fit one with little surface on its planes.
     const pb::scene::Scene s = pb::scene::loadScene("courtyard");
-    const std::vector<WorldTriangle> triangles = staticBakeTriangles(s);
+    const std::vector<pb::raytrace::WorldTriangle> triangles = pb::raytrace::staticBakeTriangles(s);
     AutoPlacementRequest uniform;
     uniform.mode = AutoMode::Uniform;
     const AutoPlacementResult u = placeAutoVolumes(s, uniform);

@@ -4,7 +4,7 @@
 // same seed.
 #include "ProbeTestScenes.h"
 #include "probes/bake/RayDirections.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/placement/LatticeScore.h"
 
 #include <gtest/gtest.h>
@@ -66,7 +66,7 @@ TEST(LatticeScore, FloorLinesStayOnFlatUpwardSurfaces) {
     const int m = addMaterial(s, glm::vec3(0.5f));
     addFloor(s, m);
     addInstance(s, boxPrimitive({1, 0, -3}, {3, 1, 3}, false, m));
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     const std::vector<FloorLine> lines = findFloorLines(rs, 20, 16, 0.1f);
     ASSERT_GE(lines.size(), 10u);
     for (const FloorLine& l : lines) {
@@ -92,7 +92,7 @@ TEST(LatticeScore, FloorLinesStayOnFlatUpwardSurfaces) {
     w.material = addMaterial(wall, glm::vec3(0.5f));
     addQuad(w, {0, 0, -1}, {0, 2, 0}, {0, 0, 2}, {1, 0, 0});
     addInstance(wall, w);
-    EXPECT_TRUE(findFloorLines(RayScene(wall), 5, 16, 0.1f).empty());
+    EXPECT_TRUE(findFloorLines(pb::raytrace::RayScene(wall), 5, 16, 0.1f).empty());
 }
 
 TEST(LatticeScore, FloorLinesDoNotRunInsideAWallWhoseTopIsInTheCeiling) {
@@ -105,7 +105,7 @@ TEST(LatticeScore, FloorLinesDoNotRunInsideAWallWhoseTopIsInTheCeiling) {
     addFloor(s, m);
     addInstance(s, boxPrimitive({-0.5f, -0.2f, -3}, {0.5f, 2.0f, 3}, false, m));
     addInstance(s, boxPrimitive({-3, 1.9f, -3}, {3, 2.1f, 3}, false, m));
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     const std::vector<FloorLine> lines = findFloorLines(rs, 40, 8, 0.1f);
     ASSERT_GE(lines.size(), 20u);
     for (const FloorLine& l : lines)
@@ -128,7 +128,7 @@ TEST(LatticeScore, ADoubleSidedFloorWoundDownwardIsAFloorASingleSidedOneIsNot) {
         // A post in a corner gives the scene height (starts are drawn within its bounds).
         addInstance(
             s, boxPrimitive({2.5f, 0, 2.5f}, {3, 1, 3}, false, addMaterial(s, glm::vec3(0.5f))));
-        const RayScene rs(s);
+        const pb::raytrace::RayScene rs(s);
         const std::vector<FloorLine> lines = findFloorLines(rs, 10, 16, 0.1f);
         if (!doubleSided) {
             EXPECT_TRUE(lines.empty());

@@ -9,12 +9,12 @@
 #include "core/Error.h"
 #include "probes/bake/Baker.h"
 #include "probes/ProbeLayout.h"
-#include "probes/bake/AliasTable.h"
+#include "raytrace/AliasTable.h"
 #include "probes/bake/LitSurfaces.h"
 #include "probes/bake/ProbeConvolution.h"
 #include "probes/bake/RadiancePass.h"
 #include "probes/bake/RayDirections.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/Octahedral.h"
 
 #include <gtest/gtest.h>
@@ -81,7 +81,7 @@ float squareIrradiance(float sun, glm::vec3 n) {
 }
 
 // One probe at the origin, one round, convolved: its 6x6 interior texels (RGB).
-std::vector<float> litSurfaceSamplingProbeTexels(const RayScene& rs, const scene::Scene& s,
+std::vector<float> litSurfaceSamplingProbeTexels(const pb::raytrace::RayScene& rs, const scene::Scene& s,
                                                  const Scenario& sc, const LitSurfaces& lit,
                                                  int rays, int litSamples, std::uint64_t stream) {
     RadianceSlab slab;
@@ -113,7 +113,7 @@ double meanRelativeError(const std::vector<float>& texels, float sun) {
 } // namespace
 
 TEST(AliasTable, PicksIndicesInProportionToTheirWeights) {
-    const AliasTable t({1.0, 0.0, 3.0, 2.0});
+    const pb::raytrace::AliasTable t({1.0, 0.0, 3.0, 2.0});
     ASSERT_FALSE(t.empty());
     EXPECT_DOUBLE_EQ(t.probability(0), 1.0 / 6.0);
     EXPECT_DOUBLE_EQ(t.probability(1), 0.0);
@@ -127,15 +127,15 @@ TEST(AliasTable, PicksIndicesInProportionToTheirWeights) {
     EXPECT_NEAR(count[2] / double(n), 0.5, 1e-3);
     EXPECT_NEAR(count[3] / double(n), 1.0 / 3.0, 1e-3);
     // Nothing to pick from: no weights, all zero, or a negative or non-finite one.
-    EXPECT_TRUE(AliasTable(std::vector<double>{}).empty());
-    EXPECT_TRUE(AliasTable({0.0, 0.0}).empty());
-    EXPECT_TRUE(AliasTable({1.0, -1.0}).empty());
-    EXPECT_TRUE(AliasTable({1.0, std::nan("")}).empty());
+    EXPECT_TRUE(pb::raytrace::AliasTable(std::vector<double>{}).empty());
+    EXPECT_TRUE(pb::raytrace::AliasTable({0.0, 0.0}).empty());
+    EXPECT_TRUE(pb::raytrace::AliasTable({1.0, -1.0}).empty());
+    EXPECT_TRUE(pb::raytrace::AliasTable({1.0, std::nan("")}).empty());
 }
 
 TEST(LitSurfaces, SamplesOnlyTheSunlitPartWithTheDensityARayHitLooksUp) {
     const scene::Scene s = squareScene(true);
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     std::uint64_t shadow = 0;
     const LitSurfaces lit(rs, sunFromAbove(1.0f), s.lights, 2, shadow);
     ASSERT_FALSE(lit.empty());
@@ -162,17 +162,17 @@ TEST(LitSurfaces, SamplesOnlyTheSunlitPartWithTheDensityARayHitLooksUp) {
                 0.05 * 2 * kLitSurfaceSamplingHalf * kLitSurfaceSamplingHalf);
     // The shadowed half and the square's underside are not sampled: a ray that hits them
     // keeps its full weight.
-    const RayHit shaded = rs.intersect({0.1f, 0.0f, 0.0f}, {0, -1, 0});
+    const pb::raytrace::RayHit shaded = rs.intersect({0.1f, 0.0f, 0.0f}, {0, -1, 0});
     ASSERT_TRUE(shaded.hit());
     EXPECT_EQ(lit.pdfArea(shaded.geomID, shaded.primID, false, {0.1f, -0.5f, 0.0f}), 0.0f);
-    const RayHit square = rs.intersect({-0.1f, -2.0f, 0.0f}, {0, 1, 0});
+    const pb::raytrace::RayHit square = rs.intersect({-0.1f, -2.0f, 0.0f}, {0, 1, 0});
     ASSERT_TRUE(square.hit());
     EXPECT_EQ(lit.pdfArea(square.geomID, square.primID, true, {-0.1f, -kBelow, 0.0f}), 0.0f);
 }
 
 TEST(LitSurfaces, NothingToSampleWithoutSunOrLights) {
     const scene::Scene s = squareScene(false);
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     std::uint64_t shadow = 0;
     Scenario dark = sunFromAbove(1.0f);
     dark.sun.enabled = false;
@@ -186,7 +186,7 @@ TEST(LitSurfaces, NothingToSampleWithoutSunOrLights) {
 
 TEST(LitSurfaces, AProbeAboveASmallSunlitSquareConvergesWithoutBias) {
     const scene::Scene s = squareScene(false);
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     const Scenario sc = sunFromAbove(2.0f);
     std::uint64_t shadow = 0;
     const LitSurfaces lit(rs, sc, s.lights, 2, shadow);

@@ -9,7 +9,7 @@
 #include "probes/ProbeSampler.h"
 #include "probes/bake/Baker.h"
 #include "probes/bake/MidAirSamples.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/placement/AutoVolume.h"
 #include "probes/store/MemoryReport.h"
 #include "probes/store/SparseLayout.h"
@@ -52,7 +52,7 @@ constexpr int kStandInReachCells = 2;
 
 // The free-space points on the grid of cell steps around `p` within that reach (p included):
 // where the dense set's own light is compared with what the sparse lookup read.
-std::vector<glm::vec3> freeSpaceNeighbours(const RayScene& rs, const ProbeVolume& v,
+std::vector<glm::vec3> freeSpaceNeighbours(const pb::raytrace::RayScene& rs, const ProbeVolume& v,
                                            const glm::vec3& p) {
     std::vector<glm::vec3> out{p};
     const int r = kStandInReachCells;
@@ -82,7 +82,7 @@ Range denseRange(const ProbeSampler& dense, const std::vector<glm::vec3>& points
 }
 
 MidAirError compareMidAir(const DenseAndSparse& b, int points) {
-    const RayScene rs(b.scene);
+    const pb::raytrace::RayScene rs(b.scene);
     const ProbeSampler dense(b.dense, 0), sparse(b.sparse, 0);
     struct Pair {
         float dense, sparse;

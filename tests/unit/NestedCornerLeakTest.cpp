@@ -11,7 +11,7 @@
 #include "probes/ProbeSampler.h"
 #include "probes/Scenario.h"
 #include "probes/bake/Baker.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/bake/SurfaceGather.h"
 #include "probes/store/VolumeFile.h"
 #include "scene/SceneLoader.h"
@@ -51,7 +51,7 @@ std::vector<GatherPoint> cornerPoints() {
 
 TEST(NestedCornerLeak, DarkRoomCornerMatchesTheGatherNotTheLitRoom) {
     const scene::Scene s = scene::loadScene("rooms", {});
-    const RayScene rs(s);
+    const raytrace::RayScene rs(s);
     const ProbeSet set = bakeNested(s, 2);
     const ProbeSet firstBounce = bakeNested(s, 1);
     const ProbeSampler sampler(set, 0), indirect(firstBounce, 0);

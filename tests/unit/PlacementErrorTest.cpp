@@ -41,7 +41,7 @@ TEST(PlacementError, ExactWhereTheLightIsUniform) {
     // Every wall of the closed room emits and reflects alike: irradiance is pi Le (1 + rho)
     // after two bounces everywhere, which a lattice clear of the walls reproduces.
     pb::scene::Scene s = emissiveRoom(1.0f, 0.5f);
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     PlacementErrorSettings es;
     es.points = 500;
     const PlacementErrorEstimate e(s, rs, lightOf(s), 0.01f, 0.25f, es);
@@ -58,7 +58,7 @@ TEST(PlacementError, ExactWhereTheLightIsUniform) {
 
 TEST(PlacementError, AGridThatResolvesTheShadowScoresLower) {
     pb::scene::Scene s = shadedFloor();
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     PlacementErrorSettings es;
     es.points = 1000;
     const PlacementErrorEstimate e(s, rs, lightOf(s), 0.01f, 0.25f, es);
@@ -73,7 +73,7 @@ TEST(PlacementError, AGridThatResolvesTheShadowScoresLower) {
 
 TEST(PlacementError, SameOnAnyThreadCountAndStableAcrossCalls) {
     pb::scene::Scene s = shadedFloor();
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     const std::vector<ProbeVolume> v{grid({0, 0.5f, 0}, {3.25f, 1.125f, 3.25f}, {7, 5, 7})};
     PlacementErrorSettings es;
     es.points = 600;
@@ -90,7 +90,7 @@ TEST(PlacementError, AVolumeThatMissesTheSceneScoresOne) {
     // No probe reaches a point: E = 0 where every truth is lit (above the 10% floor), so each
     // point's relative error is exactly 1.
     pb::scene::Scene s = sunlitFloor();
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     PlacementErrorSettings es;
     es.points = 300;
     const PlacementErrorEstimate e(s, rs, lightOf(s), 0.01f, 0.5f, es);
@@ -99,10 +99,10 @@ TEST(PlacementError, AVolumeThatMissesTheSceneScoresOne) {
 
 TEST(PlacementError, NoSurfaceOrNoBounceIsAnError) {
     pb::scene::Scene empty = emptyScene();
-    const RayScene nothing(empty);
+    const pb::raytrace::RayScene nothing(empty);
     EXPECT_THROW(PlacementErrorEstimate(empty, nothing, lightOf(empty), 0.01f, 0.25f), pb::Error);
     pb::scene::Scene s = shadedFloor();
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     PlacementErrorSettings es;
     es.bounces = 0;
     EXPECT_THROW(PlacementErrorEstimate(s, rs, lightOf(s), 0.01f, 0.25f, es), pb::Error);

@@ -2,8 +2,8 @@
 // Embree kernels (the x86-64 baseline SSE2 and this CPU's widest) stand in for two CPU vendors:
 // their own t differ in the last bits on some rays, as Embree's approximate reciprocal differs
 // between Intel and AMD; the portable t of the same triangle must be the same bits.
-#include "probes/bake/EmbreeIsa.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/EmbreeIsa.h"
+#include "raytrace/RayScene.h"
 #include "scene/SceneLoader.h"
 
 #include <cstdio>
@@ -28,15 +28,15 @@ std::vector<Ray> randomRays(const pb::scene::Bounds& b, int n) {
 }
 
 struct Traced {
-    std::vector<pb::probes::RayHit> hits;
+    std::vector<pb::raytrace::RayHit> hits;
     std::vector<float> portable;
 };
 
 Traced portableHitDistanceTrace(const pb::scene::Scene& s, const std::vector<Ray>& rays,
                                 const std::string& isa) {
-    pb::probes::pinEmbreeIsa(isa);
-    const pb::probes::RayScene scene(s);
-    pb::probes::pinEmbreeIsa(""); // Embree chooses again, for the tests after this one
+    pb::raytrace::pinEmbreeIsa(isa);
+    const pb::raytrace::RayScene scene(s);
+    pb::raytrace::pinEmbreeIsa(""); // Embree chooses again, for the tests after this one
     Traced t;
     for (const Ray& r : rays) {
         t.hits.push_back(scene.intersect(r.o, r.d));
@@ -49,17 +49,17 @@ Traced portableHitDistanceTrace(const pb::scene::Scene& s, const std::vector<Ray
 
 #if defined(__x86_64__)
 TEST(PortableHitDistance, IsTheSameBitsWhereEmbreeKernelsRoundDifferently) {
-    const std::string widest = pb::probes::embreeIsa();
+    const std::string widest = pb::raytrace::embreeIsa();
     if (widest == "sse2") GTEST_SKIP() << "this CPU runs only Embree's SSE2 kernels: one kernel";
     int hits = 0, sameTriangle = 0, embreeDiffers = 0, portableDiffers = 0;
     double worstGap = 0.0; // portable vs Embree's t, relative
     for (const char* name : {"cornell", "courtyard", "rooms"}) {
         const pb::scene::Scene s = pb::scene::makeBuiltinScene(name);
-        const std::vector<Ray> rays = randomRays(pb::probes::RayScene(s).bounds(), 20000);
+        const std::vector<Ray> rays = randomRays(pb::raytrace::RayScene(s).bounds(), 20000);
         const Traced a = portableHitDistanceTrace(s, rays, "sse2"),
                      b = portableHitDistanceTrace(s, rays, widest);
         for (std::size_t i = 0; i < rays.size(); ++i) {
-            const pb::probes::RayHit &ha = a.hits[i], &hb = b.hits[i];
+            const pb::raytrace::RayHit &ha = a.hits[i], &hb = b.hits[i];
             ASSERT_EQ(ha.hit(), hb.hit()) << name << " ray " << i;
             if (!ha.hit()) continue;
             ++hits;

@@ -6,7 +6,7 @@
 #include "SunlitFloorBake.h"
 #include "core/Error.h"
 #include "probes/bake/Baker.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/StaticTriangles.h"
 #include "probes/placement/AutoVolume.h"
 #include "probes/store/MemoryReport.h"
 #include "scene/SceneLoader.h"
@@ -79,7 +79,7 @@ TEST(ProbeFileParts, MergedPartsAreTheSingleBakeByteForByte) {
 TEST(ProbeFileParts, MergedPartsMakeTheWholeBakesRankedTileChoice) {
     const pb::scene::Scene s = pb::scene::makeBuiltinScene("courtyard"); // air to leave out
     BakeRequest r;
-    r.volumes.push_back(fitAutoVolume(staticBakeBounds(s), 0.0f, 1500).volume);
+    r.volumes.push_back(fitAutoVolume(pb::raytrace::staticBakeBounds(s), 0.0f, 1500).volume);
     r.scenarios = resolveScenarios({"day", "night"}, {}, s);
     r.settings.raysPerProbe = 32;
     r.settings.bounces = 1;

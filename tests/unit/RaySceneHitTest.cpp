@@ -6,7 +6,7 @@
 #include "ProbeTestScenes.h"
 #include "probes/bake/LitSurfaces.h"
 #include "probes/bake/RayDirections.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 
 #include <gtest/gtest.h>
 
@@ -46,10 +46,10 @@ std::vector<std::pair<glm::vec3, glm::vec3>> rayHitTestRays() {
 } // namespace
 
 TEST(RaySceneHit, HitNormalIsTheFrontFaceNormalOnPlainAndMirroredInstances) {
-    const RayScene rs(boxAndMirroredBox());
+    const pb::raytrace::RayScene rs(boxAndMirroredBox());
     int front = 0, back = 0, mirrored = 0;
     for (const auto& [o, d] : rayHitTestRays()) {
-        const RayHit h = rs.intersect(o, d);
+        const pb::raytrace::RayHit h = rs.intersect(o, d);
         if (!h.hit()) continue;
         const glm::vec3 stored = rs.faceNormal(h.geomID, h.primID), fromHit = rs.hitNormal(h);
         EXPECT_NEAR(glm::length(fromHit), 1.0f, 1e-6f);
@@ -64,10 +64,10 @@ TEST(RaySceneHit, HitNormalIsTheFrontFaceNormalOnPlainAndMirroredInstances) {
 }
 
 TEST(RaySceneHit, BarycentricsLocateTheHitPointOnItsTriangle) {
-    const RayScene rs(boxAndMirroredBox());
+    const pb::raytrace::RayScene rs(boxAndMirroredBox());
     int hits = 0;
     for (const auto& [o, d] : rayHitTestRays()) {
-        const RayHit h = rs.intersect(o, d);
+        const pb::raytrace::RayHit h = rs.intersect(o, d);
         if (!h.hit()) continue;
         ++hits;
         glm::vec3 a, b, c;
@@ -83,7 +83,7 @@ TEST(RaySceneHit, BarycentricsLocateTheHitPointOnItsTriangle) {
 
 TEST(RaySceneHit, LitPatchFromBarycentricsIsThePatchOfTheHitPoint) {
     const scene::Scene s = boxAndMirroredBox();
-    const RayScene rs(s);
+    const pb::raytrace::RayScene rs(s);
     std::uint64_t shadow = 0;
     // The boxes are closed: a point light inside each lights its walls.
     std::vector<scene::Light> lights(2);
@@ -99,7 +99,7 @@ TEST(RaySceneHit, LitPatchFromBarycentricsIsThePatchOfTheHitPoint) {
     ASSERT_FALSE(lit.empty());
     int lookedUp = 0, differ = 0;
     for (const auto& [o, d] : rayHitTestRays()) {
-        const RayHit h = rs.intersect(o, d);
+        const pb::raytrace::RayHit h = rs.intersect(o, d);
         if (!h.hit()) continue;
         const bool back = glm::dot(rs.hitNormal(h), d) > 0.0f;
         const std::int64_t fromPoint = lit.slotOf(h.geomID, h.primID, back, o + d * h.t);

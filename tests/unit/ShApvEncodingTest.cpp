@@ -4,10 +4,10 @@
 #include "probes/ShApvEncoding.h"
 #include "probes/ShIrradiance.h"
 #include "probes/ShSampler.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/StaticTriangles.h"
 #include "probes/bake/Baker.h"
 #include "probes/bake/MidAirSamples.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/placement/AutoVolume.h"
 #include "scene/SceneLoader.h"
 
@@ -56,13 +56,13 @@ TEST(ShApvEncoding, RoundTripIsWithinEightBitRoundingOfTheRatio) {
 TEST(ShApvEncoding, ExtraErrorOfL1LookupsOnABake) {
     const pb::scene::Scene scene = pb::scene::makeBuiltinScene("rooms");
     BakeRequest r;
-    r.volumes.push_back(fitAutoVolume(staticBakeBounds(scene), 0.0f, 1500).volume);
+    r.volumes.push_back(fitAutoVolume(pb::raytrace::staticBakeBounds(scene), 0.0f, 1500).volume);
     r.scenarios = resolveScenarios({"day"}, {}, scene);
     r.settings.raysPerProbe = 64;
     r.settings.bounces = 2;
     const ProbeSet set = bakeProbes(scene, r);
     const ShSampler sampler(set, 0, "rooms");
-    const RayScene rs(scene);
+    const pb::raytrace::RayScene rs(scene);
     ShSampleOptions plain, apv;
     plain.leak = apv.leak = ShLeak::Weight;
     apv.apv = true;

@@ -8,7 +8,7 @@
 #include "core/Error.h"
 #include "probes/ShSampler.h"
 #include "probes/bake/Baker.h"
-#include "probes/store/Hash.h"
+#include "core/Hash.h"
 #include "probes/store/ProbeFile.h"
 
 #include <cmath>

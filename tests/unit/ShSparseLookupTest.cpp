@@ -9,10 +9,10 @@
 // equal the dense set's.
 #include "DenseAndSparseBake.h"
 #include "probes/ShSampler.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/StaticTriangles.h"
 #include "probes/bake/Baker.h"
 #include "probes/bake/MidAirSamples.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/placement/AutoVolume.h"
 #include "probes/store/SparseStorage.h"
 #include "scene/SceneLoader.h"
@@ -73,7 +73,7 @@ struct Darkening {
 };
 
 Darkening sparseOverDense(const DenseAndSparse& b, const ProbeSet& sparse, ShLeak leak, int n) {
-    const RayScene rs(b.scene);
+    const pb::raytrace::RayScene rs(b.scene);
     const ProbeSet unfilled = withoutFill(b.sparse);
     const ShSampler d(b.dense, 0, "dense"), s(sparse, 0, "sparse"), z(unfilled, 0, "unfilled");
     ShSampleOptions o;
@@ -112,7 +112,7 @@ TEST_P(ShSparse, IrradianceOnlyProbesKeepTheDenseSh) {
     ASSERT_TRUE(b.sparse.hasSh());
     ASSERT_GT(b.sparse.probeCount() - b.sparse.storedCount() - b.sparse.invalidCount(), 0u)
         << "no irradiance-only probe: vacuous";
-    const RayScene rs(b.scene);
+    const pb::raytrace::RayScene rs(b.scene);
     const ShSampler d(b.dense, 0, "dense"), s(b.sparse, 0, "sparse");
     int lookups = 0;
     for (ShLeak leak : {ShLeak::Weight, ShLeak::ValidityMask}) {

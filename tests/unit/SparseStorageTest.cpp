@@ -11,10 +11,10 @@
 #include "probes/ProbeCounts.h"
 #include "probes/ProbeSampler.h"
 #include "probes/bake/Baker.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/bake/SceneMatch.h"
 #include "probes/placement/AutoVolume.h"
-#include "probes/store/Hash.h"
+#include "core/Hash.h"
 #include "probes/store/MemoryReport.h"
 #include "probes/store/ProbeFile.h"
 #include "probes/store/SparseLayout.h"
@@ -45,7 +45,7 @@ ProbeSet bakeBuiltin(const std::string& name, int maxProbes, bool sparse,
                      FreeSpace freeSpace = FreeSpace::StandIns) {
     const pb::scene::Scene s = pb::scene::makeBuiltinScene(name);
     BakeRequest r;
-    r.volumes.push_back(fitAutoVolume(staticBakeBounds(s), 0.0f, maxProbes).volume);
+    r.volumes.push_back(fitAutoVolume(pb::raytrace::staticBakeBounds(s), 0.0f, maxProbes).volume);
     r.scenarios = resolveScenarios({"day"}, {}, s);
     r.settings.raysPerProbe = 32;
     r.settings.bounces = 1;
@@ -123,7 +123,7 @@ TEST(SparseStorage, KeepsExactlyTheCornersOfSurfaceCells) {
     v.halfExtents = glm::vec3(2.0f);
     v.counts = glm::ivec3(5);
     const glm::vec3 o(-2.0f); // probe (0,0,0)
-    WorldTriangle t{o + glm::vec3(1.2f, 1.3f, 1.4f), o + glm::vec3(1.6f, 1.3f, 1.5f),
+    pb::raytrace::WorldTriangle t{o + glm::vec3(1.2f, 1.3f, 1.4f), o + glm::vec3(1.6f, 1.3f, 1.5f),
                     o + glm::vec3(1.4f, 1.7f, 1.6f), glm::vec3(0, 0, 1)};
     std::vector<std::uint8_t> kept = surfaceCornerProbes(v, true, {t});
     for (int i = 0; i < v.probeCount(); ++i) {
@@ -133,7 +133,7 @@ TEST(SparseStorage, KeepsExactlyTheCornersOfSurfaceCells) {
         EXPECT_EQ(kept[size_t(i)] != 0, corner) << q.x << "," << q.y << "," << q.z;
     }
     // 0.3 cells beyond the +x face: within a root's fade (0.5 cells), outside a child's box.
-    WorldTriangle out = t;
+    pb::raytrace::WorldTriangle out = t;
     out.a.x = out.b.x = out.c.x = 2.3f; // the +x face is at 2, cells are 1 long
     kept = surfaceCornerProbes(v, true, {out});
     EXPECT_EQ(std::count(kept.begin(), kept.end(), 1), 8);
@@ -154,7 +154,7 @@ TEST(SparseStorage, ManyTrianglesMarkTheUnionOfTheirOwnCells) {
     std::mt19937 rng(17);
     // Only the world's -x half holds triangles, so part of the volume stays empty.
     std::uniform_real_distribution<float> pos(-6.0f, 6.0f), half(-6.0f, -1.0f), edge(-0.6f, 0.6f);
-    std::vector<WorldTriangle> tris;
+    std::vector<pb::raytrace::WorldTriangle> tris;
     for (int i = 0; i < 20000; ++i) {
         const glm::vec3 a(half(rng), pos(rng), pos(rng));
         tris.push_back({a, a + glm::vec3(edge(rng), edge(rng), edge(rng)),
@@ -162,7 +162,7 @@ TEST(SparseStorage, ManyTrianglesMarkTheUnionOfTheirOwnCells) {
     }
     const std::vector<std::uint8_t> all = surfaceCornerProbes(v, true, tris);
     std::vector<std::uint8_t> expected(all.size(), 0);
-    for (const WorldTriangle& t : tris) {
+    for (const pb::raytrace::WorldTriangle& t : tris) {
         const std::vector<std::uint8_t> one = surfaceCornerProbes(v, true, {t});
         for (std::size_t i = 0; i < one.size(); ++i)
             expected[i] |= one[i];
@@ -183,7 +183,7 @@ TEST(SparseStorage, AxisAlignedShortcutMarksWhatTheRotationMarks) {
     v.counts = glm::ivec3(17, 13, 21);
     std::mt19937 rng(29);
     std::uniform_real_distribution<float> pos(-5.5f, 5.5f), edge(-0.4f, 0.4f);
-    std::vector<WorldTriangle> tris;
+    std::vector<pb::raytrace::WorldTriangle> tris;
     for (int i = 0; i < 3000; ++i) {
         const glm::vec3 a(pos(rng), pos(rng), pos(rng));
         tris.push_back({a, a + glm::vec3(edge(rng), edge(rng), edge(rng)),
@@ -204,7 +204,7 @@ TEST(SparseStorage, DroppingFarProbesChangesNoSurfaceIrradiance) {
     const pb::scene::Scene scene = pb::scene::makeBuiltinScene("courtyard");
     const ProbeSet& dense = courtyardDense();
     ProbeSet sparse = dense;
-    const std::vector<WorldTriangle> triangles = staticBakeTriangles(scene);
+    const std::vector<pb::raytrace::WorldTriangle> triangles = pb::raytrace::staticBakeTriangles(scene);
     applySparseStorage(sparse, triangles);
     const std::size_t stored = sparse.storedCount(),
                       valid = dense.probeCount() - dense.invalidCount();
@@ -214,7 +214,7 @@ TEST(SparseStorage, DroppingFarProbesChangesNoSurfaceIrradiance) {
     EXPECT_GT(stored, 0u);
 
     std::vector<float> areas;
-    for (const WorldTriangle& t : triangles)
+    for (const pb::raytrace::WorldTriangle& t : triangles)
         areas.push_back(t.area());
     std::discrete_distribution<std::size_t> pick(areas.begin(), areas.end());
     std::mt19937 rng(9);
@@ -222,7 +222,7 @@ TEST(SparseStorage, DroppingFarProbesChangesNoSurfaceIrradiance) {
     ProbeSampler a(dense, 0), b(sparse, 0);
     int lit = 0;
     for (int i = 0; i < 4000; ++i) {
-        const WorldTriangle& t = triangles[pick(rng)];
+        const pb::raytrace::WorldTriangle& t = triangles[pick(rng)];
         float r1 = u(rng), r2 = u(rng);
         if (r1 + r2 > 1.0f) r1 = 1.0f - r1, r2 = 1.0f - r2;
         const glm::vec3 p = t.a + r1 * (t.b - t.a) + r2 * (t.c - t.a);
@@ -241,7 +241,7 @@ TEST(SparseStorage, DroppingFarProbesChangesNoSurfaceIrradiance) {
 TEST(SparseStorage, BakingOnlyTheKeptProbesGivesTheDenseBakeDropped) {
     const pb::scene::Scene s = pb::scene::makeBuiltinScene("courtyard");
     BakeRequest r;
-    ProbeVolume outer = fitAutoVolume(staticBakeBounds(s), 0.0f, 900).volume;
+    ProbeVolume outer = fitAutoVolume(pb::raytrace::staticBakeBounds(s), 0.0f, 900).volume;
     ProbeVolume child = outer;
     child.name = "child";
     child.parent = outer.name;
@@ -259,7 +259,7 @@ TEST(SparseStorage, BakingOnlyTheKeptProbesGivesTheDenseBakeDropped) {
     for (FreeSpace mode : {FreeSpace::StandIns, FreeSpace::Ranked, FreeSpace::Irradiance}) {
     SCOPED_TRACE(freeSpaceName(mode));
     ProbeSet dense = denseBake;
-    applySparseStorage(dense, staticBakeTriangles(s), mode);
+    applySparseStorage(dense, pb::raytrace::staticBakeTriangles(s), mode);
     const std::size_t tiles = memoryReport(dense).total.irradianceOnlyProbes;
     if (mode == FreeSpace::StandIns) {
         EXPECT_EQ(tiles, 0u);
@@ -314,7 +314,7 @@ TEST(SparseStorage, ParentVolumesKeepTheRadianceTheirChildRingsRead) {
     r.settings.bounces = 1;
     r.settings.relocate = false;
     ProbeSet dense = bakeProbes(s, r);
-    applySparseStorage(dense, staticBakeTriangles(s));
+    applySparseStorage(dense, pb::raytrace::staticBakeTriangles(s));
     // x = -2, y = 2.75 (off the free-space lattice: x is odd)
     ASSERT_FALSE(dense.states[0][size_t(parent.probeIndex({1, 2, 2}))].stored);
     ASSERT_TRUE(dense.states[1][size_t(child.probeIndex({1, 1, 1}))].stored); // y = 1.0
@@ -330,7 +330,7 @@ TEST(SparseStorage, ParentVolumesKeepTheRadianceTheirChildRingsRead) {
 TEST(SparseStorage, AbsentProbesReadTheirNearestStoredProbe) {
     const ProbeSet& dense = courtyardDense();
     ProbeSet sparse = dense;
-    applySparseStorage(sparse, staticBakeTriangles(pb::scene::makeBuiltinScene("courtyard")));
+    applySparseStorage(sparse, pb::raytrace::staticBakeTriangles(pb::scene::makeBuiltinScene("courtyard")));
     const ProbeVolume& v = dense.volumes[0];
     const std::vector<int> source =
         fillSources(v, sparse.states[0], sparse.settings.backfaceThreshold);
@@ -473,7 +473,7 @@ TEST(SparseStorage, FileRoundTripStoresOnlyTheKeptTiles) {
     EXPECT_LT(mem.total.storedTotal(), memoryReport(allStored).total.storedTotal());
     // The bake keeps exactly the valid probes among those placement's budget counts.
     const std::vector<std::uint8_t> corners = sparseKeptProbes(
-        sparse.volumes[0], true, staticBakeTriangles(pb::scene::makeBuiltinScene("courtyard")));
+        sparse.volumes[0], true, pb::raytrace::staticBakeTriangles(pb::scene::makeBuiltinScene("courtyard")));
     const ProbeSet& dense = courtyardDense(); // the same bake, stored dense
     for (std::size_t i = 0; i < corners.size(); ++i)
         ASSERT_EQ(sparse.states[0][i].stored, corners[i] && dense.states[0][i].valid) << i;
@@ -495,7 +495,7 @@ TEST(SparseStorage, CorruptStorageRecordIsAClearError) {
     auto broken = [&](std::size_t offset, std::uint8_t value) {
         std::vector<std::uint8_t> b = good;
         b[offset] = value;
-        const std::uint64_t sum = fnv1a64(b.data(), b.size() - 8);
+        const std::uint64_t sum = pb::fnv1a64(b.data(), b.size() - 8);
         std::memcpy(b.data() + b.size() - 8, &sum, 8);
         try {
             parseProbeSet(b, "p.pbp");

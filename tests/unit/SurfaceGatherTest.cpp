@@ -44,7 +44,7 @@ TEST(SurfaceGather, CosineSpiralIsUnitAndCosineDistributed) {
 
 TEST(SurfaceGather, OpenSkyGivesPiTimesSky) {
     pb::scene::Scene s = sunlitFloor(); // the sun lights the floor, not the point's hemisphere
-    RayScene rs(s);
+    pb::raytrace::RayScene rs(s);
     std::vector<GatherPoint> pts{{{0, 0, 0}, {0, 1, 0}}, {{1.5f, 0, -2}, {0, 1, 0}}};
     GatherSettings g;
     g.rays = 256;
@@ -58,7 +58,7 @@ TEST(SurfaceGather, OpenSkyGivesPiTimesSky) {
 TEST(SurfaceGather, EmissiveRoomWithAndWithoutEarlierBounces) {
     const float le = 1.0f, rho = 0.5f;
     pb::scene::Scene s = emissiveRoom(le, rho);
-    RayScene rs(s);
+    pb::raytrace::RayScene rs(s);
     std::vector<GatherPoint> pts{{{0, -1, 0}, {0, 1, 0}}, {{1, 0.3f, 0.2f}, {-1, 0, 0}}};
     GatherSettings g;
     g.rays = 128;
@@ -83,7 +83,7 @@ TEST(SurfaceGather, EmissiveRoomWithAndWithoutEarlierBounces) {
 
 TEST(SurfaceGather, SunlitFloorSeenFromAboveMatchesItsViewFactor) {
     pb::scene::Scene s = sunlitFloor(); // a 6 x 6 slab, top at y = 0, albedo 0.6
-    RayScene rs(s);
+    pb::raytrace::RayScene rs(s);
     const float h = 0.5f;
     std::vector<GatherPoint> pts{{{0, h, 0}, {0, -1, 0}}};
     GatherSettings g;
@@ -100,7 +100,7 @@ TEST(SurfaceGather, SunlitFloorSeenFromAboveMatchesItsViewFactor) {
 
 TEST(SurfaceGather, SameResultOnAnyThreadCount) {
     pb::scene::Scene s = sunlitFloor();
-    RayScene rs(s);
+    pb::raytrace::RayScene rs(s);
     std::vector<GatherPoint> pts;
     for (int i = 0; i < 300; ++i) // more than one batch at 4096 rays
         pts.push_back(
@@ -116,7 +116,7 @@ TEST(SurfaceGather, SameResultOnAnyThreadCount) {
 
 TEST(SurfaceGather, ZeroRaysIsAnError) {
     pb::scene::Scene s = sunlitFloor();
-    RayScene rs(s);
+    pb::raytrace::RayScene rs(s);
     GatherSettings g;
     g.rays = 0;
     EXPECT_THROW(
@@ -130,7 +130,7 @@ TEST(SurfaceGather, ZeroRaysIsAnError) {
 TEST(SurfaceGather, SphereGatherMatchesTheHemisphereGatherPerNormal) {
     const float le = 1.0f;
     pb::scene::Scene room = emissiveRoom(le, 0.5f);
-    RayScene roomRays(room);
+    pb::raytrace::RayScene roomRays(room);
     GatherSettings g;
     g.rays = 1024;
     const std::vector<glm::vec3> axes = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
@@ -142,7 +142,7 @@ TEST(SurfaceGather, SphereGatherMatchesTheHemisphereGatherPerNormal) {
         EXPECT_NEAR(v.g, float(M_PI) * le, 1e-3f);
 
     pb::scene::Scene s = sunlitFloor();
-    RayScene rs(s);
+    pb::raytrace::RayScene rs(s);
     g.rays = 4096;
     const glm::vec3 p(0.0f, 0.5f, 0.0f);
     const std::vector<glm::vec3> sphere = gatherIrradianceSphere(

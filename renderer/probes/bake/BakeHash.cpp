@@ -5,10 +5,10 @@
 
 #include "probes/bake/Baker.h"
 #include "probes/store/SparseStorage.h"
-#include "probes/store/Hash.h"
+#include "core/Hash.h"
 #include "probes/store/ProbeFile.h"
-#include "probes/store/SceneHash.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/SceneHash.h"
+#include "raytrace/RayScene.h"
 
 #include <algorithm>
 
@@ -25,9 +25,9 @@ namespace {
 constexpr std::uint32_t kBakeAlgorithmVersion = 7;
 
 void hashScene(Hasher& h, const scene::Scene& s) {
-    const auto mats = summariseMaterials(s);
+    const auto mats = raytrace::summariseMaterials(s);
     h.pod(std::uint64_t(mats.size()));
-    for (const MaterialSummary& m : mats) {
+    for (const raytrace::MaterialSummary& m : mats) {
         h.pod(m.albedo);
         h.pod(m.emissive);
         h.pod(std::uint8_t(m.doubleSided));
@@ -41,10 +41,10 @@ void hashScene(Hasher& h, const scene::Scene& s) {
         const scene::Primitive& p = s.primitives[size_t(inst.primitive)];
         ++baked;
         h.pod(inst.transform);
-        hashPrimitiveGeometry(h, p);
+        raytrace::hashPrimitiveGeometry(h, p);
     }
     h.pod(baked);
-    hashLights(h, s.lights);
+    raytrace::hashLights(h, s.lights);
 }
 
 } // namespace
@@ -71,7 +71,7 @@ std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& r) {
     h.pod(std::uint64_t(r.scenarios.size()));
     for (const Scenario& s : r.scenarios) {
         h.str(s.name);
-        hashSun(h, s.sun);
+        raytrace::hashSun(h, s.sun);
         h.pod(s.sky.radiance);
     }
     const BakeSettings& b = r.settings;

@@ -3,7 +3,7 @@
 // version, the probe file version and the scene as the bake sees it (materials, static
 // geometry, lights). Exposed so the placement's cache key (placement/PlacementKey.h) hashes
 // the scene exactly as the bake does: a scene edit that re-bakes also re-places.
-#include "probes/store/Hash.h"
+#include "core/Hash.h"
 #include "scene/Scene.h"
 
 namespace pb::probes {

@@ -1,13 +1,13 @@
 #include "probes/bake/BakeOrigin.h"
 
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 
 #include <cmath>
 
 namespace pb::probes {
 
 glm::dvec3 bakeOrigin(const scene::Scene& scene, const std::vector<ProbeVolume>& volumes) {
-    scene::Bounds b = staticBakeBounds(scene);
+    scene::Bounds b = raytrace::staticBakeBounds(scene);
     for (const ProbeVolume& v : volumes)
         for (const glm::vec3& c : v.worldCorners())
             b.extend(c);

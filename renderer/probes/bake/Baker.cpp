@@ -13,7 +13,7 @@
 #include "probes/bake/NoiseRounds.h"
 #include "probes/bake/RadiancePass.h"
 #include "probes/bake/RayDirections.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/store/FreeSpaceTiles.h"
 #include "probes/store/SparseStorage.h"
 
@@ -103,7 +103,7 @@ struct BakeRun {
     const scene::Scene& scene;
     const BakeRequest& req;
     const BakeSettings& cfg;
-    const RayScene& rs;
+    const raytrace::RayScene& rs;
     const int threads;
     const BakeProgressFn& progress;
     ProbeSet set;
@@ -205,7 +205,7 @@ struct RadianceMask {
         : isParent(run.set.volumes.size(), false),
           irradianceOnly(run.req.freeSpace != FreeSpace::StandIns) {
         if (run.req.sparse) {
-            const std::vector<WorldTriangle> triangles = staticBakeTriangles(run.scene);
+            const std::vector<raytrace::WorldTriangle> triangles = raytrace::staticBakeTriangles(run.scene);
             for (size_t v = 0; v < run.set.volumes.size(); ++v)
                 keep.push_back(sparseKeptProbes(run.set.volumes[v], run.parents[v] < 0, triangles));
         }
@@ -499,9 +499,9 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     const auto t0 = Clock::now();
     std::vector<int> parents = validateVolumes(req.volumes, "volumes");
     const int threads = resolveThreadCount(req.threads);
-    std::optional<RayScene> own;
+    std::optional<raytrace::RayScene> own;
     if (!req.rayScene || req.recordRays) own.emplace(scene);
-    const RayScene& rs = own ? *own : *req.rayScene;
+    const raytrace::RayScene& rs = own ? *own : *req.rayScene;
     const double buildSeconds = since(t0);
     if (req.recordRays) own->startRecording();
 

@@ -7,7 +7,7 @@
 //      octahedral borders, nested-ring blend (NestingBlend.h); pass b reads pass b-1
 //   3. quantise to the storage format (the sampler then sees what the GPU will sample)
 #include "probes/ProbeSet.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/store/SparseStorage.h"
 #include "scene/Scene.h"
 
@@ -36,10 +36,10 @@ struct BakeRequest {
     int slabProbes = 0;
     // Benchmark instrumentation (not an input): when set, receives every ray the passes
     // traced, so bench_bake can replay exactly the same rays against bare Embree.
-    std::vector<RecordedRay>* recordRays = nullptr;
+    std::vector<raytrace::RecordedRay>* recordRays = nullptr;
     // Not an input either: trace against this BVH of `scene` instead of building one (the
     // placement's trial bakes bake one scene many times). It must be built from the same scene.
-    const RayScene* rayScene = nullptr;
+    const raytrace::RayScene* rayScene = nullptr;
     // The scenario split (`bake --split scenario`): bake only these indices of `scenarios`
     // (empty: all of them; ascending, no duplicates). A scenario's seed stream is its index in
     // `scenarios`, not its place among these, so each scenario of a partial bake is

@@ -5,7 +5,7 @@
 
 namespace pb::probes {
 
-glm::vec3 directIrradiance(const RayScene& rs, const Scenario& sc,
+glm::vec3 directIrradiance(const raytrace::RayScene& rs, const Scenario& sc,
                            const std::vector<scene::Light>& lights, const glm::vec3& x,
                            const glm::vec3& n, std::uint64_t& shadowRays) {
     const float eps = rs.epsilon();

@@ -7,7 +7,7 @@
 //     E_spot  = E_point * the glTF cone factor clamp(cd*scale + offset, 0, 1)^2
 // with glTF KHR_lights_punctual's range window clamp(1 - (d/range)^4, 0, 1)^2 (range > 0)
 // and scale = 1 / max(1e-3, cos(inner) - cos(outer)), offset = -cos(outer) * scale.
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/Scenario.h"
 
 #include <cstdint>
@@ -17,7 +17,7 @@ namespace pb::probes {
 
 // x: hit point; n: unit normal on the side the ray arrived from. shadowRays is incremented
 // per shadow ray traced.
-glm::vec3 directIrradiance(const RayScene& rs, const Scenario& sc,
+glm::vec3 directIrradiance(const raytrace::RayScene& rs, const Scenario& sc,
                            const std::vector<scene::Light>& lights, const glm::vec3& x,
                            const glm::vec3& n, std::uint64_t& shadowRays);
 

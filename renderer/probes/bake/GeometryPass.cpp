@@ -44,7 +44,7 @@ OffsetBounds offsetBounds(const ProbeVolume& vol, const glm::ivec3& c) {
     return b;
 }
 
-TraceSummary trace(const RayScene& rs, const glm::vec3& origin, const glm::mat3& rot,
+TraceSummary trace(const raytrace::RayScene& rs, const glm::vec3& origin, const glm::mat3& rot,
                    const std::vector<glm::vec3>& dirs, const OffsetBounds& bounds,
                    GeometryScratch& s, std::uint64_t& rays) {
     TraceSummary sum;
@@ -58,7 +58,7 @@ TraceSummary trace(const RayScene& rs, const glm::vec3& origin, const glm::mat3&
     }
     rays += std::uint64_t(n);
     for (int r = 0; r < n; ++r) {
-        const RayHit& h = s.hits[size_t(r)];
+        const raytrace::RayHit& h = s.hits[size_t(r)];
         s.t[size_t(r)] = h.hit() ? h.t : std::numeric_limits<float>::infinity();
         s.backface[size_t(r)] = 0;
         if (!h.hit()) continue;
@@ -80,7 +80,7 @@ TraceSummary trace(const RayScene& rs, const glm::vec3& origin, const glm::mat3&
 
 } // namespace
 
-void bakeProbeGeometry(const RayScene& rs, const ProbeVolume& vol, const glm::ivec3& c,
+void bakeProbeGeometry(const raytrace::RayScene& rs, const ProbeVolume& vol, const glm::ivec3& c,
                        const std::vector<glm::vec3>& dirs, const ProbeConvolution& conv,
                        const BakeSettings& settings, GeometryScratch& s, ProbeState& state,
                        float* visOut, std::uint64_t& rays) {

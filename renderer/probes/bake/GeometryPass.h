@@ -17,7 +17,7 @@
 // counts as 1 (see ProbeConvolution.h).
 #include "probes/bake/ProbeConvolution.h"
 #include "probes/ProbeSet.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 
 #include <cstdint>
 #include <vector>
@@ -28,7 +28,7 @@ constexpr int kMaxRelocationIterations = 3;
 constexpr float kRelocationClearance = 0.2f;
 
 struct GeometryScratch {
-    std::vector<RayHit> hits;         // per ray, before classification
+    std::vector<raytrace::RayHit> hits;         // per ray, before classification
     std::vector<glm::vec3> worldDirs; // per ray, the direction traced
     std::vector<float> t;             // hit distance per ray (inf = miss)
     std::vector<char> backface;       // per ray
@@ -37,7 +37,7 @@ struct GeometryScratch {
 
 // Computes `state` (offset, validity, ratio) and, for a valid probe, the 14x14 visibility
 // interior (mean, meanSq per texel) into visOut. `rays` counts rays traced.
-void bakeProbeGeometry(const RayScene& rs, const ProbeVolume& vol, const glm::ivec3& c,
+void bakeProbeGeometry(const raytrace::RayScene& rs, const ProbeVolume& vol, const glm::ivec3& c,
                        const std::vector<glm::vec3>& localDirs, const ProbeConvolution& conv,
                        const BakeSettings& settings, GeometryScratch& scratch, ProbeState& state,
                        float* visOut, std::uint64_t& rays);

@@ -2,7 +2,7 @@
 
 #include "core/Luminance.h"
 #include "core/ParallelFor.h"
-#include "probes/bake/AliasTable.h"
+#include "raytrace/AliasTable.h"
 #include "probes/bake/DirectLight.h"
 
 #include <algorithm>
@@ -40,7 +40,7 @@ int LitSurfaces::subTriangle(float u, float v, int n) {
     return (i * n + j) * 2 + int(upper);
 }
 
-LitSurfaces::LitSurfaces(const RayScene& rs, const Scenario& sc,
+LitSurfaces::LitSurfaces(const raytrace::RayScene& rs, const Scenario& sc,
                          const std::vector<scene::Light>& lights, int threads,
                          std::uint64_t& shadowRays)
     : rs_(&rs) {
@@ -58,7 +58,7 @@ LitSurfaces::LitSurfaces(const RayScene& rs, const Scenario& sc,
     triangles_.assign(geometryFirst_.back(), TriangleSlots{});
     std::size_t slotCount = 0;
     for (unsigned g = 0; g < rs.geometryCount(); ++g) {
-        const SurfaceInfo& surf = rs.surface(g);
+        const raytrace::SurfaceInfo& surf = rs.surface(g);
         if (surf.albedo == glm::vec3(0.0f)) continue;
         const glm::vec3 albedoOverPi = surf.albedo * float(1.0 / M_PI);
         for (unsigned p = 0; p < rs.triangleCount(g); ++p) {
@@ -123,7 +123,7 @@ LitSurfaces::LitSurfaces(const RayScene& rs, const Scenario& sc,
                             cd.primID, (cd.slot & 1) != 0});
         weights.push_back(power[k]);
     }
-    const AliasTable table(weights);
+    const raytrace::AliasTable table(weights);
     if (table.empty()) {
         entries_.clear();
         return;

@@ -22,10 +22,10 @@
 // The estimate only steers the sampling: a patch whose centre is in shadow gets no samples
 // but is still found by the rays, whose MIS weight there is 1, so the result stays unbiased.
 // Deterministic: the same scene and scenario give the same table, independent of the seed.
-#include "probes/HugePages.h"
+#include "core/HugePages.h"
 #include "probes/Scenario.h"
-#include "probes/bake/AliasTable.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/AliasTable.h"
+#include "raytrace/RayScene.h"
 
 #include <cstdint>
 #include <vector>
@@ -50,7 +50,7 @@ public:
     LitSurfaces() = default;
     // Builds the table for one scenario's sun and the scene's punctual lights (shadow rays
     // counted into shadowRays); threads as parallelFor's.
-    LitSurfaces(const RayScene& rs, const Scenario& sc, const std::vector<scene::Light>& lights,
+    LitSurfaces(const raytrace::RayScene& rs, const Scenario& sc, const std::vector<scene::Light>& lights,
                 int threads, std::uint64_t& shadowRays);
 
     bool empty() const { return entries_.empty(); }
@@ -120,12 +120,12 @@ private:
 
     // The arrays read at random per hit and per sample: several MiB each on a large scene, so
     // on huge pages (HugePages.h), as the sampler's probe tiles.
-    const RayScene* rs_ = nullptr;
+    const raytrace::RayScene* rs_ = nullptr;
     HugePageVector<Entry> entries_;
     HugePageVector<TriangleSlots> triangles_; // all geometries' triangles, in id order
     std::vector<std::size_t> geometryFirst_;  // [geomID]: its first triangle; one past the end
     HugePageVector<float> slotPdf_;           // the entry's pdfArea, or 0
-    AliasTable pick_; // entries by power
+    raytrace::AliasTable pick_; // entries by power
     std::size_t patches_ = 0;
 };
 

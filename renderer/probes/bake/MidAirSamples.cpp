@@ -6,11 +6,11 @@
 
 namespace pb::probes {
 
-bool insideGeometry(const RayScene& rs, const glm::vec3& p, float sealedBelow) {
+bool insideGeometry(const raytrace::RayScene& rs, const glm::vec3& p, float sealedBelow) {
     static const std::vector<glm::vec3> sphere = sphericalFibonacci(32);
     bool open = false;
     for (const glm::vec3& d : sphere) {
-        const RayHit h = rs.intersect(p, d);
+        const raytrace::RayHit h = rs.intersect(p, d);
         open = open || !h.hit() || h.t > sealedBelow;
         if (!h.hit() || rs.surface(h.geomID).doubleSided) continue;
         if (glm::dot(rs.faceNormal(h.geomID, h.primID), d) > 0.0f) return true;
@@ -18,7 +18,7 @@ bool insideGeometry(const RayScene& rs, const glm::vec3& p, float sealedBelow) {
     return !open;
 }
 
-std::vector<glm::vec3> midAirSamples(const RayScene& rs, const std::vector<ProbeVolume>& volumes,
+std::vector<glm::vec3> midAirSamples(const raytrace::RayScene& rs, const std::vector<ProbeVolume>& volumes,
                                      int count, float sealedBelow, std::uint64_t seed) {
     std::vector<glm::vec3> out;
     std::vector<const ProbeVolume*> roots;

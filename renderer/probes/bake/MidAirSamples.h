@@ -6,7 +6,7 @@
 // in (every one of the 32 rays hits within `sealedBelow`: inside a double-sided solid, which
 // has no back face, or in a gap no object fits). Deterministic for a given seed.
 #include "probes/ProbeVolume.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 
 #include <cstdint>
 #include <vector>
@@ -14,10 +14,10 @@
 namespace pb::probes {
 
 // True when the point lies inside geometry or is sealed in (the tests above).
-bool insideGeometry(const RayScene& rs, const glm::vec3& p, float sealedBelow);
+bool insideGeometry(const raytrace::RayScene& rs, const glm::vec3& p, float sealedBelow);
 
 // Up to `count` points (fewer when most of the boxes are solid: 8 * count tries).
-std::vector<glm::vec3> midAirSamples(const RayScene& rs, const std::vector<ProbeVolume>& volumes,
+std::vector<glm::vec3> midAirSamples(const raytrace::RayScene& rs, const std::vector<ProbeVolume>& volumes,
                                      int count, float sealedBelow,
                                      std::uint64_t seed = 0xA1125EEDu);
 

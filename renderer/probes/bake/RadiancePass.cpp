@@ -58,7 +58,7 @@ void addToSh(const glm::vec3& c, const glm::vec3& local, glm::vec3* sh) {
 
 // Solid-angle density of sampling direction `d` (unit) through emitter triangle k hit at
 // distance t: pdfArea * t^2 / |cos_l|; infinite at grazing angles.
-float emitterPdf(const EmitterTable& table, int k, const glm::vec3& d, float t) {
+float emitterPdf(const raytrace::EmitterTable& table, int k, const glm::vec3& d, float t) {
     const float cosL = std::fabs(glm::dot(table.triangle(k).normal, d));
     if (!(cosL > 1e-6f)) return std::numeric_limits<float>::infinity();
     return table.pdfArea(k) * t * t / cosL;
@@ -85,7 +85,7 @@ void RadianceSlab::reset(std::size_t probes, int rays) {
     lightSh_.assign(probes * kShL2Coefficients, glm::vec3(0.0f));
 }
 
-void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& sc,
+void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const Scenario& sc,
                          const std::vector<scene::Light>& lights, const glm::mat3& rot,
                          const glm::vec3& origin, const std::vector<glm::vec3>& dirs,
                          const ProbeSampler* previous, RayCounters& counters,
@@ -95,12 +95,12 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
     std::uint32_t* keys = keys_.data() + first;
     std::uint32_t pendingCount = 0;
     const float invPi = float(1.0 / M_PI);
-    const EmitterTable& emitters = rs.emitters();
+    const raytrace::EmitterTable& emitters = rs.emitters();
     const float nPu = float(n) * kUniformSpherePdf;
     // All rays first, then the shading: what the shading reads from the lit-surface table is
     // prefetched while the following rays are traced (results are per ray: the order of the
     // calls does not matter). The normal and barycentrics come with the hit (RayHit).
-    RayHit* hits = hits_.data() + first;
+    raytrace::RayHit* hits = hits_.data() + first;
     for (std::size_t i = 0; i < n; ++i) {
         hits[i] = rs.intersect(origin, rot * dirs[i]);
         if (nee.lit && hits[i].hit()) nee.lit->prefetchTriangle(hits[i].geomID, hits[i].primID);
@@ -125,7 +125,7 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
     std::int64_t* litSlots = litSlots_.data() + first;
     if (ml > 0) {
         for (std::size_t i = 0; i < n; ++i) {
-            const RayHit& h = hits[i];
+            const raytrace::RayHit& h = hits[i];
             litSlots[i] = -1;
             if (!h.hit() || rs.surface(h.geomID).albedo == glm::vec3(0.0f)) continue;
             const glm::vec3 d = rot * dirs[i];
@@ -137,12 +137,12 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
     }
     for (std::size_t i = 0; i < n; ++i) {
         const glm::vec3 d = rot * dirs[i];
-        const RayHit& h = hits[i];
+        const raytrace::RayHit& h = hits[i];
         glm::vec3 L;
         if (!h.hit()) {
             L = sc.sky.radiance;
         } else {
-            const SurfaceInfo& surf = rs.surface(h.geomID);
+            const raytrace::SurfaceInfo& surf = rs.surface(h.geomID);
             glm::vec3 nrm = rs.hitNormal(h);
             bool back = glm::dot(nrm, d) > 0.0f;
             if (back && !surf.doubleSided) {
@@ -192,8 +192,8 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
     float* y2 = lightY2_.data() + slot * kIrradianceInteriorTexels;
     for (int j = 0; j < m; ++j) {
         const float u0 = uniformFloat(state), u1 = uniformFloat(state), u2 = uniformFloat(state);
-        const EmitterSample s = emitters.sample(u0, u1, u2);
-        const EmissiveTriangle& tri = emitters.triangle(s.triangle);
+        const raytrace::EmitterSample s = emitters.sample(u0, u1, u2);
+        const raytrace::EmissiveTriangle& tri = emitters.triangle(s.triangle);
         glm::vec3 w = s.point - origin;
         const float dist = glm::length(w);
         if (!(dist > 0.0f)) continue;
@@ -211,7 +211,7 @@ void RadianceSlab::trace(std::size_t slot, const RayScene& rs, const Scenario& s
     }
 }
 
-void RadianceSlab::traceLitSamples(std::size_t slot, const RayScene& rs, const Scenario& sc,
+void RadianceSlab::traceLitSamples(std::size_t slot, const raytrace::RayScene& rs, const Scenario& sc,
                                    const std::vector<scene::Light>& lights, const glm::mat3& rot,
                                    const glm::vec3& origin, const EmitterSampling& nee,
                                    std::uint64_t probeKey, RayCounters& counters) {

@@ -19,12 +19,12 @@
 // the same pure function of its hit as in a per-ray loop, so the result is bit for bit the
 // same, for any slab size and thread count.
 #include "core/ParallelFor.h"
-#include "probes/HugePages.h"
+#include "core/HugePages.h"
 #include "probes/ProbeSampler.h"
 #include "probes/Scenario.h"
 #include "probes/bake/LitSurfaces.h"
 #include "probes/bake/ProbeConvolution.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 
 #include <cstdint>
 #include <vector>
@@ -77,7 +77,7 @@ public:
     // rays from probeWorld (directions localDirs rotated by volumeRotation); with a
     // `previous` pass, hits that need E_indirect are queued for lookUp with their locality
     // key (computed here, on the tracing threads, so lookUp's sort stays a short serial step).
-    void trace(std::size_t slot, const RayScene& rs, const Scenario& sc,
+    void trace(std::size_t slot, const raytrace::RayScene& rs, const Scenario& sc,
                const std::vector<scene::Light>& lights, const glm::mat3& volumeRotation,
                const glm::vec3& probeWorld, const std::vector<glm::vec3>& localDirs,
                const ProbeSampler* previous, RayCounters& counters,
@@ -107,7 +107,7 @@ public:
 
 private:
     // trace()'s lit-surface samples (EmitterSampling::litSamples).
-    void traceLitSamples(std::size_t slot, const RayScene& rs, const Scenario& sc,
+    void traceLitSamples(std::size_t slot, const raytrace::RayScene& rs, const Scenario& sc,
                          const std::vector<scene::Light>& lights, const glm::mat3& rot,
                          const glm::vec3& origin, const EmitterSampling& nee,
                          std::uint64_t probeKey, RayCounters& counters);
@@ -117,7 +117,7 @@ private:
         std::uint32_t ray; // slot * rays + ray index
     };
     int rays_ = 0;
-    std::vector<RayHit> hits_;                     // per ray, slot-major
+    std::vector<raytrace::RayHit> hits_;                     // per ray, slot-major
     std::vector<std::int64_t> litSlots_;           // per ray: LitSurfaces::slotOf of its hit
     std::vector<glm::vec4> radiance_;              // per ray, slot-major: RGB + unused
     // Pending hits, `rays_` places per slot (slot-major), the first pendingCount_[slot] used;

@@ -2,8 +2,8 @@
 
 #include "core/Luminance.h"
 #include "probes/ProbeSampler.h"
-#include "probes/StaticTriangles.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/StaticTriangles.h"
+#include "raytrace/RayScene.h"
 #include "probes/bake/SurfaceSamples.h"
 
 #include <algorithm>
@@ -31,10 +31,10 @@ double meanOf(const std::vector<double>& v) {
 
 SeedDifference seedDifference(const scene::Scene& scene, const ProbeSet& a, const ProbeSet& b,
                               int count, const scene::Bounds* region) {
-    const RayScene rs(scene);
+    const raytrace::RayScene rs(scene);
     const float diag = glm::length(rs.bounds().size());
     const std::vector<GatherPoint> points =
-        surfaceSamples(staticBakeTriangles(scene), rs, count, 0.02f * diag);
+        surfaceSamples(raytrace::staticBakeTriangles(scene), rs, count, 0.02f * diag);
     const ProbeSampler sa(a, 0), sb(b, 0);
     std::vector<double> rel, lum;
     for (const GatherPoint& p : points) {

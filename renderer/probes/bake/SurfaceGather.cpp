@@ -54,7 +54,7 @@ void gatherInBatches(std::size_t points, int rays, int threads, const ProbeSampl
 
 } // namespace
 
-std::vector<glm::vec3> gatherIrradiance(const RayScene& rs, const Scenario& sc,
+std::vector<glm::vec3> gatherIrradiance(const raytrace::RayScene& rs, const Scenario& sc,
                                         const std::vector<scene::Light>& lights,
                                         const std::vector<GatherPoint>& points,
                                         const ProbeSampler* indirect, const GatherSettings& g) {
@@ -85,7 +85,7 @@ std::vector<glm::vec3> gatherIrradiance(const RayScene& rs, const Scenario& sc,
     return out;
 }
 
-std::vector<glm::vec3> gatherIrradianceSphere(const RayScene& rs, const Scenario& sc,
+std::vector<glm::vec3> gatherIrradianceSphere(const raytrace::RayScene& rs, const Scenario& sc,
                                               const std::vector<scene::Light>& lights,
                                               const std::vector<glm::vec3>& points,
                                               const std::vector<glm::vec3>& normals,

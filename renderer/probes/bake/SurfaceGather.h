@@ -14,7 +14,7 @@
 // gather that matches it reads a (B-1)-bounce bake: only the last bounce is gathered exactly,
 // the earlier ones still come through probes (dimmed by one albedo).
 #include "probes/ProbeSampler.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/Scenario.h"
 
 #include <cstdint>
@@ -33,7 +33,7 @@ struct GatherSettings {
 };
 
 // One irradiance per point (RGB, the scene's linear units); deterministic for any thread count.
-std::vector<glm::vec3> gatherIrradiance(const RayScene& rs, const Scenario& sc,
+std::vector<glm::vec3> gatherIrradiance(const raytrace::RayScene& rs, const Scenario& sc,
                                         const std::vector<scene::Light>& lights,
                                         const std::vector<GatherPoint>& points,
                                         const ProbeSampler* indirect, const GatherSettings& g);
@@ -44,7 +44,7 @@ std::vector<glm::vec3> gatherIrradiance(const RayScene& rs, const Scenario& sc,
 // E(n) = pi * sum_r max(0, n.d_r) L_r / sum_r max(0, n.d_r) (the bake's own convolution: exact
 // for uniform radiance). Result [point * normals.size() + k]; deterministic for any thread
 // count.
-std::vector<glm::vec3> gatherIrradianceSphere(const RayScene& rs, const Scenario& sc,
+std::vector<glm::vec3> gatherIrradianceSphere(const raytrace::RayScene& rs, const Scenario& sc,
                                               const std::vector<scene::Light>& lights,
                                               const std::vector<glm::vec3>& points,
                                               const std::vector<glm::vec3>& normals,

@@ -6,7 +6,7 @@
 
 namespace pb::probes {
 
-std::vector<GatherPoint> surfaceSamples(const std::vector<WorldTriangle>& tris, const RayScene& rs,
+std::vector<GatherPoint> surfaceSamples(const std::vector<raytrace::WorldTriangle>& tris, const raytrace::RayScene& rs,
                                         int count, float sealedBelow, std::uint64_t seed) {
     std::vector<GatherPoint> out;
     if (tris.empty() || count <= 0) return out;
@@ -21,7 +21,7 @@ std::vector<GatherPoint> surfaceSamples(const std::vector<WorldTriangle>& tris, 
         const double r = double(uniformFloat(state)) * sum;
         std::size_t t = std::size_t(std::lower_bound(cdf.begin(), cdf.end(), r) - cdf.begin());
         if (t >= tris.size()) t = tris.size() - 1;
-        const WorldTriangle& w = tris[t];
+        const raytrace::WorldTriangle& w = tris[t];
         float u = uniformFloat(state), v = uniformFloat(state);
         if (u + v > 1.0f) {
             u = 1.0f - u;
@@ -33,7 +33,7 @@ std::vector<GatherPoint> surfaceSamples(const std::vector<WorldTriangle>& tris, 
         bool open = false;
         for (const glm::vec3& d : sphere) {
             if (glm::dot(d, n) <= 0.0f) continue;
-            RayHit h = rs.intersect(p, d);
+            raytrace::RayHit h = rs.intersect(p, d);
             if (!h.hit() || h.t > sealedBelow) {
                 open = true;
                 break;

@@ -5,8 +5,8 @@
 // hair (1e-4 of the scene's diagonal). Points sealed inside geometry (every one of 16 rays
 // over the hemisphere hits within `sealedBelow`) are skipped: nothing shades them.
 // Deterministic for a given seed.
-#include "probes/bake/RayScene.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/RayScene.h"
+#include "raytrace/StaticTriangles.h"
 #include "probes/bake/SurfaceGather.h"
 
 #include <cstdint>
@@ -15,8 +15,8 @@
 namespace pb::probes {
 
 // Up to `count` points (fewer when most candidates are sealed: 4 * count tries).
-std::vector<GatherPoint> surfaceSamples(const std::vector<WorldTriangle>& triangles,
-                                        const RayScene& rs, int count, float sealedBelow,
+std::vector<GatherPoint> surfaceSamples(const std::vector<raytrace::WorldTriangle>& triangles,
+                                        const raytrace::RayScene& rs, int count, float sealedBelow,
                                         std::uint64_t seed = 0xB0A710C5u);
 
 } // namespace pb::probes

@@ -48,7 +48,7 @@ struct Lattice {
 // the finest cells shifted down). Sampled: ~2 points per finest cell length on each triangle
 // plus its corners, deterministic per triangle.
 std::vector<std::vector<std::uint64_t>> occupiedCells(const Lattice& L,
-                                                      const std::vector<WorldTriangle>& tris) {
+                                                      const std::vector<raytrace::WorldTriangle>& tris) {
     const glm::dvec3 cell = L.cellSize(L.levels);
     const double minCell = std::min(cell.x, std::min(cell.y, cell.z));
     const glm::ivec3 nf = L.cells(L.levels);
@@ -61,7 +61,7 @@ std::vector<std::vector<std::uint64_t>> occupiedCells(const Lattice& L,
         finest.push_back(c);
     };
     for (std::size_t t = 0; t < tris.size(); ++t) {
-        const WorldTriangle& w = tris[t];
+        const raytrace::WorldTriangle& w = tris[t];
         add(w.a);
         add(w.b);
         add(w.c);
@@ -109,7 +109,7 @@ std::vector<std::vector<std::uint64_t>> occupiedCells(const Lattice& L,
 }
 
 // Harmonic-mean distance to surfaces from each point (keys sorted, unique).
-void harmonicMeanDistances(const RayScene& rays, const Lattice& L,
+void harmonicMeanDistances(const raytrace::RayScene& rays, const Lattice& L,
                            const std::vector<std::uint64_t>& keys,
                            const std::vector<glm::vec3>& dirs, int threads,
                            std::unordered_map<std::uint64_t, float>& out) {
@@ -119,7 +119,7 @@ void harmonicMeanDistances(const RayScene& rays, const Lattice& L,
         glm::vec3 p = L.pointFromKey(keys[i]);
         double inverseSum = 0.0;
         for (const glm::vec3& d : dirs) {
-            RayHit h = rays.intersect(p, d);
+            raytrace::RayHit h = rays.intersect(p, d);
             if (h.hit()) inverseSum += 1.0 / double(std::max(h.t, minDistance));
         }
         hm[i] = inverseSum > 0.0 ? float(double(dirs.size()) / inverseSum)
@@ -148,8 +148,8 @@ ProbeVolume boxVolume(const Lattice& L, int level, const glm::ivec3& lo, const g
 
 } // namespace
 
-AdaptivePlacement placeAdaptiveVolumes(const RayScene& rays,
-                                       const std::vector<WorldTriangle>& triangles,
+AdaptivePlacement placeAdaptiveVolumes(const raytrace::RayScene& rays,
+                                       const std::vector<raytrace::WorldTriangle>& triangles,
                                        const scene::Bounds& bounds, const AdaptiveOptions& o) {
     if (!(o.spacing > 0.0f) || !std::isfinite(o.spacing))
         throw Error("--volumes auto: the finest spacing must be a positive number");

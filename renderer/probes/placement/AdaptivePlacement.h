@@ -24,8 +24,8 @@
 // the same scene and options give the same volumes for any thread count.
 #include "probes/placement/AutoVolume.h"
 #include "probes/ProbeVolume.h"
-#include "probes/bake/RayScene.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/RayScene.h"
+#include "raytrace/StaticTriangles.h"
 
 #include <vector>
 
@@ -56,8 +56,8 @@ struct AdaptivePlacement {
 };
 
 // Throws pb::Error for empty bounds or options out of range.
-AdaptivePlacement placeAdaptiveVolumes(const RayScene& rays,
-                                       const std::vector<WorldTriangle>& triangles,
+AdaptivePlacement placeAdaptiveVolumes(const raytrace::RayScene& rays,
+                                       const std::vector<raytrace::WorldTriangle>& triangles,
                                        const scene::Bounds& staticBounds,
                                        const AdaptiveOptions& options);
 

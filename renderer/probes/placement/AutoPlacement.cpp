@@ -4,7 +4,7 @@
 #include "probes/placement/LatticeAlignment.h"
 #include "probes/store/MemoryReport.h"
 #include "probes/placement/PlacementError.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/store/FreeSpaceTiles.h"
 #include "probes/store/SparseStorage.h"
 
@@ -37,7 +37,7 @@ std::string budgetOption(double bytes) {
 class AutoPlacer {
 public:
     AutoPlacer(const scene::Scene& scene, const AutoPlacementRequest& req)
-        : scene_(scene), req_(req), bounds_(staticBakeBounds(scene)),
+        : scene_(scene), req_(req), bounds_(raytrace::staticBakeBounds(scene)),
           adaptive_(req.mode == AutoMode::Adaptive),
           option_(adaptive_ ? "--volumes auto" : "--volumes auto-uniform"),
           // `auto` keeps probe planes off the boundary surfaces; `auto-uniform` is the naive fit.
@@ -95,9 +95,9 @@ private:
     // The triangles (adaptive tiers and sparse counts need them), the ray scene, and for
     // `auto` without a spacing the default start and budget.
     void prepare() {
-        if (adaptive_ || req_.sparse) triangles_ = staticBakeTriangles(scene_);
+        if (adaptive_ || req_.sparse) triangles_ = raytrace::staticBakeTriangles(scene_);
         if (!adaptive_) return;
-        rays_ = std::make_unique<RayScene>(scene_);
+        rays_ = std::make_unique<raytrace::RayScene>(scene_);
         if (spacing_ > 0.0f) return;
         // Default: the memory of the default uniform grid, spent where the scene needs it,
         // starting from half the uniform spacing near surfaces.
@@ -389,8 +389,8 @@ private:
     double budget_; // the request's, or the default one (defaultBudget_)
     bool reserved_ = false; // the free-space tiles' share is kept out of the placement's budget
     bool defaultBudget_ = false;
-    std::vector<WorldTriangle> triangles_;
-    std::unique_ptr<RayScene> rays_;
+    std::vector<raytrace::WorldTriangle> triangles_;
+    std::unique_ptr<raytrace::RayScene> rays_;
     int placements_ = 0;
     std::string capNote_; // the first uniform fit's note (its spacing was capped)
 };

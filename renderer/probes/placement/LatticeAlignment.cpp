@@ -4,11 +4,11 @@
 
 namespace pb::probes {
 
-float surfaceOnProbePlanes(const ProbeVolume& v, const std::vector<WorldTriangle>& triangles) {
+float surfaceOnProbePlanes(const ProbeVolume& v, const std::vector<raytrace::WorldTriangle>& triangles) {
     const glm::mat3 toLocal = glm::transpose(v.localToWorldRotation());
     const glm::vec3 cell = v.cellSize();
     double total = 0.0, on = 0.0;
-    for (const WorldTriangle& t : triangles) {
+    for (const raytrace::WorldTriangle& t : triangles) {
         const glm::vec3 centroid = v.toLocal((t.a + t.b + t.c) / 3.0f);
         if (!v.contains(v.toWorld(centroid))) continue;
         const double area = double(t.area());

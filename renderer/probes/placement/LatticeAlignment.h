@@ -5,7 +5,7 @@
 // irradiance error of such lattices at 2-3x that of a lattice shifted by part of a cell
 // (bench/README.md "Probe placement").
 #include "probes/ProbeVolume.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/StaticTriangles.h"
 
 #include <vector>
 
@@ -21,6 +21,6 @@ constexpr float kOnPlaneCells = 0.15f;
 // The area-weighted share (0..1) of the triangles that are near-perpendicular to one of the
 // volume's axes and lie within kOnPlaneCells of one of its probe planes along that axis
 // (weighted down linearly with the distance). Only triangles inside the volume count.
-float surfaceOnProbePlanes(const ProbeVolume& volume, const std::vector<WorldTriangle>& triangles);
+float surfaceOnProbePlanes(const ProbeVolume& volume, const std::vector<raytrace::WorldTriangle>& triangles);
 
 } // namespace pb::probes

@@ -10,14 +10,14 @@ namespace pb::probes {
 namespace {
 
 // The surface right below p (a ray down from `above` over p), or a miss.
-RayHit surfaceBelow(const RayScene& rs, const glm::vec3& p, float above) {
+raytrace::RayHit surfaceBelow(const raytrace::RayScene& rs, const glm::vec3& p, float above) {
     return rs.intersect(p + glm::vec3(0, above, 0), glm::vec3(0, -1, 0));
 }
 
 // A floor seen from above: an upward face, or a double-sided face wound downward (its other
 // side faces up and is rendered; Sponza's court floor, whose missing lines hid the rings of
 // issue 24 from bench_lattice).
-bool facesUp(const RayScene& rs, const RayHit& h) {
+bool facesUp(const raytrace::RayScene& rs, const raytrace::RayHit& h) {
     const float y = rs.faceNormal(h.geomID, h.primID).y;
     return y > 0.99f || (y < -0.99f && rs.surface(h.geomID).doubleSided);
 }
@@ -35,7 +35,7 @@ double powerAt(const std::vector<double>& x, float step, double frequency) {
 
 } // namespace
 
-std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples, float step,
+std::vector<FloorLine> findFloorLines(const raytrace::RayScene& rs, int count, int samples, float step,
                                       std::uint64_t seed, float startBelow) {
     std::vector<FloorLine> lines;
     const scene::Bounds b = rs.bounds();
@@ -54,18 +54,18 @@ std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples
                           b.min.z + uniformFloat(state) * (b.max.z - b.min.z));
         // From a random height down to the first upward surface: a floor of any storey, a
         // roof, a table top; the line must then stay on it.
-        const RayHit first = rs.intersect(p, glm::vec3(0, -1, 0));
+        const raytrace::RayHit first = rs.intersect(p, glm::vec3(0, -1, 0));
         if (!first.hit()) continue;
         const float height = p.y - first.t;
         bool ok = true;
         for (int i = 0; i < samples && ok; ++i) {
             const glm::vec3 q = glm::vec3(p.x, height, p.z) + axis * (step * float(i));
-            const RayHit h = surfaceBelow(rs, q, clearance);
+            const raytrace::RayHit h = surfaceBelow(rs, q, clearance);
             ok = h.hit() && std::fabs(h.t - clearance) <= flat && facesUp(rs, h);
             // Open above: the first thing straight up is a ceiling's front (or nothing), at
             // least the clearance away; its back would mean the point is inside a solid (a
             // floor running under a box). A double-sided face has no back.
-            const RayHit up = rs.intersect(q + glm::vec3(0, lift, 0), glm::vec3(0, 1, 0));
+            const raytrace::RayHit up = rs.intersect(q + glm::vec3(0, lift, 0), glm::vec3(0, 1, 0));
             ok = ok &&
                  (!up.hit() || (up.t > clearance && (rs.faceNormal(up.geomID, up.primID).y < 0.0f ||
                                                      rs.surface(up.geomID).doubleSided)));

@@ -9,7 +9,7 @@
 //                        at the frequencies 2 and 3 bins either side (detrended, Hann window).
 // A lookup without a lattice pattern scores about 1 (noise and slow trends spread evenly);
 // the uniform grid over Sponza's floor scored 5-28 when the issue was filed.
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 
 #include <cstdint>
 #include <limits>
@@ -36,7 +36,7 @@ struct FloorLine {
 // tries at most.
 // Starts above `startBelow` are not drawn: a height a little over a storey's floor keeps the
 // lines on that storey (the roofs of a tall scene would otherwise take most of them).
-std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples, float step,
+std::vector<FloorLine> findFloorLines(const raytrace::RayScene& rs, int count, int samples, float step,
                                       std::uint64_t seed = 0x11A77ECEu,
                                       float startBelow = std::numeric_limits<float>::infinity());
 

@@ -5,7 +5,7 @@
 #include "probes/bake/Baker.h"
 #include "probes/placement/IrradianceError.h"
 #include "probes/ProbeSampler.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/StaticTriangles.h"
 #include "probes/bake/SurfaceSamples.h"
 
 namespace pb::probes {
@@ -20,13 +20,13 @@ void trialNoise(BakeSettings& s) {
 }
 } // namespace
 
-PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const RayScene& rs,
+PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const raytrace::RayScene& rs,
                                                const Scenario& scenario, float sealedBelow,
                                                float truthSpacing,
                                                const PlacementErrorSettings& settings)
     : scene_(scene), rays_(rs), scenario_(scenario), settings_(settings) {
     points_ =
-        surfaceSamples(staticBakeTriangles(scene), rs, settings.points, sealedBelow, settings.seed);
+        surfaceSamples(raytrace::staticBakeTriangles(scene), rs, settings.points, sealedBelow, settings.seed);
     if (points_.empty())
         throw Error("placement error estimate: the scene has no open static surface");
     if (settings.bounces < 1) throw Error("placement error estimate: bounces must be at least 1");
@@ -38,7 +38,7 @@ PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const 
         return;
     }
     BakeRequest req;
-    req.volumes = {fitAutoVolume(staticBakeBounds(scene), truthSpacing, kAutoMaxProbes,
+    req.volumes = {fitAutoVolume(raytrace::staticBakeBounds(scene), truthSpacing, kAutoMaxProbes,
                                  AutoLattice::HalfCellMargin)
                        .volume};
     req.scenarios = {scenario};

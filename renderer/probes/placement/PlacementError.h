@@ -18,7 +18,7 @@
 // the second bounce lights dominate the error, and the ranking of shifts changed on the
 // space-ship hallway. Built once per scene and scenario; deterministic for any thread count.
 #include "probes/ProbeVolume.h"
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 #include "probes/Scenario.h"
 #include "probes/bake/SurfaceGather.h"
 #include "scene/Scene.h"
@@ -44,7 +44,7 @@ public:
     // outlive the estimate). sealedBelow: surface samples whose hemisphere is closed within
     // this distance are skipped (SurfaceSamples.h). truthSpacing: the grid spacing of the
     // truth's earlier bounces. Throws pb::Error for a scene without static surface.
-    PlacementErrorEstimate(const scene::Scene& scene, const RayScene& rays,
+    PlacementErrorEstimate(const scene::Scene& scene, const raytrace::RayScene& rays,
                            const Scenario& scenario, float sealedBelow, float truthSpacing,
                            const PlacementErrorSettings& settings = {});
     // The candidate's mean relative error (sparse: stored as `bake --sparse` stores it).
@@ -53,7 +53,7 @@ public:
 
 private:
     const scene::Scene& scene_;
-    const RayScene& rays_; // one BVH for every trial bake
+    const raytrace::RayScene& rays_; // one BVH for every trial bake
     Scenario scenario_;
     PlacementErrorSettings settings_;
     std::vector<GatherPoint> points_;

@@ -1,7 +1,7 @@
 #include "probes/placement/PlacementKey.h"
 
 #include "probes/bake/BakeHash.h"
-#include "probes/store/SceneHash.h"
+#include "raytrace/SceneHash.h"
 
 namespace pb::probes {
 
@@ -28,7 +28,7 @@ std::uint64_t autoPlacementKey(const scene::Scene& scene, const AutoPlacementReq
     h.pod(std::uint8_t(r.lighting.has_value()));
     if (r.lighting) {
         h.str(r.lighting->name);
-        hashSun(h, r.lighting->sun);
+        raytrace::hashSun(h, r.lighting->sun);
         h.pod(r.lighting->sky.radiance);
     }
     h.pod(std::int32_t(r.bounces));

@@ -3,7 +3,7 @@
 #include "core/Error.h"
 #include "core/FileIO.h"
 #include "probes/store/BinaryIO.h"
-#include "probes/store/Hash.h"
+#include "core/Hash.h"
 #include "probes/StorageScale.h"
 #include "probes/store/SparseLayout.h"
 

@@ -4,7 +4,7 @@
 #include "core/FileIO.h"
 #include "probes/store/BinaryIO.h"
 #include "probes/store/FreeSpaceTiles.h"
-#include "probes/store/Hash.h"
+#include "core/Hash.h"
 #include "probes/store/ProbeFile.h"
 #include "probes/store/SparseStorage.h"
 

@@ -54,9 +54,9 @@ public:
           // rounding decides the cell.
           eps_(kSurfaceCellMargin * cell_), cells_(glm::max(v.counts - 1, glm::ivec3(1))) {}
 
-    void mark(const WorldTriangle* first, const WorldTriangle* last,
+    void mark(const raytrace::WorldTriangle* first, const raytrace::WorldTriangle* last,
               std::vector<std::uint8_t>& needed) const {
-        for (const WorldTriangle* wt = first; wt != last; ++wt) {
+        for (const raytrace::WorldTriangle* wt = first; wt != last; ++wt) {
             const glm::vec3 t[3] = {local(wt->a), local(wt->b), local(wt->c)};
             const glm::vec3 tLo = glm::min(t[0], glm::min(t[1], t[2]));
             const glm::vec3 tHi = glm::max(t[0], glm::max(t[1], t[2]));
@@ -125,7 +125,7 @@ constexpr std::size_t kTrianglesPerItem = 8192;
 } // namespace
 
 std::vector<std::uint8_t> surfaceCornerProbes(const ProbeVolume& v, bool root,
-                                              const std::vector<WorldTriangle>& triangles) {
+                                              const std::vector<raytrace::WorldTriangle>& triangles) {
     const std::size_t probes = std::size_t(v.probeCount());
     const SurfaceCells cells(v, root);
     const std::size_t items = (triangles.size() + kTrianglesPerItem - 1) / kTrianglesPerItem;
@@ -159,7 +159,7 @@ std::vector<std::uint8_t> freeSpaceLatticeProbes(const ProbeVolume& v) {
 }
 
 std::vector<std::uint8_t> sparseKeptProbes(const ProbeVolume& v, bool root,
-                                           const std::vector<WorldTriangle>& triangles) {
+                                           const std::vector<raytrace::WorldTriangle>& triangles) {
     std::vector<std::uint8_t> keep = surfaceCornerProbes(v, root, triangles);
     const std::vector<std::uint8_t> lattice = freeSpaceLatticeProbes(v);
     for (std::size_t i = 0; i < keep.size(); ++i)
@@ -167,7 +167,7 @@ std::vector<std::uint8_t> sparseKeptProbes(const ProbeVolume& v, bool root,
     return keep;
 }
 
-std::size_t freeSpaceOnlyProbes(const ProbeSet& set, const std::vector<WorldTriangle>& triangles) {
+std::size_t freeSpaceOnlyProbes(const ProbeSet& set, const std::vector<raytrace::WorldTriangle>& triangles) {
     const std::vector<int> parents = validateVolumes(set.volumes, "sparse storage");
     std::size_t n = 0;
     for (std::size_t v = 0; v < set.volumes.size(); ++v) {
@@ -181,7 +181,7 @@ std::size_t freeSpaceOnlyProbes(const ProbeSet& set, const std::vector<WorldTria
 }
 
 std::vector<std::size_t> sparseProbeCounts(const std::vector<ProbeVolume>& volumes,
-                                           const std::vector<WorldTriangle>& triangles) {
+                                           const std::vector<raytrace::WorldTriangle>& triangles) {
     const std::vector<int> parents = validateVolumes(volumes, "sparse storage");
     std::vector<std::size_t> out;
     for (std::size_t i = 0; i < volumes.size(); ++i) {
@@ -209,7 +209,7 @@ bool parseFreeSpace(const std::string& text, FreeSpace& out) {
     return false;
 }
 
-void applySparseStorage(ProbeSet& set, const std::vector<WorldTriangle>& triangles,
+void applySparseStorage(ProbeSet& set, const std::vector<raytrace::WorldTriangle>& triangles,
                         FreeSpace freeSpace, double budgetBytes) {
     const std::vector<int> parents = validateVolumes(set.volumes, "sparse storage");
     std::vector<std::vector<std::uint8_t>> keep;

@@ -11,7 +11,7 @@
 // the bake, so the placement's memory budget (AutoPlacement.h) counts exactly what the bake
 // will store (less only the probes that then bake invalid).
 #include "probes/ProbeSet.h"
-#include "probes/StaticTriangles.h"
+#include "raytrace/StaticTriangles.h"
 
 #include <cstdint>
 #include <string>
@@ -26,7 +26,7 @@ constexpr float kSurfaceCellMargin = 0.01f;
 // Per probe of `v`: 1 when it is a corner of a cell with surface in it. `root`: the volume
 // has no parent (its influence reaches kEdgeFadeCells beyond its box).
 std::vector<std::uint8_t> surfaceCornerProbes(const ProbeVolume& v, bool root,
-                                              const std::vector<WorldTriangle>& triangles);
+                                              const std::vector<raytrace::WorldTriangle>& triangles);
 
 // The free-space lattice (issue 18): every probe whose grid coordinates are all multiples of
 // this step is kept too, so the air between surfaces holds a coarse level of real probes -
@@ -42,17 +42,17 @@ std::vector<std::uint8_t> freeSpaceLatticeProbes(const ProbeVolume& v);
 // What sparse storage keeps of `v` (validity aside): the surface corners and the free-space
 // lattice.
 std::vector<std::uint8_t> sparseKeptProbes(const ProbeVolume& v, bool root,
-                                           const std::vector<WorldTriangle>& triangles);
+                                           const std::vector<raytrace::WorldTriangle>& triangles);
 
 // How many probes each volume stores sparse (sparseKeptProbes; validity unknown before the
 // bake, so all count).
 std::vector<std::size_t> sparseProbeCounts(const std::vector<ProbeVolume>& volumes,
-                                           const std::vector<WorldTriangle>& triangles);
+                                           const std::vector<raytrace::WorldTriangle>& triangles);
 
 // What lookups in free space cost (issue 18): the stored probes that only the free-space
 // lattice keeps (on it, and a corner of no surface cell). The bake summary reports them.
 std::size_t freeSpaceOnlyProbes(const ProbeSet& set,
-                                const std::vector<WorldTriangle>& triangles);
+                                const std::vector<raytrace::WorldTriangle>& triangles);
 
 // FreeSpace (ProbeSet.h): what sparse storage keeps of the valid probes it leaves out.
 // "stand-ins", "ranked", "all" (the `bake --free-space` values).
@@ -62,7 +62,7 @@ bool parseFreeSpace(const std::string& text, FreeSpace& out);
 // Marks every probe that is invalid or no surface corner as not stored (and invalid, or
 // irradiance-only) and zeroes what it no longer holds, exactly as writing and reading the
 // file would. `budgetBytes`: Ranked's memory budget (chooseFreeSpaceTiles).
-void applySparseStorage(ProbeSet& set, const std::vector<WorldTriangle>& triangles,
+void applySparseStorage(ProbeSet& set, const std::vector<raytrace::WorldTriangle>& triangles,
                         FreeSpace freeSpace = FreeSpace::StandIns, double budgetBytes = 0.0);
 
 // The same for any choice: keep[volume][probe] != 0 and valid stays stored, the rest becomes

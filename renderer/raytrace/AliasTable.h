@@ -2,14 +2,14 @@
 // Picks an index in proportion to its weight in constant time (Vose's alias method): the
 // bake's light tables (EmitterTable.h, LitSurfaces.h) choose what to sample with it.
 // Deterministic: the same weights give the same table.
-#include "probes/HugePages.h"
+#include "core/HugePages.h"
 
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-namespace pb::probes {
+namespace pb::raytrace {
 
 class AliasTable {
 public:
@@ -43,4 +43,4 @@ private:
     HugePageVector<Column> columns_;
 };
 
-} // namespace pb::probes
+} // namespace pb::raytrace

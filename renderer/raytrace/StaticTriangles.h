@@ -7,7 +7,7 @@
 
 #include <vector>
 
-namespace pb::probes {
+namespace pb::raytrace {
 
 struct WorldTriangle {
     glm::vec3 a, b, c;
@@ -24,4 +24,4 @@ bool bakesInstance(const scene::Scene& scene, const scene::Instance& inst);
 // Degenerate triangles (zero area, bad indices) are left out.
 std::vector<WorldTriangle> staticBakeTriangles(const scene::Scene& scene);
 
-} // namespace pb::probes
+} // namespace pb::raytrace

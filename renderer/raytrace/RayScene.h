@@ -8,7 +8,7 @@
 // Albedo  = baseColor factor x the MEAN linear colour of the base colour texture (sRGB
 // decoded); emissive = emissive factor x the mean linear emissive texture colour. Probes
 // capture low-frequency light, and the mean keeps hits free of UV interpolation.
-#include "probes/bake/EmitterTable.h"
+#include "raytrace/EmitterTable.h"
 #include "scene/Scene.h"
 
 #include <embree3/rtcore.h>
@@ -17,7 +17,7 @@
 #include <memory>
 #include <vector>
 
-namespace pb::probes {
+namespace pb::raytrace {
 
 struct SurfaceInfo {
     glm::vec3 albedo{0.8f};
@@ -136,4 +136,4 @@ private:
 // World bounds of what the bake traces (static, visible); empty for an empty scene.
 scene::Bounds staticBakeBounds(const scene::Scene& scene);
 
-} // namespace pb::probes
+} // namespace pb::raytrace

@@ -14,7 +14,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace pb::probes {
+namespace pb {
 
 template <class T> struct HugePageAllocator {
     using value_type = T;
@@ -58,4 +58,4 @@ template <class T> struct HugePageAllocator {
 
 template <class T> using HugePageVector = std::vector<T, HugePageAllocator<T>>;
 
-} // namespace pb::probes
+} // namespace pb

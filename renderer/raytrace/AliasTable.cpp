@@ -1,9 +1,9 @@
-#include "probes/bake/AliasTable.h"
+#include "raytrace/AliasTable.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace pb::probes {
+namespace pb::raytrace {
 
 AliasTable::AliasTable(const std::vector<double>& weights) {
     double total = 0.0;
@@ -49,4 +49,4 @@ std::size_t AliasTable::pick(float u) const {
     return scaled - float(k) >= columns_[k].keep ? columns_[k].alias : k;
 }
 
-} // namespace pb::probes
+} // namespace pb::raytrace

@@ -1,6 +1,6 @@
-#include "probes/store/SceneHash.h"
+#include "raytrace/SceneHash.h"
 
-namespace pb::probes {
+namespace pb::raytrace {
 
 void hashSun(Hasher& h, const scene::Sun& s) {
     h.pod(std::uint8_t(s.enabled));
@@ -31,4 +31,4 @@ void hashPrimitiveGeometry(Hasher& h, const scene::Primitive& p) {
     h.bytes(p.indices.data(), p.indices.size() * sizeof(std::uint32_t));
 }
 
-} // namespace pb::probes
+} // namespace pb::raytrace

@@ -14,14 +14,14 @@
 //     pdf(omega) = pdfArea(k) * d^2 / |cos_l|.
 // Deterministic: the same scene gives the same table; sampling is a pure function of its
 // three uniforms.
-#include "probes/bake/AliasTable.h"
+#include "raytrace/AliasTable.h"
 
 #include <glm/glm.hpp>
 
 #include <cstdint>
 #include <vector>
 
-namespace pb::probes {
+namespace pb::raytrace {
 
 struct EmissiveTriangle {
     glm::vec3 a, b, c;
@@ -62,4 +62,4 @@ private:
     std::vector<std::vector<int>> indexOfPrim_; // [geomID][primID] -> table index or -1
 };
 
-} // namespace pb::probes
+} // namespace pb::raytrace

@@ -1,10 +1,10 @@
-#include "probes/bake/EmitterTable.h"
+#include "raytrace/EmitterTable.h"
 
 #include "core/Luminance.h"
 
 #include <cmath>
 
-namespace pb::probes {
+namespace pb::raytrace {
 
 EmitterTable::EmitterTable(std::vector<EmissiveTriangle> all) {
     std::vector<double> power;
@@ -50,4 +50,4 @@ EmitterSample EmitterTable::sample(float u0, float u1, float u2) const {
     return s;
 }
 
-} // namespace pb::probes
+} // namespace pb::raytrace

@@ -6,7 +6,7 @@
 #include <string>
 #include <type_traits>
 
-namespace pb::probes {
+namespace pb {
 
 class Hasher {
 public:
@@ -37,4 +37,4 @@ inline std::uint64_t fnv1a64(const void* data, std::size_t size) {
     return h.value();
 }
 
-} // namespace pb::probes
+} // namespace pb

@@ -1,6 +1,6 @@
-#include "probes/StaticTriangles.h"
+#include "raytrace/StaticTriangles.h"
 
-namespace pb::probes {
+namespace pb::raytrace {
 
 bool bakesInstance(const scene::Scene& s, const scene::Instance& inst) {
     if (inst.dynamic || inst.primitive < 0 || inst.primitive >= int(s.primitives.size()))
@@ -36,4 +36,4 @@ std::vector<WorldTriangle> staticBakeTriangles(const scene::Scene& s) {
     return out;
 }
 
-} // namespace pb::probes
+} // namespace pb::raytrace

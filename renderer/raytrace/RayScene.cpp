@@ -1,15 +1,15 @@
-#include "probes/bake/RayScene.h"
+#include "raytrace/RayScene.h"
 
 #include "core/Error.h"
-#include "probes/StaticTriangles.h"
-#include "probes/bake/EmbreeIsa.h"
+#include "raytrace/StaticTriangles.h"
+#include "raytrace/EmbreeIsa.h"
 
 #include <array>
 #include <atomic>
 #include <cmath>
 #include <mutex>
 
-namespace pb::probes {
+namespace pb::raytrace {
 namespace {
 
 float srgbToLinear(float c) {
@@ -259,4 +259,4 @@ RayScene::~RayScene() {
     if (device_) rtcReleaseDevice(device_);
 }
 
-} // namespace pb::probes
+} // namespace pb::raytrace

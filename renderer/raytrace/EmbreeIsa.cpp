@@ -1,10 +1,10 @@
-#include "probes/bake/EmbreeIsa.h"
+#include "raytrace/EmbreeIsa.h"
 
 #include "core/Error.h"
 
 #include <cstdlib>
 
-namespace pb::probes {
+namespace pb::raytrace {
 namespace {
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -78,4 +78,4 @@ std::string embreeIsa() {
     return best;
 }
 
-} // namespace pb::probes
+} // namespace pb::raytrace

@@ -8,7 +8,7 @@
 // architectures Embree keeps its own choice and these names do not apply.
 #include <string>
 
-namespace pb::probes {
+namespace pb::raytrace {
 
 // The ISAs PB_EMBREE_ISA accepts, in Embree's config spelling, from the oldest.
 inline constexpr const char* kEmbreeIsas[] = {"sse2", "sse4.2", "avx", "avx2", "avx512"};
@@ -28,4 +28,4 @@ std::string embreeDeviceConfig();
 // build); "native" on a CPU that is not x86.
 std::string embreeIsa();
 
-} // namespace pb::probes
+} // namespace pb::raytrace
