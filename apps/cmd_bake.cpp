@@ -1,20 +1,11 @@
 // probebench bake: probe volumes -> Embree bake -> probe data file (cached by input hash).
 #include "CommandRegistry.h"
 #include "JsonOption.h"
-#include "PlacementCache.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
-#include "probes/placement/AutoPlacement.h"
-#include "probes/placement/PlacementKey.h"
-#include "probes/bake/Baker.h"
-#include "probes/store/MemoryReport.h"
-#include "probes/AbsentProbeFill.h"
-#include "probes/ProbeCounts.h"
-#include "probes/store/ProbeFile.h"
+#include "probes/obtain/BakeReport.h"
+#include "probes/obtain/ObtainProbes.h"
 #include "probes/store/ProbeFileParts.h"
-#include "raytrace/RayScene.h"
-#include "probes/store/SparseLayout.h"
-#include "probes/store/SparseStorage.h"
 #include "probes/store/VolumeFile.h"
 
 #include <chrono>
@@ -59,17 +50,6 @@ struct BakeArgs {
     std::string split, part; // --split scenario --part I/N: one part of a split bake
 };
 
-// Wall seconds of the whole command, by phase (issue 17: the summary's time once covered only
-// the tracing, 1.17 s of a 16.8 s bake). `bake` is BakeStats::seconds (BVH, tracing, encoding).
-struct CommandTimes {
-    using Clock = std::chrono::steady_clock;
-    Clock::time_point start = Clock::now();
-    double load = 0.0, placement = 0.0, write = 0.0;
-    static double since(Clock::time_point t) {
-        return std::chrono::duration<double>(Clock::now() - t).count();
-    }
-};
-
 // "I/N" of --part.
 std::pair<int, int> parsePart(const std::string& text) {
     int part = -1, parts = 0;
@@ -96,15 +76,6 @@ std::vector<std::size_t> splitScenarios(const BakeArgs& a, std::size_t scenarios
     if (a.out.empty()) throw Error("--split: needs --out (the part file to write)");
     auto [part, parts] = parsePart(a.part);
     return scenarioSplit(scenarios, part, parts);
-}
-
-// Sparse storage (SparseStorage.h): `--volumes auto` stores sparse unless --dense (the issue's
-// automatic placement stores only the probes a surface reads); auto-uniform and volumes files
-// store dense unless --sparse.
-bool storesSparse(const BakeArgs& a) {
-    AutoMode mode = AutoMode::Uniform;
-    const bool adaptive = parseAutoMode(a.volumes, mode) && mode == AutoMode::Adaptive;
-    return a.sparse || (adaptive && !a.dense);
 }
 
 // A bar on a terminal, one line per finished stage otherwise (logs, CI).
@@ -160,104 +131,8 @@ void endPlacementProgress() {
     if (::isatty(::fileno(stderr)) != 0) std::fprintf(stderr, "\r%-70s\r", "");
 }
 
-// Nesting depth of each volume (0 = root).
-std::vector<int> volumeDepths(const std::vector<ProbeVolume>& volumes) {
-    std::vector<int> parents = validateVolumes(volumes, "placement"), depth(volumes.size(), 0);
-    for (size_t i = 0; i < volumes.size(); ++i)
-        for (int p = parents[i]; p >= 0; p = parents[size_t(p)])
-            ++depth[i];
-    return depth;
-}
-
-// What automatic placement chose, for people ("placement: ...") and for --json.
-struct PlacementInfo {
-    std::string mode;    // "adaptive", "uniform" or "file"
-    bool sparse = false; // stored sparse: result.bytes counts what is stored
-    AutoPlacementResult result;
-};
-
-// What `bake` prints of the placement: placed this run (placementJson of the result), or
-// read from the placement cache (PlacementCache.h) when the probe file is up to date.
-struct PlacementSummary {
-    nlohmann::json json;
-    bool placedThisRun = true;
-};
-
-nlohmann::json placementJson(const PlacementInfo& p, StorageFormat format) {
-    std::vector<int> depth = volumeDepths(p.result.volumes);
-    nlohmann::json tiers = nlohmann::json::array();
-    for (size_t i = 0; i < p.result.volumes.size(); ++i) {
-        if (size_t(depth[i]) >= tiers.size())
-            tiers.push_back({{"volumes", 0}, {"probes", 0}, {"spacing", 0.0}});
-        auto& t = tiers[size_t(depth[i])];
-        const ProbeVolume& v = p.result.volumes[i];
-        glm::vec3 c = v.cellSize();
-        t["volumes"] = t["volumes"].get<int>() + 1;
-        t["probes"] = t["probes"].get<long long>() + v.probeCount();
-        t["spacing"] = std::max(c.x, std::max(c.y, c.z));
-    }
-    nlohmann::json j{{"mode", p.mode},
-                     {"tiers", tiers},
-                     {"probes", p.result.probes},
-                     {"bytes", p.result.bytes},
-                     {"budget_bytes", p.result.budgetBytes},
-                     {"default_budget", p.result.defaultBudget},
-                     {"format", formatName(format)},
-                     {"storage", p.sparse ? "sparse" : "dense"},
-                     {"notes", p.result.notes}};
-    if (p.result.latticeSearched) {
-        const LatticeShift& l = p.result.latticeShift;
-        j["lattice_search"] = {{"shift_cells", {l.cells.x, l.cells.y, l.cells.z}},
-                               {"estimated_error_before", l.errorBefore},
-                               {"estimated_error_after", l.errorAfter},
-                               {"trials", l.trials},
-                               {"seconds", p.result.latticeSearchSeconds}};
-    }
-    if (p.mode == "adaptive") {
-        j["corner_rays"] = p.result.stats.rays;
-        j["cells_tested"] = p.result.stats.cellsTested;
-        j["cells_near_surfaces"] = p.result.stats.cellsNear;
-        j["placements"] = p.result.placements;
-    }
-    return j;
-}
-
-// One line from the placement's JSON, so a cached placement prints as a fresh one does.
-std::string placementText(const PlacementSummary& summary) {
-    const nlohmann::json& j = summary.json;
-    std::ostringstream s;
-    int volumes = 0;
-    for (const auto& tier : j["tiers"])
-        volumes += tier["volumes"].get<int>();
-    s << "placement: " << j["mode"].get<std::string>() << ", " << volumes << " volume(s)";
-    for (size_t t = 0; t < j["tiers"].size(); ++t) {
-        const auto& tier = j["tiers"][t];
-        s << (t == 0 ? "; outer " : "; tier " + std::to_string(t) + " ")
-          << tier["volumes"].get<int>() << " x spacing " << tier["spacing"].get<double>() << " ("
-          << tier["probes"].get<long long>() << " probes)";
-    }
-    const double budget = j["budget_bytes"].get<double>();
-    s << "; " << formatBytes(j["bytes"].get<std::size_t>()) << " as "
-      << j["format"].get<std::string>() << (j["storage"] == "sparse" ? " stored sparse" : "");
-    if (j["default_budget"].get<bool>())
-        s << " (default budget: the default uniform grid's " << formatBytes(std::size_t(budget))
-          << ")";
-    else if (budget > 0.0)
-        s << " (budget " << formatBytes(std::size_t(budget)) << ")";
-    if (j.contains("corner_rays"))
-        s << "; " << j["corner_rays"].get<long long>() << " corner rays, "
-          << j["placements"].get<int>() << " placement(s)";
-    if (j.contains("lattice_search")) {
-        const auto& l = j["lattice_search"];
-        s.precision(3);
-        s << "; lattice search: shift (" << l["shift_cells"][0].get<double>() << ", "
-          << l["shift_cells"][1].get<double>() << ", " << l["shift_cells"][2].get<double>()
-          << ") cells, estimated error " << l["estimated_error_before"].get<double>() << " -> "
-          << l["estimated_error_after"].get<double>() << ", " << l["trials"].get<int>()
-          << " trial bakes in " << l["seconds"].get<double>() << " s";
-    }
-    if (!summary.placedThisRun) s << " (when baked; not placed again: the placement cache matches)";
-    return s.str();
+double seconds(std::chrono::steady_clock::time_point since) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
 // What the probes sparse storage leaves out keep (--free-space, --free-space-irradiance).
@@ -269,367 +144,115 @@ FreeSpace freeSpaceOf(const BakeArgs& a) {
     return f;
 }
 
-// The automatic placement request of these options (its key decides the placement cache).
-AutoPlacementRequest autoPlacementRequest(const BakeArgs& a, const scene::Scene& s,
-                                          AutoMode mode) {
-    AutoPlacementRequest req;
-    req.mode = mode;
-    req.adaptive.spacing = a.spacing;
-    req.adaptive.levels = a.autoLevels;
-    req.adaptive.maxChildren = a.autoMaxChildren;
-    req.adaptive.threads = a.threads;
-    req.budgetBytes = a.budgetMib * 1024.0 * 1024.0;
-    req.format = parseStorageFormat(a.format);
-    req.sparse = storesSparse(a);
-    req.freeSpace = req.sparse ? freeSpaceOf(a) : FreeSpace::StandIns;
-    // The lattice search bakes trials as this bake will be baked, under its first scenario.
-    req.latticeSearch = !a.noLatticeSearch;
-    req.lighting = resolveScenarios(a.scenarios, {}, s).front();
-    req.bounces = a.bounces;
-    return req;
+// The options every command that needs probes shares (probes/obtain/BakeOptions.h).
+BakeOptions bakeOptions(const BakeArgs& a) {
+    BakeOptions o;
+    o.volumes = a.volumes;
+    o.spacing = a.spacing;
+    o.autoLevels = a.autoLevels;
+    o.autoMaxChildren = a.autoMaxChildren;
+    o.budgetMib = a.budgetMib;
+    o.latticeSearch = !a.noLatticeSearch;
+    o.scenarios = a.scenarios;
+    o.settings.raysPerProbe = a.rays;
+    o.settings.bounces = a.bounces;
+    o.settings.emitterSamples = a.emitterSamples;
+    o.settings.litSamples = a.litSamples;
+    o.settings.noiseTarget = a.noiseTarget;
+    o.settings.seed = a.seed;
+    o.settings.format = parseStorageFormat(a.format);
+    o.settings.relocate = !a.noRelocate;
+    o.settings.backfaceThreshold = a.backfaceThreshold;
+    o.threads = a.threads;
+    o.sparse = a.sparse;
+    o.dense = a.dense;
+    o.freeSpace = freeSpaceOf(a);
+    return o;
 }
 
-// Everything of the request but the volumes.
-void setBakeSettings(const BakeArgs& a, const scene::Scene& s,
-                     const std::vector<ScenarioSpec>& fileScenarios, BakeRequest& r) {
-    r.scenarios = resolveScenarios(a.scenarios, fileScenarios, s);
-    r.settings.raysPerProbe = a.rays;
-    r.settings.bounces = a.bounces;
-    r.settings.emitterSamples = a.emitterSamples;
-    r.settings.litSamples = a.litSamples;
-    r.settings.noiseTarget = a.noiseTarget;
-    r.settings.seed = a.seed;
-    r.settings.format = parseStorageFormat(a.format);
-    r.settings.relocate = !a.noRelocate;
-    r.settings.backfaceThreshold = a.backfaceThreshold;
-    r.threads = a.threads;
-    r.sparse = storesSparse(a);
-    r.freeSpace = r.sparse ? freeSpaceOf(a) : FreeSpace::StandIns;
-    // Ranked tiles fill the budget; automatic placement sets its own (the default one too).
-    r.freeSpaceBudgetBytes = a.budgetMib * 1024.0 * 1024.0;
+// What obtaining probes shows while it works: placement steps, notes, the placement line and
+// the bake's header and progress bar.
+ObtainHooks bakeHooks(const BakeArgs& a, const scene::Scene& s, Progress& progress) {
+    ObtainHooks h;
+    h.placementProgress = placementProgress;
+    h.placementDone = endPlacementProgress;
+    h.note = [](const std::string& note) { std::cerr << "note: " << note << "\n"; };
+    h.placed = [&a](const PlacedRequest& p) {
+        if (!a.json) std::cout << placementText(p.placementJson, true) << "\n";
+    };
+    h.bakeStarts = [&a, &s](const PlacedRequest& p) {
+        if (a.json) return;
+        long long probes = 0;
+        for (const ProbeVolume& v : p.request.volumes)
+            probes += v.probeCount();
+        const BakeRequest& req = p.request;
+        std::cout << "bake: scene '" << s.name << "', " << req.volumes.size() << " volume(s), "
+                  << probes << " probes, " << req.settings.raysPerProbe << " rays, "
+                  << req.settings.bounces << " bounce(s), " << req.scenarios.size()
+                  << " scenario(s), " << formatName(req.settings.format) << std::endl;
+    };
+    h.bakeProgress = [&progress](const BakeProgress& p) { progress(p); };
+    return h;
 }
 
-// The number of scenarios the request will hold, without placing: a volumes file may add its
-// own scenarios, automatic placement adds none.
-std::size_t scenarioCountBeforePlacement(const BakeArgs& a, const scene::Scene& s) {
-    AutoMode mode;
-    if (parseAutoMode(a.volumes, mode)) return resolveScenarios(a.scenarios, {}, s).size();
-    return resolveScenarios(a.scenarios, loadVolumeFile(a.volumes).scenarios, s).size();
-}
-
-BakeRequest buildRequest(const BakeArgs& a, const scene::Scene& s, PlacementInfo& placement) {
-    BakeRequest r;
-    std::vector<ScenarioSpec> fileScenarios;
-    const StorageFormat format = parseStorageFormat(a.format);
-    const bool sparse = placement.sparse = storesSparse(a);
-    AutoMode mode;
-    if (parseAutoMode(a.volumes, mode)) {
-        AutoPlacementRequest req = autoPlacementRequest(a, s, mode);
-        req.progress = placementProgress;
-        placement.mode = autoModeName(mode);
-        placement.result = placeAutoVolumes(s, req);
-        endPlacementProgress();
-        for (const std::string& note : placement.result.notes)
-            std::cerr << "note: " << note << "\n";
-        r.volumes = placement.result.volumes;
-    } else {
-        if (a.spacing > 0.0f) throw Error("--spacing applies to --volumes auto only");
-        VolumeFile vf = loadVolumeFile(a.volumes);
-        r.volumes = vf.volumes;
-        fileScenarios = vf.scenarios;
-        placement.mode = "file";
-        placement.result.volumes = vf.volumes;
-        for (const ProbeVolume& v : vf.volumes)
-            placement.result.probes += v.probeCount();
-        std::vector<std::size_t> kept;
-        if (sparse) kept = sparseProbeCounts(vf.volumes, raytrace::staticBakeTriangles(s));
-        placement.result.bytes =
-            memoryReport(vf.volumes, format, sparse ? &kept : nullptr).total.storedTotal();
-        if (a.budgetMib > 0.0 && double(placement.result.bytes) > a.budgetMib * 1024.0 * 1024.0)
-            throw Error(a.volumes + ": the volumes need " + formatBytes(placement.result.bytes) +
-                        " as " + formatName(format) + ", over --probe-budget-mib " +
-                        std::to_string(a.budgetMib));
-    }
-    setBakeSettings(a, s, fileScenarios, r);
-    // Automatic placement's budget, the default one included, is what the tiles fill.
-    if (placement.result.budgetBytes > 0.0) r.freeSpaceBudgetBytes = placement.result.budgetBytes;
-    return r;
-}
-
-// The probe file is up to date without placing: the placement cache has this request's key,
-// and the file's volumes with the other options hash to the file's own input hash (the one the
-// cache recorded). Nothing when anything differs or fails to read: then bake places as ever.
-std::optional<std::pair<ProbeSet, nlohmann::json>> upToDateByPlacementCache(
-    const BakeArgs& a, const scene::Scene& s) {
-    AutoMode mode;
-    if (a.force || a.out.empty() || !a.writeVolumes.empty() || !parseAutoMode(a.volumes, mode))
-        return std::nullopt;
-    const std::optional<CachedPlacement> cached =
-        readPlacementCache(a.out, autoPlacementKey(s, autoPlacementRequest(a, s, mode)));
-    if (!cached) return std::nullopt;
-    std::optional<ProbeSet> set;
-    try {
-        set = readProbeFile(a.out);
-    } catch (const Error&) {
-        return std::nullopt; // damaged: the normal path re-bakes it and says why
-    }
-    BakeRequest r;
-    r.volumes = set->volumes;
-    setBakeSettings(a, s, {}, r);
-    // As buildRequest sets it: the placement's budget when it had one.
-    if (const double b = cached->placement.value("budget_bytes", 0.0); b > 0.0)
-        r.freeSpaceBudgetBytes = b;
-    if (set->inputHash != cached->inputHash || bakeInputHash(s, r) != set->inputHash)
-        return std::nullopt;
-    return std::make_pair(std::move(*set), cached->placement);
-}
-
-// A count, or null when the file cannot tell (ProbeCounts.h).
-nlohmann::json countJson(const std::optional<std::size_t>& n) {
-    return n ? nlohmann::json(*n) : nlohmann::json(nullptr);
-}
-
-nlohmann::json volumesJson(const ProbeSet& set, const std::vector<ProbeCounts>& counts) {
-    nlohmann::json out = nlohmann::json::array();
-    for (size_t v = 0; v < set.volumes.size(); ++v) {
-        const ProbeVolume& vol = set.volumes[v];
-        std::size_t moved = 0;
-        for (const ProbeState& p : set.states[v])
-            moved += p.offset != glm::vec3(0.0f) ? 1 : 0;
-        out.push_back({{"name", vol.name},
-                       {"parent", vol.parent},
-                       {"counts", {vol.counts.x, vol.counts.y, vol.counts.z}},
-                       {"center", {vol.center.x, vol.center.y, vol.center.z}},
-                       {"half_extents", {vol.halfExtents.x, vol.halfExtents.y, vol.halfExtents.z}},
-                       {"probes", vol.probeCount()},
-                       {"stored", counts[v].stored},
-                       {"absent", countJson(counts[v].absent)},
-                       {"invalid", countJson(counts[v].invalid)},
-                       {"relocated", moved}});
-    }
-    return out;
-}
-
-// "probes: N in V volume(s), ..." : stored / absent / invalid (ProbeCounts.h).
-// `irradianceOnly`: how many absent probes kept their irradiance (--free-space).
-// volumeProbeCounts always knows absent and invalid (the bake's count, or the states).
-std::string probeCountsText(const ProbeCounts& c, std::size_t volumes,
-                            std::size_t irradianceOnly) {
-    std::ostringstream s;
-    s << "probes: " << c.probes << " in " << volumes << " volume(s), ";
-    if (c.notStored() == 0)
-        s << "all stored, " << *c.invalid << " invalid (inside geometry)";
+void printReport(const BakeArgs& a, const BakeReport& r) {
+    if (a.json)
+        writeJson(a.json, bakeReportJson(r).dump(2) + "\n");
     else
-        s << c.stored << " stored, " << *c.absent
-          << (irradianceOnly == 0 ? " absent (not stored: no surface nearby), "
-              : irradianceOnly == *c.absent
-                  ? " absent (no surface nearby: irradiance only, no visibility), "
-                  : " absent (no surface nearby; " + std::to_string(irradianceOnly) +
-                        " of them keep their irradiance, no visibility), ")
-          << *c.invalid << " invalid (inside geometry, not stored)";
-    return s.str();
+        std::cout << bakeReportText(r);
 }
 
-// Per scenario, the irradiance's storage scale (probes/StorageScale.h; 1 when in range).
-float scenarioScale(const ProbeSet& set, std::size_t s) {
-    return s < set.irradiance.size() && !set.irradiance[s].empty()
-               ? set.irradiance[s].front().storageScale
-               : 1.0f;
-}
-
-// The stored probes only the free-space lattice keeps, for the summary; a dense set has none,
-// and is not classified against the scene's triangles (an up-to-date run stays quick).
-std::size_t freeSpaceProbes(const ProbeSet& set, const scene::Scene& s) {
-    if (set.storedCount() == set.probeCount()) return 0;
-    return freeSpaceOnlyProbes(set, raytrace::staticBakeTriangles(s));
-}
-
-// The bytes the irradiance-only probes' tiles add (one scenario, in the file's format): what
-// `with` (the set's memory report) counts beyond the stored tiles. 0 when there are none.
-std::size_t irradianceOnlyBytes(const ProbeSet& set, const MemoryReport& with) {
-    if (with.total.irradianceOnlyProbes == 0) return 0;
-    std::vector<std::size_t> stored;
-    for (const auto& states : set.states) stored.push_back(probes::storedCount(states));
-    const MemoryReport without = memoryReport(set.volumes, set.format(), &stored);
-    return with.total.stored.total() - std::min(with.total.stored.total(),
-                                                without.total.stored.total());
-}
-
-// The end of the summary's "free space:" line: what the absent probes keep (--free-space).
-std::string freeSpaceText(std::size_t tiles, const std::string& tileBytes, std::size_t standIns,
-                          const BakeStats* st) {
-    if (tiles == 0) return "absent probes are read as their nearest stored one";
-    std::ostringstream s;
-    s << tiles << " absent probes keep their irradiance (" << tileBytes << ", no visibility)";
-    if (standIns == 0) return s.str();
-    s << ": the ones whose nearest stored probe is furthest from their own light; the other "
-      << standIns << " are read as it";
-    if (st && st->freeSpaceCandidates > 0) {
-        s.precision(3);
-        s << " (largest difference left " << 100.0 * st->freeSpaceWorstLeft << "%)";
-    }
-    return s.str();
-}
-
-// `freeSpace`: the stored probes only the free-space lattice keeps (freeSpaceOnlyProbes), the
-// cost of lighting the air between surfaces (issue 18), with the irradiance-only probes.
-void printSummary(const BakeArgs& a, const PlacementSummary& placement, const ProbeSet& set,
-                  const BakeStats* st, bool upToDate, std::size_t freeSpace,
-                  const CommandTimes& times) {
-    const double commandSeconds = CommandTimes::since(times.start);
-    const double searchSeconds =
-        placement.placedThisRun ? placement.json.value("lattice_search", nlohmann::json::object())
-                                      .value("seconds", 0.0)
-                                : 0.0;
-    MemoryReport mem = memoryReport(set);
-    const std::size_t freeSpaceBytes = freeSpace * bytesPerProbe(set.format()).total();
-    const std::size_t irradianceOnly = irradianceOnlyBytes(set, mem);
-    // Absent probes lookups read their nearest stored probe for.
-    std::size_t standIns = 0;
-    for (const auto& states : set.states)
-        for (const ProbeState& p : states)
-            standIns += fillable(p, set.settings.backfaceThreshold) ? 1 : 0;
-    const std::vector<ProbeCounts> counts =
-        volumeProbeCounts(set, st ? &st->invalidPerVolume : nullptr);
-    const ProbeCounts total = totalProbeCounts(counts);
-    if (a.json) {
-        nlohmann::json j{{"file", a.out},
-                         {"placement", placement.json},
-                         {"placed_this_run", placement.placedThisRun},
-                         {"up_to_date", upToDate},
-                         {"input_hash", set.inputHash},
-                         {"format", formatName(set.format())},
-                         {"rays_per_probe", set.settings.raysPerProbe},
-                         {"bounces", set.settings.bounces},
-                         {"seed", set.settings.seed},
-                         {"probes", total.probes},
-                         {"stored_probes", total.stored},
-                         {"absent_probes", countJson(total.absent)},
-                         {"invalid_probes", countJson(total.invalid)},
-                         {"volumes", volumesJson(set, counts)},
-                         {"memory", memoryReportJson(mem)}};
-        if (set.storedCount() < set.probeCount())
-            j["free_space"] = {{"lattice_probes", freeSpace},
-                               {"lattice_bytes", freeSpaceBytes},
-                               {"lattice_step", kFreeSpaceLatticeStep},
-                               {"irradiance_only_probes", mem.total.irradianceOnlyProbes},
-                               {"irradiance_only_bytes", irradianceOnly},
-                               {"stand_in_probes", standIns}};
-        if (st && st->freeSpaceCandidates > 0) {
-            j["free_space"]["tile_candidates"] = st->freeSpaceCandidates;
-            j["free_space"]["worst_stand_in_difference"] = st->freeSpaceWorstLeft;
-        }
-        nlohmann::json sc = nlohmann::json::array();
-        nlohmann::json scales = nlohmann::json::object();
-        for (std::size_t i = 0; i < set.scenarios.size(); ++i) {
-            sc.push_back(set.scenarios[i].name);
-            scales[set.scenarios[i].name] = scenarioScale(set, i);
-        }
-        j["scenarios"] = sc;
-        j["storage_scales"] = scales;
-        if (st) {
-            double rays = double(st->primaryRays + st->shadowRays);
-            j["relocated_probes"] = st->relocatedProbes;
-            j["rays"] = st->primaryRays;
-            j["shadow_rays"] = st->shadowRays;
-            j["seconds"] = st->seconds;
-            j["command_seconds"] = commandSeconds;
-            j["load_seconds"] = times.load;
-            j["placement_seconds"] = times.placement;
-            j["lattice_search_seconds"] = searchSeconds;
-            j["write_seconds"] = times.write;
-            j["bvh_seconds"] = st->buildSeconds;
-            j["trace_seconds"] = st->traceSeconds;
-            j["encode_seconds"] = st->quantiseSeconds;
-            j["rays_per_second"] = st->seconds > 0 ? rays / st->seconds : 0.0;
-            j["threads"] = st->threads;
-            j["triangles"] = st->triangles;
-            j["noise"] = {{"target", set.settings.noiseTarget},
-                          {"emitter_samples", set.settings.emitterSamples},
-                          {"lit_samples", set.settings.litSamples},
-                          {"mean_relative_se", st->noiseMean},
-                          {"p95_relative_se", st->noiseP95},
-                          {"probe_passes", st->tracedProbePasses},
-                          {"probe_passes_with_more_rounds", st->noisyProbePasses},
-                          {"probe_passes_above_target", st->probePassesAboveTarget},
-                          {"extra_round_rays", st->extraRoundRays}};
-            nlohmann::json q = nlohmann::json::array();
-            for (const auto& e : st->quantisation)
-                q.push_back({{"volume", e.volume},
-                             {"texture", e.texture},
-                             {"max_relative_error", e.maxRelative},
-                             {"mean_relative_error", e.meanRelative}});
-            j["quantisation"] = q;
-        }
-        writeJson(a.json, j.dump(2) + "\n");
-        return;
-    }
-    if (upToDate) std::cout << a.out << ": up to date (input hash matches; --force re-bakes)\n";
-    std::cout << probeCountsText(total, set.volumes.size(), mem.total.irradianceOnlyProbes);
-    if (st) std::cout << ", " << st->relocatedProbes << " relocated";
-    std::cout << "\n";
-    if (st) {
-        double rays = double(st->primaryRays + st->shadowRays);
-        std::printf("rays: %llu (%d per probe per pass) + %llu shadow rays, %d thread(s), %zu "
-                    "triangles\n",
-                    (unsigned long long)st->primaryRays, set.settings.raysPerProbe,
-                    (unsigned long long)st->shadowRays, st->threads, st->triangles);
-        std::printf("noise: mean %.2f%%, p95 %.2f%% relative standard error of a probe's "
-                    "irradiance",
-                    100 * st->noiseMean, 100 * st->noiseP95);
-        if (set.settings.noiseTarget > 0)
-            std::printf(" (target %.3g%%: %zu of %zu probe passes took more rounds, +%llu rays; "
-                        "%zu stayed above after %d rounds)",
-                        100 * set.settings.noiseTarget, st->noisyProbePasses,
-                        st->tracedProbePasses, (unsigned long long)st->extraRoundRays,
-                        st->probePassesAboveTarget, probes::kMaxNoiseRounds);
-        std::printf("\n");
-        std::printf("time: %.2f s in all: scene %.2f s, placement %.2f s", commandSeconds,
-                    times.load, times.placement);
-        if (searchSeconds > 0) std::printf(" (lattice search %.2f s)", searchSeconds);
-        std::printf(", bake %.2f s (BVH %.2f s, tracing %.2f s, %s encoding %.2f s), write "
-                    "%.2f s; %.2f M rays/s in the bake\n",
-                    st->seconds, st->buildSeconds, st->traceSeconds, formatName(set.format()),
-                    st->quantiseSeconds, times.write,
-                    st->seconds > 0 ? rays / st->seconds * 1e-6 : 0.0);
-        double worst = 0.0;
-        for (const auto& e : st->quantisation)
-            worst = std::max(worst, e.maxRelative);
-        if (set.format() == StorageFormat::Bc6h)
-            for (const auto& e : st->quantisation)
-                std::printf("bc6h error %-12s %-20s max %.4f mean %.5f (relative)\n",
-                            e.volume.c_str(), e.texture.c_str(), e.maxRelative, e.meanRelative);
-        else
-            std::printf("%s quantisation: max relative error %.2g\n", formatName(set.format()),
-                        worst);
-    }
-    for (std::size_t i = 0; i < set.scenarios.size(); ++i)
-        if (scenarioScale(set, i) != 1.0f)
-            std::printf("scenario %s: irradiance stored x2^%d (outside %s's comfortable range)\n",
-                        set.scenarios[i].name.c_str(), std::ilogb(scenarioScale(set, i)),
-                        formatName(set.format()));
-    std::cout << "memory (one scenario resident): " << formatBytes(mem.total.uncompressed.total())
-              << " uncompressed, " << formatBytes(mem.total.bc6h.total()) << " bc6h; file holds "
-              << set.scenarios.size() << " scenario(s) as " << formatName(set.format()) << "\n";
-    if (set.storedCount() < set.probeCount())
-        std::cout << "sparse storage: " << set.storedCount() << " of " << set.probeCount()
-                  << " grid probes stored, " << formatBytes(mem.total.storedTotal()) << " as "
-                  << formatName(set.format()) << " with the indirection\n"
-                  << "free space: " << freeSpace << " of the stored probes ("
-                  << formatBytes(freeSpaceBytes) << ") are kept only as the free-space lattice "
-                  << "(every " << kFreeSpaceLatticeStep << "nd probe per axis); "
-                  << freeSpaceText(mem.total.irradianceOnlyProbes, formatBytes(irradianceOnly),
-                                   standIns, st)
+// --write-volumes without --out: only the placement.
+int writeVolumesOnly(const BakeArgs& a, const PlacedRequest& placed) {
+    if (a.json)
+        writeJson(a.json, nlohmann::json{{"volumes_file", a.writeVolumes},
+                                         {"placement", placed.placementJson}}
+                              .dump(2) + "\n");
+    else
+        std::cout << placementText(placed.placementJson, true) << "\nwrote " << a.writeVolumes
                   << "\n";
-    else
-        std::cout << "sparse-storage candidates: " << mem.total.sparse.far
-                  << " probe(s) far from every surface, " << mem.total.sparse.invalid
-                  << " inside geometry (stored; sparse storage drops what no surface reads)\n";
-    if (!upToDate) std::cout << "wrote " << a.out << "\n";
+    return 0;
+}
+
+void writeVolumes(const BakeArgs& a, const scene::Scene& s, const std::vector<ProbeVolume>& v) {
+    writeVolumeFile(a.writeVolumes, v,
+                    "probe volumes for scene '" + s.name +
+                        "', written by probebench bake --write-volumes\n"
+                        "edit freely; bake with --volumes FILE (add --sparse for the storage "
+                        "--volumes auto uses; renderer/probes/README.md)");
+}
+
+// --split scenario --part I/N: one block of the scenarios into a part file, never a cache hit.
+int bakePart(const BakeArgs& a, const scene::Scene& s, const BakeOptions& o, CommandSeconds& t,
+             std::chrono::steady_clock::time_point start) {
+    Progress progress;
+    ObtainHooks hooks = bakeHooks(a, s, progress);
+    PlacedRequest placed = placeRequest(s, o, hooks);
+    t.placement = placed.seconds;
+    if (hooks.placed) hooks.placed(placed);
+    placed.request.onlyScenarios = splitScenarios(a, placed.request.scenarios.size());
+    hooks.bakeStarts(placed);
+    BakeStats stats;
+    ProbeFilePart part;
+    part.set = bakeProbes(s, placed.request, &stats, hooks.bakeProgress);
+    progress.done();
+    const auto writeStart = std::chrono::steady_clock::now();
+    const auto [index, parts] = parsePart(a.part);
+    part.part = std::uint32_t(index);
+    part.parts = std::uint32_t(parts);
+    part.totalScenarios = std::uint32_t(placed.request.scenarios.size());
+    for (std::size_t i : placed.request.onlyScenarios)
+        part.scenarios.push_back(std::uint32_t(i));
+    writeProbeFilePart(a.out, part);
+    t.write = seconds(writeStart);
+    t.command = seconds(start);
+    printReport(a, {a.out, placed.placementJson, true, false, part.set, &stats,
+                    freeSpaceProbes(part.set, s), t});
+    return 0;
 }
 
 int runBake(const BakeArgs& a) {
-    CommandTimes times;
+    const auto start = std::chrono::steady_clock::now();
     if (a.out.empty() && a.writeVolumes.empty())
         throw Error("--out is required (the probe file to write), or --write-volumes alone to "
                     "only place volumes");
@@ -637,13 +260,13 @@ int runBake(const BakeArgs& a) {
         throw Error("--probe-budget-mib: must be a positive number");
     if (a.sparse && a.dense) throw Error("--dense: excludes --sparse (pick one storage)");
     for (const CLI::Option* o : {a.freeSpaceOption, a.freeSpaceIrradianceOption})
-        if (o && o->count() > 0 && !storesSparse(a))
+        if (o && o->count() > 0 && !storesSparse(bakeOptions(a)))
             throw Error(o->get_name() + ": needs sparse storage (--volumes auto without "
                         "--dense, or --sparse)");
     if (a.freeSpaceIrradiance && a.freeSpaceOption && a.freeSpaceOption->count() > 0 &&
         a.freeSpace != "all")
         throw Error("--free-space-irradiance: is --free-space all, not " + a.freeSpace);
-    if (storesSparse(a)) freeSpaceOf(a); // a bad name is refused before the placement runs
+    bakeOptions(a); // a bad --free-space or --format is refused before the placement runs
     AutoMode mode = AutoMode::Uniform;
     const bool adaptive = parseAutoMode(a.volumes, mode) && mode == AutoMode::Adaptive;
     for (const CLI::Option* o : {a.levelsOption, a.childrenOption})
@@ -663,94 +286,36 @@ int runBake(const BakeArgs& a) {
         if (!parent.empty() && !fs::is_directory(parent))
             throw Error("--out " + a.out + ": folder '" + parent.string() + "' does not exist");
     }
+    const BakeOptions o = bakeOptions(a);
     scene::Scene s = loadSceneWithOverrides(a.scene);
-    times.load = CommandTimes::since(times.start);
+    CommandSeconds t;
+    t.load = seconds(start);
     // A wrong split is refused before the placement runs (seconds to minutes) and prints.
-    if (!a.split.empty() || !a.part.empty()) splitScenarios(a, scenarioCountBeforePlacement(a, s));
-    // A part file is never up to date: a split part is always baked.
-    if (auto cached = a.split.empty() ? upToDateByPlacementCache(a, s) : std::nullopt) {
-        const PlacementSummary summary{cached->second, false};
-        if (!a.json) std::cout << placementText(summary) << "\n";
-        printSummary(a, summary, cached->first, nullptr, true,
-                     freeSpaceProbes(cached->first, s), times);
-        return 0;
+    if (!a.split.empty() || !a.part.empty()) {
+        splitScenarios(a, scenarioCountBeforePlacement(o, s));
+        return bakePart(a, s, o, t, start);
     }
-    PlacementInfo placement;
-    const auto placementStart = CommandTimes::Clock::now();
-    BakeRequest req = buildRequest(a, s, placement);
-    times.placement = CommandTimes::since(placementStart);
-    const PlacementSummary summary{placementJson(placement, req.settings.format), true};
-    // Recorded once the probe file for this placement exists (baked, or found up to date).
-    const auto recordPlacement = [&](std::uint64_t inputHash) {
-        AutoMode mode;
-        if (parseAutoMode(a.volumes, mode))
-            writePlacementCache(a.out, {autoPlacementKey(s, autoPlacementRequest(a, s, mode)),
-                                        inputHash, summary.json});
-    };
-    if (!a.writeVolumes.empty()) {
-        writeVolumeFile(a.writeVolumes, req.volumes,
-                        "probe volumes for scene '" + s.name +
-                            "', written by probebench bake --write-volumes\n"
-                            "edit freely; bake with --volumes FILE (add --sparse for the storage "
-                            "--volumes auto uses; renderer/probes/README.md)");
-        if (a.out.empty()) {
-            if (a.json)
-                writeJson(a.json, nlohmann::json{{"volumes_file", a.writeVolumes},
-                                            {"placement",
-                                             placementJson(placement, req.settings.format)}}
-                                 .dump(2) + "\n");
-            else
-                std::cout << placementText(summary) << "\nwrote "
-                          << a.writeVolumes << "\n";
-            return 0;
-        }
+    if (a.out.empty()) {
+        Progress progress;
+        const PlacedRequest placed = placeRequest(s, o, bakeHooks(a, s, progress));
+        writeVolumes(a, s, placed.request.volumes);
+        return writeVolumesOnly(a, placed);
     }
-    req.onlyScenarios = splitScenarios(a, req.scenarios.size());
-    const std::uint64_t hash = bakeInputHash(s, req);
-    if (!a.force && a.split.empty()) {
-        std::string why;
-        if (std::optional<ProbeSet> cached = readCachedProbeFile(a.out, hash, &why)) {
-            if (!a.json) std::cout << placementText(summary) << "\n";
-            recordPlacement(hash);
-            printSummary(a, summary, *cached, nullptr, true,
-                         freeSpaceProbes(*cached, s), times);
-            return 0;
-        }
-        if (why.rfind("unusable", 0) == 0)
-            std::cerr << "note: re-baking, the old file is " << why << "\n";
-    }
-    long long probes = 0;
-    for (const ProbeVolume& v : req.volumes)
-        probes += v.probeCount();
-    if (!a.json) std::cout << placementText(summary) << "\n";
-    if (!a.json)
-        std::cout << "bake: scene '" << s.name << "', " << req.volumes.size() << " volume(s), "
-                  << probes << " probes, " << req.settings.raysPerProbe << " rays, "
-                  << req.settings.bounces << " bounce(s), " << req.scenarios.size()
-                  << " scenario(s), " << formatName(req.settings.format) << std::endl;
     Progress progress;
-    BakeStats stats;
-    ProbeSet set = bakeProbes(s, req, &stats, [&](const BakeProgress& p) { progress(p); });
+    ObtainHooks hooks = bakeHooks(a, s, progress);
+    // --write-volumes writes the volumes placed this run (the probe file may still be reused).
+    const Reuse reuse = a.force                  ? Reuse::Nothing
+                        : !a.writeVolumes.empty() ? Reuse::BakeOnly
+                                                  : Reuse::PlacementAndBake;
+    ObtainedProbes got = obtainProbes(s, o, a.out, reuse, hooks);
     progress.done();
-    const auto writeStart = CommandTimes::Clock::now();
-    if (!a.split.empty()) {
-        ProbeFilePart part;
-        const auto [index, parts] = parsePart(a.part);
-        part.part = std::uint32_t(index);
-        part.parts = std::uint32_t(parts);
-        part.totalScenarios = std::uint32_t(req.scenarios.size());
-        for (std::size_t i : req.onlyScenarios)
-            part.scenarios.push_back(std::uint32_t(i));
-        part.set = std::move(set);
-        writeProbeFilePart(a.out, part);
-        set = std::move(part.set);
-    } else {
-        writeProbeFile(a.out, set);
-        recordPlacement(set.inputHash);
-    }
-    times.write = CommandTimes::since(writeStart);
-    printSummary(a, summary, set, &stats, false, freeSpaceProbes(set, s),
-                 times);
+    if (!a.writeVolumes.empty()) writeVolumes(a, s, got.set.volumes);
+    if (!got.placedThisRun && !a.json) std::cout << placementText(got.placement, false) << "\n";
+    t.placement = got.placementSeconds;
+    t.write = got.writeSeconds;
+    t.command = seconds(start);
+    printReport(a, {a.out, got.placement, got.placedThisRun, !got.baked, got.set,
+                    got.baked ? &got.stats : nullptr, freeSpaceProbes(got.set, s), t});
     return 0;
 }
 

@@ -1,11 +1,12 @@
 #pragma once
-// The probes a benchmark renders with when no probe file is given: the volumes of `volumes`
-// ("auto", "auto-uniform" or a volumes TOML file, as `probebench bake --volumes`: auto stored
-// sparse, the others dense), 128 rays, 2 bounces, RGBA16F, the scene's daylight (plus a
-// volumes file's scenarios), baked once per input hash and Embree ISA (probes/bake/EmbreeIsa.h)
-// into a cache folder (the bake cache of ProbeFile.h: a stale or damaged file is re-baked,
-// never trusted).
+// The probes a benchmark renders with when no probe file is given: `probebench bake --volumes
+// VOLUMES --rays 128` (every other option bake's default: 2 bounces, RGBA16F, day, auto stored
+// sparse), obtained as bake obtains them (probes/obtain/ObtainProbes.h: the placement cache
+// first, so a cache hit places nothing) into a file of the cache folder named by the options
+// and the Embree ISA (probeCachePath). `bake --rays 128 --volumes VOLUMES --out F` writes the
+// same bytes.
 #include "probes/ProbeSet.h"
+#include "probes/obtain/BakeOptions.h"
 #include "scene/Scene.h"
 
 #include <functional>
@@ -16,8 +17,11 @@ namespace pb::bench {
 // $XDG_CACHE_HOME/probebench, else ~/.cache/probebench, else ./.probebench-cache.
 std::string defaultProbeCacheDir();
 
+// What the bench asks the bake for: bake's defaults, 128 rays, these volumes.
+probes::BakeOptions benchBakeOptions(const std::string& volumes);
+
 // The cached or freshly baked probes; `path` receives the cache file, `progress` a line when
-// a bake starts.
+// a placement ran and when a bake starts.
 probes::ProbeSet benchProbes(const scene::Scene& s, const std::string& volumes,
                              const std::string& cacheDir, std::string* path = nullptr,
                              const std::function<void(const std::string&)>& progress = {});

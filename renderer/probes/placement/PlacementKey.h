@@ -1,7 +1,7 @@
 #pragma once
 // The cache key of an automatic placement: everything placeAutoVolumes' result depends on
 // (the scene as the bake hashes it, the request but its thread count, and the placement's
-// algorithm version). `bake` keeps it beside the probe file (apps/PlacementCache.h), so a
+// algorithm version). `bake` keeps it beside the probe file (probes/obtain/PlacementCache.h), so a
 // re-run with the same inputs finds the file up to date BEFORE placing and searching the
 // lattice, which cost seconds (issue 25, item 10).
 //

@@ -1,5 +1,6 @@
 #pragma once
-// `bake`'s placement cache: FILE.placement.json beside the probe file FILE records the
+// The placement cache of every probe file ObtainProbes.h writes (bake's --out, the bench's
+// cache): FILE.placement.json beside the probe file FILE records the
 // automatic placement's key (probes/placement/PlacementKey.h), the input hash of the bake it
 // led to and the placement's summary. A re-run whose key matches takes the volumes from the
 // probe file and checks the bake's own hash against them, so "up to date" is printed without
@@ -11,7 +12,7 @@
 #include <optional>
 #include <string>
 
-namespace pb::app {
+namespace pb::probes {
 
 struct CachedPlacement {
     std::uint64_t placementKey = 0;
@@ -28,4 +29,4 @@ std::optional<CachedPlacement> readPlacementCache(const std::string& probeFile,
 // Written atomically; a failure to write it is not the bake's failure (a note on stderr).
 void writePlacementCache(const std::string& probeFile, const CachedPlacement& cached);
 
-} // namespace pb::app
+} // namespace pb::probes

@@ -8,7 +8,7 @@
 #include <exception>
 #include <iostream>
 
-namespace pb::app {
+namespace pb::probes {
 namespace {
 
 // Hex strings: JSON numbers lose 64-bit integers in most readers.
@@ -52,7 +52,7 @@ std::optional<CachedPlacement> readPlacementCache(const std::string& probeFile,
 }
 
 void writePlacementCache(const std::string& probeFile, const CachedPlacement& c) {
-    const nlohmann::json j{{"written_by", "probebench bake (apps/PlacementCache.h)"},
+    const nlohmann::json j{{"written_by", "probebench (renderer/probes/obtain/PlacementCache.h)"},
                            {"placement_key", hex(c.placementKey)},
                            {"input_hash", hex(c.inputHash)},
                            {"placement", c.placement}};
@@ -65,4 +65,4 @@ void writePlacementCache(const std::string& probeFile, const CachedPlacement& c)
     }
 }
 
-} // namespace pb::app
+} // namespace pb::probes
