@@ -31,6 +31,20 @@ struct ProbeVolume {
     float edgeBlend = 1.0f;
 
     int probeCount() const { return counts.x * counts.y * counts.z; }
+
+    // Every field that defines a volume, once, in the probe file's order: `f(label, field)` for
+    // each. The probe file's writer and reader (store/ProbeFile.cpp) and the bake's input hash
+    // (bake/BakeHash.cpp) all visit this list, so a field added here is written, read and
+    // hashed - none of them can forget it. `Volume` is ProbeVolume or const ProbeVolume.
+    template <class Volume, class F> static void forEachField(Volume& v, F&& f) {
+        f("name", v.name);
+        f("parent", v.parent);
+        f("center", v.center);
+        f("rotation", v.rotation);
+        f("extents", v.halfExtents);
+        f("counts", v.counts);
+        f("edge blend", v.edgeBlend);
+    }
     // Spacing per axis; an axis with one probe reports the box size (2 * halfExtent).
     glm::vec3 cellSize() const;
     // Smallest spacing over the axes with more than one probe (the box size if none has).

@@ -11,6 +11,8 @@
 #include "raytrace/RayScene.h"
 
 #include <algorithm>
+#include <string_view>
+#include <type_traits>
 
 namespace pb::probes {
 namespace {
@@ -47,6 +49,21 @@ void hashScene(Hasher& h, const scene::Scene& s) {
     raytrace::hashLights(h, s.lights);
 }
 
+// The volume's fields as ProbeVolume::forEachField lists them, with one exception kept so that
+// every existing probe file keeps its hash (the gate's committed bake among them): `parent` was
+// hashed after `counts`, before the list existed.
+void hashVolume(Hasher& h, const ProbeVolume& v) {
+    ProbeVolume::forEachField(v, [&h, &v](std::string_view label, const auto& field) {
+        using T = std::decay_t<decltype(field)>;
+        if (label == "parent") return;
+        if (label == "edge blend") h.str(v.parent);
+        if constexpr (std::is_same_v<T, std::string>)
+            h.str(field);
+        else
+            h.pod(field);
+    });
+}
+
 } // namespace
 
 void hashBakeVersionsAndScene(Hasher& h, const scene::Scene& scene) {
@@ -59,15 +76,8 @@ std::uint64_t bakeInputHash(const scene::Scene& scene, const BakeRequest& r) {
     Hasher h;
     hashBakeVersionsAndScene(h, scene);
     h.pod(std::uint64_t(r.volumes.size()));
-    for (const ProbeVolume& v : r.volumes) {
-        h.str(v.name);
-        h.pod(v.center);
-        h.pod(v.rotation);
-        h.pod(v.halfExtents);
-        h.pod(v.counts);
-        h.str(v.parent);
-        h.pod(v.edgeBlend);
-    }
+    for (const ProbeVolume& v : r.volumes)
+        hashVolume(h, v);
     h.pod(std::uint64_t(r.scenarios.size()));
     for (const Scenario& s : r.scenarios) {
         h.str(s.name);

@@ -87,6 +87,21 @@ void checkStoredValues(const ProbeTexture& t, StorageFormat f, const std::string
 
 // The storage-scale record (version 2, StorageScale.h): one f32 per scenario, shared by the
 // scenario's volumes. Kept as its own record after the scenarios.
+// A volume's fields (ProbeVolume::forEachField) as the file stores them: strings with their
+// length, the rotation as x, y, z, w whatever glm's own order, everything else as its bytes.
+void writeField(ByteWriter& w, const std::string& s) { w.str(s); }
+void writeField(ByteWriter& w, const glm::quat& q) { w.pod(glm::vec4(q.x, q.y, q.z, q.w)); }
+template <class T> void writeField(ByteWriter& w, const T& v) { w.pod(v); }
+
+void readField(ByteReader& r, const std::string& what, std::string& s) { s = r.str(what.c_str()); }
+void readField(ByteReader& r, const std::string& what, glm::quat& q) {
+    const auto v = r.pod<glm::vec4>(what.c_str());
+    q = glm::quat(v.w, v.x, v.y, v.z);
+}
+template <class T> void readField(ByteReader& r, const std::string& what, T& v) {
+    v = r.pod<T>(what.c_str());
+}
+
 void writeStorageScales(ByteWriter& w, const ProbeSet& set) {
     for (const auto& textures : set.irradiance) {
         const float s = textures.empty() ? 1.0f : textures.front().storageScale;
@@ -345,15 +360,8 @@ std::vector<std::uint8_t> serializeProbeSet(const ProbeSet& set) {
     w.pod(std::uint32_t(kVisibilityTile));
 
     w.pod(std::uint32_t(set.volumes.size()));
-    for (const ProbeVolume& v : set.volumes) {
-        w.str(v.name);
-        w.str(v.parent);
-        w.pod(v.center);
-        w.pod(glm::vec4(v.rotation.x, v.rotation.y, v.rotation.z, v.rotation.w));
-        w.pod(v.halfExtents);
-        w.pod(v.counts);
-        w.pod(v.edgeBlend);
-    }
+    for (const ProbeVolume& v : set.volumes)
+        ProbeVolume::forEachField(v, [&w](const char*, const auto& field) { writeField(w, field); });
     w.pod(std::uint32_t(set.scenarios.size()));
     for (const Scenario& s : set.scenarios) {
         w.str(s.name);
@@ -442,14 +450,9 @@ ProbeSet parseProbeSet(const std::vector<std::uint8_t>& bytes, const std::string
         throw fileError(path, "corrupt volume count " + std::to_string(volumeCount));
     for (std::uint32_t i = 0; i < volumeCount; ++i) {
         ProbeVolume v;
-        v.name = body.str("volume name");
-        v.parent = body.str("volume parent");
-        v.center = body.pod<glm::vec3>("volume center");
-        auto q = body.pod<glm::vec4>("volume rotation");
-        v.rotation = glm::quat(q.w, q.x, q.y, q.z);
-        v.halfExtents = body.pod<glm::vec3>("volume extents");
-        v.counts = body.pod<glm::ivec3>("volume counts");
-        v.edgeBlend = body.pod<float>("volume edge blend");
+        ProbeVolume::forEachField(v, [&body](const char* label, auto& field) {
+            readField(body, "volume " + std::string(label), field);
+        });
         set.volumes.push_back(v);
     }
     validateVolumes(set.volumes, path);
