@@ -8,7 +8,7 @@
 // (SCENE: built-in name or glTF; --region: only the points inside that box, e.g. one room)
 #include "core/ReuseFreedMemory.h"
 #include "core/Error.h"
-#include "probes/bake/SeedDifference.h"
+#include "studies/common/SeedDifference.h"
 #include "probes/store/ProbeFile.h"
 #include "scene/SceneLoader.h"
 
@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
     }
     try {
         const scene::Scene s = scene::loadScene(argv[1]);
-        const probes::SeedDifference d = probes::seedDifference(
+        const studies::SeedDifference d = studies::seedDifference(
             s, probes::readProbeFile(argv[2]), probes::readProbeFile(argv[3]), points,
             region ? &*region : nullptr);
         std::printf("%s: %zu points compared, relative difference of the irradiance between the "

@@ -20,7 +20,7 @@
 // Usage: bench_floor_corners [--rays R] [--gather-rays G] [--lines N] [--below Y]
 //                            [--patch X0 Z0 ROWS] [--dump FILE] [SCENE]  (default: Sponza, --below
 //                            1)
-#include "SharedScenes.h"
+#include "studies/common/SharedScenes.h"
 #include "core/Error.h"
 #include "core/Luminance.h"
 #include "core/ReuseFreedMemory.h"
@@ -31,7 +31,7 @@
 #include "probes/bake/RayScene.h"
 #include "probes/bake/SurfaceGather.h"
 #include "probes/placement/AutoPlacement.h"
-#include "probes/placement/LatticeScore.h"
+#include "studies/common/LatticeScore.h"
 #include "scene/SceneLoader.h"
 
 #include <algorithm>
@@ -43,6 +43,7 @@
 
 using namespace pb;
 using namespace pb::probes;
+using namespace pb::studies;
 
 namespace {
 
@@ -262,7 +263,7 @@ int main(int argc, char** argv) {
         } else
             scenePath = a;
     }
-    if (scenePath.empty()) scenePath = pb::bench::sharedScenes()[0];
+    if (scenePath.empty()) scenePath = pb::studies::sharedScenes()[0];
     try {
         const scene::Scene s = scene::loadScene(scenePath);
         const RayScene rs(s);

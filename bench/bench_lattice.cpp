@@ -25,7 +25,7 @@
 // Usage: bench_lattice [--lines N] [--rays R] [--gather-rays G] [--below Y] [--elevation DEG]
 //                      [--volumes FILE]...
 //                      [--json FILE] [SCENE...]   (default: the five shared scenes)
-#include "SharedScenes.h"
+#include "studies/common/SharedScenes.h"
 #include "core/Error.h"
 #include "core/Luminance.h"
 #include "core/ReuseFreedMemory.h"
@@ -34,7 +34,7 @@
 #include "probes/bake/RayScene.h"
 #include "probes/bake/SurfaceGather.h"
 #include "probes/placement/AutoPlacement.h"
-#include "probes/placement/LatticeScore.h"
+#include "studies/common/LatticeScore.h"
 #include "probes/store/VolumeFile.h"
 #include "scene/SceneLoader.h"
 
@@ -52,6 +52,7 @@
 
 using namespace pb;
 using namespace pb::probes;
+using namespace pb::studies;
 
 namespace {
 
@@ -206,7 +207,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "bench_lattice: error: --lines, --rays and --gather-rays must be >= 1\n");
         return 2;
     }
-    if (o.scenes.empty()) o.scenes = pb::bench::sharedScenes();
+    if (o.scenes.empty()) o.scenes = pb::studies::sharedScenes();
     nlohmann::json all = nlohmann::json::array();
     std::printf("%-28s %-22s %7s %8s %9s %10s %9s %9s\n", "scene", "placement", "lines",
                 "stored", "rel RMS", "score med", "p90", ">2");

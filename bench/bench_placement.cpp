@@ -47,7 +47,7 @@
 // Scenes: arguments (paths or built-in names), else the five shared scenes under
 // $PB_SCENES_DIR (default ../shared/scenes: run it from the repository root).
 #include "core/ReuseFreedMemory.h"
-#include "SharedScenes.h"
+#include "studies/common/SharedScenes.h"
 #include "core/Error.h"
 #include "probes/placement/AutoPlacement.h"
 #include "probes/bake/Baker.h"
@@ -381,7 +381,7 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    if (o.scenes.empty()) o.scenes = pb::bench::sharedScenes();
+    if (o.scenes.empty()) o.scenes = pb::studies::sharedScenes();
     nlohmann::json all = nlohmann::json::array();
     for (const std::string& scene : o.scenes) {
         try {

@@ -1,4 +1,4 @@
-#include "probes/bake/SeedDifference.h"
+#include "studies/common/SeedDifference.h"
 
 #include "core/Luminance.h"
 #include "probes/ProbeSampler.h"
@@ -10,7 +10,9 @@
 #include <cmath>
 #include <vector>
 
-namespace pb::probes {
+namespace pb::studies {
+
+using namespace pb::probes;
 
 namespace {
 
@@ -64,4 +66,4 @@ SeedDifference seedDifference(const scene::Scene& scene, const ProbeSet& a, cons
     return d;
 }
 
-} // namespace pb::probes
+} // namespace pb::studies

@@ -10,7 +10,7 @@
 
 #include <cstddef>
 
-namespace pb::probes {
+namespace pb::studies {
 
 struct SeedDifference {
     std::size_t points = 0; // compared (lit by both)
@@ -22,7 +22,8 @@ struct SeedDifference {
 };
 
 // region (optional): only the points inside it count (one room of a scene, say).
-SeedDifference seedDifference(const scene::Scene& scene, const ProbeSet& a, const ProbeSet& b,
-                              int points, const scene::Bounds* region = nullptr);
+SeedDifference seedDifference(const scene::Scene& scene, const probes::ProbeSet& a,
+                              const probes::ProbeSet& b, int points,
+                              const scene::Bounds* region = nullptr);
 
-} // namespace pb::probes
+} // namespace pb::studies

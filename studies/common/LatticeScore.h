@@ -15,7 +15,7 @@
 #include <limits>
 #include <vector>
 
-namespace pb::probes {
+namespace pb::studies {
 
 // A line of `samples` points `step` apart from `start` along `axis` (a unit world axis) on one
 // flat, upward-facing surface, each point lifted off it by a hair.
@@ -36,8 +36,8 @@ struct FloorLine {
 // tries at most.
 // Starts above `startBelow` are not drawn: a height a little over a storey's floor keeps the
 // lines on that storey (the roofs of a tall scene would otherwise take most of them).
-std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples, float step,
-                                      std::uint64_t seed = 0x11A77ECEu,
+std::vector<FloorLine> findFloorLines(const probes::RayScene& rs, int count, int samples,
+                                      float step, std::uint64_t seed = 0x11A77ECEu,
                                       float startBelow = std::numeric_limits<float>::infinity());
 
 // The residual's power at `frequency` (cycles per unit length) over the mean power 2 and 3
@@ -45,4 +45,4 @@ std::vector<FloorLine> findFloorLines(const RayScene& rs, int count, int samples
 // applying a Hann window. 0 when the neighbours hold no power at all (a flat residual).
 double latticeScore(const std::vector<double>& residual, float step, float frequency);
 
-} // namespace pb::probes
+} // namespace pb::studies

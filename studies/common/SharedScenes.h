@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace pb::bench {
+namespace pb::studies {
 
 inline std::vector<std::string> sharedScenes() {
     std::filesystem::path dir = "../shared/scenes";
@@ -18,4 +18,4 @@ inline std::vector<std::string> sharedScenes() {
             (dir / "dream_apartment/dream_apartment.gltf").string()};
 }
 
-} // namespace pb::bench
+} // namespace pb::studies

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace pb::probes {
+namespace pb::studies {
 
 struct WallLeak {
     double litMean = 0;  // mean luminance of E on the lit face
@@ -30,10 +30,10 @@ WallLeak measureWallLeak(const IrradianceLookup& lookup, int n = 12);
 // The probe volume the leak figure bakes `thin_wall` with: probes every 0.5 m from wall to
 // wall, so a probe plane lies inside the shared wall (as a regular lattice over a building
 // puts probes in thin walls).
-ProbeVolume thinWallVolume();
+probes::ProbeVolume thinWallVolume();
 
 // The leak of each technique and mode on one bake of `thin_wall` (set must be that bake):
 // "ddgi", "sh_l1/none", ... "sh_l2/validity_mask", in that order.
-std::vector<std::pair<std::string, WallLeak>> wallLeakPerTechnique(const ProbeSet& set);
+std::vector<std::pair<std::string, WallLeak>> wallLeakPerTechnique(const probes::ProbeSet& set);
 
-} // namespace pb::probes
+} // namespace pb::studies

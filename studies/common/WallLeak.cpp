@@ -1,9 +1,11 @@
-#include "probes/WallLeak.h"
+#include "studies/common/WallLeak.h"
 
 #include "probes/ProbeSampler.h"
 #include "probes/ShSampler.h"
 
-namespace pb::probes {
+namespace pb::studies {
+
+using namespace pb::probes;
 
 namespace {
 constexpr float kWallHalf = 0.05f; // BuiltinThinWall.cpp: the shared wall spans x in +-0.05
@@ -67,4 +69,4 @@ std::vector<std::pair<std::string, WallLeak>> wallLeakPerTechnique(const ProbeSe
     return out;
 }
 
-} // namespace pb::probes
+} // namespace pb::studies

@@ -1,11 +1,13 @@
-#include "probes/placement/LatticeScore.h"
+#include "studies/common/LatticeScore.h"
 
 #include "probes/bake/MidAirSamples.h"
 #include "probes/bake/RayDirections.h"
 
 #include <cmath>
 
-namespace pb::probes {
+namespace pb::studies {
+
+using namespace pb::probes;
 
 namespace {
 
@@ -107,4 +109,4 @@ double latticeScore(const std::vector<double>& residual, float step, float frequ
     return neighbours > 0.0 ? peak / neighbours : 0.0;
 }
 
-} // namespace pb::probes
+} // namespace pb::studies
