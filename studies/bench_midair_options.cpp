@@ -41,7 +41,6 @@
 #include "probes/ProbeSampler.h"
 #include "probes/ShIrradiance.h"
 #include "probes/StorageFormat.h"
-#include "probes/bake/Baker.h"
 #include "probes/bake/MidAirSamples.h"
 #include "probes/bake/RayScene.h"
 #include "probes/placement/AutoPlacement.h"
@@ -51,23 +50,32 @@
 #include "probes/store/SparseLayout.h"
 #include "probes/store/SparseStorage.h"
 #include "scene/SceneLoader.h"
+#include "studies/common/StudyBake.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <limits>
 #include <string>
+#include <vector>
 
 using namespace pb::probes;
 
 namespace {
-int gMaxProbes = 1500; // the grid of tests/unit/MidAirLookupTest.cpp
-int gRays = 64;
-bool gShOnly = false; // --sh-only: the kept fill, the own-irradiance rows and the costs
-bool gSlack = false;  // --slack: irradiance-only tiles chosen after the bake, only
-// --default-placement: the volume `bake --volumes auto` places by default (sparse, lattice
-// search) instead of the test's grid; its budget slack is reported (one volume only).
-bool gDefaultPlacement = false;
+
+// The command line (usage above).
+struct Options {
+    int maxProbes = 1500; // the grid of tests/unit/MidAirLookupTest.cpp
+    int rays = 64;
+    bool shOnly = false; // --sh-only: the kept fill, the own-irradiance rows and the costs
+    bool slack = false;  // --slack: irradiance-only tiles chosen after the bake, only
+    // --default-placement: the volume `bake --volumes auto` places by default (sparse, lattice
+    // search) instead of the test's grid; its budget slack is reported (one volume only).
+    bool defaultPlacement = false;
+    std::vector<std::string> scenes;
+};
+
 } // namespace
 
 namespace {
@@ -336,20 +344,21 @@ ChangedQueries changedQueries(const RayScene& rs, const ProbeSet& dense, const P
 // The built-in scene's dense bake of one root volume over its static bounds, and the same set
 // stored sparse: `sparse` as a default sparse bake of that grid gives it (the probes left out
 // keep nothing and are read as stand-ins: the storage every option below is weighed against),
+
 // `irradianceOnly` as `bake --free-space all` does (they keep their irradiance).
 struct DenseAndSparse {
     pb::scene::Scene scene;
-    BakeRequest request;
+    pb::studies::BakeOptions bakeOptions;
     std::vector<WorldTriangle> tris;
     ProbeSet dense, sparse, irradianceOnly;
     double placementSlack = -1.0; // --default-placement: 1 - the placement's bytes / its budget
 };
 
-DenseAndSparse bakeDenseAndSparse(const char* name) {
+DenseAndSparse bakeDenseAndSparse(const char* name, const Options& o) {
     DenseAndSparse b;
     b.scene = pb::scene::makeBuiltinScene(name);
-    BakeRequest& r = b.request;
-    if (gDefaultPlacement) {
+    pb::studies::BakeOptions& r = b.bakeOptions;
+    if (o.defaultPlacement) {
         AutoPlacementRequest req;
         req.sparse = true;
         req.freeSpace = FreeSpace::Ranked; // as `bake` places: the slack includes the tiles' share
@@ -360,12 +369,12 @@ DenseAndSparse bakeDenseAndSparse(const char* name) {
         r.volumes = a.volumes;
         b.placementSlack = 1.0 - double(a.bytes) / a.budgetBytes;
     } else {
-        r.volumes.push_back(fitAutoVolume(staticBakeBounds(b.scene), 0.0f, gMaxProbes).volume);
+        r.volumes.push_back(fitAutoVolume(staticBakeBounds(b.scene), 0.0f, o.maxProbes).volume);
     }
-    r.scenarios = resolveScenarios({"day"}, {}, b.scene);
-    r.settings.raysPerProbe = gRays;
-    r.settings.bounces = 2;
-    b.dense = bakeProbes(b.scene, r);
+    r.scenarios = {"day"};
+    r.rays = o.rays;
+    r.bounces = 2;
+    b.dense = pb::studies::bake(b.scene, r);
     b.tris = staticBakeTriangles(b.scene);
     b.irradianceOnly = b.sparse = b.dense;
     applySparseStorage(b.irradianceOnly, b.tris, FreeSpace::Irradiance);
@@ -373,70 +382,101 @@ DenseAndSparse bakeDenseAndSparse(const char* name) {
     return b;
 }
 
-void run(const char* name) {
-    DenseAndSparse b = bakeDenseAndSparse(name);
-    const BakeRequest& r = b.request;
-    const pb::scene::Scene& scene = b.scene;
-    const ProbeSet& dense = b.dense;
-    const auto& tris = b.tris;
-    ProbeSet& sparse = b.sparse;
-    const ProbeVolume& v = dense.volumes[0];
-    std::printf("%s: counts %d %d %d cell %.3f %.3f %.3f\n", name, v.counts.x, v.counts.y,
-                v.counts.z, v.cellSize().x, v.cellSize().y, v.cellSize().z);
-    const RayScene rs(scene);
-    const ProbeSampler ds(dense, 0), ss(sparse, 0);
-    const ChangedQueries cq = changedQueries(rs, dense, ds, ss);
-    const std::vector<Q>& changed = cq.queries;
-    const float floor = cq.floor;
+// One built-in scene's bakes (bakeDenseAndSparse), the samplers over them and the mid-air
+// lookups sparse storage changes: what every option below is weighed with. Built in place:
+// the samplers read its bakes.
+struct SceneContext {
+    SceneContext(const char* sceneName, const Options& o)
+        : name(sceneName), b(bakeDenseAndSparse(sceneName, o)), rs(b.scene), ds(b.dense, 0),
+          ss(b.sparse, 0), cq(changedQueries(rs, b.dense, ds, ss)) {}
+    SceneContext(const SceneContext&) = delete;
+    SceneContext& operator=(const SceneContext&) = delete;
 
-    // 1. The 10 worst of the kept option.
-    {
-        std::vector<std::pair<float, Q>> w;
-        for (const Q& q : changed)
-            w.push_back({std::abs(pb::luminance(ss.sample(q.p, q.n, q.n).irradiance) - q.dense) /
-                             std::max(q.dense, floor),
-                         q});
-        std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.first > b.first; });
-        const std::vector<int> src =
-            fillSources(v, sparse.states[0], sparse.settings.backfaceThreshold);
-        for (int i = 0; i < 10 && i < int(w.size()); ++i) {
-            const Q& q = w[size_t(i)].second;
-            const glm::vec3 g = (v.toLocal(q.p) + v.halfExtents) / v.cellSize();
-            glm::ivec3 b;
-            for (int a = 0; a < 3; ++a)
-                b[a] = std::clamp(int(std::floor(g[a])), 0, v.counts[a] - 2);
-            float near = 1e9f;
-            for (int dz = -1; dz <= 1; ++dz)
-                for (int dy = -1; dy <= 1; ++dy)
-                    for (int dx = -1; dx <= 1; ++dx) {
-                        if (!dx && !dy && !dz) continue;
-                        const RayHit h = rs.intersect(q.p, glm::normalize(glm::vec3(dx, dy, dz)));
-                        if (h.hit()) near = std::min(near, h.t);
-                    }
-            std::printf("  #%d rel %.3f p (%.2f %.2f %.2f) n (%g %g %g) dense %.4f sparse %.4f "
-                        "grid (%.2f %.2f %.2f) surf %.2f cells; corners:",
-                        i, w[size_t(i)].first, q.p.x, q.p.y, q.p.z, q.n.x, q.n.y, q.n.z, q.dense,
-                        pb::luminance(ss.sample(q.p, q.n, q.n).irradiance), g.x, g.y, g.z,
-                        near / v.minCellSize());
-            for (int c = 0; c < 8; ++c) {
-                const glm::ivec3 k = b + glm::ivec3(c & 1, (c >> 1) & 1, (c >> 2) & 1);
-                const int idx = v.probeIndex(k);
-                const ProbeState& s = sparse.states[0][size_t(idx)];
-                if (s.stored)
-                    std::printf(" S");
-                else if (!fillable(s, sparse.settings.backfaceThreshold))
-                    std::printf(" I");
-                else {
-                    const glm::ivec3 sc = v.probeCoords(src[size_t(idx)]);
-                    std::printf(" F%+d%+d%+d", sc.x - k.x, sc.y - k.y, sc.z - k.z);
-                }
-            }
-            std::printf("\n");
-        }
-    }
+    const char* name;
+    const DenseAndSparse b;
+    const RayScene rs;
+    const ProbeSampler ds, ss; // dense, sparse
+    const ChangedQueries cq;
+};
 
-    const std::size_t N = dense.probeCount();
+// The options table's columns (stats prints the rows).
+void printOptionsHeader() {
     std::printf("| option | scene | stored / grid | lookups | mean | p90 | p99 | worst | |\n");
+}
+
+// A lookup on the coarse step-2 lattice of makeCoarse.
+ProbeSampler coarseSampler(const Coarse& c) {
+    return ProbeSampler(std::vector<SamplerVolume>{
+        {&c.vol, c.states.data(), &c.irr, &c.vis, true, std::numeric_limits<float>::quiet_NaN()}});
+}
+
+void printGridCounts(const SceneContext& ctx) {
+    const ProbeVolume& v = ctx.b.dense.volumes[0];
+    std::printf("%s: counts %d %d %d cell %.3f %.3f %.3f\n", ctx.name, v.counts.x, v.counts.y,
+                v.counts.z, v.cellSize().x, v.cellSize().y, v.cellSize().z);
+}
+
+// 1. The 10 worst lookups of the kept option, with their corners and stand-ins.
+void printWorstKeptLookups(const SceneContext& ctx) {
+    const ProbeVolume& v = ctx.b.dense.volumes[0];
+    const ProbeSet& sparse = ctx.b.sparse;
+    const RayScene& rs = ctx.rs;
+    const ProbeSampler& ss = ctx.ss;
+    const std::vector<Q>& changed = ctx.cq.queries;
+    const float floor = ctx.cq.floor;
+    std::vector<std::pair<float, Q>> w;
+    for (const Q& q : changed)
+        w.push_back({std::abs(pb::luminance(ss.sample(q.p, q.n, q.n).irradiance) - q.dense) /
+                         std::max(q.dense, floor),
+                     q});
+    std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.first > b.first; });
+    const std::vector<int> src =
+        fillSources(v, sparse.states[0], sparse.settings.backfaceThreshold);
+    for (int i = 0; i < 10 && i < int(w.size()); ++i) {
+        const Q& q = w[size_t(i)].second;
+        const glm::vec3 g = (v.toLocal(q.p) + v.halfExtents) / v.cellSize();
+        glm::ivec3 b;
+        for (int a = 0; a < 3; ++a)
+            b[a] = std::clamp(int(std::floor(g[a])), 0, v.counts[a] - 2);
+        float near = 1e9f;
+        for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    if (!dx && !dy && !dz) continue;
+                    const RayHit h = rs.intersect(q.p, glm::normalize(glm::vec3(dx, dy, dz)));
+                    if (h.hit()) near = std::min(near, h.t);
+                }
+        std::printf("  #%d rel %.3f p (%.2f %.2f %.2f) n (%g %g %g) dense %.4f sparse %.4f "
+                    "grid (%.2f %.2f %.2f) surf %.2f cells; corners:",
+                    i, w[size_t(i)].first, q.p.x, q.p.y, q.p.z, q.n.x, q.n.y, q.n.z, q.dense,
+                    pb::luminance(ss.sample(q.p, q.n, q.n).irradiance), g.x, g.y, g.z,
+                    near / v.minCellSize());
+        for (int c = 0; c < 8; ++c) {
+            const glm::ivec3 k = b + glm::ivec3(c & 1, (c >> 1) & 1, (c >> 2) & 1);
+            const int idx = v.probeIndex(k);
+            const ProbeState& s = sparse.states[0][size_t(idx)];
+            if (s.stored)
+                std::printf(" S");
+            else if (!fillable(s, sparse.settings.backfaceThreshold))
+                std::printf(" I");
+            else {
+                const glm::ivec3 sc = v.probeCoords(src[size_t(idx)]);
+                std::printf(" F%+d%+d%+d", sc.x - k.x, sc.y - k.y, sc.z - k.z);
+            }
+        }
+        std::printf("\n");
+    }
+}
+
+// The kept fill (stand-ins) and `--free-space all` (irradiance-only tiles for the left-out).
+void printStandInRows(const SceneContext& ctx) {
+    const char* name = ctx.name;
+    const DenseAndSparse& b = ctx.b;
+    const ProbeSet& sparse = ctx.b.sparse;
+    const ProbeSampler& ss = ctx.ss;
+    const std::vector<Q>& changed = ctx.cq.queries;
+    const float floor = ctx.cq.floor;
+    const std::size_t N = ctx.b.dense.probeCount();
     stats(
         name, "stand-ins: lattice + nearest", changed, floor,
         [&](const Q& q) { return ss.sample(q.p, q.n, q.n); }, sparse.storedCount(), N);
@@ -446,120 +486,148 @@ void run(const char* name) {
             name, "--free-space all: lattice + irradiance-only", changed, floor,
             [&](const Q& q) { return is.sample(q.p, q.n, q.n); }, sparse.storedCount(), N);
     }
+}
 
-    // 1b. Absent probes outside geometry keep an irradiance of their own (issue 18's "coarse
-    //     level stored everywhere"), read at their own position with visibility weight 1:
-    //     the dense bake's L2 SH (its ray projection), L2/L3/L4 fits of the probe's 8x8 tile,
-    //     the tile resampled to 4x4 and 2x2 interiors, and the tile itself (absentAsTile).
-    {
-        struct Row {
-            const char* label;
-            AbsentIrradiance fn;
-        };
-        const std::vector<glm::vec3>& sh = dense.sh[0][0];
-        TileFit l2fit(dense, 2), l3(dense, 3), l4(dense, 4);
-        const CoarseTile t4(dense, 4), t2(dense, 2);
-        // Hanning window per band (l = 0, 1, 2: 1, 0.75, 0.25): less ringing, blurrier peaks.
-        auto windowed = [&](int i, const glm::vec3& d) {
-            glm::vec3 c[kShL2Coefficients];
-            for (int k = 0; k < kShL2Coefficients; ++k)
-                c[k] = sh[std::size_t(i) * kShL2Coefficients + std::size_t(k)] * (k == 0  ? 1.0f
-                                                                                  : k < 4 ? 0.75f
-                                                                                          : 0.25f);
-            return shIrradiance(c, d, kShL2Coefficients);
-        };
-        // Mixed: the absent probes next to a surface corner (26-neighbourhood) keep their 8x8
-        // tile, the others their L2 SH.
-        const std::vector<std::uint8_t> surf = surfaceCornerProbes(v, true, tris);
-        std::vector<std::uint8_t> nearSurface(surf.size(), 0);
-        std::size_t nearCount = 0, absentCount = 0;
-        for (int i = 0; i < v.probeCount(); ++i) {
-            if (!fillable(sparse.states[0][size_t(i)], sparse.settings.backfaceThreshold)) continue;
-            ++absentCount;
-            const glm::ivec3 c = v.probeCoords(i);
-            for (int dz = -1; dz <= 1; ++dz)
-                for (int dy = -1; dy <= 1; ++dy)
-                    for (int dx = -1; dx <= 1; ++dx) {
-                        const glm::ivec3 q = c + glm::ivec3(dx, dy, dz);
-                        if (glm::all(glm::greaterThanEqual(q, glm::ivec3(0))) &&
-                            glm::all(glm::lessThan(q, v.counts)) && surf[size_t(v.probeIndex(q))])
-                            nearSurface[size_t(i)] = 1;
-                    }
-            nearCount += nearSurface[size_t(i)];
-        }
-        std::printf("[ mixed ] %s: %zu absent probes outside geometry, %zu next to a surface "
-                    "corner\n",
-                    name, absentCount, nearCount);
-        auto l2 = [&](int i, const glm::vec3& d) {
-            return shIrradiance(&sh[std::size_t(i) * kShL2Coefficients], d, kShL2Coefficients);
-        };
-        const std::vector<Row> rows = {
-            {"absent: own L2 SH, the bake's ray projection (9 coefficients)", l2},
-            {"absent: own L2 SH, ray projection, Hanning-windowed", windowed},
-            {"absent: 8x8 tile next to a surface corner, L2 SH (rays) elsewhere",
-             [&](int i, const glm::vec3& d) {
-                 return nearSurface[size_t(i)] ? tileIrradiance(dense, i, d) : l2(i, d);
-             }},
-            {"absent: own tile fitted to band 2 (9 coefficients)", std::ref(l2fit)},
-            {"absent: own tile fitted to band 3 (16 coefficients)", std::ref(l3)},
-            {"absent: own tile fitted to band 4 (25 coefficients)", std::ref(l4)},
-            {"absent: own tile resampled to 2x2 interior (16 texels)", t2},
-            {"absent: own tile resampled to 4x4 interior (36 texels)", t4},
-            {"absent: own 8x8 tile (6x6 interior, 64 texels)", nullptr},
-        };
-        for (const Row& row : rows) {
-            const ProbeSet e = absentAsTile(dense, sparse, row.fn);
-            const ProbeSampler es(e, 0);
-            stats(
-                name, row.label, changed, floor,
-                [&](const Q& q) { return es.sample(q.p, q.n, q.n); }, sparse.storedCount(), N);
-            if (&row != &rows.front()) continue;
-            // The 5 worst lookups of the L2 row, and per absent corner of their cell its own
-            // tile's luminance at the normal against its L2 SH's: where the truncation misses.
-            std::vector<std::pair<float, Q>> w;
-            for (const Q& q : changed)
-                w.push_back(
-                    {std::abs(pb::luminance(es.sample(q.p, q.n, q.n).irradiance) - q.dense) /
+// The 5 worst lookups of the L2 row (`es`: its lookup), and per absent corner of their cell its
+// own tile's luminance at the normal against its L2 SH's (`l2`): where the truncation misses.
+void printL2WorstLookups(const SceneContext& ctx, const ProbeSampler& es,
+                         const std::function<glm::vec3(int, const glm::vec3&)>& l2) {
+    const ProbeSet& dense = ctx.b.dense;
+    const ProbeSet& sparse = ctx.b.sparse;
+    const ProbeVolume& v = dense.volumes[0];
+    const std::vector<Q>& changed = ctx.cq.queries;
+    const float floor = ctx.cq.floor;
+    std::vector<std::pair<float, Q>> w;
+    for (const Q& q : changed)
+        w.push_back({std::abs(pb::luminance(es.sample(q.p, q.n, q.n).irradiance) - q.dense) /
                          std::max(q.dense, floor),
                      q});
-            std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.first > b.first; });
-            for (int k = 0; k < 5 && k < int(w.size()); ++k) {
-                const Q& q = w[size_t(k)].second;
-                std::printf("  L2 worst #%d rel %.3f p (%.2f %.2f %.2f) n (%g %g %g) dense %.4f "
-                            "L2 %.4f; absent corners tile/L2:",
-                            k, w[size_t(k)].first, q.p.x, q.p.y, q.p.z, q.n.x, q.n.y, q.n.z,
-                            q.dense, pb::luminance(es.sample(q.p, q.n, q.n).irradiance));
-                const glm::vec3 g = (v.toLocal(q.p) + v.halfExtents) / v.cellSize();
-                glm::ivec3 base;
-                for (int a = 0; a < 3; ++a)
-                    base[a] = std::clamp(int(std::floor(g[a])), 0, v.counts[a] - 2);
-                const glm::vec3 ln = glm::transpose(v.localToWorldRotation()) * q.n;
-                for (int c = 0; c < 8; ++c) {
-                    const int i = v.probeIndex(base + glm::ivec3(c & 1, (c >> 1) & 1, c >> 2));
-                    if (!fillable(sparse.states[0][size_t(i)], sparse.settings.backfaceThreshold))
-                        continue;
-                    std::printf(" %.3f/%.3f", pb::luminance(tileIrradiance(dense, i, ln)),
-                                pb::luminance(l2(i, ln)));
-                }
-                std::printf("\n");
-            }
+    std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.first > b.first; });
+    for (int k = 0; k < 5 && k < int(w.size()); ++k) {
+        const Q& q = w[size_t(k)].second;
+        std::printf("  L2 worst #%d rel %.3f p (%.2f %.2f %.2f) n (%g %g %g) dense %.4f "
+                    "L2 %.4f; absent corners tile/L2:",
+                    k, w[size_t(k)].first, q.p.x, q.p.y, q.p.z, q.n.x, q.n.y, q.n.z, q.dense,
+                    pb::luminance(es.sample(q.p, q.n, q.n).irradiance));
+        const glm::vec3 g = (v.toLocal(q.p) + v.halfExtents) / v.cellSize();
+        glm::ivec3 base;
+        for (int a = 0; a < 3; ++a)
+            base[a] = std::clamp(int(std::floor(g[a])), 0, v.counts[a] - 2);
+        const glm::vec3 ln = glm::transpose(v.localToWorldRotation()) * q.n;
+        for (int c = 0; c < 8; ++c) {
+            const int i = v.probeIndex(base + glm::ivec3(c & 1, (c >> 1) & 1, c >> 2));
+            if (!fillable(sparse.states[0][size_t(i)], sparse.settings.backfaceThreshold)) continue;
+            std::printf(" %.3f/%.3f", pb::luminance(tileIrradiance(dense, i, ln)),
+                        pb::luminance(l2(i, ln)));
         }
+        std::printf("\n");
     }
-    if (gShOnly) return;
+}
 
-    // 2a. Coarse lattice lookup where the fine cell has a fillable corner.
-    const Coarse co = makeCoarse(sparse, sparse.states[0]);
-    const ProbeSampler cs(
-        std::vector<SamplerVolume>{{&co.vol, co.states.data(), &co.irr, &co.vis, true,
-                                    std::numeric_limits<float>::quiet_NaN()}});
+// 1b. Absent probes outside geometry keep an irradiance of their own (issue 18's "coarse level
+//     stored everywhere"), read at their own position with visibility weight 1: the dense
+//     bake's L2 SH (its ray projection), L2/L3/L4 fits of the probe's 8x8 tile, the tile
+//     resampled to 4x4 and 2x2 interiors, and the tile itself (absentAsTile).
+void printOwnIrradianceRows(const SceneContext& ctx) {
+    const char* name = ctx.name;
+    const ProbeSet& dense = ctx.b.dense;
+    const ProbeSet& sparse = ctx.b.sparse;
+    const auto& tris = ctx.b.tris;
+    const ProbeVolume& v = dense.volumes[0];
+    const std::vector<Q>& changed = ctx.cq.queries;
+    const float floor = ctx.cq.floor;
+    const std::size_t N = dense.probeCount();
+    struct Row {
+        const char* label;
+        AbsentIrradiance fn;
+    };
+    const std::vector<glm::vec3>& sh = dense.sh[0][0];
+    TileFit l2fit(dense, 2), l3(dense, 3), l4(dense, 4);
+    const CoarseTile t4(dense, 4), t2(dense, 2);
+    // Hanning window per band (l = 0, 1, 2: 1, 0.75, 0.25): less ringing, blurrier peaks.
+    auto windowed = [&](int i, const glm::vec3& d) {
+        glm::vec3 c[kShL2Coefficients];
+        for (int k = 0; k < kShL2Coefficients; ++k)
+            c[k] = sh[std::size_t(i) * kShL2Coefficients + std::size_t(k)] * (k == 0  ? 1.0f
+                                                                              : k < 4 ? 0.75f
+                                                                                      : 0.25f);
+        return shIrradiance(c, d, kShL2Coefficients);
+    };
+    // Mixed: the absent probes next to a surface corner (26-neighbourhood) keep their 8x8
+    // tile, the others their L2 SH.
+    const std::vector<std::uint8_t> surf = surfaceCornerProbes(v, true, tris);
+    std::vector<std::uint8_t> nearSurface(surf.size(), 0);
+    std::size_t nearCount = 0, absentCount = 0;
+    for (int i = 0; i < v.probeCount(); ++i) {
+        if (!fillable(sparse.states[0][size_t(i)], sparse.settings.backfaceThreshold)) continue;
+        ++absentCount;
+        const glm::ivec3 c = v.probeCoords(i);
+        for (int dz = -1; dz <= 1; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const glm::ivec3 q = c + glm::ivec3(dx, dy, dz);
+                    if (glm::all(glm::greaterThanEqual(q, glm::ivec3(0))) &&
+                        glm::all(glm::lessThan(q, v.counts)) && surf[size_t(v.probeIndex(q))])
+                        nearSurface[size_t(i)] = 1;
+                }
+        nearCount += nearSurface[size_t(i)];
+    }
+    std::printf("[ mixed ] %s: %zu absent probes outside geometry, %zu next to a surface "
+                "corner\n",
+                name, absentCount, nearCount);
+    auto l2 = [&](int i, const glm::vec3& d) {
+        return shIrradiance(&sh[std::size_t(i) * kShL2Coefficients], d, kShL2Coefficients);
+    };
+    const std::vector<Row> rows = {
+        {"absent: own L2 SH, the bake's ray projection (9 coefficients)", l2},
+        {"absent: own L2 SH, ray projection, Hanning-windowed", windowed},
+        {"absent: 8x8 tile next to a surface corner, L2 SH (rays) elsewhere",
+         [&](int i, const glm::vec3& d) {
+             return nearSurface[size_t(i)] ? tileIrradiance(dense, i, d) : l2(i, d);
+         }},
+        {"absent: own tile fitted to band 2 (9 coefficients)", std::ref(l2fit)},
+        {"absent: own tile fitted to band 3 (16 coefficients)", std::ref(l3)},
+        {"absent: own tile fitted to band 4 (25 coefficients)", std::ref(l4)},
+        {"absent: own tile resampled to 2x2 interior (16 texels)", t2},
+        {"absent: own tile resampled to 4x4 interior (36 texels)", t4},
+        {"absent: own 8x8 tile (6x6 interior, 64 texels)", nullptr},
+    };
+    for (const Row& row : rows) {
+        const ProbeSet e = absentAsTile(dense, sparse, row.fn);
+        const ProbeSampler es(e, 0);
+        stats(
+            name, row.label, changed, floor, [&](const Q& q) { return es.sample(q.p, q.n, q.n); },
+            sparse.storedCount(), N);
+        if (&row == &rows.front()) printL2WorstLookups(ctx, es, l2);
+    }
+}
+
+// 2a. A lookup on the coarse lattice where the fine cell has a fillable corner.
+void printCoarseLatticeRow(const SceneContext& ctx, const ProbeSampler& cs) {
+    const char* name = ctx.name;
+    const ProbeSet& sparse = ctx.b.sparse;
+    const ProbeSampler& ss = ctx.ss;
+    const std::vector<Q>& changed = ctx.cq.queries;
+    const float floor = ctx.cq.floor;
+    const std::size_t N = ctx.b.dense.probeCount();
     stats(
         name, "coarse lattice lookup in cells with absent corners", changed, floor,
         [&](const Q& q) {
             return anyFillable(sparse, q.p) ? cs.sample(q.p, q.n, q.n) : ss.sample(q.p, q.n, q.n);
         },
         sparse.storedCount(), N);
+}
 
-    // 3. Grow: keep every probe within g steps of a surface corner.
+// 3. Grow: keep every probe within g steps of a surface corner (with and without the coarse
+// lookup in cells that still have absent corners).
+void printGrowRows(const SceneContext& ctx) {
+    const char* name = ctx.name;
+    const ProbeSet& dense = ctx.b.dense;
+    const auto& tris = ctx.b.tris;
+    const ProbeVolume& v = dense.volumes[0];
+    const std::vector<Q>& changed = ctx.cq.queries;
+    const float floor = ctx.cq.floor;
+    const std::size_t N = dense.probeCount();
     for (int grow = 1; grow <= 2; ++grow) {
         std::vector<std::uint8_t> surf = surfaceCornerProbes(v, true, tris);
         std::vector<std::uint8_t> keep = sparseKeptProbes(v, true, tris);
@@ -597,17 +665,36 @@ void run(const char* name) {
             },
             grown.storedCount(), N);
     }
-    // Reference: the coarse lattice alone everywhere (a dense step-2 volume).
+}
+
+// Reference: the coarse lattice alone everywhere (a dense step-2 volume).
+void printCoarseEverywhereRow(const SceneContext& ctx, const Coarse& co, const ProbeSampler& cs) {
+    const char* name = ctx.name;
+    const std::vector<Q>& changed = ctx.cq.queries;
+    const float floor = ctx.cq.floor;
+    const std::size_t N = ctx.b.dense.probeCount();
     stats(
         name, "coarse lattice everywhere (ref)", changed, floor,
         [&](const Q& q) { return cs.sample(q.p, q.n, q.n); }, co.vol.probeCount(), N);
+}
 
-    // A coarse parent volume stored dense (its own bake over the lattice's points, with its
-    // own visibility range), read where the sparse child's cell has an absent corner; the
-    // child stores its surface corners and the lattice (as kept) or the surface corners only.
-    BakeRequest pr = r;
-    pr.volumes = {co.vol};
-    const ProbeSet parent = bakeProbes(scene, pr);
+// A coarse parent volume stored dense (its own bake over the lattice's points, with its
+// own visibility range), read where the sparse child's cell has an absent corner; the
+// child stores its surface corners and the lattice (as kept) or the surface corners only.
+void printCoarseParentRows(const SceneContext& ctx, const Coarse& co) {
+    const char* name = ctx.name;
+    const pb::scene::Scene& scene = ctx.b.scene;
+    const ProbeSet& dense = ctx.b.dense;
+    const ProbeSet& sparse = ctx.b.sparse;
+    const auto& tris = ctx.b.tris;
+    const ProbeVolume& v = dense.volumes[0];
+    const ProbeSampler& ss = ctx.ss;
+    const std::vector<Q>& changed = ctx.cq.queries;
+    const float floor = ctx.cq.floor;
+    const std::size_t N = dense.probeCount();
+    pb::studies::BakeOptions parentBake = ctx.b.bakeOptions;
+    parentBake.volumes = {co.vol};
+    const ProbeSet parent = pb::studies::bake(scene, parentBake);
     const ProbeSampler ps(parent, 0);
     stats(
         name, "dense coarse parent where the child cell has absent corners", changed, floor,
@@ -625,6 +712,23 @@ void run(const char* name) {
                                                  : so.sample(q.p, q.n, q.n);
         },
         surfaceOnly.storedCount() + parent.storedCount(), N);
+}
+
+// The options against the kept fill on one scene (--sh-only: up to the own-irradiance rows).
+void compareOptions(const char* name, const Options& o) {
+    const SceneContext ctx(name, o);
+    printGridCounts(ctx);
+    printWorstKeptLookups(ctx);
+    printOptionsHeader();
+    printStandInRows(ctx);
+    printOwnIrradianceRows(ctx);
+    if (o.shOnly) return;
+    const Coarse co = makeCoarse(ctx.b.sparse, ctx.b.sparse.states[0]);
+    const ProbeSampler cs = coarseSampler(co);
+    printCoarseLatticeRow(ctx, cs);
+    printGrowRows(ctx);
+    printCoarseEverywhereRow(ctx, co, cs);
+    printCoarseParentRows(ctx, co);
 }
 
 } // namespace
@@ -752,21 +856,20 @@ std::vector<int> rankedSources(const ProbeSet& sp, const std::vector<std::uint8_
     }
     return src;
 }
-void fillVariants(const char* name) {
-    DenseAndSparse b = bakeDenseAndSparse(name);
-    const pb::scene::Scene& scene = b.scene;
-    const ProbeSet& dense = b.dense;
-    const auto& tris = b.tris;
-    ProbeSet& sparse = b.sparse;
+void fillVariants(const char* name, const Options& o) {
+    const SceneContext ctx(name, o);
+    const ProbeSet& dense = ctx.b.dense;
+    const auto& tris = ctx.b.tris;
+    const ProbeSet& sparse = ctx.b.sparse;
     const ProbeVolume& v = dense.volumes[0];
-    const RayScene rs(scene);
-    const ProbeSampler ds(dense, 0), ss(sparse, 0);
-    const ChangedQueries cq = changedQueries(rs, dense, ds, ss);
+    const ProbeSampler& ss = ctx.ss;
+    const ChangedQueries& cq = ctx.cq;
     const std::vector<Q>& changed = cq.queries;
     const float floor = cq.floor;
     stats(
-        name, "default: nearest", changed, floor, [&](const Q& q) { return ss.sample(q.p, q.n, q.n); },
-        sparse.storedCount(), dense.probeCount());
+        name, "default: nearest", changed, floor,
+        [&](const Q& q) { return ss.sample(q.p, q.n, q.n); }, sparse.storedCount(),
+        dense.probeCount());
     const std::vector<std::uint8_t> surf = surfaceCornerProbes(v, true, tris);
     for (float pen : {0.01f, 0.5f, 1.0f}) {
         const ProbeSet e = emulateFill(sparse, rankedSources(sparse, surf, pen));
@@ -779,24 +882,11 @@ void fillVariants(const char* name) {
     }
 }
 
-// Irradiance-only tiles chosen after the bake (--slack; bench/results/
-// 2026-11-29-irradiance-only-half-tiles.md): the probes sparse storage leaves out (valid,
-// outside geometry) ranked by how far their stand-in's light is from their own, as the bake's
-// default free space ranks them (FreeSpaceTiles.h standInErrors); the first K keep their irradiance tile (irradiance-only, visibility weight 1), the rest read
-// their stand-in. Per scene: the mid-air lookups' mean and worst error against the dense
-// lookup (midAirLookup(): no fade, as the test) for K = 0, for the K that 1%, 3% and 12% of
-// budget slack buy (512 B per tile, slack = what the placement leaves of its budget), and the
-// smallest K found (bisection) that brings the worst to <= 15%, with what it costs in bytes.
-void slackVariants(const char* name) {
-    DenseAndSparse b = bakeDenseAndSparse(name);
+// The probes sparse storage leaves out outside geometry (irradiance-only under `--free-space
+// all`), worst stand-in first by the bake's own score (FreeSpaceTiles.h standInErrors): (score,
+// probe index).
+std::vector<std::pair<float, int>> rankedLeftOutProbes(const DenseAndSparse& b) {
     const ProbeVolume& v = b.dense.volumes[0];
-    const RayScene rs(b.scene);
-    const ProbeSampler ds(b.dense, 0), ss(b.sparse, 0);
-    const ChangedQueries cq = changedQueries(rs, b.dense, ds, ss);
-    std::vector<float> dense;
-    for (const Q& q : cq.queries)
-        dense.push_back(pb::luminance(ds.sample(q.p, q.n, q.n, midAirLookup()).irradiance));
-    // The bake's own score (FreeSpaceTiles.h standInErrors).
     const std::vector<std::vector<float>> scores =
         standInErrors(b.dense, {sparseKeptProbes(v, true, b.tris)});
     std::vector<std::pair<float, int>> ranked;
@@ -806,6 +896,26 @@ void slackVariants(const char* name) {
     std::sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& c) {
         return a.first > c.first || (a.first == c.first && a.second < c.second);
     });
+    return ranked;
+}
+
+// Irradiance-only tiles chosen after the bake (--slack; bench/results/
+// 2026-11-29-irradiance-only-half-tiles.md): the probes sparse storage leaves out (valid,
+// outside geometry) ranked by how far their stand-in's light is from their own, as the bake's
+// default free space ranks them (FreeSpaceTiles.h standInErrors); the first K keep their irradiance
+// tile (irradiance-only, visibility weight 1), the rest read their stand-in. Per scene: the mid-air
+// lookups' mean and worst error against the dense lookup (midAirLookup(): no fade, as the test) for
+// K = 0, for the K that 1%, 3% and 12% of budget slack buy (512 B per tile, slack = what the
+// placement leaves of its budget), and the smallest K found (bisection) that brings the worst to <=
+// 15%, with what it costs in bytes.
+void slackVariants(const char* name, const Options& o) {
+    const SceneContext ctx(name, o);
+    const DenseAndSparse& b = ctx.b;
+    const ChangedQueries& cq = ctx.cq;
+    std::vector<float> dense;
+    for (const Q& q : cq.queries)
+        dense.push_back(pb::luminance(ctx.ds.sample(q.p, q.n, q.n, midAirLookup()).irradiance));
+    const std::vector<std::pair<float, int>> ranked = rankedLeftOutProbes(b);
     struct Err {
         double mean = 0, worst = 0;
     };
@@ -844,7 +954,7 @@ void slackVariants(const char* name) {
     };
     row("stand-ins only", 0);
     std::vector<double> slacks = {0.01, 0.03, 0.12};
-    if (gDefaultPlacement) slacks.push_back(b.placementSlack);
+    if (o.defaultPlacement) slacks.push_back(b.placementSlack);
     for (double slack : slacks) {
         char label[48];
         std::snprintf(label, sizeof label, "slack %.1f%%", 100 * slack);
@@ -864,38 +974,45 @@ void slackVariants(const char* name) {
     }
     row("every left-out probe", ranked.size());
 }
+
+// The command line; exits with 2 on an unknown option.
+Options parseOptions(int argc, char** argv) {
+    Options o;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--max-probes" && i + 1 < argc)
+            o.maxProbes = std::atoi(argv[++i]);
+        else if (a == "--rays" && i + 1 < argc)
+            o.rays = std::atoi(argv[++i]);
+        else if (a == "--sh-only")
+            o.shOnly = true;
+        else if (a == "--slack")
+            o.slack = true;
+        else if (a == "--default-placement")
+            o.defaultPlacement = true;
+        else if (a.rfind("--", 0) == 0) {
+            std::fprintf(stderr, "bench_midair_options: unknown option %s\n", a.c_str());
+            std::exit(2);
+        } else
+            o.scenes.push_back(a);
+    }
+    if (o.scenes.empty()) o.scenes = {"cornell", "rooms", "courtyard"};
+    return o;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
-    std::vector<std::string> scenes;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (a == "--max-probes" && i + 1 < argc)
-            gMaxProbes = std::atoi(argv[++i]);
-        else if (a == "--rays" && i + 1 < argc)
-            gRays = std::atoi(argv[++i]);
-        else if (a == "--sh-only")
-            gShOnly = true;
-        else if (a == "--slack")
-            gSlack = true;
-        else if (a == "--default-placement")
-            gDefaultPlacement = true;
-        else if (a.rfind("--", 0) == 0) {
-            std::fprintf(stderr, "bench_midair_options: unknown option %s\n", a.c_str());
-            return 2;
-        } else
-            scenes.push_back(a);
-    }
-    if (scenes.empty()) scenes = {"cornell", "rooms", "courtyard"};
+    const Options o = parseOptions(argc, argv);
     try {
-        for (const std::string& s : scenes) {
-            if (gSlack) {
-                slackVariants(s.c_str());
+        for (const std::string& s : o.scenes) {
+            if (o.slack) {
+                slackVariants(s.c_str(), o);
                 continue;
             }
-            run(s.c_str());
-            if (!gShOnly) fillVariants(s.c_str());
+            compareOptions(s.c_str(), o);
+            if (!o.shOnly) fillVariants(s.c_str(), o);
             placementCost(s.c_str());
         }
     } catch (const std::exception& e) {
