@@ -46,22 +46,22 @@
 //
 // Scenes: arguments (paths or built-in names), else the five shared scenes under
 // $PB_SCENES_DIR (default ../shared/scenes: run it from the repository root).
-#include "core/ReuseFreedMemory.h"
-#include "studies/common/SharedScenes.h"
 #include "core/Error.h"
+#include "core/ReuseFreedMemory.h"
+#include "probes/ProbeSampler.h"
+#include "probes/StaticTriangles.h"
+#include "probes/bake/MidAirSamples.h"
+#include "probes/bake/RayDirections.h"
+#include "probes/bake/RayScene.h"
+#include "probes/bake/SurfaceGather.h"
+#include "probes/bake/SurfaceSamples.h"
 #include "probes/placement/AutoPlacement.h"
-#include "probes/bake/Baker.h"
 #include "probes/placement/IrradianceError.h"
 #include "probes/placement/LatticeAlignment.h"
 #include "probes/store/MemoryReport.h"
-#include "probes/ProbeSampler.h"
-#include "probes/bake/RayDirections.h"
-#include "probes/bake/RayScene.h"
-#include "probes/StaticTriangles.h"
-#include "probes/bake/SurfaceGather.h"
-#include "probes/bake/MidAirSamples.h"
-#include "probes/bake/SurfaceSamples.h"
 #include "scene/SceneLoader.h"
+#include "studies/common/SharedScenes.h"
+#include "studies/common/StudyBake.h"
 
 #include <algorithm>
 #include <chrono>
@@ -79,6 +79,7 @@ namespace {
 using namespace pb::probes;
 using Clock = std::chrono::steady_clock;
 
+// The command line (usage above).
 struct Options {
     std::vector<std::string> scenes;
     int points = 20000, rays = 64, refRays = 128, gatherRays = 512, threads = 0;
@@ -101,22 +102,53 @@ struct Candidate {
     std::vector<float> midAirWeights;
 };
 
-// A dynamic object's sides: the mid-air points are looked up (and gathered) with each.
-const std::vector<glm::vec3> kAxes = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
-                                      {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+// The placements one scene compares (usage above), and what the adaptive placements reported.
+struct Candidates {
+    Candidate ref, uniform, uniformHalf, adaptiveDense, uniformHalfSparse, asPlaced, adaptive;
+    std::vector<Candidate> sweep; // --lattice-sweep
+    AutoPlacementResult adaptiveDensePlacement, adaptivePlacement;
+    double adaptiveDensePlaceSeconds = 0.0;
 
-void bake(const pb::scene::Scene& s, Candidate& c, int threads) {
-    BakeRequest req;
-    req.volumes = c.volumes;
-    req.scenarios = resolveScenarios({}, {}, s);
-    req.settings.raysPerProbe = c.rays;
-    req.settings.bounces = c.bounces;
-    req.threads = threads;
-    req.sparse = c.sparse;
-    req.freeSpace = c.sparse ? FreeSpace::Ranked : FreeSpace::StandIns;
-    req.freeSpaceBudgetBytes = c.budget;
+    // Every candidate in the table's order (the reference first).
+    std::vector<Candidate*> all() {
+        std::vector<Candidate*> out{
+            &ref, &uniform, &uniformHalf, &adaptiveDense, &uniformHalfSparse, &asPlaced, &adaptive};
+        for (Candidate& c : sweep)
+            out.push_back(&c);
+        return out;
+    }
+};
+
+// Where the candidates are scored, and the truth there: surface points (a gather over the
+// hemisphere) and mid-air points (a gather over the sphere, per axis normal); the first
+// bounce of both from a 1-bounce bake of the reference grid.
+struct Truth {
+    std::vector<WorldTriangle> tris; // the static triangles (on-plane shares)
+    std::vector<GatherPoint> points;
+    std::vector<glm::vec3> surface;
+    double gatherSeconds = 0.0;
+    std::vector<glm::vec3> midAir, midAirTruth;
+    double midAirGatherSeconds = 0.0;
+    double firstBounceBakeSeconds = 0.0;
+};
+
+// A dynamic object's sides: the mid-air points are looked up (and gathered) with each.
+const std::vector<glm::vec3> kAxes = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                      {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+
+// Bakes the candidate (sparse ones with `bake`'s default free space: Ranked tiles within its
+// budget) and times the bake.
+void bakeCandidate(const pb::scene::Scene& s, Candidate& c, int threads) {
+    pb::studies::BakeOptions b;
+    b.volumes = c.volumes;
+    b.rays = c.rays;
+    b.bounces = c.bounces;
+    b.threads = threads;
+    b.sparse = c.sparse;
+    b.freeSpace = c.sparse ? FreeSpace::Ranked : FreeSpace::StandIns;
+    b.freeSpaceBudgetBytes = c.budget;
     auto t0 = Clock::now();
-    c.set = bakeProbes(s, req);
+    c.set = pb::studies::bake(s, b);
     c.bakeSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
@@ -140,163 +172,175 @@ void sampleAll(Candidate& c, const std::vector<GatherPoint>& pts,
     }
 }
 
+Candidate candidate(const std::string& name, int rays) {
+    Candidate c;
+    c.name = name;
+    c.rays = rays;
+    return c;
+}
 
-nlohmann::json runScene(const std::string& path, const Options& o) {
-    pb::scene::Scene s = pb::scene::loadScene(path);
+// --lattice-sweep: uniform dense grids at 0.9 - 1.25x the default spacing, on the naive
+// lattice (planes on the bounds) and on auto's (half a cell beyond them).
+std::vector<Candidate> latticeSweep(const pb::scene::Bounds& bounds, float uniformSpacing,
+                                    int rays) {
+    std::vector<Candidate> sweep;
+    for (int pad = 0; pad < 2; ++pad)
+        for (float m : {0.9f, 0.95f, 1.0f, 1.05f, 1.1f, 1.15f, 1.2f, 1.25f}) {
+            Candidate c = candidate(
+                std::string(pad ? "pad " : "fit ") + std::to_string(m).substr(0, 4), rays);
+            c.volumes.push_back(
+                fitAutoVolume(bounds, m * uniformSpacing, 1 << 18,
+                              pad ? AutoLattice::HalfCellMargin : AutoLattice::FitBounds)
+                    .volume);
+            sweep.push_back(c);
+        }
+    return sweep;
+}
+
+// The reference grid (half the default spacing), the uniform grids, and the adaptive
+// placements within half of the uniform grid's memory, dense and sparse.
+void placeCandidates(const pb::scene::Scene& s, const Options& o, Candidates& c) {
     const pb::scene::Bounds bounds = staticBakeBounds(s);
     const float uniformSpacing = defaultUniformSpacing(bounds);
 
-    Candidate ref;
-    ref.name = "reference";
-    ref.rays = o.refRays;
-    ref.volumes.push_back(fitAutoVolume(bounds, 0.5f * uniformSpacing, 1 << 18).volume);
+    c.ref = candidate("reference", o.refRays);
+    c.ref.volumes.push_back(fitAutoVolume(bounds, 0.5f * uniformSpacing, 1 << 18).volume);
 
     AutoPlacementRequest uniformReq;
     uniformReq.mode = AutoMode::Uniform;
-    Candidate uniform;
-    uniform.name = "uniform";
-    uniform.rays = o.rays;
+    c.uniform = candidate("uniform", o.rays);
     AutoPlacementResult u = placeAutoVolumes(s, uniformReq);
-    uniform.volumes = u.volumes;
+    c.uniform.volumes = u.volumes;
     const double half = 0.5 * double(u.bytes);
 
-    Candidate uniformHalf;
-    uniformHalf.name = "uniform/2";
-    uniformHalf.rays = o.rays;
+    c.uniformHalf = candidate("uniform/2", o.rays);
     uniformReq.budgetBytes = half;
-    uniformHalf.volumes = placeAutoVolumes(s, uniformReq).volumes;
+    c.uniformHalf.volumes = placeAutoVolumes(s, uniformReq).volumes;
 
     AutoPlacementRequest adaptiveReq;
     adaptiveReq.budgetBytes = half;
     adaptiveReq.adaptive.threads = o.threads;
     auto t0 = Clock::now();
-    AutoPlacementResult a = placeAutoVolumes(s, adaptiveReq);
-    double placeSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    Candidate adaptiveDense;
-    adaptiveDense.name = "adaptive dense";
-    adaptiveDense.rays = o.rays;
-    adaptiveDense.volumes = a.volumes;
+    c.adaptiveDensePlacement = placeAutoVolumes(s, adaptiveReq);
+    c.adaptiveDensePlaceSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    c.adaptiveDense = candidate("adaptive dense", o.rays);
+    c.adaptiveDense.volumes = c.adaptiveDensePlacement.volumes;
 
     // The same two under the same budget, stored sparse (`--volumes auto`'s default).
     uniformReq.sparse = true;
     uniformReq.freeSpace = FreeSpace::Ranked;
-    Candidate uniformHalfSparse;
-    uniformHalfSparse.name = "uniform/2 sparse";
-    uniformHalfSparse.rays = o.rays;
-    uniformHalfSparse.sparse = true;
-    uniformHalfSparse.budget = half;
-    uniformHalfSparse.volumes = placeAutoVolumes(s, uniformReq).volumes;
+    c.uniformHalfSparse = candidate("uniform/2 sparse", o.rays);
+    c.uniformHalfSparse.sparse = true;
+    c.uniformHalfSparse.budget = half;
+    c.uniformHalfSparse.volumes = placeAutoVolumes(s, uniformReq).volumes;
     adaptiveReq.sparse = true;
     adaptiveReq.freeSpace = FreeSpace::Ranked;
-    Candidate adaptive;
-    adaptive.name = "adaptive";
-    adaptive.rays = o.rays;
-    adaptive.sparse = true;
-    adaptive.budget = half;
-    AutoPlacementResult as = placeAutoVolumes(s, adaptiveReq);
-    adaptive.volumes = as.volumes;
+    c.adaptive = candidate("adaptive", o.rays);
+    c.adaptive.sparse = true;
+    c.adaptive.budget = half;
+    c.adaptivePlacement = placeAutoVolumes(s, adaptiveReq);
+    c.adaptive.volumes = c.adaptivePlacement.volumes;
     // The same without the measured lattice search (LatticeShiftSearch.h): what it bought.
     adaptiveReq.latticeSearch = false;
-    Candidate asPlaced = adaptive;
-    asPlaced.name = "adaptive unshifted";
-    asPlaced.volumes = placeAutoVolumes(s, adaptiveReq).volumes;
+    c.asPlaced = c.adaptive;
+    c.asPlaced.name = "adaptive unshifted";
+    c.asPlaced.volumes = placeAutoVolumes(s, adaptiveReq).volumes;
 
-    // --lattice-sweep: uniform dense grids at 0.9 - 1.25x the default spacing, on the naive
-    // lattice (planes on the bounds) and on auto's (half a cell beyond them).
-    std::vector<Candidate> sweep;
-    if (o.latticeSweep)
-        for (int pad = 0; pad < 2; ++pad)
-            for (float m : {0.9f, 0.95f, 1.0f, 1.05f, 1.1f, 1.15f, 1.2f, 1.25f}) {
-                Candidate c;
-                c.name = std::string(pad ? "pad " : "fit ") + std::to_string(m).substr(0, 4);
-                c.rays = o.rays;
-                c.volumes.push_back(
-                    fitAutoVolume(bounds, m * uniformSpacing, 1 << 18,
-                                  pad ? AutoLattice::HalfCellMargin : AutoLattice::FitBounds)
-                        .volume);
-                sweep.push_back(c);
-            }
-    RayScene rays(s);
+    if (o.latticeSweep) c.sweep = latticeSweep(bounds, uniformSpacing, o.rays);
+}
+
+// The truth at the surface points (the last bounce gathered at each point, the first from a
+// 1-bounce bake of the reference grid) and at the mid-air points (issue 18: free-space points
+// inside the reference grid's volume, not inside geometry (MidAirSamples.h), six normals each,
+// against a sphere gather at the point).
+Truth gatherTruth(const pb::scene::Scene& s, const RayScene& rays, const Candidate& ref,
+                  const Options& o) {
+    Truth t;
     const glm::vec3 refCell = ref.volumes[0].cellSize();
-    const std::vector<WorldTriangle> tris = staticBakeTriangles(s);
-    const std::vector<GatherPoint> pts =
-        surfaceSamples(tris, rays, o.points, std::min(refCell.x, std::min(refCell.y, refCell.z)));
+    const float minRefCell = std::min(refCell.x, std::min(refCell.y, refCell.z));
+    t.tris = staticBakeTriangles(s);
+    t.points = surfaceSamples(t.tris, rays, o.points, minRefCell);
 
-    // The truth: the last bounce gathered at each point, the first from a 1-bounce bake of
-    // the reference grid.
     Candidate firstBounce = ref;
     firstBounce.bounces = 1;
-    bake(s, firstBounce, o.threads);
+    bakeCandidate(s, firstBounce, o.threads);
+    t.firstBounceBakeSeconds = firstBounce.bakeSeconds;
     GatherSettings gs;
     gs.rays = o.gatherRays;
     gs.threads = o.threads;
     const std::vector<Scenario> scenarios = resolveScenarios({}, {}, s);
-    t0 = Clock::now();
+    auto t0 = Clock::now();
     const ProbeSampler firstBounceProbes(firstBounce.set, 0);
-    const std::vector<glm::vec3> truth =
-        gatherIrradiance(rays, scenarios[0], s.lights, pts, &firstBounceProbes, gs);
-    const double gatherSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    // Mid-air (issue 18): free-space points inside the reference grid's volume, not inside
-    // geometry (MidAirSamples.h), six normals each, against a sphere gather at the point.
-    const std::vector<glm::vec3> midAir = midAirSamples(
-        rays, ref.volumes, o.midAirPoints, std::min(refCell.x, std::min(refCell.y, refCell.z)));
+    t.surface = gatherIrradiance(rays, scenarios[0], s.lights, t.points, &firstBounceProbes, gs);
+    t.gatherSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    t.midAir = midAirSamples(rays, ref.volumes, o.midAirPoints, minRefCell);
     t0 = Clock::now();
-    const std::vector<glm::vec3> midAirTruth =
-        gatherIrradianceSphere(rays, scenarios[0], s.lights, midAir, kAxes, &firstBounceProbes, gs);
-    const double midAirGatherSeconds =
-        std::chrono::duration<double>(Clock::now() - t0).count();
+    t.midAirTruth = gatherIrradianceSphere(rays, scenarios[0], s.lights, t.midAir, kAxes,
+                                           &firstBounceProbes, gs);
+    t.midAirGatherSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return t;
+}
 
+// One candidate's row: memory, errors against the truth (and against the reference grid),
+// the mid-air error and unlit lookups, the share of the surface on its probe planes.
+nlohmann::json candidateRow(const Candidate& c, const Candidate& ref, const Truth& t) {
+    MemoryReport m = memoryReport(c.set);
+    const IrradianceErrors err = irradianceErrors(c.values, t.surface, ref.weights);
+    const IrradianceErrors grid =
+        &c == &ref ? IrradianceErrors{} : irradianceErrors(c.values, ref.values, ref.weights);
+    // Every mid-air point counts: one a candidate leaves unlit (weight 0) is E = 0 there,
+    // as the renderer's dynamic objects would see it (its ambient aside).
+    const IrradianceErrors air = irradianceErrors(c.midAirValues, t.midAirTruth);
+    std::size_t unlit = 0;
+    for (float w : c.midAirWeights)
+        unlit += w > 0.0f ? 0 : 1;
+    glm::vec3 cell = c.volumes.back().cellSize();
+    float onPlane = 0.0f;
+    for (const ProbeVolume& v : c.volumes)
+        onPlane = std::max(onPlane, surfaceOnProbePlanes(v, t.tris));
+    return {{"placement", c.name},
+            {"on_plane", onPlane},
+            {"volumes", c.volumes.size()},
+            {"probes", m.total.probes},
+            {"stored_probes", m.total.storedProbes},
+            {"mib", double(m.total.storedTotal()) / (1024.0 * 1024.0)},
+            {"finest_spacing", std::max(cell.x, std::max(cell.y, cell.z))},
+            {"far_probes", m.total.sparse.far},
+            {"rays", c.rays},
+            {"mean_relative_error", err.relative},
+            {"nmae", err.nmae},
+            {"grid_relative_error", grid.relative},
+            {"mid_air_relative_error", air.relative},
+            {"mid_air_unlit", unlit},
+            {"points", err.points},
+            {"bake_s", c.bakeSeconds}};
+}
+
+nlohmann::json runScene(const std::string& path, const Options& o) {
+    pb::scene::Scene s = pb::scene::loadScene(path);
+    Candidates c;
+    placeCandidates(s, o, c);
+    RayScene rays(s);
+    const Truth t = gatherTruth(s, rays, c.ref, o);
     nlohmann::json rows = nlohmann::json::array();
-    std::vector<Candidate*> all{
-        &ref, &uniform, &uniformHalf, &adaptiveDense, &uniformHalfSparse, &asPlaced, &adaptive};
-    for (Candidate& c : sweep)
-        all.push_back(&c);
-    for (Candidate* c : all) {
-        bake(s, *c, o.threads);
-        sampleAll(*c, pts, midAir);
+    const std::vector<Candidate*> all = c.all();
+    for (Candidate* candidate : all) {
+        bakeCandidate(s, *candidate, o.threads);
+        sampleAll(*candidate, t.points, t.midAir);
     }
-    for (Candidate* c : all) {
-        MemoryReport m = memoryReport(c->set);
-        const IrradianceErrors err = irradianceErrors(c->values, truth, ref.weights);
-        const IrradianceErrors grid =
-            c == &ref ? IrradianceErrors{} : irradianceErrors(c->values, ref.values, ref.weights);
-        // Every mid-air point counts: one a candidate leaves unlit (weight 0) is E = 0 there,
-        // as the renderer's dynamic objects would see it (its ambient aside).
-        const IrradianceErrors air = irradianceErrors(c->midAirValues, midAirTruth);
-        std::size_t unlit = 0;
-        for (float w : c->midAirWeights)
-            unlit += w > 0.0f ? 0 : 1;
-        glm::vec3 cell = c->volumes.back().cellSize();
-        float onPlane = 0.0f;
-        for (const ProbeVolume& v : c->volumes)
-            onPlane = std::max(onPlane, surfaceOnProbePlanes(v, tris));
-        rows.push_back({{"placement", c->name},
-                        {"on_plane", onPlane},
-                        {"volumes", c->volumes.size()},
-                        {"probes", m.total.probes},
-                        {"stored_probes", m.total.storedProbes},
-                        {"mib", double(m.total.storedTotal()) / (1024.0 * 1024.0)},
-                        {"finest_spacing", std::max(cell.x, std::max(cell.y, cell.z))},
-                        {"far_probes", m.total.sparse.far},
-                        {"rays", c->rays},
-                        {"mean_relative_error", err.relative},
-                        {"nmae", err.nmae},
-                        {"grid_relative_error", grid.relative},
-                        {"mid_air_relative_error", air.relative},
-                        {"mid_air_unlit", unlit},
-                        {"points", err.points},
-                        {"bake_s", c->bakeSeconds}});
-    }
+    for (const Candidate* candidate : all)
+        rows.push_back(candidateRow(*candidate, c.ref, t));
+    const AutoPlacementResult& as = c.adaptivePlacement;
     return {{"scene", s.name},
             {"points_requested", o.points},
-            {"points_on_surfaces", pts.size()},
-            {"adaptive_dense_place_s", placeSeconds},
+            {"points_on_surfaces", t.points.size()},
+            {"adaptive_dense_place_s", c.adaptiveDensePlaceSeconds},
             {"gather_rays", o.gatherRays},
-            {"gather_s", gatherSeconds},
-            {"mid_air_points", midAir.size()},
-            {"mid_air_gather_s", midAirGatherSeconds},
-            {"reference_first_bounce_bake_s", firstBounce.bakeSeconds},
-            {"adaptive_dense_notes", a.notes},
+            {"gather_s", t.gatherSeconds},
+            {"mid_air_points", t.midAir.size()},
+            {"mid_air_gather_s", t.midAirGatherSeconds},
+            {"reference_first_bounce_bake_s", t.firstBounceBakeSeconds},
+            {"adaptive_dense_notes", c.adaptiveDensePlacement.notes},
             {"adaptive_notes", as.notes},
             {"adaptive_lattice_search",
              {{"shift_cells",
@@ -308,6 +352,7 @@ nlohmann::json runScene(const std::string& path, const Options& o) {
             {"rows", rows}};
 }
 
+// One scene's table (runScene's result).
 void printTable(const nlohmann::json& r) {
     std::printf("\n%s: %zu surface points (adaptive dense placement %.2f s, truth gathered "
                 "with %d rays in %.2f s)\n",
@@ -339,10 +384,8 @@ void printTable(const nlohmann::json& r) {
                     row["mid_air_unlit"].get<std::size_t>());
 }
 
-} // namespace
-
-int main(int argc, char** argv) {
-    pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
+// The command line; exits with 2 on a bad one.
+Options parseOptions(int argc, char** argv) {
     Options o;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
@@ -375,13 +418,21 @@ int main(int argc, char** argv) {
                 o.scenes.push_back(a);
         } catch (const std::logic_error&) {
             std::cerr << "bench_placement: " << a << ": expects an integer\n";
-            return 2;
+            std::exit(2);
         } catch (const pb::Error& e) {
             std::cerr << "bench_placement: " << e.what() << "\n";
-            return 2;
+            std::exit(2);
         }
     }
     if (o.scenes.empty()) o.scenes = pb::studies::sharedScenes();
+    return o;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
+    const Options o = parseOptions(argc, argv);
     nlohmann::json all = nlohmann::json::array();
     for (const std::string& scene : o.scenes) {
         try {
