@@ -20,8 +20,8 @@
 #include "frame/FrameRenderer.h"
 #include "metrics/Statistics.h"
 #include "platforms/Platform.h"
-#include "probes/bake/Baker.h"
 #include "stress/StressScene.h"
+#include "studies/common/StudyBake.h"
 
 #if __has_include(<valgrind/callgrind.h>)
 #include <valgrind/callgrind.h> // only marks the measured frames (no-ops outside valgrind)
@@ -43,11 +43,42 @@ using namespace pb;
 
 namespace {
 
+// The command line (usage above).
+struct Options {
+    int width = 960, height = 540;
+    int rounds = 9, frames = 3;
+    std::string only; // --only BASE/GUARDS, e.g. "defaults/both": that configuration alone
+};
+
 struct Config {
     std::string base, name;
     profile::Profile profile;
 };
 
+// The stress room and its probes: what every configuration renders.
+struct StressRoom {
+    stress::StressScene scene;
+    probes::ProbeSet probes;
+};
+
+int intArg(int argc, char** argv, const char* name, int def) {
+    for (int i = 1; i + 1 < argc; ++i)
+        if (std::strcmp(argv[i], name) == 0) return std::atoi(argv[i + 1]);
+    return def;
+}
+
+Options parseOptions(int argc, char** argv) {
+    Options o;
+    o.width = intArg(argc, argv, "--width", 960);
+    o.height = intArg(argc, argv, "--height", 540);
+    o.rounds = std::max(1, intArg(argc, argv, "--rounds", 9));
+    o.frames = std::max(1, intArg(argc, argv, "--frames", 3));
+    for (int i = 1; i + 1 < argc; ++i)
+        if (std::strcmp(argv[i], "--only") == 0) o.only = argv[i + 1];
+    return o;
+}
+
+// Both base profiles x the four guard settings, in table order (each base's "off" first).
 std::vector<Config> configs() {
     std::vector<Config> out;
     const std::vector<std::pair<std::string, std::vector<std::string>>> bases = {
@@ -71,62 +102,63 @@ std::vector<Config> configs() {
     return out;
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
-
-int intArg(int argc, char** argv, const char* name, int def) {
-    for (int i = 1; i + 1 < argc; ++i)
-        if (std::strcmp(argv[i], name) == 0) return std::atoi(argv[i + 1]);
-    return def;
-}
-
-} // namespace
-
-int main(int argc, char** argv) {
-    pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
-    const int width = intArg(argc, argv, "--width", 960);
-    const int height = intArg(argc, argv, "--height", 540);
-    const int rounds = std::max(1, intArg(argc, argv, "--rounds", 9));
-    const int frames = std::max(1, intArg(argc, argv, "--frames", 3));
-    std::string only;
-    for (int i = 1; i + 1 < argc; ++i)
-        if (std::strcmp(argv[i], "--only") == 0) only = argv[i + 1]; // "defaults/both"
-
-    platform::PlatformOptions po;
-    auto platform = platform::createPlatform(po);
-    stress::StressSceneParams params;
-    params.probeCounts = glm::ivec3(9, 5, 9);
-    params.lightScale = 1e3; // exposure 1e-3: the exposure guard scales by 2^-9
-    const stress::StressScene s = stress::makeStressScene(params);
-    probes::BakeRequest req;
-    req.volumes = {s.volume};
-    req.scenarios = probes::resolveScenarios({"day"}, {}, s.scene);
-    req.settings.raysPerProbe = 64;
-    const probes::ProbeSet set = probes::bakeProbes(s.scene, req);
-    render::FrameSettings settings = render::defaultFrameSettings(s.scene);
-    const render::RenderView view =
-        render::makeRenderView(s.view, s.scene.worldBounds(), width, height);
-
+// configs(), or only the one --only names.
+std::vector<Config> selectedConfigs(const std::string& only) {
     std::vector<Config> all = configs();
     if (!only.empty())
         all.erase(std::remove_if(all.begin(), all.end(),
                                  [&](const Config& c) { return c.base + "/" + c.name != only; }),
                   all.end());
+    return all;
+}
+
+// The stress room (probes 9x5x9), lit 1e3 times brighter so that exposure 1e-3 makes the
+// exposure guard really scale (2^-9), baked with 64 rays.
+StressRoom bakeStressRoom() {
+    stress::StressSceneParams params;
+    params.probeCounts = glm::ivec3(9, 5, 9);
+    params.lightScale = 1e3; // exposure 1e-3: the exposure guard scales by 2^-9
+    StressRoom room{stress::makeStressScene(params), {}};
+    studies::BakeOptions bake;
+    bake.volumes = {room.scene.volume};
+    bake.scenarios = {"day"};
+    bake.rays = 64;
+    room.probes = studies::bake(room.scene.scene, bake);
+    return room;
+}
+
+// One renderer per configuration, each warmed up with one frame (it compiles the shaders).
+std::vector<std::unique_ptr<render::FrameRenderer>>
+warmedUpRenderers(const StressRoom& room, const std::vector<Config>& configs,
+                  const render::RenderView& view) {
+    const render::FrameSettings settings = render::defaultFrameSettings(room.scene.scene);
     std::vector<std::unique_ptr<render::FrameRenderer>> renderers;
-    for (const Config& c : all) {
+    for (const Config& c : configs) {
         render::GiOptions gi;
-        gi.probes = &set;
+        gi.probes = &room.probes;
         gi.profile = c.profile;
-        renderers.push_back(std::make_unique<render::FrameRenderer>(s.scene, settings, gi));
+        renderers.push_back(
+            std::make_unique<render::FrameRenderer>(room.scene.scene, settings, gi));
         renderers.back()->render(view); // compiles the shaders: not counted
         glFinish();
     }
-    std::vector<std::vector<double>> ms(all.size());
+    return renderers;
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+// Per configuration, the median frame ms of every round; each round renders every
+// configuration `frames` times in turn (CPU clock around the frame and glFinish).
+std::vector<std::vector<double>>
+timeInterleavedRounds(const std::vector<std::unique_ptr<render::FrameRenderer>>& renderers,
+                      const render::RenderView& view, int rounds, int frames) {
+    std::vector<std::vector<double>> ms(renderers.size());
     CALLGRIND_START_INSTRUMENTATION;
     for (int r = 0; r < rounds; ++r)
-        for (std::size_t c = 0; c < all.size(); ++c) {
+        for (std::size_t c = 0; c < renderers.size(); ++c) {
             std::vector<double> t;
             for (int f = 0; f < frames; ++f) {
                 const auto t0 = std::chrono::steady_clock::now();
@@ -139,18 +171,41 @@ int main(int argc, char** argv) {
             ms[c].push_back(median(t));
         }
     CALLGRIND_STOP_INSTRUMENTATION;
+    return ms;
+}
 
-    std::printf("bench_guards: stress room %dx%d, %s, %d rounds x %d frames, interleaved\n", width,
-                height, platform->description().c_str(), rounds, frames);
+// The table: per configuration its median, and against its base's "off" the paired shift of
+// the round medians with its 95% interval (from 2 rounds on).
+void printTable(const Options& o, const platform::Platform& platform,
+                const std::vector<Config>& all, const std::vector<std::vector<double>>& ms) {
+    std::printf("bench_guards: stress room %dx%d, %s, %d rounds x %d frames, interleaved\n",
+                o.width, o.height, platform.description().c_str(), o.rounds, o.frames);
     std::printf("%-14s %-9s %10s %28s\n", "base", "guards", "median ms", "vs off: ms [95% CI]");
     for (std::size_t c = 0; c < all.size(); ++c) {
         std::printf("%-14s %-9s %10.2f", all[c].base.c_str(), all[c].name.c_str(), median(ms[c]));
         std::size_t off = c - c % 4;
-        if (c % 4 != 0 && off < all.size() && all[off].name == "off" && rounds >= 2) {
+        if (c % 4 != 0 && off < all.size() && all[off].name == "off" && o.rounds >= 2) {
             const stats::Shift d = stats::pairedShift(ms[off], ms[c]);
             std::printf(" %+9.2f [%+.2f, %+.2f]", d.estimate, d.ciLow, d.ciHigh);
         }
         std::printf("\n");
     }
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+    pb::reuseFreedMemory(); // as probebench does (ReuseFreedMemory.h)
+    const Options o = parseOptions(argc, argv);
+    platform::PlatformOptions po;
+    auto platform = platform::createPlatform(po);
+    const StressRoom room = bakeStressRoom();
+    const render::RenderView view =
+        render::makeRenderView(room.scene.view, room.scene.scene.worldBounds(), o.width, o.height);
+    const std::vector<Config> all = selectedConfigs(o.only);
+    const auto renderers = warmedUpRenderers(room, all, view);
+    const std::vector<std::vector<double>> ms =
+        timeInterleavedRounds(renderers, view, o.rounds, o.frames);
+    printTable(o, *platform, all, ms);
     return 0;
 }
