@@ -1,7 +1,7 @@
 // bench_bake_noise: how much a bake depends on its random seed (probes/bake/SeedDifference.h).
 // Two probe files of one scene, baked alike but for --seed, compared at random surface points:
 // the relative difference of the irradiance as mean, median and p90, and split into the
-// dimmest quarter of the points and the rest. bench/bake_noise.sh bakes the pairs and runs
+// dimmest quarter of the points and the rest. studies/bake_noise.sh bakes the pairs and runs
 // this on them (bench/README.md "Bake noise").
 //
 // Usage: bench_bake_noise SCENE A.probes B.probes [POINTS] [--region X0,Y0,Z0,X1,Y1,Z1]

@@ -11,7 +11,7 @@
 // 95% Wilcoxon interval (pb_metrics). The first frame of every configuration compiles
 // shaders and is not counted.
 //
-//   build/bench/bench_guards [--width W --height H --rounds N --frames N]
+//   build/studies/bench_guards [--width W --height H --rounds N --frames N]
 //
 // Under valgrind --tool=callgrind with LP_NUM_THREADS=0 and --only CONFIG --rounds 1 the
 // instruction count of one configuration is repeatable (DESIGN.md): a hardware-independent

@@ -1,5 +1,5 @@
 // bench_midair_options: how sparse storage lights points in the air, option by option (issue 18,
-// bench/results/2026-11-25-mid-air-worst.md). A benchmark, not a test: it prints tables and
+// studies/results/2026-11-25-mid-air-worst.md). A benchmark, not a test: it prints tables and
 // asserts nothing; every figure is hardware-independent (deterministic bakes and lookups).
 //
 // Per built-in scene, the setting of tests/unit/MidAirLookupTest.cpp: one root volume over the
@@ -18,7 +18,7 @@
 //     over the lattice's points baked and stored dense, read where the sparse child's cell has
 //     absent corners (stored counts: child + parent);
 //   - absent probes outside geometry keeping an irradiance of their own, read at their own
-//     position with visibility weight 1 (bench/results/2026-11-25-absent-sh.md), emulated
+//     position with visibility weight 1 (studies/results/2026-11-25-absent-sh.md), emulated
 //     through the tile path (absentAsTile): the dense bake's L2 SH (ray projection; plain and
 //     Hanning-windowed), L2/L3/L4 fits of the probe's 8x8 tile, the tile resampled to 2x2 and
 //     4x4 interiors, the tile itself, and the tile next to surface corners with L2 elsewhere;
@@ -899,7 +899,7 @@ std::vector<std::pair<float, int>> rankedLeftOutProbes(const DenseAndSparse& b) 
     return ranked;
 }
 
-// Irradiance-only tiles chosen after the bake (--slack; bench/results/
+// Irradiance-only tiles chosen after the bake (--slack; studies/results/
 // 2026-11-29-irradiance-only-half-tiles.md): the probes sparse storage leaves out (valid,
 // outside geometry) ranked by how far their stand-in's light is from their own, as the bake's
 // default free space ranks them (FreeSpaceTiles.h standInErrors); the first K keep their irradiance

@@ -162,7 +162,7 @@ class MidAir : public testing::TestWithParam<const char*> {};
 // stand-ins' reach of the point (two cells per axis). Not within 15% of the dense lookup at
 // the point itself everywhere: under the Cornell box's ceiling light and in the rooms' doorway
 // the light changes by 2x within a cell, and a stand-in one cell nearer the light reads that
-// much brighter (bench/results/2026-11-25-mid-air-worst.md).
+// much brighter (studies/results/2026-11-25-mid-air-worst.md).
 TEST_P(MidAir, StandInsLightEveryPointWithin15PercentOfTheDenseLightWithinReach) {
     const MidAirError e = measureMidAir(GetParam(), FreeSpace::StandIns);
     EXPECT_LE(e.mean, 0.15f);

@@ -2,9 +2,9 @@
 # Accuracy of gi.upsample (bilinear, bilateral, temporal) at half and quarter resolution against
 # full-resolution GI, per camera path (bench/README.md, "GI upsampling"). Hardware-independent
 # figures (llvmpipe rounding aside). Usage, from the repository root after a Release build:
-#   bench/upsample_accuracy.sh [OUT_DIR (build/upsample-accuracy)] [WIDTHxHEIGHT (640x360)]
+#   studies/upsample_accuracy.sh [OUT_DIR (build/upsample-accuracy)] [WIDTHxHEIGHT (640x360)]
 # Writes OUT_DIR/<resolution>/<mode>/<path>/{frame_NNNN.png,errors.csv,errors.json} and prints
-# the summary table (bench/upsample_table.py).
+# the summary table (studies/upsample_table.py).
 set -eu
 out=${1:-build/upsample-accuracy}
 size=${2:-640x360}
@@ -28,4 +28,4 @@ for res in half quarter; do
         done
     done
 done
-python3 bench/upsample_table.py "$out"
+python3 studies/upsample_table.py "$out"

@@ -7,7 +7,7 @@
 # 128 rays, 2 bounces, rgba16f as the gate bakes). Instruction counts of llvmpipe's code:
 # repeatable to a few instructions, not GPU timings.
 # Usage, from the repository root after a Release build (needs valgrind):
-#   bench/sparse_gi_callgrind.sh [OUT_DIR (build/sparse-callgrind)] [PROFILES (all five)]
+#   studies/sparse_gi_callgrind.sh [OUT_DIR (build/sparse-callgrind)] [PROFILES (all five)]
 # (PB_BIN: another probebench binary than build/probebench.)
 # Writes OUT_DIR/{dense,sparse}.pbp, the bake logs and the dumps, and prints a Markdown table.
 set -eu

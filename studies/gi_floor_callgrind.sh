@@ -13,7 +13,7 @@
 # rooms_gate.toml) and its camera (the bench's worst-case view of rooms), so anyone gets the same
 # counts with the same Mesa/LLVM/compiler; instruction counts are load-independent, not GPU
 # timings. Usage, from the repository root after a Release build (needs valgrind):
-#   bench/gi_floor_callgrind.sh [OUT_DIR (build/floor-callgrind)] [PROFILES (reference)] [WxH (512x288)]
+#   studies/gi_floor_callgrind.sh [OUT_DIR (build/floor-callgrind)] [PROFILES (reference)] [WxH (512x288)]
 # (PB_BIN: another probebench binary than build/probebench.) Prints a Markdown table.
 set -eu
 out=${1:-build/floor-callgrind}

@@ -2,7 +2,7 @@
 # The converged bake's figures (bench/README.md "Bake noise"): per scene, the default bake with
 # --seed 1 and --seed 2 (wall time and the summary's noise line), then bench_bake_noise on the
 # pair. Extra bake options (e.g. --noise-target 0 --emitter-samples 0 for the old bake) pass
-# through.  Usage: bench/bake_noise.sh OUT_DIR SCENE... [-- BAKE_OPTIONS...]
+# through.  Usage: studies/bake_noise.sh OUT_DIR SCENE... [-- BAKE_OPTIONS...]
 set -euo pipefail
 out=$1; shift
 scenes=()
@@ -15,5 +15,5 @@ for s in "${scenes[@]}"; do
         /usr/bin/time -f "$name seed $seed: %e s wall" build/probebench bake --scene "$s" \
             --seed "$seed" --force --out "$out/$name-$seed.probes" "$@" | grep -E '^noise|^time'
     done
-    build/bench/bench_bake_noise "$s" "$out/$name-1.probes" "$out/$name-2.probes"
+    build/studies/bench_bake_noise "$s" "$out/$name-1.probes" "$out/$name-2.probes"
 done
