@@ -1,5 +1,5 @@
 // bench_lattice: does the DDGI lookup print the probe lattice on floors? (issue 24) A benchmark,
-// not a test (bench/README.md "Lattice on floors"): it prints a table (and JSON with --json),
+// not a test (studies/README.md "Lattice on floors"): it prints a table (and JSON with --json),
 // asserts nothing.
 //
 // Per scene, lines on flat upward surfaces (probes/placement/LatticeScore.h: --lines lines of

@@ -1,5 +1,5 @@
 #!/bin/sh
-# The GI apply pass against its texture-fetch floor in instructions (issue 17 P1; bench/README.md
+# The GI apply pass against its texture-fetch floor in instructions (issue 17 P1; studies/README.md
 # "GI pass over its fetch floor"): callgrind instruction counts of llvmpipe rendering one frame
 # per profile the way `probebench gate --callgrind` renders it (gate-worker: warm-up frames
 # uninstrumented, LP_NUM_THREADS=0 so llvmpipe runs on one thread, glFinish and one dump per

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Summary table of studies/upsample_accuracy.sh's runs (markdown, for bench/README.md).
+"""Summary table of studies/upsample_accuracy.sh's runs (markdown, for studies/README.md).
 
 Per path, resolution and gi.upsample mode, from each run's errors.json:
   GI err     mean over frames of the GI irradiance's relative MAE vs full resolution
