@@ -1,4 +1,4 @@
-// bench_bake_noise: how much a bake depends on its random seed (probes/bake/SeedDifference.h).
+// bench_bake_noise: how much a bake depends on its random seed (studies/common/SeedDifference.h).
 // Two probe files of one scene, baked alike but for --seed, compared at random surface points:
 // the relative difference of the irradiance as mean, median and p90, and split into the
 // dimmest quarter of the points and the rest. studies/bake_noise.sh bakes the pairs and runs

@@ -2,7 +2,7 @@
 // not a test (studies/README.md "Lattice on floors"): it prints a table (and JSON with --json),
 // asserts nothing.
 //
-// Per scene, lines on flat upward surfaces (probes/placement/LatticeScore.h: --lines lines of
+// Per scene, lines on flat upward surfaces (studies/common/LatticeScore.h: --lines lines of
 // 64 points, an eighth of the default uniform spacing apart, along X and Z) are looked up in
 // each placement and compared with a direct gather at the same points:
 //   uniform   `--volumes auto-uniform`, stored dense (probe planes where the bounds put them);
