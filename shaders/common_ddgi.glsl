@@ -303,7 +303,7 @@ hfloat ddgiCornerWeight(int i, ivec3 base, vec3 cellProbe, vec3 p, hvec3 nh, vec
 // a loop this long, and llvmpipe then runs it as a loop, recomputing per iteration what the
 // unrolled code folds (each corner's offset and trilinear selects, the samplers' set-up):
 // written out, 27% fewer instructions per evaluation and GI / floor 2.17 -> 1.83 on an AMD EPYC
-// (bench/results/2026-11-29-p1-written-out-loops.md). The mobile compilers agree only in part
+// (studies/results/2026-11-29-p1-written-out-loops.md). The mobile compilers agree only in part
 // (`probebench shaders`, bench/shaders/README.md): Mali-G52 and Adreno fold the written-out
 // corners well, while Mali-G57 and V3D spill on them (as a real loop none of them spills, at
 // about twice the instructions per corner). GI_LOOPS_SPLIT, which keeps eight weights live,

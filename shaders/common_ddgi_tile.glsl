@@ -12,7 +12,7 @@ ivec4 ddgiTileFields;
 
 // Call once before the probe loops (ddgiSample does). A uniform read inside the loops costs
 // llvmpipe a per-lane load at each use (about 6 M instructions per use at the gate's view,
-// bench/README.md "Probe placement"); values computed up front stay in registers.
+// studies/README.md "Probe placement"); values computed up front stay in registers.
 void ddgiInitTileFields() {
     ivec2 b = u_ddgiTileBits;
     ddgiTileFields = ivec4((1 << b.x) - 1, b.x, (1 << b.y) - 1, b.x + b.y);

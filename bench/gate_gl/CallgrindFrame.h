@@ -7,7 +7,7 @@
 // instrumentation on with callgrind's client requests (valgrind/callgrind.h), renders one
 // frame whose sections each end with glFinish and CALLGRIND_DUMP_STATS_AT("<profile>/<pass>"),
 // and turns it off again: each dump holds exactly one pass of one profile.
-// With `floor` (bench/gi_floor_callgrind.sh, not the gate) the instrumented frame is followed by
+// With `floor` (studies/gi_floor_callgrind.sh, not the gate) the instrumented frame is followed by
 // the GI pass's texture-fetch floor (bench/runner/FetchFloorPass) dumped as
 // "<profile>/gi-fetch-floor", and before it an uninstrumented frame counting the GI pass's
 // evaluations (GiPassStats) prints one line per profile on stdout:

@@ -10,7 +10,7 @@ namespace pb {
 // its mmap threshold (128 KiB to 32 MiB, adapting) with a fresh mapping and unmaps it on free,
 // so each trial page-faults and the kernel zeroes all of its memory again. On the 2-core VM
 // that was about 40% of a default `bake --scene courtyard` (13.7 s -> 6.8 s wall with this; the
-// output is byte-identical, bench/results/2026-11-29-allocator-reuse.md). The cost: the
+// output is byte-identical, studies/results/2026-11-29-allocator-reuse.md). The cost: the
 // process keeps its peak heap until it exits, and a block that fits no freed hole takes new
 // memory: peak RSS +4% on that bake, +2% on Sponza's.
 //

@@ -17,7 +17,7 @@
 // the probes sit where they did), cached under its input hash (readCachedProbeFile) so
 // repeated runs trace it once. Why more rays: rooms with the sun off is lit by the sky through
 // one window, and the file's 256 rays leave 5.7% mean probe noise even after 16 rounds
-// (bench/results/2026-11-25-respond.md) - a reference that noisy would hide a 5% settle.
+// (studies/results/2026-11-25-respond.md) - a reference that noisy would hide a 5% settle.
 #include "probes/bake/Baker.h"
 #include "respond/ProbeUpdate.h"
 

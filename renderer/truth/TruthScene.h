@@ -4,7 +4,7 @@
 // GBuffer's per-pixel material: base colour factor x the base colour texture (sRGB decoded,
 // bilinear, repeat), emissive factor x the emissive texture, the interpolated vertex normal,
 // the alpha test (MASK: its cutoff; BLEND: 0.5, as GBufferPass sets u_alphaCutoff), and
-// double-sidedness. Unlike probes/bake/RayScene (which keeps the mean texture colour, enough
+// double-sidedness. Unlike raytrace/RayScene (which keeps the mean texture colour, enough
 // for probes), a hit here reads the texel the rasterizer would read.
 //
 // Camera rays skip the back faces of single-sided triangles, as the rasterizer culls them;

@@ -112,7 +112,7 @@ TEST(CostModelSh, EachLookupReadsEightTexelsPerCoefficientTexturePlusTheMask) {
             // L1 asks for 3 x 64 B per lookup where DDGI asks for 8 x 64 B, from textures of one
             // texel per probe: less than half the misses. L2 asks for 7 x 64 B: a smaller
             // footprint, but its misses are not always below DDGI's (on the gate's sparse rooms
-            // file, whose DDGI tiles are packed, they are higher: bench/results
+            // file, whose DDGI tiles are packed, they are higher: studies/results
             // 2026-11-25-sh-technique-2.md), so only the footprint is held.
             if (textures == 3) {
                 EXPECT_LT(v.probeFootprintBytes, dv.probeFootprintBytes / 2);

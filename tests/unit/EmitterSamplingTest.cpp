@@ -15,7 +15,7 @@
 #include "probes/bake/RadiancePass.h"
 #include "probes/bake/RayDirections.h"
 #include "raytrace/RayScene.h"
-#include "probes/bake/SeedDifference.h"
+#include "studies/common/SeedDifference.h"
 #include "probes/placement/AutoPlacement.h"
 #include "scene/BuiltinScenes.h"
 
@@ -228,7 +228,7 @@ TEST(NoiseTarget, TwoCornellBakesWithDifferentSeedsAgreeWithinThreePercent) {
     const ProbeSet a = bakeProbes(s, req);
     req.settings.seed = 2;
     const ProbeSet b = bakeProbes(s, req);
-    const SeedDifference d = seedDifference(s, a, b, 1000);
+    const studies::SeedDifference d = studies::seedDifference(s, a, b, 1000);
     EXPECT_GT(d.points, 500u);
     EXPECT_LT(d.mean, 0.03) << "median " << d.median << ", p90 " << d.p90;
 }

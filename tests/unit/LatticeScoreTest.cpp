@@ -5,7 +5,7 @@
 #include "ProbeTestScenes.h"
 #include "probes/bake/RayDirections.h"
 #include "raytrace/RayScene.h"
-#include "probes/placement/LatticeScore.h"
+#include "studies/common/LatticeScore.h"
 
 #include <gtest/gtest.h>
 
@@ -39,10 +39,10 @@ TEST(LatticeScore, ARippleAtTheSpacingStandsOutOfNoiseAndTrend) {
     std::vector<double> ripple = latticeScoreNoise(3, 0.02);
     for (int i = 0; i < kSamples; ++i) // rings under the probes + a slow gradient
         ripple[size_t(i)] += 0.1 * std::cos(2 * M_PI * i * kStep / kSpacing) + 0.01 * i;
-    const double rippled = latticeScore(ripple, kStep, 1.0f / kSpacing);
+    const double rippled = studies::latticeScore(ripple, kStep, 1.0f / kSpacing);
     EXPECT_GT(rippled, 20.0);
     // The same ripple scored at another spacing's frequency is not a peak there.
-    EXPECT_LT(latticeScore(ripple, kStep, 1.0f / (2.2f * kSpacing)), 0.5 * rippled);
+    EXPECT_LT(studies::latticeScore(ripple, kStep, 1.0f / (2.2f * kSpacing)), 0.5 * rippled);
 
     // Noise alone, and noise on a trend: about 1 on average over many lines (a single line of
     // noise scatters; the bench reports medians).
@@ -51,12 +51,12 @@ TEST(LatticeScore, ARippleAtTheSpacingStandsOutOfNoiseAndTrend) {
         std::vector<double> r = latticeScoreNoise(s * 7919, 0.1);
         for (int i = 0; i < kSamples; ++i)
             r[size_t(i)] += 0.05 * i;
-        sum += latticeScore(r, kStep, 1.0f / kSpacing) / 200.0;
+        sum += studies::latticeScore(r, kStep, 1.0f / kSpacing) / 200.0;
     }
     EXPECT_GT(sum, 0.5);
     EXPECT_LT(sum, 2.0);
     // A flat residual has no power anywhere: 0, not a division by zero.
-    EXPECT_EQ(latticeScore(std::vector<double>(kSamples, 0.25), kStep, 1.0f), 0.0);
+    EXPECT_EQ(studies::latticeScore(std::vector<double>(kSamples, 0.25), kStep, 1.0f), 0.0);
 }
 
 TEST(LatticeScore, FloorLinesStayOnFlatUpwardSurfaces) {
@@ -67,9 +67,9 @@ TEST(LatticeScore, FloorLinesStayOnFlatUpwardSurfaces) {
     addFloor(s, m);
     addInstance(s, boxPrimitive({1, 0, -3}, {3, 1, 3}, false, m));
     const pb::raytrace::RayScene rs(s);
-    const std::vector<FloorLine> lines = findFloorLines(rs, 20, 16, 0.1f);
+    const std::vector<studies::FloorLine> lines = studies::findFloorLines(rs, 20, 16, 0.1f);
     ASSERT_GE(lines.size(), 10u);
-    for (const FloorLine& l : lines) {
+    for (const studies::FloorLine& l : lines) {
         const float y = l.start.y;
         EXPECT_TRUE(std::fabs(y) < 0.01f || std::fabs(y - 1.0f) < 0.01f) << y;
         for (int i = 0; i < l.samples; ++i) {
@@ -82,7 +82,7 @@ TEST(LatticeScore, FloorLinesStayOnFlatUpwardSurfaces) {
         }
     }
     // Deterministic for a seed.
-    const std::vector<FloorLine> again = findFloorLines(rs, 20, 16, 0.1f);
+    const std::vector<studies::FloorLine> again = studies::findFloorLines(rs, 20, 16, 0.1f);
     ASSERT_EQ(again.size(), lines.size());
     for (std::size_t i = 0; i < lines.size(); ++i)
         EXPECT_EQ(again[i].start, lines[i].start);
@@ -92,7 +92,7 @@ TEST(LatticeScore, FloorLinesStayOnFlatUpwardSurfaces) {
     w.material = addMaterial(wall, glm::vec3(0.5f));
     addQuad(w, {0, 0, -1}, {0, 2, 0}, {0, 0, 2}, {1, 0, 0});
     addInstance(wall, w);
-    EXPECT_TRUE(findFloorLines(pb::raytrace::RayScene(wall), 5, 16, 0.1f).empty());
+    EXPECT_TRUE(studies::findFloorLines(pb::raytrace::RayScene(wall), 5, 16, 0.1f).empty());
 }
 
 TEST(LatticeScore, FloorLinesDoNotRunInsideAWallWhoseTopIsInTheCeiling) {
@@ -106,9 +106,9 @@ TEST(LatticeScore, FloorLinesDoNotRunInsideAWallWhoseTopIsInTheCeiling) {
     addInstance(s, boxPrimitive({-0.5f, -0.2f, -3}, {0.5f, 2.0f, 3}, false, m));
     addInstance(s, boxPrimitive({-3, 1.9f, -3}, {3, 2.1f, 3}, false, m));
     const pb::raytrace::RayScene rs(s);
-    const std::vector<FloorLine> lines = findFloorLines(rs, 40, 8, 0.1f);
+    const std::vector<studies::FloorLine> lines = studies::findFloorLines(rs, 40, 8, 0.1f);
     ASSERT_GE(lines.size(), 20u);
-    for (const FloorLine& l : lines)
+    for (const studies::FloorLine& l : lines)
         for (int i = 0; i < l.samples; ++i)
             EXPECT_GT(std::fabs(l.point(i).x), 0.5f - 1e-3f) << "inside the wall at x "
                                                               << l.point(i).x;
@@ -129,13 +129,13 @@ TEST(LatticeScore, ADoubleSidedFloorWoundDownwardIsAFloorASingleSidedOneIsNot) {
         addInstance(
             s, boxPrimitive({2.5f, 0, 2.5f}, {3, 1, 3}, false, addMaterial(s, glm::vec3(0.5f))));
         const pb::raytrace::RayScene rs(s);
-        const std::vector<FloorLine> lines = findFloorLines(rs, 10, 16, 0.1f);
+        const std::vector<studies::FloorLine> lines = studies::findFloorLines(rs, 10, 16, 0.1f);
         if (!doubleSided) {
             EXPECT_TRUE(lines.empty());
             continue;
         }
         ASSERT_GE(lines.size(), 5u);
-        for (const FloorLine& l : lines)
+        for (const studies::FloorLine& l : lines)
             EXPECT_LT(std::fabs(l.start.y), 0.01f);
     }
 }

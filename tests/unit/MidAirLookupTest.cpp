@@ -156,13 +156,13 @@ MidAirError measureMidAir(const char* scene, FreeSpace freeSpace) {
 
 class MidAir : public testing::TestWithParam<const char*> {};
 
-// The default storage (stand-ins; bench/README.md, "Mid-air lookups"): every point gets a
+// The default storage (stand-ins; studies/README.md, "Mid-air options"): every point gets a
 // lookup; the lookups that differ from the dense one at all are within 15% of it on average;
 // and none lies more than 15% outside the light the dense set itself gives within the
 // stand-ins' reach of the point (two cells per axis). Not within 15% of the dense lookup at
 // the point itself everywhere: under the Cornell box's ceiling light and in the rooms' doorway
 // the light changes by 2x within a cell, and a stand-in one cell nearer the light reads that
-// much brighter (bench/results/2026-11-25-mid-air-worst.md).
+// much brighter (studies/results/2026-11-25-mid-air-worst.md).
 TEST_P(MidAir, StandInsLightEveryPointWithin15PercentOfTheDenseLightWithinReach) {
     const MidAirError e = measureMidAir(GetParam(), FreeSpace::StandIns);
     EXPECT_LE(e.mean, 0.15f);

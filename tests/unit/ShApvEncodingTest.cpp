@@ -51,7 +51,7 @@ TEST(ShApvEncoding, RoundTripIsWithinEightBitRoundingOfTheRatio) {
 // blend across whole cells. The 8-bit ratios alone give at most ~1.5%; decoding with the
 // blended L0 adds far more where a bright and a dark corner point their light in different
 // directions (a blend of ratios is not the ratio of blends) - the figure is logged in
-// bench/results/2026-11-25-sh-technique-2.md. The bound only catches a broken decode
+// studies/results/2026-11-25-sh-technique-2.md. The bound only catches a broken decode
 // (swapped channels or ratios give errors of order 1): the mean within 25%.
 TEST(ShApvEncoding, ExtraErrorOfL1LookupsOnABake) {
     const pb::scene::Scene scene = pb::scene::makeBuiltinScene("rooms");

@@ -1,6 +1,6 @@
 // The leak figure (issue 19) on the built-in `thin_wall` scene: the lit face is lit, and the
 // SH technique's leak modes cut the leak of `none`, DDGI's visibility test cuts it too.
-#include "probes/WallLeak.h"
+#include "studies/common/WallLeak.h"
 #include "probes/ShIrradiance.h"
 #include "probes/bake/Baker.h"
 #include "scene/SceneLoader.h"
@@ -17,7 +17,7 @@ const ProbeSet& thinWallBake() {
     static const ProbeSet set = [] {
         const pb::scene::Scene s = pb::scene::makeBuiltinScene("thin_wall");
         BakeRequest r;
-        r.volumes = {thinWallVolume()};
+        r.volumes = {pb::studies::thinWallVolume()};
         r.scenarios = resolveScenarios({"day"}, {}, s);
         r.settings.raysPerProbe = 128;
         return bakeProbes(s, r);
@@ -33,8 +33,8 @@ TEST(WallLeak, LeakModesAndVisibilityCutTheLeakOfThePlainShVolume) {
     for (const ProbeState& p : set.states[0])
         shInvalid += shProbeValid(p) ? 0 : 1;
     EXPECT_GT(shInvalid, 0u) << "the probes inside the wall must be classified";
-    std::map<std::string, WallLeak> by;
-    for (const auto& [name, leak] : wallLeakPerTechnique(set)) {
+    std::map<std::string, pb::studies::WallLeak> by;
+    for (const auto& [name, leak] : pb::studies::wallLeakPerTechnique(set)) {
         std::printf("[ leak ] %-20s lit %.4g dark %.4g ratio %.4f\n", name.c_str(), leak.litMean,
                     leak.darkMean, leak.ratio);
         by[name] = leak;

@@ -116,7 +116,7 @@ private:
     // bytes should cost about 2.5% of spacing where surfaces set the memory (bytes ~
     // 1/spacing^2); a placement more than kMaxReserveCoarsening coarser is the placement's own
     // steps (tiers of 2^levels, the lattice choice), whose price on the surfaces exceeds what
-    // the tiles return in the air (bench/results/2026-11-29-ranked-free-space.md): then the
+    // the tiles return in the air (studies/results/2026-11-29-ranked-free-space.md): then the
     // first placement stays and the tiles get what it leaves.
     void reserveFreeSpaceTiles(const AutoPlacementResult& first, int levels,
                                AutoPlacementResult& best) {

@@ -26,7 +26,7 @@ constexpr std::array<float, 8> kLatticeShiftSteps{-0.4f, -0.3f, -0.2f, -0.1f,
 // hallway once preferred a shift by 1.3% that the benchmark scores 10% worse). 5% left out the
 // garden's x -0.4 (-3.0%) and z +0.1 (-4.0%), which the placement benchmark scores 5.5% better;
 // at 2% only the garden's and the apartment's placements change, both for the better
-// (bench/results/2026-11-29-lattice-search-margin.md).
+// (studies/results/2026-11-29-lattice-search-margin.md).
 constexpr double kLatticeShiftMargin = 0.02;
 
 struct LatticeShift {

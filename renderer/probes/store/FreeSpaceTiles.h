@@ -5,7 +5,7 @@
 // A lookup in the air reads a left-out probe as its stand-in, the nearest stored probe
 // (AbsentProbeFill.h). Most stand-ins see nearly the light the probe itself would give; a few,
 // beside a wall or a window where the light changes within a cell, are off by 2x and more
-// (bench/results/2026-11-29-irradiance-only-half-tiles.md). Only those need their own tile.
+// (studies/results/2026-11-29-irradiance-only-half-tiles.md). Only those need their own tile.
 // So after the bake, which traced every left-out probe as the dense bake does:
 //   1. each left-out probe (valid, outside geometry) is scored by how far its stand-in's light
 //      is from its own: the largest relative luminance difference over the 6 local axis
@@ -28,7 +28,7 @@ namespace pb::probes {
 // share / (1 - share) of its stored bytes. 5%: on the
 // built-in scenes' default placements the tiles that bring every mid-air lookup within 15% of
 // the dense one cost 2.1-7.2% of the stored bytes, and the placements leave 2.8-16.6% of
-// their budget unused (bench/results/2026-11-29-irradiance-only-half-tiles.md).
+// their budget unused (studies/results/2026-11-29-irradiance-only-half-tiles.md).
 constexpr double kFreeSpaceTileShare = 0.05;
 
 struct FreeSpaceTileChoice {
