@@ -84,7 +84,7 @@ const RegisterCommand registerGateWorker{
              ->delimiter(',');
          cmd.add_flag("--callgrind-floor", a->callgrindFloor,
                       "With --callgrind-profiles: also dump the GI fetch floor and print the GI "
-                      "pass's evaluations (bench/gi_floor_callgrind.sh)");
+                      "pass's evaluations (studies/gi_floor_callgrind.sh)");
          return [a] { return runGateWorker(*a); };
      }}};
 

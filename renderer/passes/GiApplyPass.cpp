@@ -210,7 +210,7 @@ void GiApplyPass::execute(FrameContext& frame) {
             // memory (depth alone takes its shader blit): 1.1 ms cpu-time at 1280x720 on
             // llvmpipe against 5.2 ms, and it brings the GBuffer's stencil,
             // cleared to 0 and never written (GBufferLayout.h), so 'taken' needs no clear
-            // (2.5 ms more): bench/results/2026-11-25-p3-p1.md.
+            // (2.5 ms more): studies/results/2026-11-25-p3-p1.md.
             glBindFramebuffer(GL_READ_FRAMEBUFFER, gb.framebuffer().id());
             glBlitFramebuffer(0, 0, gb.width(), gb.height(), 0, 0, spec.width, spec.height,
                               GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT, GL_NEAREST);
