@@ -432,9 +432,10 @@ const RegisterCommand registerBench{
          cmd.add_option("--probes", a->probes,
                         "Probe file (probebench bake); default: bake --volumes once and cache it");
          cmd.add_option("--volumes", a->volumes,
-                        "Without --probes: the volumes to bake, auto (stored sparse, as bake "
-                        "does), auto-uniform or a volumes "
-                        "file (bench/volumes/rooms_nested.toml nests a volume per room)")
+                        "Without --probes: the volumes to bake, auto (stored sparse), "
+                        "auto-uniform or a volumes file (bench/volumes/rooms_nested.toml nests a "
+                        "volume per room); the probes are what 'bake --volumes V --rays 128' "
+                        "writes, byte for byte, cached in --cache-dir")
              ->capture_default_str();
          cmd.add_option("--cache-dir", a->cacheDir,
                         "Folder of the baked-probe cache (default: ~/.cache/probebench)");
