@@ -620,6 +620,27 @@ void printCoarseLatticeRow(const SceneContext& ctx, const ProbeSampler& cs) {
 
 // 3. Grow: keep every probe within g steps of a surface corner (with and without the coarse
 // lookup in cells that still have absent corners).
+// Sparse storage's kept probes plus every probe within `grow` cells of a surface corner.
+std::vector<std::uint8_t> grownKeep(const ProbeVolume& v, bool root,
+                                    const std::vector<pb::raytrace::WorldTriangle>& tris, int grow) {
+    std::vector<std::uint8_t> surf = surfaceCornerProbes(v, root, tris);
+    std::vector<std::uint8_t> keep = sparseKeptProbes(v, root, tris);
+    for (int i = 0; i < v.probeCount(); ++i) {
+        if (!surf[size_t(i)]) continue;
+        const glm::ivec3 c = v.probeCoords(i);
+        for (int dz = -grow; dz <= grow; ++dz)
+            for (int dy = -grow; dy <= grow; ++dy)
+                for (int dx = -grow; dx <= grow; ++dx) {
+                    const glm::ivec3 q = c + glm::ivec3(dx, dy, dz);
+                    if (glm::any(glm::lessThan(q, glm::ivec3(0))) ||
+                        glm::any(glm::greaterThanEqual(q, v.counts)))
+                        continue;
+                    keep[size_t(v.probeIndex(q))] = 1;
+                }
+    }
+    return keep;
+}
+
 void printGrowRows(const SceneContext& ctx) {
     const char* name = ctx.name;
     const ProbeSet& dense = ctx.b.dense;
@@ -629,21 +650,7 @@ void printGrowRows(const SceneContext& ctx) {
     const float floor = ctx.cq.floor;
     const std::size_t N = dense.probeCount();
     for (int grow = 1; grow <= 2; ++grow) {
-        std::vector<std::uint8_t> surf = surfaceCornerProbes(v, true, tris);
-        std::vector<std::uint8_t> keep = sparseKeptProbes(v, true, tris);
-        for (int i = 0; i < v.probeCount(); ++i) {
-            if (!surf[size_t(i)]) continue;
-            const glm::ivec3 c = v.probeCoords(i);
-            for (int dz = -grow; dz <= grow; ++dz)
-                for (int dy = -grow; dy <= grow; ++dy)
-                    for (int dx = -grow; dx <= grow; ++dx) {
-                        const glm::ivec3 q = c + glm::ivec3(dx, dy, dz);
-                        if (glm::any(glm::lessThan(q, glm::ivec3(0))) ||
-                            glm::any(glm::greaterThanEqual(q, v.counts)))
-                            continue;
-                        keep[size_t(v.probeIndex(q))] = 1;
-                    }
-        }
+        const std::vector<std::uint8_t> keep = grownKeep(v, true, tris, grow);
         ProbeSet grown = dense;
         storeOnly(grown, {keep});
         const ProbeSampler gs(grown, 0);
@@ -734,25 +741,6 @@ void compareOptions(const char* name, const Options& o) {
 } // namespace
 
 namespace {
-std::vector<std::uint8_t> grownKeep(const ProbeVolume& v, bool root,
-                                    const std::vector<pb::raytrace::WorldTriangle>& tris, int grow) {
-    std::vector<std::uint8_t> surf = surfaceCornerProbes(v, root, tris);
-    std::vector<std::uint8_t> keep = sparseKeptProbes(v, root, tris);
-    for (int i = 0; i < v.probeCount(); ++i) {
-        if (!surf[size_t(i)]) continue;
-        const glm::ivec3 c = v.probeCoords(i);
-        for (int dz = -grow; dz <= grow; ++dz)
-            for (int dy = -grow; dy <= grow; ++dy)
-                for (int dx = -grow; dx <= grow; ++dx) {
-                    const glm::ivec3 q = c + glm::ivec3(dx, dy, dz);
-                    if (glm::any(glm::lessThan(q, glm::ivec3(0))) ||
-                        glm::any(glm::greaterThanEqual(q, v.counts)))
-                        continue;
-                    keep[size_t(v.probeIndex(q))] = 1;
-                }
-    }
-    return keep;
-}
 void placementCost(const char* name) {
     pb::scene::Scene scene = pb::scene::makeBuiltinScene(name);
     AutoPlacementRequest req;
