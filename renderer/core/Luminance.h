@@ -5,7 +5,7 @@
 // rounds, the path tracer's light choice, the default view's light test, the benchmarks' error
 // figures). The exact float expression matters: the bake's bytes depend on it.
 // Kept apart: metrics/ColourSpaces.cpp (FLIP's more precise matrix) and the sums in double of
-// frame/GiCoverageView.cpp and probes/WallLeak.cpp.
+// frame/GiCoverageView.cpp and probes/sh/WallLeak.cpp.
 #include <glm/vec3.hpp>
 
 namespace pb {

@@ -7,8 +7,8 @@
 #include "costmodel/PixelOrder.h"
 #include "costmodel/ShFetchStream.h"
 #include "probes/ProbeSampler.h"
-#include "probes/ShIrradiance.h"
-#include "probes/ShSampler.h"
+#include "probes/sh/ShIrradiance.h"
+#include "probes/sh/ShSampler.h"
 #include "profile/GiDynamicReads.h"
 #include "profile/GiVolumeLod.h"
 

@@ -1,9 +1,9 @@
 #include "passes/GpuShTextures.h"
 
 #include "core/Error.h"
-#include "probes/ShAbsentFill.h"
-#include "probes/ShIrradiance.h"
-#include "probes/ShSampler.h"
+#include "probes/sh/ShAbsentFill.h"
+#include "probes/sh/ShIrradiance.h"
+#include "probes/sh/ShSampler.h"
 
 namespace pb::render {
 
@@ -68,7 +68,7 @@ GpuShVolume uploadShVolume(const probes::ProbeSet& set, int scenario, int vi,
                            const std::string& label) {
     if (!set.hasSh()) throw Error(probes::noShMessage("the probe set"));
     const probes::ProbeVolume& v = set.volumes[size_t(vi)];
-    // Absent probes read as their nearest stored one, as in ShSampler (ShAbsentFill.h).
+    // Absent probes read as their nearest stored one, as in ShSampler (probes/sh/ShAbsentFill.h).
     const probes::ShLookupVolume lookup =
         probes::shLookupVolume(v, set.states[size_t(vi)], set.sh[size_t(scenario)][size_t(vi)],
                                set.settings.backfaceThreshold);

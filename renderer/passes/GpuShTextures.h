@@ -13,7 +13,7 @@
 //       hardware-filtered R8 weight disagreed with the float-filtered lighting on llvmpipe by
 //       up to 10% where the weight is small: common_sh.glsl).
 // 25 bytes a probe for L1, 57 for L2 (`probebench memory --technique`). The coefficients are
-// the bake's, already rounded to half (probes/ShIrradiance.h), so the upload is exact.
+// the bake's, already rounded to half (probes/sh/ShIrradiance.h), so the upload is exact.
 #include "gl/Texture.h"
 #include "probes/ProbeSet.h"
 #include "profile/Profile.h"

@@ -22,9 +22,9 @@
 // 5. Irradiance from the blended coefficients (shIrradiance, first 4 or 9), times the fade.
 // No visibility test: this is the leak the testbed measures against DDGI.
 #include "probes/ProbeSampler.h"
-#include "probes/ShAbsentFill.h"
-#include "probes/ShApvEncoding.h"
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShAbsentFill.h"
+#include "probes/sh/ShApvEncoding.h"
+#include "probes/sh/ShIrradiance.h"
 
 #include <cstdint>
 #include <string>

@@ -1,7 +1,7 @@
-#include "probes/WallLeak.h"
+#include "probes/sh/WallLeak.h"
 
 #include "probes/ProbeSampler.h"
-#include "probes/ShSampler.h"
+#include "probes/sh/ShSampler.h"
 
 namespace pb::probes {
 
