@@ -7,14 +7,6 @@
 
 namespace pb::render {
 
-std::size_t GpuShVolume::bytes() const {
-    if (!validity) return 0; // not uploaded (DDGI)
-    std::size_t total = validity.bytes();
-    for (const gl::Texture& t : coefficients)
-        total += t.bytes();
-    return total;
-}
-
 int shCoefficientCount(profile::GiTechnique t) {
     return t == profile::GiTechnique::ShL1   ? probes::kShL1Coefficients
            : t == profile::GiTechnique::ShL2 ? probes::kShL2Coefficients
@@ -63,9 +55,9 @@ gl::Texture volumeTexture(gl::TextureFormat f, const glm::ivec3& counts, const v
 }
 } // namespace
 
-GpuShVolume uploadShVolume(const probes::ProbeSet& set, int scenario, int vi,
-                           profile::GiTechnique technique, profile::GiShLeak leak,
-                           const std::string& label) {
+std::vector<gl::Texture> uploadShVolume(const probes::ProbeSet& set, int scenario, int vi,
+                                        profile::GiTechnique technique, profile::GiShLeak leak,
+                                        const std::string& label) {
     if (!set.hasSh()) throw Error(probes::noShMessage("the probe set"));
     const probes::ProbeVolume& v = set.volumes[size_t(vi)];
     // Absent probes read as their nearest stored one, as in ShSampler (probes/sh/ShAbsentFill.h).
@@ -99,13 +91,12 @@ GpuShVolume uploadShVolume(const probes::ProbeSet& set, int scenario, int vi,
         else
             validity[p] = valid ? 255 : 0;
     }
-    GpuShVolume g;
+    std::vector<gl::Texture> g; // in the order of their units (GpuTechniqueSh::bindTextures)
     for (int t = 0; t < textures; ++t)
-        g.coefficients.push_back(volumeTexture(gl::TextureFormat::RGBA16F, v.counts,
-                                               texels[size_t(t)].data(),
-                                               label + " sh" + std::to_string(t)));
-    g.validity =
-        volumeTexture(gl::TextureFormat::R8, v.counts, validity.data(), label + " sh validity");
+        g.push_back(volumeTexture(gl::TextureFormat::RGBA16F, v.counts, texels[size_t(t)].data(),
+                                  label + " sh" + std::to_string(t)));
+    g.push_back(
+        volumeTexture(gl::TextureFormat::R8, v.counts, validity.data(), label + " sh validity"));
     return g;
 }
 

@@ -9,8 +9,9 @@
 
 #include "core/Error.h"
 #include "frame/GiPointEvaluator.h"
-#include "probes/sh/ShSampler.h"
+#include "passes/GpuShTextures.h"
 #include "probes/StaticTriangles.h"
+#include "probes/sh/ShSampler.h"
 #include "probes/store/SparseStorage.h"
 
 #include <algorithm>
