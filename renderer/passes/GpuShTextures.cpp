@@ -13,10 +13,6 @@ int shCoefficientCount(profile::GiTechnique t) {
                                              : 0;
 }
 
-bool isShTechnique(profile::GiTechnique t) {
-    return shCoefficientCount(t) > 0;
-}
-
 std::size_t shBytesPerProbe(profile::GiTechnique t) {
     return probes::shGpuBytesPerProbe(shCoefficientCount(t));
 }

@@ -26,7 +26,6 @@ namespace pb::render {
 
 // 4 (sh_l1), 9 (sh_l2), 0 (ddgi).
 int shCoefficientCount(profile::GiTechnique t);
-bool isShTechnique(profile::GiTechnique t);
 // GPU bytes per probe of the layout above (0 for ddgi).
 std::size_t shBytesPerProbe(profile::GiTechnique t);
 
