@@ -2,7 +2,7 @@
 
 #include "probes/bake/SceneMatch.h"
 #include "core/Error.h"
-#include "probes/ShSampler.h"
+#include "probes/sh/ShSampler.h"
 #include "probes/store/VolumeRanksFile.h"
 
 namespace pb::app {

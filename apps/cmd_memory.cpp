@@ -3,7 +3,7 @@
 #include "JsonOption.h"
 #include "core/Error.h"
 #include "probes/store/MemoryReport.h"
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 #include "probes/store/ProbeFile.h"
 
 #include <iostream>

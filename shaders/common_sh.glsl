@@ -1,5 +1,5 @@
 // The SH technique's irradiance lookup of ONE probe volume (gi.technique=sh_l1|sh_l2): the
-// GLSL port of the CPU reference renderer/probes/ShSampler.cpp (its header lists the steps),
+// GLSL port of the CPU reference renderer/probes/sh/ShSampler.cpp (its header lists the steps),
 // with one hardware trilinear fetch per 3D texture (renderer/passes/GpuShTextures.h has the
 // layout). Needs common_ddgi.glsl first: the volume's frame, fade and bias uniforms
 // (u_ddgiCenter, u_ddgiToLocal, u_ddgiHalf, u_ddgiFadeWidth, u_ddgiInvCell, u_ddgiCounts,

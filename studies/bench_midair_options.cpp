@@ -39,7 +39,7 @@
 #include "probes/AbsentProbeFill.h"
 #include "probes/Octahedral.h"
 #include "probes/ProbeSampler.h"
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 #include "probes/StorageFormat.h"
 #include "probes/bake/MidAirSamples.h"
 #include "raytrace/RayScene.h"

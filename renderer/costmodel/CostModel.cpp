@@ -7,8 +7,8 @@
 #include "costmodel/PixelOrder.h"
 #include "costmodel/ShFetchStream.h"
 #include "probes/ProbeSampler.h"
-#include "probes/ShIrradiance.h"
-#include "probes/ShSampler.h"
+#include "probes/sh/ShIrradiance.h"
+#include "probes/sh/ShSampler.h"
 #include "profile/GiDynamicReads.h"
 #include "profile/GiVolumeLod.h"
 
@@ -21,7 +21,7 @@ namespace {
 
 constexpr int kGBufferTexturesBound = 5; // passes/GBufferLayout.h: 4 channels + depth
 constexpr int kUnitsUnbound = 8;         // GiApplyPass: units 0 .. kFirstProbeUnit + 2
-constexpr int kShUnitsBound = 8;         // GpuProbes::kShUnitsPerVolume
+constexpr int kShUnitsBound = 8;         // passes/GpuTechniqueSh.h kShUnitsPerVolume
 constexpr std::size_t kChunkMin = 4096;  // pixels traced per step (bounds memory)
 
 int targetBytes(profile::GiTargetFormat f) {

@@ -1,6 +1,6 @@
 #include "costmodel/ShFetchStream.h"
 
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 
 #include <cmath>
 

@@ -8,7 +8,7 @@
 // The 3D textures' texel (x, row, layer) is probe (x, z, y), as GpuShTextures uploads them;
 // their addresses come from TextureMemory like every other texture's.
 #include "costmodel/FetchStream.h"
-#include "probes/ShSampler.h"
+#include "probes/sh/ShSampler.h"
 #include "profile/Profile.h"
 
 #include <vector>

@@ -45,16 +45,17 @@ FrameRenderer::FrameRenderer(const scene::Scene& scene, const FrameSettings& set
             skipped_.push_back({"pass gi-dynamic-sh", why});
             prof.gi.dynamic = profile::GiDynamic::PerPixel;
         }
-        // The SH technique samples no DDGI textures: dynamic objects get its per-pixel lookup.
-        if (isShTechnique(prof.gi.technique) && prof.gi.dynamic == profile::GiDynamic::Sh) {
-            skipped_.push_back({"pass gi-dynamic-sh", "gi.technique=" +
-                                                          prof.get("gi.technique") +
-                                                          " has no DDGI probes to project"});
-            prof.gi.dynamic = profile::GiDynamic::PerPixel;
-        }
         probes_ = std::make_unique<GpuProbes>(*gi.probes, gi.scenario,
                                               profile::parseVolumeLod(prof.gi.volumeLod),
                                               prof.gi.technique, prof.gi.shLeak);
+        // A technique whose probes the projection cannot read (SH: no DDGI textures) lights
+        // dynamic objects with its per-pixel lookup instead.
+        if (std::string why = probes_->technique().dynamicShUnsupported();
+            prof.gi.dynamic == profile::GiDynamic::Sh && !why.empty()) {
+            skipped_.push_back(
+                {"pass gi-dynamic-sh", "gi.technique=" + prof.get("gi.technique") + " " + why});
+            prof.gi.dynamic = profile::GiDynamic::PerPixel;
+        }
         std::vector<int> kept;
         for (const GpuProbeVolume& v : probes_->volumes())
             kept.push_back(v.fileIndex);

@@ -1,10 +1,10 @@
 #include "frame/GiMemory.h"
 
-#include "profile/GiVolumeLod.h"
 #include "gl/TextureFormat.h"
 #include "passes/DynamicShPass.h"
 #include "passes/GiApplyPass.h"
-#include "passes/GpuShTextures.h"
+#include "passes/GpuTechnique.h"
+#include "profile/GiVolumeLod.h"
 #include "profile/VolumeLod.h"
 
 #include <algorithm>
@@ -14,11 +14,9 @@ namespace pb::render {
 GiMemory estimateGiMemory(const profile::Profile& p, const probes::ProbeSet& set, int width,
                           int height, int dynamicObjects) {
     GiMemory m;
+    const std::unique_ptr<GpuTechnique> technique = makeGpuTechnique(p.gi.technique, p.gi.shLeak);
     for (int v : profile::selectVolumes(set, profile::parseVolumeLod(p.gi.volumeLod)))
-        m.probes += isShTechnique(p.gi.technique)
-                        ? shBytesPerProbe(p.gi.technique) *
-                              std::size_t(set.volumes[size_t(v)].probeCount())
-                        : profile::gpuVolumeBytes(set, size_t(v));
+        m.probes += technique->volumeBytes(set, v);
     // GiApplyPass::execute: the target at size / divisor (at least 1 texel per axis).
     const int div = profile::resolutionDivisor(p.gi.resolution);
     const int w = std::max(1, width / div), h = std::max(1, height / div);
@@ -34,10 +32,11 @@ GiMemory estimateGiMemory(const profile::Profile& p, const probes::ProbeSet& set
         else
             m.upsample = gl::textureBytes(format, width, height);
     }
-    // DynamicShPass (FrameRenderer turns it off under an SH technique): directions, positions, lookups (kDirections x objects), weights
-    // (kDirections x 1), coefficients (4 x objects), all RGBA32F.
+    // DynamicShPass (FrameRenderer turns it off under a technique it cannot project, as SH):
+    // directions, positions, lookups (kDirections x objects), weights (kDirections x 1),
+    // coefficients (4 x objects), all RGBA32F.
     if (p.gi.dynamic == profile::GiDynamic::Sh && dynamicObjects > 0 &&
-        !isShTechnique(p.gi.technique)) {
+        technique->dynamicShUnsupported().empty()) {
         const int rows = dynamicObjects, n = DynamicShPass::kDirections;
         const auto rgba32f = [](int tw, int th) {
             return gl::textureBytes(gl::TextureFormat::RGBA32F, tw, th);

@@ -41,7 +41,7 @@ std::vector<glm::vec4> GiPointEvaluator::evaluate(const std::vector<GiPoint>& po
     glDisable(GL_BLEND);
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
-    const gl::Program& prog = programs_.get("fullscreen.vert", "gi_ddgi_points.frag",
+    const gl::Program& prog = programs_.get("fullscreen.vert", probes_.technique().pointsShader(),
                                             giShaderDefines(profile_, &probes_));
     prog.use();
     posTex.bind(0);
@@ -56,13 +56,7 @@ std::vector<glm::vec4> GiPointEvaluator::evaluate(const std::vector<GiPoint>& po
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     glBindVertexArray(0);
-    const bool sh = probes_.technique() != profile::GiTechnique::Ddgi;
-    for (int u = 3 + probes_.unitsPerVolume() - 1; u >= 0; --u) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + u));
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-        if (sh) glBindTexture(GL_TEXTURE_3D, 0);
-    }
+    probes_.unbindTextures(3 + probes_.unitsPerVolume()); // the points and the probes
     glUseProgram(0);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 

@@ -77,7 +77,7 @@ void DynamicShPass::execute(FrameContext& frame) {
     glClearColor(0, 0, 0, 0);
     glClear(GL_COLOR_BUFFER_BIT);
     const gl::Program& eval =
-        frame.programs.get("fullscreen.vert", "gi_ddgi_points.frag", defines_);
+        frame.programs.get("fullscreen.vert", probes_.technique().pointsShader(), defines_);
     eval.use();
     positions_.bind(0);
     directions_.bind(1);
@@ -103,11 +103,7 @@ void DynamicShPass::execute(FrameContext& frame) {
     fit.set("u_shWeights", 1);
     fit.set("u_shDirections", kDirections);
     drawFullscreenTriangle(frame.targets);
-    for (int u = 2 + GpuProbes::kUnitsPerVolume - 1; u >= 0; --u) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + u));
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-    }
+    probes_.unbindTextures(2 + probes_.unitsPerVolume()); // the fit's inputs and the probes
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

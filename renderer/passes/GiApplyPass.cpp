@@ -176,11 +176,13 @@ void GiApplyPass::execute(FrameContext& frame) {
         if (!countLate_) applyDefines["GI_COUNT_EARLY_TESTS"] = "";
     }
     applyDefines.merge(giDebugInjectionDefines()); // test-only, normally empty
+    // The technique's lookup shader (GpuTechnique.h); the stencil marks are technique-neutral.
+    const std::string applyShader = probes_.technique().applyShader();
     Draw d{frame,
            {gb.width(), gb.height()},
            {spec.width, spec.height},
            div,
-           &frame.programs.get("fullscreen.vert", "gi_ddgi_apply.frag", applyDefines),
+           &frame.programs.get("fullscreen.vert", applyShader, applyDefines),
            {},
            {}};
     std::vector<int> order = probes_.drawOrder(); // largest first
@@ -190,15 +192,14 @@ void GiApplyPass::execute(FrameContext& frame) {
             return GiProgramPair{&frame.programs.get("gi_volume_box.vert", frag, defines),
                                  &frame.programs.get("fullscreen.vert", frag, defines)};
         };
-        d.apply = pair("gi_ddgi_apply.frag", applyDefines);
+        d.apply = pair(applyShader.c_str(), applyDefines);
         d.fill = pair("gi_stencil_fill.frag", fillDefines);
         gl::Defines applyRasterDefines = applyDefines, markRasterDefines = fillDefines;
         applyRasterDefines["GI_INFLUENCE_BY_RASTER"] = "";
         d.rasterApplyMarks = !applyRasterDefines.count("GI_DYNAMIC_SH");
         // The raster mark discards nothing: early tests are its production behaviour.
         if (countInvocations && !countLate_) markRasterDefines["GI_COUNT_EARLY_TESTS"] = "";
-        d.applyRaster =
-            &frame.programs.get("gi_volume_box.vert", "gi_ddgi_apply.frag", applyRasterDefines);
+        d.applyRaster = &frame.programs.get("gi_volume_box.vert", applyShader, applyRasterDefines);
         d.markRaster = &frame.programs.get("gi_volume_box.vert", "gi_stencil_mark_raster.frag",
                                            markRasterDefines);
         // The GI target's depth: the depth of the GBuffer pixel each texel stands for.
@@ -288,13 +289,7 @@ void GiApplyPass::execute(FrameContext& frame) {
     }
 
     resetState();
-    const bool sh = probes_.technique() != profile::GiTechnique::Ddgi;
-    for (int u = kFirstProbeUnit + probes_.unitsPerVolume() - 1; u >= 0; --u) {
-        glActiveTexture(GLenum(GL_TEXTURE0 + u));
-        glBindTexture(GL_TEXTURE_2D, 0);
-        glBindTexture(GL_TEXTURE_2D_ARRAY, 0);
-        if (sh) glBindTexture(GL_TEXTURE_3D, 0);
-    }
+    probes_.unbindTextures(kFirstProbeUnit + probes_.unitsPerVolume()); // GBuffer and probes
     glActiveTexture(GL_TEXTURE0);
     frame.gi.enabled = true;
     frame.gi.irradiance = targets_.target();

@@ -1,8 +1,11 @@
 #pragma once
-// GI apply (DDGI): evaluates the probe irradiance for every GBuffer pixel into the GI
-// evaluation target (gi.resolution, gi.target_format) and hands it to the lighting through
-// FrameContext::gi. Shader: gi_ddgi_apply.frag + common_ddgi.glsl. Volumes outside the view
-// frustum are culled; the rest are drawn per gi.multi_volume:
+// GI apply: evaluates the probe irradiance for every GBuffer pixel into the GI evaluation
+// target (gi.resolution, gi.target_format) and hands it to the lighting through
+// FrameContext::gi. The lookup is the probes' technique's (GpuProbes::technique(): its
+// applyShader(), gi_ddgi_apply.frag with common_ddgi.glsl or, under gi.technique=sh_l1|sh_l2,
+// common_sh.glsl; its textures bound by GpuProbes::bindVolume); the target, the culling, the
+// draws and the stencil path below are every technique's. Volumes outside the view frustum
+// are culled; the rest are drawn per gi.multi_volume:
 //   naive:   largest first, full-screen, each overwriting (the last draw = smallest volume);
 //   stencil: smallest first, one stencil bit ('taken') on a depth-stencil of the GI target's
 //            size, so each pixel is evaluated once, by the smallest volume containing it;

@@ -1,28 +1,16 @@
 #include "passes/GpuShTextures.h"
 
 #include "core/Error.h"
-#include "probes/ShAbsentFill.h"
-#include "probes/ShIrradiance.h"
-#include "probes/ShSampler.h"
+#include "probes/sh/ShAbsentFill.h"
+#include "probes/sh/ShIrradiance.h"
+#include "probes/sh/ShSampler.h"
 
 namespace pb::render {
-
-std::size_t GpuShVolume::bytes() const {
-    if (!validity) return 0; // not uploaded (DDGI)
-    std::size_t total = validity.bytes();
-    for (const gl::Texture& t : coefficients)
-        total += t.bytes();
-    return total;
-}
 
 int shCoefficientCount(profile::GiTechnique t) {
     return t == profile::GiTechnique::ShL1   ? probes::kShL1Coefficients
            : t == profile::GiTechnique::ShL2 ? probes::kShL2Coefficients
                                              : 0;
-}
-
-bool isShTechnique(profile::GiTechnique t) {
-    return shCoefficientCount(t) > 0;
 }
 
 std::size_t shBytesPerProbe(profile::GiTechnique t) {
@@ -63,12 +51,12 @@ gl::Texture volumeTexture(gl::TextureFormat f, const glm::ivec3& counts, const v
 }
 } // namespace
 
-GpuShVolume uploadShVolume(const probes::ProbeSet& set, int scenario, int vi,
-                           profile::GiTechnique technique, profile::GiShLeak leak,
-                           const std::string& label) {
+std::vector<gl::Texture> uploadShVolume(const probes::ProbeSet& set, int scenario, int vi,
+                                        profile::GiTechnique technique, profile::GiShLeak leak,
+                                        const std::string& label) {
     if (!set.hasSh()) throw Error(probes::noShMessage("the probe set"));
     const probes::ProbeVolume& v = set.volumes[size_t(vi)];
-    // Absent probes read as their nearest stored one, as in ShSampler (ShAbsentFill.h).
+    // Absent probes read as their nearest stored one, as in ShSampler (probes/sh/ShAbsentFill.h).
     const probes::ShLookupVolume lookup =
         probes::shLookupVolume(v, set.states[size_t(vi)], set.sh[size_t(scenario)][size_t(vi)],
                                set.settings.backfaceThreshold);
@@ -99,13 +87,12 @@ GpuShVolume uploadShVolume(const probes::ProbeSet& set, int scenario, int vi,
         else
             validity[p] = valid ? 255 : 0;
     }
-    GpuShVolume g;
+    std::vector<gl::Texture> g; // in the order of their units (GpuTechniqueSh::bindTextures)
     for (int t = 0; t < textures; ++t)
-        g.coefficients.push_back(volumeTexture(gl::TextureFormat::RGBA16F, v.counts,
-                                               texels[size_t(t)].data(),
-                                               label + " sh" + std::to_string(t)));
-    g.validity =
-        volumeTexture(gl::TextureFormat::R8, v.counts, validity.data(), label + " sh validity");
+        g.push_back(volumeTexture(gl::TextureFormat::RGBA16F, v.counts, texels[size_t(t)].data(),
+                                  label + " sh" + std::to_string(t)));
+    g.push_back(
+        volumeTexture(gl::TextureFormat::R8, v.counts, validity.data(), label + " sh validity"));
     return g;
 }
 

@@ -13,7 +13,8 @@
 //       hardware-filtered R8 weight disagreed with the float-filtered lighting on llvmpipe by
 //       up to 10% where the weight is small: common_sh.glsl).
 // 25 bytes a probe for L1, 57 for L2 (`probebench memory --technique`). The coefficients are
-// the bake's, already rounded to half (probes/ShIrradiance.h), so the upload is exact.
+// the bake's, already rounded to half (probes/sh/ShIrradiance.h), so the upload is exact.
+// GpuTechniqueSh.h binds them; this file is the layout and its upload.
 #include "gl/Texture.h"
 #include "probes/ProbeSet.h"
 #include "profile/Profile.h"
@@ -23,15 +24,8 @@
 
 namespace pb::render {
 
-struct GpuShVolume {
-    std::vector<gl::Texture> coefficients; // 3 (L1) or 7 (L2) RGBA16F 3D textures
-    gl::Texture validity;                  // R8 3D: validity or the cells' masks
-    std::size_t bytes() const;
-};
-
 // 4 (sh_l1), 9 (sh_l2), 0 (ddgi).
 int shCoefficientCount(profile::GiTechnique t);
-bool isShTechnique(profile::GiTechnique t);
 // GPU bytes per probe of the layout above (0 for ddgi).
 std::size_t shBytesPerProbe(profile::GiTechnique t);
 
@@ -40,10 +34,12 @@ std::size_t shBytesPerProbe(profile::GiTechnique t);
 std::uint8_t shCellMask(const probes::ProbeVolume& v, const std::vector<probes::ProbeState>& s,
                         const glm::ivec3& base);
 
-// Uploads volume `vi` of scenario `scenario`. Throws pb::Error when the set has no SH
-// (probes::noShMessage, naming `source`).
-GpuShVolume uploadShVolume(const probes::ProbeSet& set, int scenario, int vi,
-                           profile::GiTechnique technique, profile::GiShLeak leak,
-                           const std::string& label);
+// Uploads volume `vi` of scenario `scenario`: the 3 (L1) or 7 (L2) RGBA16F coefficient
+// textures, then the R8 validity or cell-mask texture, labelled `label` + " sh<t>" and
+// " sh validity". Throws pb::Error when the set has no SH (probes::noShMessage) or the GL
+// cannot hold a texture (naming `label`).
+std::vector<gl::Texture> uploadShVolume(const probes::ProbeSet& set, int scenario, int vi,
+                                        profile::GiTechnique technique, profile::GiShLeak leak,
+                                        const std::string& label);
 
 } // namespace pb::render

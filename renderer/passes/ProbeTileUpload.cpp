@@ -37,7 +37,7 @@ std::size_t uploadProbeTiles(const GpuProbes& gpu, const probes::ProbeSet& set, 
                 for (int ch = 0; ch < C; ++ch)
                     f32[std::size_t((row * T + col) * C + ch)] = ch < 3 ? src[ch] * scale : src[ch];
             }
-        glBindTexture(GL_TEXTURE_2D_ARRAY, g->irradiance.id());
+        glBindTexture(GL_TEXTURE_2D_ARRAY, g->textures[kDdgiIrradiance].id());
         if (f == StorageFormat::Rgba16f) {
             for (std::size_t i = 0; i < f32.size(); ++i)
                 f16[i] = glm::packHalf1x16(f32[i]);

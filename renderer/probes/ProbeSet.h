@@ -61,7 +61,8 @@ struct ProbeState {
     bool irradianceOnly = false;
     // The lattice point itself is inside geometry (back-face ratio above the threshold before
     // relocation moved the probe out). The SH technique looks probes up at their lattice points,
-    // so for it such a probe is invalid (ShIrradiance.h shProbeValid). Stored in the SH record.
+    // so for it such a probe is invalid (probes/sh/ShIrradiance.h shProbeValid). Stored in the
+    // SH record.
     bool insideAtLattice = false;
 };
 
@@ -92,9 +93,9 @@ struct ProbeSet {
     std::vector<ProbeTexture> visibility;        // [volume]
     std::vector<Scenario> scenarios;
     std::vector<std::vector<ProbeTexture>> irradiance; // [scenario][volume]
-    // The SH technique's probes (ShIrradiance.h): [scenario][volume][probe * 9 + coefficient],
-    // radiance SH in the volume's local frame, from the same bake. Empty: a file from before
-    // version 6 (re-bake for gi.technique=sh_l1|sh_l2).
+    // The SH technique's probes (probes/sh/ShIrradiance.h): [scenario][volume][probe * 9 +
+    // coefficient], radiance SH in the volume's local frame, from the same bake. Empty: a file
+    // from before version 6 (re-bake for gi.technique=sh_l1|sh_l2).
     std::vector<std::vector<std::vector<glm::vec3>>> sh;
     // Not part of the probe file: the volume ranks of its sidecar FILE.ranks.json when one was
     // read and matches (VolumeRanksFile.h); otherwise empty and `ranksNote` says why.

@@ -1,7 +1,7 @@
 #include "studies/common/WallLeak.h"
 
 #include "probes/ProbeSampler.h"
-#include "probes/ShSampler.h"
+#include "probes/sh/ShSampler.h"
 
 namespace pb::studies {
 

@@ -117,7 +117,8 @@ TEST_F(DebugLabelsTest, MainObjectsCarryLabels) {
     r.render(render::makeRenderView(*s.findView("sunlit_room"), s.worldBounds(), 32, 18));
     ASSERT_NE(r.gpuProbes(), nullptr);
     const render::GpuProbeVolume& v = r.gpuProbes()->volumes().front();
-    const std::string irradiance = gl::objectLabel(GL_TEXTURE, v.irradiance.id());
+    const std::string irradiance =
+        gl::objectLabel(GL_TEXTURE, v.textures[render::kDdgiIrradiance].id());
     EXPECT_NE(irradiance.find("irradiance"), std::string::npos) << irradiance;
     EXPECT_NE(irradiance.find(gi.probes->volumes.front().name), std::string::npos) << irradiance;
 

@@ -1,6 +1,6 @@
 // The SH technique's cross-check (issue 19): the GPU lookup (common_sh.glsl, through the point
 // evaluator that runs the apply pass's code, hardware trilinear 3D fetches) against the CPU
-// reference (probes/ShSampler) at random (position, normal, view) triples over the baked
+// reference (probes/sh/ShSampler) at random (position, normal, view) triples over the baked
 // built-in scene with a root and a rotated nested volume, for sh_l1 and sh_l2 and every
 // gi.sh_leak mode. Same error measure as GiCrossCheckTest: |gpu - cpu| / max(|cpu|, 1e-3 x
 // the largest |cpu| of the run), at most 1e-3.
@@ -9,7 +9,8 @@
 
 #include "core/Error.h"
 #include "frame/GiPointEvaluator.h"
-#include "probes/ShSampler.h"
+#include "passes/GpuShTextures.h"
+#include "probes/sh/ShSampler.h"
 #include "raytrace/StaticTriangles.h"
 #include "probes/store/SparseStorage.h"
 
@@ -103,7 +104,7 @@ TEST_P(GiShCrossCheckTest, GpuMatchesTheCpuShSamplerForEveryTechniqueAndLeakMode
         }
 }
 
-// A sparse set (absent probes read as their nearest stored one, probes/ShAbsentFill.h): the
+// A sparse set (absent probes read as their nearest stored one, probes/sh/ShAbsentFill.h): the
 // upload and the CPU sampler fill them alike, in every mode.
 TEST_P(GiShCrossCheckTest, SparseSetGpuMatchesTheCpuShSampler) {
     probes::ProbeSet set = giTestProbes(probes::StorageFormat::Rgba16f);

@@ -10,7 +10,7 @@
 #include "frame/Readback.h"
 #include "profile/GiVolumeLod.h"
 #include "probes/ProbeSampler.h"
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -3,7 +3,7 @@
 // visibility convolution instead of returning nothing; the rays' SH basis values it keeps for
 // RadianceSlab::projectSh are shBasis of each ray's direction.
 #include "probes/ProbeLayout.h"
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 #include "probes/bake/ProbeConvolution.h"
 #include "probes/bake/RayDirections.h"
 

@@ -1,9 +1,9 @@
-// The APV encoding of L1 (probes/ShApvEncoding.h; CPU emulation, not a switch yet): 16 B per
+// The APV encoding of L1 (probes/sh/ShApvEncoding.h; CPU emulation, not a switch yet): 16 B per
 // probe, L1 as 8-bit ratios to L0, decoded with the filtered L0. Its round trip stays within
 // the 8-bit rounding, and its extra error against the RGBA16F layout on a bake is measured.
-#include "probes/ShApvEncoding.h"
-#include "probes/ShIrradiance.h"
-#include "probes/ShSampler.h"
+#include "probes/sh/ShApvEncoding.h"
+#include "probes/sh/ShIrradiance.h"
+#include "probes/sh/ShSampler.h"
 #include "raytrace/StaticTriangles.h"
 #include "probes/bake/Baker.h"
 #include "probes/bake/MidAirSamples.h"

@@ -1,12 +1,12 @@
 // The SH technique's probes: the projection and the cosine-lobe lookup against closed forms,
 // the bake's SH in the probe file (and older files reading as "no SH"), and the CPU SH
 // sampler's leak modes.
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 #include "OlderProbeFile.h"
 #include "ProbeTestScenes.h"
 #include "SunlitFloorBake.h"
 #include "core/Error.h"
-#include "probes/ShSampler.h"
+#include "probes/sh/ShSampler.h"
 #include "probes/bake/Baker.h"
 #include "core/Hash.h"
 #include "probes/store/ProbeFile.h"

@@ -6,7 +6,7 @@
 // coefficient 0. The map's projection (what the bake did before) is measured beside it.
 #include "unit/ProbeTestScenes.h"
 
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 #include "probes/bake/Baker.h"
 
 #include <algorithm>

@@ -1,14 +1,14 @@
 // Sparse bakes under the SH technique (issue 19). By default sparse storage keeps no SH for the
 // probes it leaves out, and a lookup must not read that absence as black in any gi.sh_leak
 // mode - in particular not under `none`, which ignores validity. The SH sampler reads an absent
-// probe as its nearest stored one (probes/ShAbsentFill.h). Measured here: the mean luminance
+// probe as its nearest stored one (probes/sh/ShAbsentFill.h). Measured here: the mean luminance
 // of mid-air lookups (where absent corners are) of the sparse set against the dense bake of the
 // same grid, per mode, and the same without the fill (absent corners as zeros), which must fail
 // the tolerance - or the test could not catch the bug it guards against. With
 // FreeSpace::Irradiance the probes left out keep their SH (irradiance-only probes): lookups
 // equal the dense set's.
 #include "DenseAndSparseBake.h"
-#include "probes/ShSampler.h"
+#include "probes/sh/ShSampler.h"
 #include "raytrace/StaticTriangles.h"
 #include "probes/bake/Baker.h"
 #include "probes/bake/MidAirSamples.h"

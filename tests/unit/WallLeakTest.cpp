@@ -1,7 +1,7 @@
 // The leak figure (issue 19) on the built-in `thin_wall` scene: the lit face is lit, and the
 // SH technique's leak modes cut the leak of `none`, DDGI's visibility test cuts it too.
 #include "studies/common/WallLeak.h"
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 #include "probes/bake/Baker.h"
 #include "scene/SceneLoader.h"
 

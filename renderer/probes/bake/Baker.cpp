@@ -1,6 +1,6 @@
 #include "probes/bake/Baker.h"
 
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 
 #include "core/Error.h"
 #include "core/ParallelFor.h"
@@ -520,7 +520,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     bakeGeometry(run);
     const RadianceMask mask(run);
     bakeRadiance(run, mask);
-    // The SH technique's probes: the last pass's ray samples projected (ShIrradiance.h).
+    // The SH technique's probes: the last pass's ray samples projected (probes/sh/ShIrradiance.h).
     finishSh(run);
     const std::vector<BakePhase> phaseTimes = run.phases.take();
     if (req.recordRays) *req.recordRays = own->stopRecording();

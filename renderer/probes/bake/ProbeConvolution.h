@@ -14,7 +14,7 @@
 // kWeightPrune are dropped (relative effect < rays * 1e-7, far below half-float precision).
 // The rays' SH L2 basis values Y_k(d_r) are kept too (shBasisOfRay): projecting a probe's
 // radiance onto SH (RadianceSlab::projectSh) needs them for every probe of the pass.
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 
 #include <glm/glm.hpp>
 #include <vector>
@@ -32,7 +32,7 @@ public:
     explicit ProbeConvolution(const std::vector<glm::vec3>& localDirs,
                               Parts parts = Parts::WithVisibility);
     int rays() const { return rays_; }
-    // Y_0 .. Y_8 of ray r's direction (ShIrradiance.h shBasis).
+    // Y_0 .. Y_8 of ray r's direction (probes/sh/ShIrradiance.h shBasis).
     const float* shBasisOfRay(int r) const { return &shBasis_[std::size_t(r) * kShL2Coefficients]; }
     // radiance: rays() x (R, G, B, unused) floats; out: interior texels, row-major, RGB per
     // texel. (Four floats per ray: one SIMD multiply-add per weight, the same per-channel

@@ -4,7 +4,7 @@
 #include "core/ParallelFor.h"
 #include "probes/Octahedral.h"
 #include "probes/ProbeLayout.h"
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 #include "probes/bake/DirectLight.h"
 #include "probes/bake/RayDirections.h"
 

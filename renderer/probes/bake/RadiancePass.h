@@ -98,7 +98,7 @@ public:
     // only to decide whether a second round is worth tracing.
     void texelVariance(std::size_t slot, const ProbeConvolution& conv, float* outVar) const;
     // After convolve (or finish): the slot's radiance projected onto SH L2 (9 RGB, the
-    // probe's volume-local frame, probes/ShIrradiance.h) by Monte Carlo over the same samples
+    // probe's volume-local frame, probes/sh/ShIrradiance.h) by Monte Carlo over the same samples
     // the irradiance texels convolve: each ray 4 pi / N L(w) Y(w) (the ray set is uniform on
     // the sphere; L already carries the balance heuristic's weight), each emitter and
     // lit-surface sample its share c Y(w) (c: what it adds to a texel facing it, over cos).

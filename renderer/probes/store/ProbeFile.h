@@ -24,7 +24,7 @@ inline constexpr char kProbeFileMagic[8] = {'P', 'B', 'P', 'R', 'O', 'B', 'E', '
 // 3: per-scenario storage scales (StorageScale.h) and the sparse storage record.
 // 4: the converged bake's settings (emitter samples, noise target) after the backface threshold.
 // 5: the lit-surface samples after the noise target.
-// 6: the SH probes (ShIrradiance.h) after the irradiance: u8 present, then per volume and
+// 6: the SH probes (probes/sh/ShIrradiance.h) after the irradiance: u8 present, then per volume and
 //    probe u8 insideAtLattice, then per scenario, volume and stored probe 9 x RGB f32 (older
 //    files read with no SH).
 // 7: sparse volumes' irradiance-only probes (issue 18): a second bitmap after the presence

@@ -3,7 +3,7 @@
 #include "core/Error.h"
 #include "core/ParallelFor.h"
 #include "probes/ProbeSampler.h"
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 #include "probes/store/FreeSpaceTiles.h"
 #include "probes/store/SparseLayout.h"
 

@@ -1,6 +1,7 @@
 #pragma once
 // The CPU reference of the SH technique's lookup (gi.technique=sh_l1|sh_l2): what the GPU
-// pass (shaders/gi_sh_apply.frag) reproduces with one hardware trilinear fetch per 3D texture.
+// lookup (shaders/common_sh.glsl, run by gi_ddgi_apply.frag and gi_ddgi_points.frag under
+// GI_TECHNIQUE_SH) reproduces with one hardware trilinear fetch per 3D texture.
 //
 // Steps, in this order:
 // 1. Volume choice and edge fade exactly as ProbeSampler (smallest influencing box; roots
@@ -22,9 +23,9 @@
 // 5. Irradiance from the blended coefficients (shIrradiance, first 4 or 9), times the fade.
 // No visibility test: this is the leak the testbed measures against DDGI.
 #include "probes/ProbeSampler.h"
-#include "probes/ShAbsentFill.h"
-#include "probes/ShApvEncoding.h"
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShAbsentFill.h"
+#include "probes/sh/ShApvEncoding.h"
+#include "probes/sh/ShIrradiance.h"
 
 #include <cstdint>
 #include <string>

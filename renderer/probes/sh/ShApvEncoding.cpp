@@ -1,6 +1,6 @@
-#include "probes/ShApvEncoding.h"
+#include "probes/sh/ShApvEncoding.h"
 
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
-#include "probes/ShAbsentFill.h"
+#include "probes/sh/ShAbsentFill.h"
 
 #include "probes/AbsentProbeFill.h"
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 
 #include <algorithm>
 #include <limits>

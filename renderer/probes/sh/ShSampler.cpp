@@ -1,4 +1,4 @@
-#include "probes/ShSampler.h"
+#include "probes/sh/ShSampler.h"
 
 #include "core/Error.h"
 

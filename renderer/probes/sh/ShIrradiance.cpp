@@ -1,4 +1,4 @@
-#include "probes/ShIrradiance.h"
+#include "probes/sh/ShIrradiance.h"
 
 #include "core/ParallelFor.h"
 #include "probes/ProbeSampler.h"
