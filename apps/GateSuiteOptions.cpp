@@ -57,7 +57,7 @@ gate::GateSuite resolveGateSuite(const GateSuiteArgs& a, bool update,
     if ((a.width > 0) != (a.height > 0)) throw Error("--width and --height go together");
     if (a.width > 0) {
         if (a.width < 16 || a.height < 16 || a.width > 16384 || a.height > 16384)
-            throw Error("--width/--height must be in 16..16384");
+            throw UsageError("--width/--height must be in 16..16384");
         s.width = a.width;
         s.height = a.height;
     }

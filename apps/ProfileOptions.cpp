@@ -1,7 +1,9 @@
 #include "ProfileOptions.h"
 
+#include "core/Error.h"
 #include "costmodel/CachePresets.h"
 #include "profile/ProfileLoader.h"
+#include "profile/SwitchTable.h"
 
 #include <cstdlib>
 #include <sstream>
@@ -37,6 +39,22 @@ profile::ProfileSearch profileSearch() {
     return s;
 }
 
+namespace {
+// A value the switch table refuses for a known switch (out of range, not a choice) is a usage
+// error: exit 2. A wrong switch name stays exit 1 with its "did you mean", as every name the
+// user types (scene, view, profile).
+void applySet(profile::PlatformProfile& p, const std::string& kv) {
+    try {
+        p.switches.applyOverride(kv);
+    } catch (const UsageError&) {
+        throw;
+    } catch (const Error& e) {
+        if (profile::findSwitch(kv.substr(0, kv.find('='))) != nullptr) throw UsageError(e.what());
+        throw;
+    }
+}
+} // namespace
+
 profile::PlatformProfile resolveProfile(const ProfileArgs& a) {
     profile::PlatformProfile p;
     if (!a.profile.empty()) {
@@ -47,7 +65,7 @@ profile::PlatformProfile resolveProfile(const ProfileArgs& a) {
         p.cachePreset = "pc-high";
     }
     for (const std::string& kv : a.sets)
-        p.switches.applyOverride(kv);
+        applySet(p, kv);
     return p;
 }
 
@@ -61,7 +79,7 @@ std::vector<profile::PlatformProfile> loadProfilesWithSets(const std::vector<std
     for (const std::string& n : list) {
         profile::PlatformProfile p = profile::loadProfile(n, search);
         for (const std::string& kv : sets)
-            p.switches.applyOverride(kv);
+            applySet(p, kv);
         out.push_back(std::move(p));
     }
     return out;

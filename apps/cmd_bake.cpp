@@ -56,7 +56,7 @@ std::pair<int, int> parsePart(const std::string& text) {
     char slash = 0, rest = 0;
     if (std::sscanf(text.c_str(), "%d %c %d %c", &part, &slash, &parts, &rest) != 3 ||
         slash != '/')
-        throw Error("--part: expected I/N, e.g. 0/2 (got '" + text + "')");
+        throw UsageError("--part: expected I/N, e.g. 0/2 (got '" + text + "')");
     return {part, parts};
 }
 
@@ -71,7 +71,7 @@ std::vector<std::size_t> splitScenarios(const BakeArgs& a, std::size_t scenarios
                     "previous pass and nested rings blend across volumes, so one volume's probes "
                     "cannot be baked apart from the others'; use --split scenario");
     if (a.split != "scenario")
-        throw Error("--split: expected scenario (got '" + a.split + "')");
+        throw UsageError("--split: expected scenario (got '" + a.split + "')");
     if (a.part.empty()) throw Error("--split: needs --part I/N (this machine's part)");
     if (a.out.empty()) throw Error("--split: needs --out (the part file to write)");
     auto [part, parts] = parsePart(a.part);
@@ -140,7 +140,7 @@ FreeSpace freeSpaceOf(const BakeArgs& a) {
     if (a.freeSpaceIrradiance) return FreeSpace::Irradiance;
     FreeSpace f = FreeSpace::Ranked;
     if (!parseFreeSpace(a.freeSpace, f))
-        throw Error("--free-space: '" + a.freeSpace + "' is not one of stand-ins, ranked, all");
+        throw UsageError("--free-space: '" + a.freeSpace + "' is not one of stand-ins, ranked, all");
     return f;
 }
 
@@ -257,7 +257,7 @@ int runBake(const BakeArgs& a) {
         throw Error("--out is required (the probe file to write), or --write-volumes alone to "
                     "only place volumes");
     if (!(a.budgetMib >= 0.0) || !std::isfinite(a.budgetMib))
-        throw Error("--probe-budget-mib: must be a positive number");
+        throw UsageError("--probe-budget-mib: must be a positive number");
     if (a.sparse && a.dense) throw Error("--dense: excludes --sparse (pick one storage)");
     for (const CLI::Option* o : {a.freeSpaceOption, a.freeSpaceIrradianceOption})
         if (o && o->count() > 0 && !storesSparse(bakeOptions(a)))

@@ -90,21 +90,21 @@ std::string cameraSpec(const scene::View& v) {
 }
 
 void validate(const BenchArgs& a) {
-    if (a.frames < 1 || a.frames > 1000) throw Error("--frames must be in 1..1000");
-    if (a.rounds < 1 || a.rounds > 1000) throw Error("--rounds must be in 1..1000");
+    if (a.frames < 1 || a.frames > 1000) throw UsageError("--frames must be in 1..1000");
+    if (a.rounds < 1 || a.rounds > 1000) throw UsageError("--rounds must be in 1..1000");
     if (a.warmup < 1 || a.warmup > 100)
-        throw Error("--warmup must be in 1..100 (the first frame compiles shaders)");
+        throw UsageError("--warmup must be in 1..100 (the first frame compiles shaders)");
     if ((a.width > 0) != (a.height > 0)) throw Error("--width and --height go together");
     if (a.width < 0 || a.height < 0 || a.width > 16384 || a.height > 16384)
-        throw Error("--width/--height must be in 16..16384");
+        throw UsageError("--width/--height must be in 16..16384");
     if (a.width > 0 && (a.width < 16 || a.height < 16))
-        throw Error("--width/--height must be in 16..16384");
+        throw UsageError("--width/--height must be in 16..16384");
     if (!a.view.empty() && !a.camera.empty()) throw Error("give --view or --camera, not both");
-    if (!(a.ppd > 0)) throw Error("--ppd must be positive");
-    if (a.truthSpp < 1) throw Error("--truth-spp must be at least 1");
+    if (!(a.ppd > 0)) throw UsageError("--ppd must be positive");
+    if (a.truthSpp < 1) throw UsageError("--truth-spp must be at least 1");
     if (a.respondFrames < 2 || a.respondFrames > 10000)
-        throw Error("--respond-frames must be in 2..10000");
-    if (a.targetTimeout < 1) throw Error("--target-timeout must be at least 1 s");
+        throw UsageError("--respond-frames must be in 2..10000");
+    if (a.targetTimeout < 1) throw UsageError("--target-timeout must be at least 1 s");
     if (!a.predict.empty()) shaders::findMesaShim(); // the model needs the compilers
     if (!a.targets.empty()) {
         // Said before the bake and the timing: names, and whether the compilers are built.

@@ -67,17 +67,17 @@ int runCostmodel(CostArgs& a) {
         if (a.heightOption->count() == 0) a.height = platformProfile.height;
     }
     if (a.width < 1 || a.height < 1 || a.width > 16384 || a.height > 16384)
-        throw Error("--width/--height must be in 1..16384");
+        throw UsageError("--width/--height must be in 1..16384");
     if (a.worstCase && (!a.view.empty() || !a.camera.empty()))
         throw Error("--worst-case searches a camera: leave out --view and --camera");
-    if (a.tile < 2 || a.tile > 64 || a.tile % 2) throw Error("--tile must be even, in 2..64");
+    if (a.tile < 2 || a.tile > 64 || a.tile % 2) throw UsageError("--tile must be even, in 2..64");
     costmodel::CostModelOptions o;
     o.profile = platformProfile.switches;
     o.width = a.width;
     o.height = a.height;
     o.tile = a.tile;
-    if (a.warp < 1 || a.warp > 1024) throw Error("--warp must be in 1..1024 pixels");
-    if (a.inFlight < 1 || a.inFlight > 256) throw Error("--warps-in-flight must be in 1..256");
+    if (a.warp < 1 || a.warp > 1024) throw UsageError("--warp must be in 1..1024 pixels");
+    if (a.inFlight < 1 || a.inFlight > 256) throw UsageError("--warps-in-flight must be in 1..256");
     o.warpPixels = a.warp;
     o.warpsInFlight = a.inFlight;
     o.layout = costmodel::parseMemoryLayout(a.layout);

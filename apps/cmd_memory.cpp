@@ -67,7 +67,7 @@ int runMemory(const MemoryArgs& a) {
     if (a.technique == "sh_l1") return runSh(a, kShL1Coefficients);
     if (a.technique == "sh_l2") return runSh(a, kShL2Coefficients);
     if (a.technique != "ddgi")
-        throw Error("--technique: unknown value '" + a.technique + "' (ddgi, sh_l1, sh_l2)");
+        throw UsageError("--technique: unknown value '" + a.technique + "' (ddgi, sh_l1, sh_l2)");
     MemoryReport r;
     if (!a.grid.empty()) {
         ProbeVolume v;

@@ -41,7 +41,7 @@ int runPredict(const PredictArgs& a) {
     if ((a.width > 0) != (a.height > 0)) throw Error("--width and --height go together");
     if (a.width < 0 || a.height < 0 || a.width > 16384 || a.height > 16384 ||
         (a.width > 0 && (a.width < 16 || a.height < 16)))
-        throw Error("--width/--height must be in 16..16384");
+        throw UsageError("--width/--height must be in 16..16384");
     if (!a.view.empty() && !a.camera.empty()) throw Error("give --view or --camera, not both");
     const profile::ProfileSearch search = profileSearch();
     const profile::PlatformProfile reference = profile::loadProfile(a.reference, search);

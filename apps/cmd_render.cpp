@@ -168,7 +168,7 @@ render::GiDebugView checkArgs(RenderArgs& a, const profile::PlatformProfile& pla
         throw Error("--debug volume_coverage: needs --out (it is made from a read-back)");
     if (a.json && a.out.empty()) throw Error("--json: needs --out (a rendered frame to report)");
     if (a.width < 1 || a.height < 1 || a.width > 16384 || a.height > 16384)
-        throw Error("--width/--height must be in 1..16384");
+        throw UsageError("--width/--height must be in 1..16384");
     if (a.path.empty() && !(a.outDir.empty() && a.compareTo.empty()))
         throw Error(std::string(a.outDir.empty() ? "--compare-to" : "--out-dir") +
                     ": needs --path NAME|FILE");

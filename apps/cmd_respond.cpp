@@ -48,9 +48,9 @@ int go(RespondArgs& a) {
         platformProfile.name, platformProfile.switches,
         a.raysOption->count() ? a.raysPerFrame : platformProfile.updateRaysPerFrame,
         a.bytesOption->count() ? a.uploadBytesPerFrame : platformProfile.updateUploadBytesPerFrame};
-    if (budget.raysPerFrame < 0) throw Error("--rays-per-frame: must not be negative");
+    if (budget.raysPerFrame < 0) throw UsageError("--rays-per-frame: must not be negative");
     if (budget.uploadBytesPerFrame < 0)
-        throw Error("--upload-bytes-per-frame: must not be negative");
+        throw UsageError("--upload-bytes-per-frame: must not be negative");
     scene::Scene scene = loadSceneWithOverrides(a.scene);
     probes::ProbeSet set = readProbesForScene(a.probes, scene, a.force);
     a.run.probesName = a.probes;

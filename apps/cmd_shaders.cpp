@@ -111,8 +111,8 @@ int runShaders(ShadersArgs& a) {
         throw Error("--targets: name the targets (or all; --list-targets lists them)");
     if (a.run.plan.width < 16 || a.run.plan.height < 16 || a.run.plan.width > 4096 ||
         a.run.plan.height > 4096)
-        throw Error("--width/--height must be in 16..4096");
-    if (a.run.timeoutSeconds < 1) throw Error("--timeout must be at least 1 s");
+        throw UsageError("--width/--height must be in 16..4096");
+    if (a.run.timeoutSeconds < 1) throw UsageError("--timeout must be at least 1 s");
     if (!a.view.empty() && !a.run.camera.empty()) throw Error("give --view or --camera, not both");
     a.run.plan.ablate = !a.noAblate;
     // Everything that can be wrong is said before the bake: names, the install, the plan.

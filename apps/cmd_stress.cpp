@@ -51,7 +51,7 @@ std::vector<stress::StressVariant> resolveVariants(const StressArgs& a) {
         for (const std::string& kv : a.sets) {
             const auto eq = kv.find('=');
             if (eq == std::string::npos || eq == 0)
-                throw Error("--set '" + kv + "': expected key=value");
+                throw UsageError("--set '" + kv + "': expected key=value");
             v.set(kv.substr(0, eq), kv.substr(eq + 1), "--set");
         }
     for (std::size_t i = 0; i < out.size(); ++i)
@@ -65,17 +65,17 @@ stress::RunGuards parseGuards(const std::string& s) {
     if (s == "as_given") return stress::RunGuards::AsGiven;
     if (s == "off") return stress::RunGuards::Off;
     if (s == "both") return stress::RunGuards::Both;
-    throw Error("--guards '" + s + "': allowed values: as_given, off, both");
+    throw UsageError("--guards '" + s + "': allowed values: as_given, off, both");
 }
 
 void validateStress(const StressArgs& a) {
     if (a.width < 1 || a.height < 1 || a.width > 4096 || a.height > 4096)
-        throw Error("--width/--height must be in 1..4096");
+        throw UsageError("--width/--height must be in 1..4096");
     if (a.maxResolution < 1 || a.maxResolution > 16384)
-        throw Error("--max-resolution must be in 1..16384");
-    if (a.rays < 1 || a.rays > 4096) throw Error("--rays must be in 1..4096");
+        throw UsageError("--max-resolution must be in 1..16384");
+    if (a.rays < 1 || a.rays > 4096) throw UsageError("--rays must be in 1..4096");
     if (!(a.threshold > 0.0) || a.threshold > 1e6)
-        throw Error("--threshold must be a positive number");
+        throw UsageError("--threshold must be a positive number");
 }
 
 int runStress(const StressArgs& a) {

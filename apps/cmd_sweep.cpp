@@ -87,11 +87,11 @@ std::string failureReport(const sweep::PlanState& plan, const std::string& dir) 
 
 int runSweep(const SweepArgs& a) {
     if (a.engine != "local" && a.engine != "slurm")
-        throw Error("--engine: expected local or slurm (got '" + a.engine + "')");
-    if (a.maxParallel < 0) throw Error("--max-parallel: must be 1 or more");
-    if (a.chunk < 1) throw Error("--chunk: must be 1 or more");
+        throw UsageError("--engine: expected local or slurm (got '" + a.engine + "')");
+    if (a.maxParallel < 0) throw UsageError("--max-parallel: must be 1 or more");
+    if (a.chunk < 1) throw UsageError("--chunk: must be 1 or more");
     if (!(a.pollSeconds > 0.0 && a.pollSeconds <= 600.0))
-        throw Error("--poll-seconds: must be in (0, 600]");
+        throw UsageError("--poll-seconds: must be in (0, 600]");
     if (!a.partition.empty() && a.engine != "slurm")
         throw Error("--partition: applies to --engine slurm only");
     const sweep::SweepPlan plan = sweep::loadSweepPlan(a.plan);

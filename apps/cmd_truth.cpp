@@ -97,8 +97,8 @@ nlohmann::json toJson(const TruthArgs& a, const scene::Scene& s, const scene::Vi
 
 int runTruth(TruthArgs& a) {
     if (a.settings.spp < 1)
-        throw Error("--spp: must be at least 1 (got " + std::to_string(a.settings.spp) + ")");
-    if (!(a.exposure >= 0.0f) || !std::isfinite(a.exposure)) throw Error("--exposure: must be > 0");
+        throw UsageError("--spp: must be at least 1 (got " + std::to_string(a.settings.spp) + ")");
+    if (!(a.exposure >= 0.0f) || !std::isfinite(a.exposure)) throw UsageError("--exposure: must be > 0");
     const bool jsonToStdout = a.jsonOption && a.jsonOption->count() > 0 && (a.json.empty() || a.json == "-");
     for (const auto& [path, opt] : {std::pair{a.outHdr, "--out-hdr"}, {a.out, "--out"},
                                     {jsonToStdout ? std::string() : a.json, "--json"}})

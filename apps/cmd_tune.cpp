@@ -69,19 +69,19 @@ void tuneProgress(const std::string& line) {
 }
 
 void validateTune(const TuneArgs& a) {
-    if (a.truthSpp < 1) throw Error("--truth-spp must be at least 1");
-    if (!(a.budgetMs > 0 && a.budgetMs <= 1000)) throw Error("--budget-ms must be in (0, 1000]");
+    if (a.truthSpp < 1) throw UsageError("--truth-spp must be at least 1");
+    if (!(a.budgetMs > 0 && a.budgetMs <= 1000)) throw UsageError("--budget-ms must be in (0, 1000]");
     if (!(a.budgetMiB > 0 && a.budgetMiB <= 65536))
-        throw Error("--budget-mib must be in (0, 65536]");
+        throw UsageError("--budget-mib must be in (0, 65536]");
     if (fs::path(a.out).extension() != ".toml")
         throw Error("--out " + a.out + ": not a .toml file");
     if ((a.width > 0) != (a.height > 0)) throw Error("--width and --height go together");
     if (a.width != 0 && (a.width < 16 || a.height < 16 || a.width > 16384 || a.height > 16384))
-        throw Error("--width/--height must be in 16..16384");
+        throw UsageError("--width/--height must be in 16..16384");
     if (a.frames < 1 || a.rounds < 1 || a.warmup < 1)
-        throw Error("--frames, --rounds and --warmup must be at least 1");
+        throw UsageError("--frames, --rounds and --warmup must be at least 1");
     if (a.maxExhaustive < 1 || a.maxPasses < 1)
-        throw Error("--max-exhaustive and --max-passes must be at least 1");
+        throw UsageError("--max-exhaustive and --max-passes must be at least 1");
     if (!a.view.empty() && !a.camera.empty()) throw Error("give --view or --camera, not both");
     if (a.timing.rfind("model:", 0) == 0) {
         // Said before the bake: the device, and whether the compilers are built.

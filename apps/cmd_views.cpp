@@ -68,8 +68,8 @@ int runViews(ViewsArgs& a) {
         if (a.heightOption->count() == 0) a.height = platformProfile.height;
     }
     if (a.width < 1 || a.height < 1 || a.width > 16384 || a.height > 16384)
-        throw Error("--width/--height must be in 1..16384");
-    if (!(a.fov > 1.0f && a.fov < 179.0f)) throw Error("--fov must be in (1, 179) degrees");
+        throw UsageError("--width/--height must be in 1..16384");
+    if (!(a.fov > 1.0f && a.fov < 179.0f)) throw UsageError("--fov must be in (1, 179) degrees");
     if (a.worstCase && (!a.view.empty() || !a.camera.empty()))
         throw Error("--worst-case searches a camera: leave out --view and --camera");
     scene::Scene s = loadSceneWithOverrides(a.scene);

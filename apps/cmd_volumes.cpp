@@ -57,7 +57,7 @@ std::vector<scene::View> chooseViews(const VolumesArgs& a, const scene::Scene& s
     std::string name;
     while (std::getline(in, name, ','))
         if (!name.empty()) out.push_back(chooseView(s, name, ""));
-    if (out.empty()) throw Error("--views: expected worst-case, all or view names");
+    if (out.empty()) throw UsageError("--views: expected worst-case, all or view names");
     return out;
 }
 
@@ -108,7 +108,7 @@ void printRanking(const probes::ProbeSet& set, const probes::VolumeRanks& r,
 
 int runVolumes(const VolumesArgs& a) {
     if (a.width < 16 || a.height < 16 || a.width > 4096 || a.height > 4096)
-        throw Error("--width/--height must be in 16..4096");
+        throw UsageError("--width/--height must be in 16..4096");
     if (!a.rank && (a.writeRanks || a.views != "worst-case"))
         throw Error(std::string(a.writeRanks ? "--write-ranks" : "--views") + ": needs --rank");
     probes::ProbeSet set = probes::readProbeFileWithRanks(a.probes);

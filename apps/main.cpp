@@ -55,6 +55,9 @@ int main(int argc, char** argv) {
     try {
         for (auto& [sub, run] : runners)
             if (sub->parsed()) return run();
+    } catch (const pb::UsageError& e) {
+        std::cerr << "probebench: error: " << e.what() << "\n";
+        return kUsageExit;
     } catch (const pb::Error& e) {
         std::cerr << "probebench: error: " << e.what() << "\n";
         return 1;

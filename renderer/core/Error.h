@@ -1,6 +1,6 @@
 #pragma once
 // One exception type for every user-facing failure: the message is printed as is, on one line,
-// by the command-line app (exit code 1). It names the file (or option) and the problem.
+// by the command-line app (exit code 1; 2 for a UsageError). It names the file (or option) and the problem.
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -11,6 +11,14 @@ namespace pb {
 class Error : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
+};
+
+// An option's value that is out of range or not one of its choices (`--width 0`, `--set
+// gi.resolution=halve`): a usage error, so the app exits 2 as for a command line that does not
+// parse (README, "Errors and exit codes"). Everything else stays an Error (exit 1).
+class UsageError : public Error {
+public:
+    using Error::Error;
 };
 
 // `text` with control characters written as escapes ("\n", "\x01"): names read from a file

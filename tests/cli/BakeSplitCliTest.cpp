@@ -22,8 +22,9 @@ std::string fileBytes(const fs::path& p) {
     return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-void bakeSplitExpectOneLineError(const CommandResult& r, const std::string& problem) {
-    EXPECT_EQ(r.exitCode, 1) << r.output;
+// exit 1: the parts do not fit; 2: a value that is not of the option's form (a usage error).
+void bakeSplitExpectOneLineError(const CommandResult& r, const std::string& problem, int exit = 1) {
+    EXPECT_EQ(r.exitCode, exit) << r.output;
     EXPECT_EQ(r.output.rfind("probebench: error: ", 0), 0u) << r.output;
     EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << "not one line:\n" << r.output;
     EXPECT_NE(r.output.find(problem), std::string::npos) << r.output;
@@ -75,7 +76,7 @@ TEST(BakeSplitCli, WrongSplitsAreOneLineErrors) {
     bakeSplitExpectOneLineError(with({"--split", "scenario", "--part", "2/2"}),
                                 "--part: must be I/N");
     bakeSplitExpectOneLineError(with({"--split", "scenario", "--part", "half"}),
-                                "--part: expected I/N");
+                                "--part: expected I/N", 2);
     bakeSplitExpectOneLineError(with({"--split", "scenario"}), "--split: needs --part I/N");
     bakeSplitExpectOneLineError(with({"--part", "0/2"}), "--part: needs --split scenario");
     EXPECT_FALSE(fs::exists(dir / "x.pbpart"));

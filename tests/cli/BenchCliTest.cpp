@@ -254,12 +254,12 @@ TEST(BenchCli, ErrorsAreOneLineAndWriteNothing) {
     auto bad = tinyBench(dir, todayProfile(dir));
     bad.insert(bad.end(), {"--set", "gi.resolution=eighth"});
     r = runProbebench(bad);
-    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.exitCode, 2) << "a value out of range is a usage error";
     EXPECT_TRUE(firstLineIsTheError(r, "--set gi.resolution=eighth: allowed values")) << r.output;
     auto zero = tinyBench(dir, todayProfile(dir));
     zero[11] = "0"; // --rounds 0
     r = runProbebench(zero);
-    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.exitCode, 2);
     EXPECT_TRUE(firstLineIsTheError(r, "--rounds must be")) << r.output;
     EXPECT_FALSE(fs::exists(dir / "out.json"));
     EXPECT_FALSE(fs::exists(dir / "report.html"));

@@ -63,7 +63,7 @@ TEST(BenchTruthCli, TruthSppZeroIsAOneLineError) {
     auto it = std::find(args.begin(), args.end(), "--truth-spp");
     *(it + 1) = "0";
     auto r = runProbebench(args);
-    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_EQ(r.exitCode, 2) << "out of range: a usage error\n" << r.output;
     EXPECT_EQ(r.output.rfind("probebench: error: --truth-spp", 0), 0u) << r.output;
     EXPECT_FALSE(fs::exists(dir / "out.json"));
 }

@@ -34,8 +34,9 @@ std::string truthPlan(const std::string& name, const std::string& scene) {
     return plan;
 }
 
-void sweepExpectOneLineError(const CommandResult& r, const std::string& problem) {
-    EXPECT_EQ(r.exitCode, 1) << r.output;
+// exit 1: the plan or the folder is wrong; 2: an option's value (a usage error).
+void sweepExpectOneLineError(const CommandResult& r, const std::string& problem, int exit = 1) {
+    EXPECT_EQ(r.exitCode, exit) << r.output;
     EXPECT_EQ(r.output.rfind("probebench: error: ", 0), 0u) << r.output;
     EXPECT_EQ(r.output.find('\n'), r.output.size() - 1) << "not one line:\n" << r.output;
     EXPECT_NE(r.output.find(problem), std::string::npos) << r.output;
@@ -64,7 +65,7 @@ TEST(SweepCli, BadPlansFailBeforeAnythingRuns) {
     EXPECT_FALSE(fs::exists(dir / "out")) << "a refused plan created its output folder";
     sweepExpectOneLineError(runProbebench({"sweep", "--plan", empty.string(), "--out",
                                            (dir / "out").string(), "--engine", "pbs"}),
-                            "--engine: expected local or slurm");
+                            "--engine: expected local or slurm", 2);
 }
 
 TEST(SweepCli, AFailedJobKeepsTheOthersAndResumeRunsOnlyIt) {

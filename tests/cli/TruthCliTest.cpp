@@ -14,9 +14,10 @@ using namespace pb::test;
 
 namespace {
 
-void truthExpectOneLineError(const CommandResult& r, const std::string& mustName) {
+// exit 1: the scene or view fails; 2: an option's value is out of range (a usage error).
+void truthExpectOneLineError(const CommandResult& r, const std::string& mustName, int exit = 1) {
     EXPECT_FALSE(r.crashed) << r.output;
-    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_EQ(r.exitCode, exit) << r.output;
     EXPECT_NE(r.output.find("error:"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find(mustName), std::string::npos) << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
@@ -68,7 +69,7 @@ TEST(TruthCli, BadInputIsAOneLineErrorAndWritesNothing) {
     args.insert(args.end(), {"--out-hdr", out});
     auto spp0 = args;
     spp0[10] = "0";
-    truthExpectOneLineError(runProbebench(spp0), "--spp");
+    truthExpectOneLineError(runProbebench(spp0), "--spp", 2);
     auto blind = args;
     blind.insert(blind.end(), {"--camera", "0,1,5,0,1,10"}); // outside the box, looking away
     truthExpectOneLineError(runProbebench(blind), "sees no geometry");

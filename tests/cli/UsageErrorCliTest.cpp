@@ -49,6 +49,21 @@ TEST(UsageErrorCli, RangeIsASentenceNotThreeHundredDigits) {
     expectUsageError({"info", "--device", "-1"}, "--device", "must be 0 or more");
 }
 
+// A value that parses but is out of range or not one of its choices is a usage error too (issue
+// 42: `--width 0` and `--set gi.resolution=halve` exited 1 while the README said 2).
+TEST(UsageErrorCli, ValueOutOfRangeOrNotAChoice) {
+    const std::string out = (outputDir() / "never.png").string();
+    const CommandResult width =
+        runProbebench({"render", "--scene", "cornell", "--width", "0", "--out", out});
+    EXPECT_EQ(width.exitCode, 2) << width.output;
+    EXPECT_EQ(width.output, "probebench: error: --width/--height must be in 1..16384\n");
+    expectUsageError({"render", "--scene", "cornell", "--set", "gi.resolution=halve", "--out", out},
+                     "--set gi.resolution=halve", "allowed values: full, half, quarter");
+    expectUsageError({"bake", "--scene", "cornell", "--free-space", "some", "--out", out},
+                     "--free-space", "'some' is not one of stand-ins, ranked, all");
+    EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 TEST(UsageErrorCli, MissingRequiredAndChoices) {
     expectUsageError({"compare", "--test", "a.png"}, "--reference", "required by 'compare'");
     expectUsageError({"info", "--platform", "eggl"}, "--platform",
