@@ -417,6 +417,18 @@ void printGridCounts(const SceneContext& ctx) {
 }
 
 // 1. The 10 worst lookups of the kept option, with their corners and stand-ins.
+// The changed queries with `sampler`'s relative error against the dense lookup, worst first.
+std::vector<std::pair<float, Q>> worstFirst(const ProbeSampler& sampler, const std::vector<Q>& changed,
+                                            float floor) {
+    std::vector<std::pair<float, Q>> w;
+    for (const Q& q : changed)
+        w.push_back({std::abs(pb::luminance(sampler.sample(q.p, q.n, q.n).irradiance) - q.dense) /
+                         std::max(q.dense, floor),
+                     q});
+    std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.first > b.first; });
+    return w;
+}
+
 void printWorstKeptLookups(const SceneContext& ctx) {
     const ProbeVolume& v = ctx.b.dense.volumes[0];
     const ProbeSet& sparse = ctx.b.sparse;
@@ -424,12 +436,7 @@ void printWorstKeptLookups(const SceneContext& ctx) {
     const ProbeSampler& ss = ctx.ss;
     const std::vector<Q>& changed = ctx.cq.queries;
     const float floor = ctx.cq.floor;
-    std::vector<std::pair<float, Q>> w;
-    for (const Q& q : changed)
-        w.push_back({std::abs(pb::luminance(ss.sample(q.p, q.n, q.n).irradiance) - q.dense) /
-                         std::max(q.dense, floor),
-                     q});
-    std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.first > b.first; });
+    const std::vector<std::pair<float, Q>> w = worstFirst(ss, changed, floor);
     const std::vector<int> src =
         fillSources(v, sparse.states[0], sparse.settings.backfaceThreshold);
     for (int i = 0; i < 10 && i < int(w.size()); ++i) {
@@ -497,12 +504,7 @@ void printL2WorstLookups(const SceneContext& ctx, const ProbeSampler& es,
     const ProbeVolume& v = dense.volumes[0];
     const std::vector<Q>& changed = ctx.cq.queries;
     const float floor = ctx.cq.floor;
-    std::vector<std::pair<float, Q>> w;
-    for (const Q& q : changed)
-        w.push_back({std::abs(pb::luminance(es.sample(q.p, q.n, q.n).irradiance) - q.dense) /
-                         std::max(q.dense, floor),
-                     q});
-    std::sort(w.begin(), w.end(), [](auto& a, auto& b) { return a.first > b.first; });
+    const std::vector<std::pair<float, Q>> w = worstFirst(es, changed, floor);
     for (int k = 0; k < 5 && k < int(w.size()); ++k) {
         const Q& q = w[size_t(k)].second;
         std::printf("  L2 worst #%d rel %.3f p (%.2f %.2f %.2f) n (%g %g %g) dense %.4f "
