@@ -413,7 +413,7 @@ const RegisterCommand registerBake{{
                    "placed again to leave 5% when that costs at most 5% of its spacing; "
                    "without a budget they add 5% of the whole). stand-ins: none do. "
                    "all: every one does, and the budget counts them all, so auto placement "
-                   "picks a coarser spacing (studies/README.md \"Mid-air options\")")
+                   "picks a coarser spacing (studies/findings/mid-air-options.md \"Mid-air options\")")
                 ->capture_default_str();
         a->freeSpaceIrradianceOption = cmd.add_flag(
             "--free-space-irradiance", a->freeSpaceIrradiance, "Same as --free-space all");

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The converged bake's figures (studies/README.md "Bake noise"): per scene, the default bake with
+# The converged bake's figures (studies/findings/bake-noise.md "Bake noise"): per scene, the default bake with
 # --seed 1 and --seed 2 (wall time and the summary's noise line), then bench_bake_noise on the
 # pair. Extra bake options (e.g. --noise-target 0 --emitter-samples 0 for the old bake) pass
 # through.  Usage: studies/bake_noise.sh OUT_DIR SCENE... [-- BAKE_OPTIONS...]

@@ -2,7 +2,7 @@
 // Two probe files of one scene, baked alike but for --seed, compared at random surface points:
 // the relative difference of the irradiance as mean, median and p90, and split into the
 // dimmest quarter of the points and the rest. studies/bake_noise.sh bakes the pairs and runs
-// this on them (studies/README.md "Bake noise").
+// this on them (studies/findings/bake-noise.md "Bake noise").
 //
 // Usage: bench_bake_noise SCENE A.probes B.probes [POINTS] [--region X0,Y0,Z0,X1,Y1,Z1]
 // (SCENE: built-in name or glTF; --region: only the points inside that box, e.g. one room)

@@ -1,5 +1,5 @@
 // bench_floor_corners: why does a uniform grid print rings on a floor? (issue 24) A diagnostic,
-// not a test: it prints tables, asserts nothing (studies/README.md "Lattice on floors").
+// not a test: it prints tables, asserts nothing (studies/findings/lattice-on-floors.md "Lattice on floors").
 //
 // The floor lines of bench_lattice (same finder, seed and spacing; --below Y for one storey) are
 // looked up in the `--volumes auto-uniform` grid, baked as bench_lattice bakes it (2 bounces,

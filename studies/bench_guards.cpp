@@ -1,5 +1,5 @@
 // bench_guards: what the numerical guards (gi.guard_exposure, gi.guard_clamp) cost per frame.
-// A benchmark, not a test: it prints a table and asserts nothing (studies/README.md, "Guards").
+// A benchmark, not a test: it prints a table and asserts nothing (studies/findings/guards.md, "Guards").
 //
 // The stress room (renderer/stress/StressScene.h, probes 9x5x9, 64 rays) at --width x --height
 // (default 960x540), exposure 1e-3 so the exposure guard really scales (2^-9). For each base
@@ -15,7 +15,7 @@
 //
 // Under valgrind --tool=callgrind with LP_NUM_THREADS=0 and --only CONFIG --rounds 1 the
 // instruction count of one configuration is repeatable (DESIGN.md): a hardware-independent
-// proxy (studies/README.md, "Guards", lists the command).
+// proxy (studies/findings/guards.md, "Guards", lists the command).
 #include "core/ReuseFreedMemory.h"
 #include "frame/FrameRenderer.h"
 #include "metrics/Statistics.h"

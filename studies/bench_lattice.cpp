@@ -1,5 +1,5 @@
 // bench_lattice: does the DDGI lookup print the probe lattice on floors? (issue 24) A benchmark,
-// not a test (studies/README.md "Lattice on floors"): it prints a table (and JSON with --json),
+// not a test (studies/findings/lattice-on-floors.md "Lattice on floors"): it prints a table (and JSON with --json),
 // asserts nothing.
 //
 // Per scene, lines on flat upward surfaces (studies/common/LatticeScore.h: --lines lines of

@@ -1,6 +1,6 @@
 // bench_placement: does adaptive placement (`--volumes auto`, stored sparse) reach the irradiance
 // error of a uniform grid with at most half of its probe memory? A benchmark, not a test
-// (studies/README.md "Probe placement"): it prints a table (and JSON with --json), asserts nothing.
+// (studies/findings/probe-placement.md "Probe placement"): it prints a table (and JSON with --json), asserts nothing.
 //
 // Per scene:
 //   reference  a dense bake: one uniform volume at half the default uniform spacing (8x the

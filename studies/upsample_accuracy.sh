@@ -1,6 +1,6 @@
 #!/bin/sh
 # Accuracy of gi.upsample (bilinear, bilateral, temporal) at half and quarter resolution against
-# full-resolution GI, per camera path (studies/README.md, "GI upsampling"). Hardware-independent
+# full-resolution GI, per camera path (studies/findings/gi-upsampling.md, "GI upsampling"). Hardware-independent
 # figures (llvmpipe rounding aside). Usage, from the repository root after a Release build:
 #   studies/upsample_accuracy.sh [OUT_DIR (build/upsample-accuracy)] [WIDTHxHEIGHT (640x360)]
 # Writes OUT_DIR/<resolution>/<mode>/<path>/{frame_NNNN.png,errors.csv,errors.json} and prints

@@ -156,7 +156,7 @@ MidAirError measureMidAir(const char* scene, FreeSpace freeSpace) {
 
 class MidAir : public testing::TestWithParam<const char*> {};
 
-// The default storage (stand-ins; studies/README.md, "Mid-air options"): every point gets a
+// The default storage (stand-ins; studies/findings/mid-air-options.md, "Mid-air options"): every point gets a
 // lookup; the lookups that differ from the dense one at all are within 15% of it on average;
 // and none lies more than 15% outside the light the dense set itself gives within the
 // stand-ins' reach of the point (two cells per axis). Not within 15% of the dense lookup at

@@ -21,7 +21,7 @@ struct TraceSummary {
 // so half of them went to the lit room next door and leaked its light along the dark room's
 // corner. Roots keep the plain clamp: their faces lie on or beyond the scene's bounds, and
 // bounding them too made the default placement's mean error on the Cornell box 3.3% worse
-// (bench_placement; studies/README.md "Lattice on floors").
+// (bench_placement; studies/findings/lattice-on-floors.md "Lattice on floors").
 struct OffsetBounds {
     glm::vec3 lo, hi;
     // Whether a step along local direction d can move the probe at all (not straight out).

@@ -12,7 +12,7 @@
 // baseline). HalfCellMargin (what `--volumes auto` uses) adds one probe per axis and moves the
 // outer planes half a cell beyond the box, so a boundary surface lies mid-cell with a probe
 // plane on each side of it instead of one on it: such probes sit on the surface, half
-// inside it, and leak or need relocation (studies/README.md "Probe placement" measures it).
+// inside it, and leak or need relocation (studies/findings/probe-placement.md "Probe placement" measures it).
 // `subdivisions`: the lattice will be split 2^subdivisions times per axis (adaptive
 // placement's finer tiers); the margin is then half a cell of the finest split, so no plane of
 // any tier lies on a boundary.

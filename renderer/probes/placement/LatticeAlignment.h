@@ -3,7 +3,7 @@
 // prefers lattices where little does). A wall on a probe plane puts a row of probes inside or
 // just behind it: they leak through it or are relocated unevenly, and the bench measures the
 // irradiance error of such lattices at 2-3x that of a lattice shifted by part of a cell
-// (studies/README.md "Probe placement").
+// (studies/findings/probe-placement.md "Probe placement").
 #include "probes/ProbeVolume.h"
 #include "raytrace/StaticTriangles.h"
 

@@ -33,7 +33,7 @@ std::vector<std::uint8_t> surfaceCornerProbes(const ProbeVolume& v, bool root,
 // the stand-ins that absent probes are read as (AbsentProbeFill.h) are then at most one cell
 // per axis away. 2 keeps 1/8 of the free space's probes; without it (the nearest surface
 // probe as the stand-in) mid-air lookups on the built-in scenes were off by 15-21% on average
-// and by up to 13x (studies/README.md, "Mid-air options").
+// and by up to 13x (studies/findings/mid-air-options.md, "Mid-air options").
 constexpr int kFreeSpaceLatticeStep = 2;
 
 // Per probe of `v`: 1 on the free-space lattice (every coordinate a multiple of the step).
