@@ -32,7 +32,8 @@ struct BakeArgs {
     double budgetMib = 0.0;
     std::string writeVolumes;
     const CLI::Option *levelsOption = nullptr, *childrenOption = nullptr; // given or not
-    int rays = 256, bounces = 2, threads = 0;
+    int rays = 256, threads = 0;
+    std::string bounces = "auto";
     int emitterSamples = probes::BakeSettings().emitterSamples;
     int litSamples = probes::BakeSettings().litSamples;
     float noiseTarget = probes::BakeSettings().noiseTarget;
@@ -58,6 +59,16 @@ std::pair<int, int> parsePart(const std::string& text) {
         slash != '/')
         throw UsageError("--part: expected I/N, e.g. 0/2 (got '" + text + "')");
     return {part, parts};
+}
+
+// --bounces: 'auto' (0, until converged) or a count in [1, 64].
+int parseBounces(const std::string& text) {
+    if (text == "auto") return 0;
+    int n = 0;
+    char rest = 0;
+    if (std::sscanf(text.c_str(), "%d %c", &n, &rest) != 1 || n < 1 || n > 64)
+        throw UsageError("--bounces: expected auto or a count in [1, 64] (got '" + text + "')");
+    return n;
 }
 
 // --split: which scenarios of the request this part bakes; empty = not split.
@@ -155,7 +166,7 @@ BakeOptions bakeOptions(const BakeArgs& a) {
     o.latticeSearch = !a.noLatticeSearch;
     o.scenarios = a.scenarios;
     o.settings.raysPerProbe = a.rays;
-    o.settings.bounces = a.bounces;
+    o.settings.bounces = parseBounces(a.bounces);
     o.settings.emitterSamples = a.emitterSamples;
     o.settings.litSamples = a.litSamples;
     o.settings.noiseTarget = a.noiseTarget;
@@ -188,7 +199,9 @@ ObtainHooks bakeHooks(const BakeArgs& a, const scene::Scene& s, Progress& progre
         const BakeRequest& req = p.request;
         std::cout << "bake: scene '" << s.name << "', " << req.volumes.size() << " volume(s), "
                   << probes << " probes, " << req.settings.raysPerProbe << " rays, "
-                  << req.settings.bounces << " bounce(s), " << req.scenarios.size()
+                  << (req.settings.bounces > 0 ? std::to_string(req.settings.bounces) + " bounce(s)"
+                                               : std::string("bounces until converged"))
+                  << ", " << req.scenarios.size()
                   << " scenario(s), " << formatName(req.settings.format) << std::endl;
     };
     h.bakeProgress = [&progress](const BakeProgress& p) { progress(p); };
@@ -357,7 +370,10 @@ const RegisterCommand registerBake{{
                        "baked");
         cmd.add_option("--rays", a->rays, "Rays per probe per pass (spherical Fibonacci)")
             ->capture_default_str();
-        cmd.add_option("--bounces", a->bounces, "Bounce passes (1 = direct light at the hits)")
+        cmd.add_option("--bounces", a->bounces,
+                       "Bounce passes: 'auto' runs them until the last one adds under 1% of the "
+                       "light (all the bounces; later passes trace fewer rays), N in [1, 64] "
+                       "exactly N (1 = direct light at the hits)")
             ->capture_default_str();
         cmd.add_option("--scenario", a->scenarios,
                        "Lighting scenario to bake, repeatable: day, night or a [[scenario]] of the "

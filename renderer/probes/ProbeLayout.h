@@ -59,6 +59,9 @@ struct ProbeTexture {
 inline float* tileOrigin(ProbeTexture& t, const glm::ivec3& c, int tile) {
     return t.at(c.x * tile, c.z * tile, c.y);
 }
+inline const float* tileOrigin(const ProbeTexture& t, const glm::ivec3& c, int tile) {
+    return t.at(c.x * tile, c.z * tile, c.y);
+}
 
 // Refills every tile's octahedral border from its interior (see Octahedral.h).
 void fillAllBorders(ProbeTexture& t, int interior);

@@ -19,7 +19,9 @@ namespace pb::probes {
 // What the bake was asked to do (all part of the input hash).
 struct BakeSettings {
     int raysPerProbe = 256;
-    int bounces = 2;
+    // Bounce passes (Baker.h): 0 = until the light converges (kConvergedChange), N = exactly N
+    // (1 = the direct light at the hits).
+    int bounces = 0;
     std::uint64_t seed = 1;
     StorageFormat format = StorageFormat::Rgba16f;
     bool relocate = true;            // move probes up to kMaxRelocation cell out of geometry
@@ -39,6 +41,26 @@ struct BakeSettings {
     // input (hashed), not stored in the probe file.
     float noiseTarget = 0.03f;
 };
+
+// The converged bake (bounces = 0) stops after the pass that added less than this share of
+// the light (its increment's luminance over the probes' total, summed over the traced probes),
+// or after kMaxBouncePasses passes.
+constexpr float kConvergedChange = 0.01f;
+constexpr int kMaxBouncePasses = 24;
+// Rays per probe of pass `pass` (1-based): the full count for the first two, then halved per
+// pass down to kMinIncrementRays: each pass carries less light than the one before, so the
+// same relative noise in it costs the final irradiance less.
+constexpr int kMinIncrementRays = 32;
+inline int passRays(int raysPerProbe, int pass) {
+    if (pass <= 2) return raysPerProbe;
+    const int shift = pass - 2 > 20 ? 20 : pass - 2;
+    const int halved = raysPerProbe >> shift;
+    const int floor = raysPerProbe < kMinIncrementRays ? raysPerProbe : kMinIncrementRays;
+    return halved > floor ? halved : floor;
+}
+// Bounces of the placement's trial bakes when the bake converges (bounces = 0): enough for the
+// search to compare lattices, at a bounded cost.
+constexpr int kConvergedTrialBounces = 2;
 
 // The most rounds of rays a probe gets per pass under a noise target (so at most this many
 // times the rays of a plain bake, for the probes that need them).

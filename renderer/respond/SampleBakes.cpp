@@ -28,6 +28,7 @@ SampleBakes::SampleBakes(const World& world, const probes::ProbeSet& original, i
                          int count, const std::function<void(const std::string&)>& progress) {
     if (raysPerUpdate < 1) throw Error("--rays-per-update: must be at least 1");
     double cpu = 0, probes = 0;
+    int passes = 1;
     for (int k = 0; k < count; ++k) {
         probes::BakeRequest r = bakeRequestFor(world, original);
         r.settings.raysPerProbe = raysPerUpdate;
@@ -45,8 +46,12 @@ SampleBakes::SampleBakes(const World& world, const probes::ProbeSet& original, i
         for (const probes::BakePhase& ph : st.phases)
             if (ph.name != "geometry") cpu += ph.cpuSeconds;
         probes += double(st.probes - st.invalidProbes);
+        if (!st.passes.empty()) passes = st.passes[0];
     }
-    raysPerUpdate_ = double(raysPerUpdate) * double(original.settings.bounces);
+    // The rays of every pass the sample bakes ran (later passes trace fewer: Baker.h).
+    raysPerUpdate_ = 0.0;
+    for (int pass = 1; pass <= passes; ++pass)
+        raysPerUpdate_ += double(probes::passRays(raysPerUpdate, pass));
     if (probes > 0) {
         cpuMsPerUpdate_ = 1000.0 * cpu / probes;
     }

@@ -27,16 +27,22 @@ probes::ProbeSet bakeRoom(const glm::dvec3& offset) {
     return probes::bakeProbes(s.scene, r);
 }
 
-// Largest |a - b| / max(|b|, 1e-3 * max|b|) over a texture.
-double maxRelative(const probes::ProbeTexture& a, const probes::ProbeTexture& b) {
+// |a - b| / max(|b|, 1e-3 * max|b|) over a texture: the largest and the mean.
+struct Relative {
+    double worst = 0.0, mean = 0.0;
+};
+Relative relative(const probes::ProbeTexture& a, const probes::ProbeTexture& b) {
     float largest = 0.0f;
     for (float v : b.texels)
         largest = std::max(largest, std::abs(v));
-    double worst = 0.0;
-    for (std::size_t i = 0; i < b.texels.size(); ++i)
-        worst = std::max(worst, std::abs(double(a.texels[i]) - b.texels[i]) /
-                                    std::max(double(std::abs(b.texels[i])), 1e-3 * largest));
-    return worst;
+    Relative r;
+    for (std::size_t i = 0; i < b.texels.size(); ++i) {
+        const double d = std::abs(double(a.texels[i]) - b.texels[i]) /
+                         std::max(double(std::abs(b.texels[i])), 1e-3 * largest);
+        r.worst = std::max(r.worst, d);
+        r.mean += d / double(b.texels.size());
+    }
+    return r;
 }
 
 } // namespace
@@ -59,12 +65,17 @@ TEST(BakeOrigin, ARoomFarFromTheOriginBakesLikeAtTheOrigin) {
     ASSERT_EQ(far.states[0].size(), here.states[0].size());
     for (std::size_t p = 0; p < here.states[0].size(); ++p)
         EXPECT_EQ(far.states[0][p].valid, here.states[0][p].valid) << "probe " << p;
-    const double irr = maxRelative(far.irradiance[0][0], here.irradiance[0][0]);
-    const double vis = maxRelative(far.visibility[0], here.visibility[0]);
-    std::printf("[ bake at 1e6 ] max relative difference to the origin bake: irradiance %.3g, "
-                "visibility %.3g\n",
-                irr, vis);
+    const Relative irr = relative(far.irradiance[0][0], here.irradiance[0][0]);
+    const Relative vis = relative(far.visibility[0], here.visibility[0]);
+    std::printf("[ bake at 1e6 ] relative difference to the origin bake: irradiance mean %.3g "
+                "max %.3g, visibility mean %.3g max %.3g\n",
+                irr.mean, irr.worst, vis.mean, vis.worst);
     // The moved frame keeps coordinates below 512: float steps of 3e-5 m instead of 1/16 m.
-    EXPECT_LT(irr, 1e-2);
-    EXPECT_LT(vis, 1e-2);
+    // Visibility is geometry only: equal to the last bits. The irradiance's light samples
+    // follow last-bit differences of the hits, so it differs as two seeds do, at 32 rays
+    // 0.3-1.7% at the worst texel (measured): the mean holds the frame to 0.5%, the worst
+    // texel to 5% (without the moved frame the room was about 10% darker everywhere).
+    EXPECT_LT(irr.mean, 5e-3);
+    EXPECT_LT(irr.worst, 5e-2);
+    EXPECT_LT(vis.worst, 1e-2);
 }

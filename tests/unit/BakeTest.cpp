@@ -290,7 +290,9 @@ TEST(BakeEdgeCases, BadRequestsAreClearErrors) {
     BakeRequest r = request({volume("v", {0, 0, 0}, {1, 1, 1}, {0, 2, 2})}, s);
     EXPECT_THROW(bakeProbes(s, r), pb::Error);
     r = request({volume("v", {0, 0, 0}, {1, 1, 1}, {2, 2, 2})}, s);
-    r.settings.bounces = 0;
+    r.settings.bounces = -1; // 0 is legal: until converged
+    EXPECT_THROW(bakeProbes(s, r), pb::Error);
+    r.settings.bounces = 65;
     EXPECT_THROW(bakeProbes(s, r), pb::Error);
     r.settings.bounces = 1;
     r.settings.raysPerProbe = 0;

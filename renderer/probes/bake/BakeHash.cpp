@@ -24,7 +24,7 @@ namespace {
 // sampling (MIS) at the probe; 2: far scenes bake in a moved frame. (Sparse storage's
 // free-space lattice changed only sparse files: bakeInputHash hashes its step for sparse
 // requests, so dense files kept their hash.)
-constexpr std::uint32_t kBakeAlgorithmVersion = 7;
+constexpr std::uint32_t kBakeAlgorithmVersion = 8;
 
 void hashScene(Hasher& h, const scene::Scene& s) {
     const auto mats = raytrace::summariseMaterials(s);

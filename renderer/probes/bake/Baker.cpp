@@ -3,6 +3,7 @@
 #include "probes/sh/ShIrradiance.h"
 
 #include "core/Error.h"
+#include "core/Luminance.h"
 #include "core/ParallelFor.h"
 #include "probes/StorageScale.h"
 #include "probes/bake/BakeOrigin.h"
@@ -80,9 +81,9 @@ void checkRequest(const BakeRequest& r) {
     if (r.settings.raysPerProbe < 1 || r.settings.raysPerProbe > 65536)
         throw Error("--rays: must be in [1, 65536] (got " +
                     std::to_string(r.settings.raysPerProbe) + ")");
-    if (r.settings.bounces < 1 || r.settings.bounces > 64)
-        throw Error("--bounces: must be in [1, 64] (got " + std::to_string(r.settings.bounces) +
-                    ")");
+    if (r.settings.bounces < 0 || r.settings.bounces > 64)
+        throw Error("--bounces: must be in [0, 64], 0 until converged (got " +
+                    std::to_string(r.settings.bounces) + ")");
     if (!(r.settings.backfaceThreshold >= 0.0f && r.settings.backfaceThreshold <= 1.0f))
         throw Error("backface threshold must be in [0, 1]");
     if (!(r.settings.noiseTarget == 0.0f ||
@@ -109,7 +110,7 @@ struct BakeRun {
     ProbeSet set;
     std::vector<int> parents; // per volume, its parent's index or -1
     ProbeIndex index;
-    std::size_t stages;         // geometry + one per scenario and bounce
+    std::size_t stages;         // geometry + one per scenario and pass (grows while converging)
     std::size_t doneBefore = 0; // probes of the stages already finished
     std::vector<RayCounters> counters;
     BakePhaseClock phases{}; // the tracing time is the sum of its phases
@@ -120,13 +121,17 @@ struct BakeRun {
     // The current pass's radiance SH per volume (9 RGB per probe, zero for probes not
     // traced): the same samples as its irradiance tiles, projected (RadianceSlab::projectSh).
     std::vector<std::vector<glm::vec3>> passSh{};
+    std::vector<int> passes{};          // per baked scenario: the passes run
+    std::vector<double> lastChange{};   // and the share of the light its last pass added
 
     void report(const std::string& stage, std::size_t done) const {
         if (progress) progress({stage, doneBefore + done, stages * index.total()});
     }
     std::pair<int, int> locate(std::size_t flat) const { return index.locate(flat); }
-    // The light samples of scenario s's passes, from the pass's stream.
-    EmitterSampling lightSampling(std::size_t s, std::uint64_t stream) {
+    // The light samples of scenario s's first pass, from the pass's stream; later passes
+    // carry only the previous pass's increment (EmitterSampling::incrementOnly).
+    EmitterSampling passSampling(std::size_t s, int pass, std::uint64_t stream) {
+        if (pass > 1) return {.incrementOnly = true};
         if (lit.size() <= s) lit.resize(s + 1);
         if (cfg.litSamples > 0 && !lit[s])
             lit[s] = std::make_unique<LitSurfaces>(rs, req.scenarios[s], scene.lights, threads,
@@ -212,13 +217,12 @@ struct RadianceMask {
         for (int p : run.parents)
             if (p >= 0) isParent[size_t(p)] = true;
     }
-    // With FreeSpace::Irradiance or Ranked a probe sparse storage leaves out is still traced in
-    // the last pass: it may keep its irradiance tile (ProbeState::irradianceOnly), and Ranked
-    // compares it with its stand-in. Earlier passes feed only the lookups at surface hits,
-    // whose cells' corners are all kept, so they skip it.
-    bool needed(const ProbeSet& set, int v, int p, bool lastPass) const {
+    // With FreeSpace::Irradiance or Ranked a probe sparse storage leaves out is still traced:
+    // it may keep its irradiance tile (ProbeState::irradianceOnly), and Ranked compares it
+    // with its stand-in. Its irradiance is the sum of every pass, so every pass traces it.
+    bool needed(const ProbeSet& set, int v, int p) const {
         if (!set.states[size_t(v)][size_t(p)].valid) return false;
-        return keep.empty() || isParent[size_t(v)] || (lastPass && irradianceOnly) ||
+        return keep.empty() || isParent[size_t(v)] || irradianceOnly ||
                keep[size_t(v)][size_t(p)] != 0;
     }
 };
@@ -230,14 +234,15 @@ void traceMoreRounds(BakeRun& run, const Scenario& sc, size_t s, int pass,
                      const ProbeSampler* previous, std::vector<ProbeTexture>& cur,
                      std::vector<std::vector<float>>& irr, std::size_t first, std::size_t count) {
     const BakeSettings& cfg = run.cfg;
+    const int rays = passRays(cfg.raysPerProbe, pass);
     for (int round = 1; round < kMaxNoiseRounds; ++round) {
         const std::vector<std::size_t> todo = run.noise.aboveTarget(count);
         if (todo.empty()) return;
         const std::uint64_t stream = roundStream(cfg.seed, int(s), pass, round);
-        const auto dirs = passDirections(cfg.raysPerProbe, stream);
+        const auto dirs = passDirections(rays, stream);
         const ProbeConvolution conv(dirs, ProbeConvolution::Parts::IrradianceOnly);
-        const EmitterSampling nee = run.lightSampling(s, stream);
-        run.slab.reset(todo.size(), cfg.raysPerProbe);
+        const EmitterSampling nee = run.passSampling(s, pass, stream);
+        run.slab.reset(todo.size(), rays);
         parallelFor(todo.size(), run.threads, [&](std::size_t j, int t) {
             auto [v, p] = run.locate(first + todo[j]);
             const ProbeVolume& vol = run.set.volumes[size_t(v)];
@@ -247,7 +252,7 @@ void traceMoreRounds(BakeRun& run, const Scenario& sc, size_t s, int pass,
                            vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
                            run.counters[size_t(t)], nee, first + todo[j]);
         });
-        run.noise.extraRays += std::uint64_t(todo.size()) * std::uint64_t(cfg.raysPerProbe);
+        run.noise.extraRays += std::uint64_t(todo.size()) * std::uint64_t(rays);
         run.phases.mark("trace");
         if (previous) {
             run.slab.lookUp(*previous, run.threads);
@@ -280,14 +285,14 @@ void traceMoreRounds(BakeRun& run, const Scenario& sc, size_t s, int pass,
     }
 }
 
-// 2. Radiance of one scenario's bounce `pass`, reading the previous bounce `prev` (empty for
-// the first): the irradiance textures of every volume, nested rings blended.
+// 2. Radiance of one scenario's bounce `pass`: the first (prev empty) the light reflected
+// once, a later one the increment `prev` (the previous pass's) looked up at its hits and
+// reflected once more. The irradiance textures of every volume, nested rings blended.
 std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mask, size_t s,
                                            int pass, const std::vector<ProbeTexture>& prev) {
     ProbeSet& set = run.set;
     const BakeSettings& cfg = run.cfg;
     const Scenario& sc = run.req.scenarios[s];
-    const bool lastPass = pass == run.cfg.bounces;
     std::vector<ProbeTexture> cur;
     run.passSh.clear();
     for (const ProbeVolume& v : set.volumes) {
@@ -306,20 +311,22 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     }
     const ProbeSampler prevSampler(prevViews);
     const ProbeSampler* previous = prev.empty() ? nullptr : &prevSampler;
-    const auto dirs = passDirections(cfg.raysPerProbe, radianceStream(cfg.seed, int(s), pass));
+    const int rays = passRays(cfg.raysPerProbe, pass);
+    const auto dirs = passDirections(rays, radianceStream(cfg.seed, int(s), pass));
     const ProbeConvolution conv(dirs, ProbeConvolution::Parts::IrradianceOnly);
     // Light samples draw from their own streams, each probe by its index.
-    const EmitterSampling nee = run.lightSampling(s, radianceStream(cfg.seed, int(s), pass));
+    const EmitterSampling nee = run.passSampling(s, pass, radianceStream(cfg.seed, int(s), pass));
     std::vector<std::vector<float>> irr(
         size_t(run.threads), std::vector<float>(kIrradianceInterior * kIrradianceInterior * 3));
     const std::string stage =
-        sc.name + " pass " + std::to_string(pass) + "/" + std::to_string(cfg.bounces);
+        sc.name + " pass " + std::to_string(pass) +
+        (cfg.bounces > 0 ? "/" + std::to_string(cfg.bounces) : " (until converged)");
     // Slabs of probes (RadiancePass.h): about 2^18 rays each, so the indirect lookups
     // of a slab share cells without holding a whole pass's hits in memory.
     const std::size_t slabProbes =
         run.req.slabProbes > 0
             ? std::size_t(run.req.slabProbes)
-            : std::max<std::size_t>(1, (std::size_t(1) << 18) / std::size_t(cfg.raysPerProbe));
+            : std::max<std::size_t>(1, (std::size_t(1) << 18) / std::size_t(rays));
     run.phases.mark("setup");
     // Convolves probe `first + i` of the slab into its irradiance tile.
     auto writeTile = [&](std::size_t first, std::size_t i, int t) {
@@ -331,7 +338,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
         for (int y = 0; y < kIrradianceTile; ++y)
             for (int x = 0; x < kIrradianceTile; ++x)
                 tile[(size_t(y) * pitch + size_t(x)) * 4 + 3] = 1.0f;
-        if (!mask.needed(set, v, p, lastPass)) return;
+        if (!mask.needed(set, v, p)) return;
         float* out = irr[size_t(t)].data();
         run.slab.convolve(i, conv, out);
         run.slab.projectSh(i, conv, &run.passSh[size_t(v)][size_t(p) * kShL2Coefficients]);
@@ -345,8 +352,8 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     const std::size_t total = run.index.total();
     for (std::size_t first = 0; first < total; first += slabProbes) {
         const std::size_t count = std::min(slabProbes, total - first);
-        run.slab.reset(count, cfg.raysPerProbe);
-        run.noise.startSlab(count);
+        run.slab.reset(count, rays);
+        run.noise.startSlab(first, count);
         // Without a previous pass a probe's radiance is final once traced: it is
         // convolved right away, while its rays are still in the cache.
         parallelFor(
@@ -355,7 +362,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
                 auto [v, p] = run.locate(first + i);
                 const ProbeVolume& vol = set.volumes[size_t(v)];
                 const ProbeState& st = set.states[size_t(v)][size_t(p)];
-                if (mask.needed(set, v, p, lastPass)) {
+                if (mask.needed(set, v, p)) {
                     glm::ivec3 c = vol.probeCoords(p);
                     run.slab.trace(i, run.rs, sc, run.scene.lights, vol.localToWorldRotation(),
                                    vol.toWorld(vol.gridLocal(c) + st.offset), dirs, previous,
@@ -418,16 +425,65 @@ std::vector<std::size_t> bakedScenarios(const BakeRequest& req) {
     return all;
 }
 
-// 2. Radiance, per scenario and pass: each scenario's last bounce is its irradiance. `s` is
-// the scenario's index in the whole request (its seed stream), also under a scenario split.
+// Adds an increment pass into the running total (RGB of every texel; the tiles' alpha stays
+// 1) and its SH into the total SH; returns the share of the light it added: the increment's
+// summed luminance over the total's, on the interior texels of the traced probes.
+double addIncrement(const BakeRun& run, const RadianceMask& mask, std::vector<ProbeTexture>& total,
+                    const std::vector<ProbeTexture>& inc, std::vector<std::vector<glm::vec3>>& sh,
+                    const std::vector<std::vector<glm::vec3>>& incSh) {
+    double added = 0.0, all = 0.0;
+    for (std::size_t v = 0; v < total.size(); ++v) {
+        std::vector<float>& t = total[v].texels;
+        const std::vector<float>& d = inc[v].texels;
+        for (std::size_t i = 0; i < t.size(); i += 4)
+            for (std::size_t ch = 0; ch < 3; ++ch)
+                t[i + ch] += d[i + ch];
+        for (std::size_t k = 0; k < sh[v].size(); ++k)
+            sh[v][k] += incSh[v][k];
+        const ProbeVolume& vol = run.set.volumes[v];
+        const int pitch = total[v].shape.width;
+        for (int p = 0; p < vol.probeCount(); ++p) {
+            if (!mask.needed(run.set, int(v), p)) continue;
+            const glm::ivec3 c = vol.probeCoords(p);
+            const float* a = tileOrigin(total[v], c, kIrradianceTile);
+            const float* b = tileOrigin(inc[v], c, kIrradianceTile);
+            for (int y = 1; y <= kIrradianceInterior; ++y)
+                for (int x = 1; x <= kIrradianceInterior; ++x) {
+                    const std::size_t at = (std::size_t(y) * std::size_t(pitch) + std::size_t(x)) * 4;
+                    all += luminance(glm::vec3(a[at], a[at + 1], a[at + 2]));
+                    added += luminance(glm::vec3(b[at], b[at + 1], b[at + 2]));
+                }
+        }
+    }
+    return all > 0.0 ? std::fabs(added) / all : 0.0;
+}
+
+// 2. Radiance, per scenario: the first pass, then increments until the settings' pass count
+// or convergence (Baker.h); the sum is the scenario's irradiance. `s` is the scenario's index
+// in the whole request (its seed stream), also under a scenario split.
 void bakeRadiance(BakeRun& run, const RadianceMask& mask) {
     std::vector<Scenario> baked;
+    const int fixed = run.cfg.bounces, cap = fixed > 0 ? fixed : kMaxBouncePasses;
     for (size_t s : bakedScenarios(run.req)) {
-        std::vector<ProbeTexture> prev;
-        for (int pass = 1; pass <= run.cfg.bounces; ++pass)
-            prev = bakeRadiancePass(run, mask, s, pass, prev);
-        run.set.irradiance.push_back(std::move(prev));
-        run.set.sh.push_back(std::move(run.passSh)); // the last bounce's, as the irradiance
+        run.noise.startScenario(run.index.total());
+        std::vector<ProbeTexture> total = bakeRadiancePass(run, mask, s, 1, {});
+        std::vector<std::vector<glm::vec3>> sh = std::move(run.passSh);
+        run.noise.setFloorFromCarried();
+        std::vector<ProbeTexture> last = total;
+        int passes = 1;
+        double change = 1.0;
+        while (passes < cap && (fixed > 0 || passes < 2 || change >= kConvergedChange)) {
+            if (fixed == 0 && passes >= 2) ++run.stages; // one more than planned
+            std::vector<ProbeTexture> inc = bakeRadiancePass(run, mask, s, passes + 1, last);
+            change = addIncrement(run, mask, total, inc, sh, run.passSh);
+            last = std::move(inc);
+            ++passes;
+        }
+        run.noise.finishScenario();
+        run.passes.push_back(passes);
+        run.lastChange.push_back(change);
+        run.set.irradiance.push_back(std::move(total));
+        run.set.sh.push_back(std::move(sh));
         baked.push_back(run.req.scenarios[s]);
     }
     run.set.scenarios = std::move(baked);
@@ -514,7 +570,9 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
                 .set = emptySet(scene, req),
                 .parents = std::move(parents),
                 .index = ProbeIndex(req.volumes),
-                .stages = 1 + bakedScenarios(req).size() * size_t(req.settings.bounces),
+                // A converging bake plans two passes per scenario and adds the rest as it goes.
+                .stages = 1 + bakedScenarios(req).size() *
+                                  size_t(req.settings.bounces > 0 ? req.settings.bounces : 2),
                 .counters = std::vector<RayCounters>(static_cast<size_t>(threads))};
     run.noise = NoiseRounds(req.settings.noiseTarget);
     bakeGeometry(run);
@@ -560,6 +618,8 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         st.seconds = since(t0);
         st.quantisation = std::move(errors);
         run.noise.summarise(st);
+        st.passes = run.passes;
+        st.lastChange = run.lastChange;
         st.freeSpaceCandidates = tiles.candidates;
         st.freeSpaceTiles = tiles.chosen;
         st.freeSpaceWorstLeft = tiles.worstLeft;

@@ -3,8 +3,14 @@
 // identical bytes for any thread count).
 //
 //   1. geometry pass (once): relocation, classification, visibility  (GeometryPass.h)
-//   2. per scenario, passes 1..bounces: irradiance of every valid probe (RadiancePass.h),
-//      octahedral borders, nested-ring blend (NestingBlend.h); pass b reads pass b-1
+//   2. per scenario, bounce passes: irradiance of every valid probe (RadiancePass.h),
+//      octahedral borders, nested-ring blend (NestingBlend.h). Pass 1 traces the sky,
+//      emission and the light reflected once (direct light at the hits); each later pass b
+//      traces only the increment, the light pass b-1 added, looked up at its hits and
+//      reflected once more, with fewer rays as the increments shrink (passRays). The probe's
+//      irradiance is the sum. With BakeSettings::bounces = 0 the passes go on until the last
+//      one added under kConvergedChange of the light (at most kMaxBouncePasses): all the
+//      bounces, as a radiosity solver converges; otherwise exactly `bounces` passes.
 //   3. quantise to the storage format (the sampler then sees what the GPU will sample)
 #include "probes/ProbeSet.h"
 #include "raytrace/RayScene.h"
@@ -89,13 +95,18 @@ struct BakeStats {
     double traceCpuSeconds = 0.0;
     std::vector<BakePhase> phases; // traceSeconds split up (their sums)
     double quantiseSeconds = 0.0;  // encoding to the storage format
-    // The converged bake (BakeSettings::noiseTarget): each traced probe's relative irradiance
-    // noise after its last round, over every pass and scenario - mean and 95th percentile -,
-    // how many probe passes needed more than one round, how many stayed above the target
-    // after kMaxNoiseRounds, and the primary rays those extra rounds traced.
+    // The converged bake (BakeSettings::noiseTarget): each traced probe's relative noise of
+    // its final irradiance (all passes, NoiseRounds.h), per scenario - mean and 95th
+    // percentile -, how many probe passes needed more than one round, how many probes stayed
+    // above the target after kMaxNoiseRounds, and the primary rays those extra rounds traced.
     double noiseMean = 0.0, noiseP95 = 0.0;
-    std::size_t noisyProbePasses = 0, probePassesAboveTarget = 0, tracedProbePasses = 0;
+    std::size_t noisyProbePasses = 0, tracedProbePasses = 0;
+    std::size_t probesAboveTarget = 0, tracedProbes = 0; // tracedProbes: over the scenarios
     std::uint64_t extraRoundRays = 0;
+    // The bounce passes each baked scenario ran (BakeSettings::bounces; 0 asks until the
+    // light converges), and the share of its light the last pass added (1 for one pass).
+    std::vector<int> passes;
+    std::vector<double> lastChange;
     int threads = 1;
     std::vector<QuantisationError> quantisation;
     // FreeSpace::Ranked (FreeSpaceTiles.h): the left-out probes that could have a tile, how many
@@ -104,7 +115,7 @@ struct BakeStats {
     float freeSpaceWorstLeft = 0.0f;
 };
 
-// Throws pb::Error for invalid volumes, no scenario, rays < 1 or bounces < 1.
+// Throws pb::Error for invalid volumes, no scenario, rays < 1 or bounces outside [0, 64].
 ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& request,
                     BakeStats* stats = nullptr, const BakeProgressFn& progress = {});
 

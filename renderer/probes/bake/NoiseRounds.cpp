@@ -9,7 +9,15 @@
 
 namespace pb::probes {
 
-void NoiseRounds::startSlab(std::size_t count) {
+void NoiseRounds::startScenario(std::size_t probes) {
+    carriedVar_.assign(probes, 0.0);
+    carriedMean_.assign(probes, 0.0);
+    traced_.assign(probes, 0);
+    floor_ = 0.0f;
+}
+
+void NoiseRounds::startSlab(std::size_t first, std::size_t count) {
+    first_ = first;
     firstVariance_.assign(count * kIrradianceInteriorTexels, 0.0f);
     sumY_.assign(count * kIrradianceInteriorTexels, 0.0);
     sumY2_.assign(count * kIrradianceInteriorTexels, 0.0);
@@ -31,8 +39,8 @@ void NoiseRounds::firstRound(std::size_t i, const RadianceSlab& slab, const Prob
     rounds_[i] = 1;
 }
 
-float NoiseRounds::noise(std::size_t i) const {
-    if (!(meanY_[i] > 0.0f) || rounds_[i] == 0) return 0.0f;
+float NoiseRounds::passVariance(std::size_t i) const {
+    if (rounds_[i] == 0) return 0.0f;
     const double k = rounds_[i];
     double v = 0.0;
     for (int t = 0; t < kIrradianceInteriorTexels; ++t) {
@@ -44,14 +52,22 @@ float NoiseRounds::noise(std::size_t i) const {
             v += s2 / k / kIrradianceInteriorTexels;
         }
     }
-    return float(std::sqrt(v) / meanY_[i]);
+    return float(v);
+}
+
+float NoiseRounds::finalNoise(std::size_t flat, float passVar, float passMean) const {
+    const double mean = std::max(carriedMean_[flat] + double(passMean), double(floor_));
+    if (!(mean > 0.0)) return 0.0f;
+    return float(std::sqrt(carriedVar_[flat] + double(passVar)) / mean);
 }
 
 std::vector<std::size_t> NoiseRounds::aboveTarget(std::size_t count) const {
     std::vector<std::size_t> out;
     if (!active()) return out;
     for (std::size_t i = 0; i < count; ++i)
-        if (rounds_[i] > 0 && rounds_[i] < kMaxNoiseRounds && noise(i) > target_) out.push_back(i);
+        if (rounds_[i] > 0 && rounds_[i] < kMaxNoiseRounds &&
+            finalNoise(first_ + i, passVariance(i), meanY_[i]) > target_)
+            out.push_back(i);
     return out;
 }
 
@@ -76,17 +92,40 @@ void NoiseRounds::setMean(std::size_t i, const float* tile, int pitch) {
 void NoiseRounds::finishSlab(std::size_t count) {
     for (std::size_t i = 0; i < count; ++i) {
         if (rounds_[i] == 0) continue;
-        const float n = noise(i);
-        finals_.push_back(n);
+        const std::size_t flat = first_ + i;
+        carriedVar_[flat] += double(passVariance(i));
+        carriedMean_[flat] += double(meanY_[i]);
+        traced_[flat] = 1;
+        ++probePasses_;
         if (rounds_[i] > 1) ++multiRound_;
+    }
+}
+
+void NoiseRounds::setFloorFromCarried() {
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t p = 0; p < traced_.size(); ++p)
+        if (traced_[p]) {
+            sum += carriedMean_[p];
+            ++n;
+        }
+    floor_ = n > 0 ? float(double(kNoiseFloorShare) * sum / double(n)) : 0.0f;
+}
+
+void NoiseRounds::finishScenario() {
+    for (std::size_t p = 0; p < traced_.size(); ++p) {
+        if (!traced_[p]) continue;
+        const float n = finalNoise(p, 0.0f, 0.0f);
+        finals_.push_back(n);
         if (active() && n > target_) ++aboveAfterAll_;
     }
 }
 
 void NoiseRounds::summarise(BakeStats& st) const {
-    st.tracedProbePasses = finals_.size();
+    st.tracedProbes = finals_.size();
+    st.tracedProbePasses = probePasses_;
     st.noisyProbePasses = multiRound_;
-    st.probePassesAboveTarget = aboveAfterAll_;
+    st.probesAboveTarget = aboveAfterAll_;
     st.extraRoundRays = extraRays;
     if (finals_.empty()) return;
     double sum = 0.0;

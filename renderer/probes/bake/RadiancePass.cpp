@@ -111,14 +111,14 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
     // radiance: light samples would only add their own noise there, so such a probe keeps its
     // rays alone. The emitter samples are for small and distant emitters.
     int m = 0;
-    if (!emitters.empty() && nee.samples > 0) {
+    if (!emitters.empty() && nee.samples > 0 && !nee.incrementOnly) {
         std::size_t emitterHits = 0;
         for (std::size_t i = 0; i < n; ++i)
             emitterHits += hits[i].hit() && emitters.find(hits[i].geomID, hits[i].primID) >= 0;
         if (4 * emitterHits < n) m = nee.samples;
     }
     slotSamples_[slot] = m;
-    const int ml = nee.lit && !nee.lit->empty() ? nee.litSamples : 0;
+    const int ml = nee.lit && !nee.lit->empty() && !nee.incrementOnly ? nee.litSamples : 0;
     slotLitSamples_[slot] = ml;
     // The lit-surface density of each hit the shading below weights: its slot first, and a
     // prefetch, so the random reads of the large density array overlap (same values).
@@ -140,7 +140,18 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
         const raytrace::RayHit& h = hits[i];
         glm::vec3 L;
         if (!h.hit()) {
-            L = sc.sky.radiance;
+            L = nee.incrementOnly ? glm::vec3(0.0f) : sc.sky.radiance;
+        } else if (nee.incrementOnly) { // only the previous increment, looked up at the hit
+            L = glm::vec3(0.0f);
+            const raytrace::SurfaceInfo& surf = rs.surface(h.geomID);
+            glm::vec3 nrm = rs.hitNormal(h);
+            const bool back = glm::dot(nrm, d) > 0.0f;
+            if (previous && surf.albedo != glm::vec3(0.0f) && (!back || surf.doubleSided)) {
+                const glm::vec3 x = origin + d * h.t;
+                pending[pendingCount] = {{x, back ? -nrm : nrm, -d}, glm::vec3(0.0f),
+                                         surf.albedo * invPi, std::uint32_t(first + i)};
+                keys[pendingCount++] = previous->localityKey(x);
+            }
         } else {
             const raytrace::SurfaceInfo& surf = rs.surface(h.geomID);
             glm::vec3 nrm = rs.hitNormal(h);

@@ -67,6 +67,10 @@ struct EmitterSampling {
     std::uint64_t stream = 0;
     int litSamples = 0;
     const LitSurfaces* lit = nullptr; // required when litSamples > 0
+    // An increment pass (Baker.h): the rays carry only the light the previous pass added,
+    // read at their hits (albedo / pi times the previous increment's E_indirect). The sky,
+    // emission and direct light were the first pass's; no light samples, no shadow rays.
+    bool incrementOnly = false;
 };
 
 class RadianceSlab {

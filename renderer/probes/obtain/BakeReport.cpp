@@ -243,8 +243,15 @@ nlohmann::json bakeReportJson(const BakeReport& r) {
                       {"p95_relative_se", r.stats->noiseP95},
                       {"probe_passes", r.stats->tracedProbePasses},
                       {"probe_passes_with_more_rounds", r.stats->noisyProbePasses},
-                      {"probe_passes_above_target", r.stats->probePassesAboveTarget},
+                      {"probes", r.stats->tracedProbes},
+                      {"probes_above_target", r.stats->probesAboveTarget},
                       {"extra_round_rays", r.stats->extraRoundRays}};
+        nlohmann::json passes = nlohmann::json::array();
+        for (std::size_t i = 0; i < r.stats->passes.size() && i < r.set.scenarios.size(); ++i)
+            passes.push_back({{"scenario", r.set.scenarios[i].name},
+                              {"passes", r.stats->passes[i]},
+                              {"last_pass_share", r.stats->lastChange[i]}});
+        j["bounce_passes"] = passes;
         nlohmann::json q = nlohmann::json::array();
         for (const auto& e : r.stats->quantisation)
             q.push_back({{"volume", e.volume},
@@ -254,6 +261,27 @@ nlohmann::json bakeReportJson(const BakeReport& r) {
         j["quantisation"] = q;
     }
     return j;
+}
+
+// "bounces: 9 passes (until converged: the last added 0.8% of the light)", per scenario
+// when they differ.
+std::string bouncesText(const BakeReport& r) {
+    const BakeStats& st = *r.stats;
+    const bool converge = r.set.settings.bounces == 0;
+    std::string o = "bounces:";
+    for (std::size_t i = 0; i < st.passes.size() && i < r.set.scenarios.size(); ++i) {
+        if (i > 0) o += ";";
+        if (st.passes.size() > 1) o += " " + r.set.scenarios[i].name;
+        o += strf(" %d pass(es)", st.passes[i]);
+        if (st.passes[i] > 1)
+            o += strf(" (%s: the last added %.2f%% of the light)",
+                      converge ? (st.lastChange[i] < kConvergedChange ? "converged" : "cap reached")
+                               : "as asked",
+                      100.0 * st.lastChange[i]);
+    }
+    if (converge && !st.passes.empty() && st.passes[0] >= kMaxBouncePasses)
+        o += strf("; stopped at the cap of %d passes", kMaxBouncePasses);
+    return o + "\n";
 }
 
 std::string bakeReportText(const BakeReport& r) {
@@ -274,15 +302,16 @@ std::string bakeReportText(const BakeReport& r) {
                     "triangles\n",
                     (unsigned long long)r.stats->primaryRays, r.set.settings.raysPerProbe,
                     (unsigned long long)r.stats->shadowRays, r.stats->threads, r.stats->triangles);
+        o << bouncesText(r);
         o << strf("noise: mean %.2f%%, p95 %.2f%% relative standard error of a probe's "
-                    "irradiance",
+                    "irradiance (all bounces)",
                     100 * r.stats->noiseMean, 100 * r.stats->noiseP95);
         if (r.set.settings.noiseTarget > 0)
             o << strf(" (target %.3g%%: %zu of %zu probe passes took more rounds, +%llu rays; "
-                        "%zu stayed above after %d rounds)",
+                        "%zu of %zu probes stayed above after %d rounds a pass)",
                         100 * r.set.settings.noiseTarget, r.stats->noisyProbePasses,
                         r.stats->tracedProbePasses, (unsigned long long)r.stats->extraRoundRays,
-                        r.stats->probePassesAboveTarget, probes::kMaxNoiseRounds);
+                        r.stats->probesAboveTarget, r.stats->tracedProbes, probes::kMaxNoiseRounds);
         o << strf("\n");
         o << strf("time: %.2f s in all: scene %.2f s, placement %.2f s", commandSeconds,
                     r.times.load, r.times.placement);

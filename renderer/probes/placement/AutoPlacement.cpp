@@ -351,7 +351,8 @@ private:
         PlacementErrorSettings es;
         es.threads = req_.adaptive.threads;
         const float cell = finest(best);
-        es.bounces = req_.bounces;
+        // A converging bake's trials run a fixed count (ProbeSet.h kConvergedTrialBounces).
+        es.bounces = req_.bounces > 0 ? req_.bounces : kConvergedTrialBounces;
         const PlacementErrorEstimate estimate(scene_, *rays_, light, 0.5f * cell, 0.5f * cell, es);
         glm::vec3 finestCell(std::numeric_limits<float>::infinity());
         for (const ProbeVolume& v : best.volumes)

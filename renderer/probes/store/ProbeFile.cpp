@@ -28,7 +28,7 @@ bool finiteNonNegative(const glm::vec3& v) {
 // (or crafted) with a valid checksum must still not hand NaN, negative light or wild offsets
 // to the sampler and the GPU. What the bake itself guarantees is checked here.
 void checkSettings(const BakeSettings& b, const std::string& path) {
-    if (b.raysPerProbe < 1 || b.raysPerProbe > 65536 || b.bounces < 1 || b.bounces > 64 ||
+    if (b.raysPerProbe < 1 || b.raysPerProbe > 65536 || b.bounces < 0 || b.bounces > 64 ||
         !(b.backfaceThreshold >= 0.0f && b.backfaceThreshold <= 1.0f) ||
         b.emitterSamples < 0 || b.emitterSamples > 65536 || b.litSamples < 0 ||
         b.litSamples > 65536 ||
