@@ -43,8 +43,8 @@ struct BakeSettings {
 };
 
 // The converged bake (bounces = 0) stops after the pass that added less than this share of
-// the light (its increment's luminance over the probes' total, summed over the traced probes),
-// or after kMaxBouncePasses passes.
+// the light (per traced probe its increment's luminance over its total, averaged over the
+// probes), or after kMaxBouncePasses passes.
 constexpr float kConvergedChange = 0.01f;
 constexpr int kMaxBouncePasses = 24;
 // Rays per probe of pass `pass` (1-based): the full count for the first two, then halved per

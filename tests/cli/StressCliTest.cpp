@@ -4,6 +4,8 @@
 #include "support/TestEnv.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <nlohmann/json.hpp>
 
 #include <fstream>
@@ -45,7 +47,11 @@ TEST(StressCli, WritesTheSweepAsJson) {
     const auto& off = j["runs"][1];
     EXPECT_EQ(off["guards"], "off");
     EXPECT_EQ(off["symptom"], "nan/inf");
-    EXPECT_EQ(off["culprits"][0], "gi.precision=fp16");
+    // Among the culprits (the rgba16f target may overflow too: which breaks first follows the
+    // bake's last bits).
+    const std::vector<std::string> culprits = off["culprits"].get<std::vector<std::string>>();
+    EXPECT_NE(std::find(culprits.begin(), culprits.end(), "gi.precision=fp16"), culprits.end())
+        << off["culprits"].dump();
     EXPECT_EQ(off["fixed_by"][0], "gi.guard_exposure=on");
     EXPECT_EQ(j["summary"]["nonfinite_with_guards"], 0);
     EXPECT_TRUE(j["platform"].is_string());

@@ -5,6 +5,7 @@
 #include "probes/ProbeLayout.h"
 #include "probes/bake/Baker.h"
 #include "probes/bake/NoiseRounds.h"
+#include "probes/sh/ShIrradiance.h"
 #include "scene/BuiltinScenes.h"
 
 #include <gtest/gtest.h>
@@ -136,4 +137,30 @@ TEST(ConvergedBake, NoiseAgreesWithATwoSeedDifference) {
                 reported, a.noiseMean, b.noiseMean, measured, a.passes[0], b.passes[0]);
     EXPECT_LT(reported, 1.5 * measured);
     EXPECT_GT(reported, measured / 1.5);
+}
+
+// The SH technique's record (the passes' ray samples projected, summed like the tiles) holds
+// the same light as the irradiance tiles: its DC term against the tile's map projection, for
+// one pass and for the converged bake.
+TEST(ConvergedBake, TheShRecordHoldsEveryPassLikeTheTiles) {
+    const scene::Scene s = scene::makeCornellScene();
+    for (int bounces : {1, 0}) {
+        const ProbeSet set = bakeProbes(s, cornellBake(bounces));
+        const ProbeVolume& vol = set.volumes[0];
+        double worst = 0.0, sumRecord = 0.0, sumMap = 0.0;
+        for (int p = 0; p < vol.probeCount(); ++p) {
+            if (!set.states[0][std::size_t(p)].valid) continue;
+            const ShCoefficients map = projectIrradianceTile(vol.probeCoords(p), set.irradiance[0][0]);
+            const float record = luminance(set.sh[0][0][std::size_t(p) * kShL2Coefficients]);
+            const float dc = luminance(map[0]);
+            sumRecord += record;
+            sumMap += dc;
+
+            worst = std::max(worst, double(std::fabs(record - dc) / std::max(dc, 1e-3f)));
+        }
+        std::printf("[ converged ] bounces %d: SH record DC sum %.4f, tile projection %.4f, "
+                    "worst probe %.3f\n",
+                    bounces, sumRecord, sumMap, worst);
+        EXPECT_NEAR(sumRecord, sumMap, 0.02 * sumMap) << "bounces " << bounces;
+    }
 }

@@ -426,12 +426,14 @@ std::vector<std::size_t> bakedScenarios(const BakeRequest& req) {
 }
 
 // Adds an increment pass into the running total (RGB of every texel; the tiles' alpha stays
-// 1) and its SH into the total SH; returns the share of the light it added: the increment's
-// summed luminance over the total's, on the interior texels of the traced probes.
+// 1) and its SH into the total SH; returns the share of the light it added: per traced probe
+// the increment's mean luminance over the total's (interior texels), averaged over the probes,
+// so a dark room lit through a doorway counts as much as the bright one. A total under
+// kNoiseFloorShare of the probes' mean counts as that floor (a probe next to nothing).
 double addIncrement(const BakeRun& run, const RadianceMask& mask, std::vector<ProbeTexture>& total,
                     const std::vector<ProbeTexture>& inc, std::vector<std::vector<glm::vec3>>& sh,
                     const std::vector<std::vector<glm::vec3>>& incSh) {
-    double added = 0.0, all = 0.0;
+    std::vector<std::pair<double, double>> probes; // (increment, total) mean luminance
     for (std::size_t v = 0; v < total.size(); ++v) {
         std::vector<float>& t = total[v].texels;
         const std::vector<float>& d = inc[v].texels;
@@ -447,15 +449,26 @@ double addIncrement(const BakeRun& run, const RadianceMask& mask, std::vector<Pr
             const glm::ivec3 c = vol.probeCoords(p);
             const float* a = tileOrigin(total[v], c, kIrradianceTile);
             const float* b = tileOrigin(inc[v], c, kIrradianceTile);
+            double all = 0.0, added = 0.0;
             for (int y = 1; y <= kIrradianceInterior; ++y)
                 for (int x = 1; x <= kIrradianceInterior; ++x) {
                     const std::size_t at = (std::size_t(y) * std::size_t(pitch) + std::size_t(x)) * 4;
                     all += luminance(glm::vec3(a[at], a[at + 1], a[at + 2]));
                     added += luminance(glm::vec3(b[at], b[at + 1], b[at + 2]));
                 }
+            probes.emplace_back(added, all);
         }
     }
-    return all > 0.0 ? std::fabs(added) / all : 0.0;
+    if (probes.empty()) return 0.0;
+    double mean = 0.0;
+    for (const auto& p : probes)
+        mean += p.second / double(probes.size());
+    const double floor = double(kNoiseFloorShare) * mean;
+    if (!(floor > 0.0)) return 0.0; // no light at all
+    double change = 0.0; // signed: the increments' noise averages out, their light does not
+    for (const auto& p : probes)
+        change += p.first / std::max(p.second, floor) / double(probes.size());
+    return std::fabs(change);
 }
 
 // 2. Radiance, per scenario: the first pass, then increments until the settings' pass count
