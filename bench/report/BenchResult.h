@@ -51,6 +51,21 @@ struct TruthAccuracy {
     double relativeMse = 0; // linear radiance, sum (t - r)^2 / sum r^2
 };
 
+// A profile's error against the truth, split: the reference's own (the probes: their
+// resolution, interpolation and the bake) and what the profile's switches add on top (the
+// profile's figure minus the reference's; negative where a switch happens to land nearer the
+// truth). Both measured only when both frames were.
+struct TruthErrorSplit {
+    bool measured = false;
+    double referenceFlip = 0, referenceRelativeMse = 0;
+    double switchesFlip = 0, switchesRelativeMse = 0;
+};
+inline TruthErrorSplit splitTruthError(const TruthAccuracy& profile, const TruthAccuracy& reference) {
+    if (!profile.measured || !reference.measured) return {};
+    return {true, reference.flipMean, reference.relativeMse, profile.flipMean - reference.flipMean,
+            profile.relativeMse - reference.relativeMse};
+}
+
 // What the report shows side by side per session: the truth, the reference and the profile
 // frames (PNG files) and their FLIP heat maps against the truth ("" when not written).
 struct TruthPictures {

@@ -46,6 +46,21 @@ std::string scientific(double v) {
     return buf;
 }
 
+std::string signedFixed(double v, int decimals) {
+    if (!std::isfinite(v)) return "n/a";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%+.*f", decimals, v);
+    return buf;
+}
+
+std::string signedScientific(double v) {
+    if (!std::isfinite(v)) return "n/a";
+    if (v == 0) return "0";
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%+.2e", v);
+    return buf;
+}
+
 bool significant(const stats::Shift& s) {
     return s.ciLevel > 0 && (s.ciLow > 0 || s.ciHigh < 0);
 }

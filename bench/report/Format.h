@@ -14,6 +14,8 @@ std::string msWithCi(const stats::Summary& s);
 std::string shiftWithCi(const stats::Shift& s); // "-3.21 [-3.50, -2.90]", "+7.71 [no CI]"
 std::string psnrText(double db);                // "34.52" or "inf" (identical)
 std::string scientific(double v);               // "1.23e-04"
+std::string signedFixed(double v, int decimals); // "+0.0012", "-0.0030"; "n/a" when not finite
+std::string signedScientific(double v);          // "+1.23e-04", "-4.00e-05"
 // Whether the interval excludes zero: the delta is a measured difference, not noise (never
 // without an interval).
 bool significant(const stats::Shift& s);

@@ -77,6 +77,13 @@ std::string truthHtml(const BenchResult& r) {
               << "</tr>\n";
         }
         h << "</table>\n";
+        if (const TruthErrorSplit split = splitTruthError(s.profile().vsTruth, s.reference().vsTruth);
+            split.measured)
+            h << "<p class=\"note\">" << htmlEscape(s.session.profile.name) << "'s error against the truth: "
+              << "the reference's own FLIP " << fixed(split.referenceFlip, 4) << ", rel. MSE "
+              << htmlEscape(scientific(split.referenceRelativeMse)) << " (the probes); its switches add FLIP "
+              << htmlEscape(signedFixed(split.switchesFlip, 4)) << ", rel. MSE "
+              << htmlEscape(signedScientific(split.switchesRelativeMse)) << ".</p>\n";
         const TruthPictures& p = s.truthPictures;
         figure(h, p.truthFile, "truth");
         figure(h, p.referenceFile, "reference: FLIP " + fixed(s.reference().vsTruth.flipMean, 4));
@@ -94,8 +101,8 @@ std::string truthMarkdown(const BenchResult& r) {
     out << "\nAgainst the path-traced truth (" << sppText(r)
         << " spp; FLIP/PSNR of the tonemapped frame, relative MSE of the radiance" << floorText(r)
         << "):\n\n"
-        << "| profile | FLIP | PSNR dB | rel. MSE | reference FLIP | reference PSNR dB | reference rel. MSE |\n"
-        << "|---|---|---|---|---|---|---|\n";
+        << "| profile | FLIP | PSNR dB | rel. MSE | reference FLIP | reference PSNR dB | reference rel. MSE | switches add: FLIP | switches add: rel. MSE |\n"
+        << "|---|---|---|---|---|---|---|---|---|\n";
     for (const SessionResult& s : r.sessions) {
         const TruthAccuracy& p = s.profile().vsTruth;
         const TruthAccuracy& ref = s.reference().vsTruth;
@@ -103,8 +110,15 @@ std::string truthMarkdown(const BenchResult& r) {
             return a.measured ? fixed(a.flipMean, 4) + " | " + psnrText(a.psnr) + " | " + scientific(a.relativeMse)
                               : std::string("n/a | n/a | n/a");
         };
-        out << "| " << s.session.profile.name << " | " << cells(p) << " | " << cells(ref) << " |\n";
+        const TruthErrorSplit split = splitTruthError(p, ref);
+        const std::string added = split.measured ? signedFixed(split.switchesFlip, 4) + " | " +
+                                                       signedScientific(split.switchesRelativeMse)
+                                                 : std::string("n/a | n/a");
+        out << "| " << s.session.profile.name << " | " << cells(p) << " | " << cells(ref) << " | "
+            << added << " |\n";
     }
+    out << "\nThe profile's error is the reference's own (the probes: resolution, interpolation, "
+           "the bake) plus what its switches add (the difference; negative: nearer the truth).\n";
     return out.str();
 }
 

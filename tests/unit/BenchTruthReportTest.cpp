@@ -1,6 +1,7 @@
 // `bench --truth` in the bench's outputs, from a hand-made result (no GL): accuracy_vs_truth on
 // every variant, profile (with its reference) and ablation row; null without a truth; the
 // Markdown table and the HTML section only when there is a truth.
+#include "bench/report/Format.h"
 #include "bench/report/HtmlReport.h"
 #include "bench/report/MarkdownSummary.h"
 #include "bench/report/ResultJson.h"
@@ -82,12 +83,43 @@ TEST(BenchTruthReport, EveryVariantProfileAndAblationRowHasAccuracyVsTruth) {
     EXPECT_NE(html.find("<td class=\"l\">reference</td>"), std::string::npos);
 }
 
+// Issue 43 item 3: each profile's error against the truth split into the reference's own and
+// what its switches add, in the JSON, the Markdown table and the HTML report.
+TEST(BenchTruthReport, EachProfilesErrorIsSplitIntoTheReferencesAndTheSwitches) {
+    const BenchResult r = benchTruthReportResult(true);
+    const nlohmann::json j = benchJson(r);
+    ASSERT_FALSE(j["profiles"].empty());
+    int withSwitches = 0;
+    for (const auto& p : j["profiles"]) {
+        const nlohmann::json& split = p["truth_error_split"];
+        ASSERT_TRUE(split.is_object()) << p.dump();
+        const double profileFlip = p["accuracy_vs_truth"]["flip_mean"];
+        const double refFlip = p["reference_accuracy_vs_truth"]["flip_mean"];
+        const double profileMse = p["accuracy_vs_truth"]["relative_mse"];
+        const double refMse = p["reference_accuracy_vs_truth"]["relative_mse"];
+        EXPECT_DOUBLE_EQ(split["reference_flip"].get<double>(), refFlip);
+        EXPECT_DOUBLE_EQ(split["switches_flip"].get<double>(), profileFlip - refFlip);
+        EXPECT_DOUBLE_EQ(split["reference_relative_mse"].get<double>(), refMse);
+        EXPECT_DOUBLE_EQ(split["switches_relative_mse"].get<double>(), profileMse - refMse);
+        if (profileFlip == refFlip) continue; // the reference's own session: nothing added
+        ++withSwitches;
+        const std::string md = markdownSummary(r);
+        EXPECT_NE(md.find("switches add: FLIP"), std::string::npos) << md;
+        EXPECT_NE(md.find(signedFixed(profileFlip - refFlip, 4)), std::string::npos) << md;
+        EXPECT_NE(htmlReport(r).find("its switches add FLIP " + signedFixed(profileFlip - refFlip, 4)),
+                  std::string::npos);
+    }
+    EXPECT_EQ(withSwitches, 1) << "the low profile's switches add to the reference's error";
+}
+
 TEST(BenchTruthReport, WithoutATruthTheKeysAreNullAndNoSectionIsShown) {
     const BenchResult r = benchTruthReportResult(false);
     const nlohmann::json j = benchJson(r);
     EXPECT_TRUE(j["truth"].is_null());
     for (const auto& v : j["variants"])
         EXPECT_TRUE(v["accuracy_vs_truth"].is_null());
+    for (const auto& p : j["profiles"])
+        EXPECT_TRUE(p["truth_error_split"].is_null());
     EXPECT_EQ(markdownSummary(r).find("path-traced truth"), std::string::npos);
     EXPECT_EQ(htmlReport(r).find("Against the ground truth"), std::string::npos);
 }
