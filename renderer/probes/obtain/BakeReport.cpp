@@ -275,12 +275,11 @@ std::string bouncesText(const BakeReport& r) {
         o += strf(" %d pass(es)", st.passes[i]);
         if (st.passes[i] > 1)
             o += strf(" (%s: the last added %.2f%% of the light)",
-                      converge ? (st.lastChange[i] < kConvergedChange ? "converged" : "cap reached")
+                      converge ? (st.lastChange[i] < kConvergedChange ? "converged"
+                                                                       : "stopped at the pass cap")
                                : "as asked",
                       100.0 * st.lastChange[i]);
     }
-    if (converge && !st.passes.empty() && st.passes[0] >= kMaxBouncePasses)
-        o += strf("; stopped at the cap of %d passes", kMaxBouncePasses);
     return o + "\n";
 }
 
