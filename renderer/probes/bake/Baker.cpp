@@ -393,7 +393,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     return cur;
 }
 
-// The SH probes of every scenario, from the last pass's ray projection (BakeRun::passSh),
+// The SH probes of every scenario, from the passes' ray projections (BakeRun::passSh, summed),
 // except the nested rings' blended probes: their irradiance was blended towards the parent
 // after the rays (NestingBlend.h), so they take the map projection of their final tile.
 // Rounded to half floats (the GPU's RGBA16F).
@@ -591,7 +591,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     bakeGeometry(run);
     const RadianceMask mask(run);
     bakeRadiance(run, mask);
-    // The SH technique's probes: the last pass's ray samples projected (probes/sh/ShIrradiance.h).
+    // The SH technique's probes: every pass's ray samples projected and summed (probes/sh/ShIrradiance.h).
     finishSh(run);
     const std::vector<BakePhase> phaseTimes = run.phases.take();
     if (req.recordRays) *req.recordRays = own->stopRecording();

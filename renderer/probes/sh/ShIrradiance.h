@@ -4,8 +4,8 @@
 // local frame. A lookup convolves them with the clamped-cosine lobe (Ramamoorthi & Hanrahan
 // 2001: A0 = pi, A1 = 2pi/3, A2 = pi/4) to get irradiance.
 //
-// Where the coefficients come from: the bake's last radiance pass projects each probe's own
-// samples (RadianceSlab::projectSh: 4 pi / N sum L(w) Y(w) over its rays, plus its emitter and
+// Where the coefficients come from: every radiance pass of the bake projects each probe's own
+// samples (summed over the passes, as the octahedral tiles are) (RadianceSlab::projectSh: 4 pi / N sum L(w) Y(w) over its rays, plus its emitter and
 // lit-surface samples' shares; noise rounds averaged as the texels are), the same samples its
 // octahedral irradiance tile convolves, so the SH probes sit on exactly DDGI's bake. Only a
 // nested child's blended ring probes (NestingBlend.h) take the map projection below
