@@ -45,6 +45,11 @@ void checkOutputFolder(const std::string& option, const std::string& path, bool 
     requireParent(option, folder.string(), mkdir);
 }
 
+void prepareOutputParent(const std::string& option, const std::string& path, bool mkdir) {
+    requireParent(option, path, mkdir);
+    if (mkdir) makeParentFolder(path);
+}
+
 void makeParentFolder(const std::string& path) {
     const fs::path parent = fs::path(path).parent_path();
     if (parent.empty()) return;

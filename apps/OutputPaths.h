@@ -20,4 +20,9 @@ void checkOutputFolder(const std::string& option, const std::string& path, bool 
 // Creates `path`'s parent folder (only reached with --mkdir or when it exists already).
 void makeParentFolder(const std::string& path);
 
+// The one rule of every command that writes a file (bake, bench, truth, render): checked before
+// any work, a missing parent folder is an error naming it, unless `mkdir` (--mkdir), which
+// creates it here.
+void prepareOutputParent(const std::string& option, const std::string& path, bool mkdir);
+
 } // namespace pb::app

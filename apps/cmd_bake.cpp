@@ -1,6 +1,7 @@
 // probebench bake: probe volumes -> Embree bake -> probe data file (cached by input hash).
 #include "CommandRegistry.h"
 #include "JsonOption.h"
+#include "OutputPaths.h"
 #include "SceneOptions.h"
 #include "core/Error.h"
 #include "probes/obtain/BakeReport.h"
@@ -42,6 +43,7 @@ struct BakeArgs {
     std::uint64_t seed = 1;
     std::string out;
     JsonOption json;
+    bool mkdir = false; // create missing parent folders of the outputs
     bool force = false, noRelocate = false, sparse = false, dense = false;
     bool noLatticeSearch = false;
     std::string freeSpace = "ranked";   // --free-space (issue 18)
@@ -288,17 +290,12 @@ int runBake(const BakeArgs& a) {
                         "')");
     if (a.noLatticeSearch && !adaptive)
         throw Error("--no-lattice-search applies to --volumes auto only (not '" + a.volumes + "')");
-    if (!a.writeVolumes.empty()) {
-        fs::path parent = fs::path(a.writeVolumes).parent_path();
-        if (!parent.empty() && !fs::is_directory(parent))
-            throw Error("--write-volumes " + a.writeVolumes + ": folder does not exist");
-    }
-    // Said before the placement and the bake (minutes on a large scene), not after them.
-    if (!a.out.empty()) {
-        const fs::path parent = fs::path(a.out).parent_path();
-        if (!parent.empty() && !fs::is_directory(parent))
-            throw Error("--out " + a.out + ": folder '" + parent.string() + "' does not exist");
-    }
+    // Said before the placement and the bake (minutes on a large scene), not after them
+    // (OutputPaths.h: the rule every command follows).
+    if (!a.writeVolumes.empty()) prepareOutputParent("--write-volumes", a.writeVolumes, a.mkdir);
+    if (!a.out.empty()) prepareOutputParent("--out", a.out, a.mkdir);
+    if (!a.json.file().empty())
+        prepareOutputParent("--json", a.json.file(), a.mkdir);
     const BakeOptions o = bakeOptions(a);
     scene::Scene s = loadSceneWithOverrides(a.scene);
     CommandSeconds t;
@@ -440,6 +437,9 @@ const RegisterCommand registerBake{{
                        "Probe file to write (reused when its inputs match); required unless "
                        "--write-volumes is given");
         cmd.add_flag("--force", a->force, "Bake even when --out is up to date");
+        cmd.add_flag("--mkdir", a->mkdir,
+                     "Create missing parent folders of --out, --write-volumes, --json (else a "
+                     "missing folder is an error, before any work)");
         cmd.add_option("--split", a->split,
                        "Bake one part of a split bake: 'scenario' (each part bakes a block of "
                        "the --scenario list; every part runs the whole geometry pass). --out is "

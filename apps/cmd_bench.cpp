@@ -7,6 +7,7 @@
 #include "CommandRegistry.h"
 #include "DeviceOptions.h"
 #include "JsonOption.h"
+#include "OutputPaths.h"
 #include "PlatformOptions.h"
 #include "ProbeOptions.h"
 #include "ProfileOptions.h"
@@ -60,6 +61,7 @@ struct BenchArgs {
     JsonOption json;
     std::string view, camera, probes, volumes = "auto", cacheDir, html, heatmaps,
                                       timing = "auto";
+    bool mkdir = false; // create missing parent folders of the outputs
     double ppd = 67.0;
     bool truth = false; // --truth: accuracy against the path-traced ground truth too
     int truthSpp = 64;
@@ -73,13 +75,6 @@ struct BenchArgs {
 void progress(const std::string& line) {
     std::fprintf(stderr, "bench: %s\n", line.c_str());
     std::fflush(stderr);
-}
-
-void ensureParent(const std::string& path, const char* option) {
-    fs::path parent = fs::path(path).parent_path();
-    std::error_code ec;
-    if (!parent.empty()) fs::create_directories(parent, ec);
-    if (ec) throw Error(std::string(option) + " " + path + ": cannot create its folder");
 }
 
 std::string cameraSpec(const scene::View& v) {
@@ -260,8 +255,9 @@ int runBench(const BenchArgs& a) {
                           : resolvePredictDevices(a.predict, profiles);
     for (const char* opt : {"--json", "--html"}) {
         const std::string path = std::string(opt) == "--json" ? a.json.file() : a.html;
-        if (!path.empty()) ensureParent(path, opt);
+        if (!path.empty()) prepareOutputParent(opt, path, a.mkdir);
     }
+    if (!a.heatmaps.empty()) checkOutputFolder("--heatmaps", a.heatmaps, a.mkdir);
     scene::Scene s = loadSceneWithOverrides(a.scene);
     std::string probesPath = a.probes;
     probes::ProbeSet set =
@@ -441,6 +437,9 @@ const RegisterCommand registerBench{
                         "Folder of the baked-probe cache (default: ~/.cache/probebench)");
          a->json.add(cmd, "The full result");
          cmd.add_option("--html", a->html, "Write the self-contained HTML report to this file");
+         cmd.add_flag("--mkdir", a->mkdir,
+                      "Create missing parent folders of --json, --html, --heatmaps (else a "
+                      "missing folder is an error, before any work)");
          cmd.add_option("--heatmaps", a->heatmaps,
                         "Folder for the FLIP heat-map PNGs (default: <json/html name>-heatmaps/)");
          cmd.add_option("--timing", a->timing,

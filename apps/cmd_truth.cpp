@@ -2,6 +2,7 @@
 // materials, lights, exposure and tonemap as `render`, converged by spp, with its own noise
 // estimate; cached by input hash next to the baked probes.
 #include "CommandRegistry.h"
+#include "OutputPaths.h"
 #include "SceneOptions.h"
 #include "bench/runner/ProbeCache.h"
 #include "core/Error.h"
@@ -24,6 +25,7 @@ struct TruthArgs {
     std::string view, camera;
     truth::TruthSettings settings;
     std::string outHdr, out, json, cacheDir;
+    bool mkdir = false; // create missing parent folders of the outputs
     const CLI::Option* jsonOption = nullptr;
     float exposure = 0.0f; // 0 = the scene's
     bool noCache = false;
@@ -51,14 +53,6 @@ private:
     bool tty_;
     int last_ = -1;
 };
-
-void truthEnsureParent(const std::string& path, const std::string& option) {
-    auto parent = std::filesystem::path(path).parent_path();
-    if (parent.empty()) return;
-    std::error_code ec;
-    std::filesystem::create_directories(parent, ec);
-    if (ec) throw Error(option + ": " + path + ": cannot create its folder: " + ec.message());
-}
 
 nlohmann::json toJson(const TruthArgs& a, const scene::Scene& s, const scene::View& v,
                       const truth::TruthResult& r, std::uint64_t hash, bool cached,
@@ -102,7 +96,7 @@ int runTruth(TruthArgs& a) {
     const bool jsonToStdout = a.jsonOption && a.jsonOption->count() > 0 && (a.json.empty() || a.json == "-");
     for (const auto& [path, opt] : {std::pair{a.outHdr, "--out-hdr"}, {a.out, "--out"},
                                     {jsonToStdout ? std::string() : a.json, "--json"}})
-        if (!path.empty()) truthEnsureParent(path, opt);
+        if (!path.empty()) prepareOutputParent(opt, path, a.mkdir);
 
     scene::Scene s = loadSceneWithOverrides(a.scene);
     const scene::View view = chooseView(s, a.view, a.camera);
@@ -182,6 +176,9 @@ const RegisterCommand registerTruth{Command{
         cmd.add_option("--threads", a->settings.threads, "Threads (0 = all cores; never changes the image)")
             ->capture_default_str();
         cmd.add_option("--exposure", a->exposure, "Exposure for --out (default: the scene's)");
+        cmd.add_flag("--mkdir", a->mkdir,
+                     "Create missing parent folders of --out, --out-hdr, --json (else a missing "
+                     "folder is an error, before any work)");
         cmd.add_option("--out-hdr", a->outHdr, "Linear radiance as PFM (what render --out-hdr writes)")
             ->required();
         cmd.add_option("--out", a->out, "Tonemapped sRGB PNG (the renderer's exposure and ACES fit)");
