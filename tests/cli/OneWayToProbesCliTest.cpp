@@ -34,7 +34,8 @@ fs::path onlyProbeFile(const fs::path& cache) {
 CommandResult benchCornell(const fs::path& cache) {
     return runProbebench({"bench", "--scene", "cornell", "--cache-dir", cache.string(),
                           "--profiles", "reference", "--frames", "1", "--width", "32", "--height",
-                          "18", "--no-cache-model", "--json", (cache / "bench.json").string()});
+                          "18", "--no-cache-model", "--json", (cache / "bench.json").string(),
+                          "--mkdir"}); // the JSON goes into the cache folder, made by this run
 }
 
 } // namespace
