@@ -6,11 +6,19 @@
 
 namespace pb::bench {
 
-std::string fixed(double v, int decimals) {
+namespace {
+// One number through `format` (a printf format taking the decimals, then the value); "n/a"
+// when not finite. Every formatter below is one of its formats.
+std::string printed(const char* format, int decimals, double v) {
     if (!std::isfinite(v)) return "n/a";
     char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    std::snprintf(buf, sizeof buf, format, decimals, v);
     return buf;
+}
+} // namespace
+
+std::string fixed(double v, int decimals) {
+    return printed("%.*f", decimals, v);
 }
 
 namespace {
@@ -39,26 +47,15 @@ std::string psnrText(double db) {
 }
 
 std::string scientific(double v) {
-    if (!std::isfinite(v)) return "n/a";
-    if (v == 0) return "0";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.2e", v);
-    return buf;
+    return v == 0 ? "0" : printed("%.*e", 2, v);
 }
 
 std::string signedFixed(double v, int decimals) {
-    if (!std::isfinite(v)) return "n/a";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%+.*f", decimals, v);
-    return buf;
+    return printed("%+.*f", decimals, v);
 }
 
 std::string signedScientific(double v) {
-    if (!std::isfinite(v)) return "n/a";
-    if (v == 0) return "0";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%+.2e", v);
-    return buf;
+    return v == 0 ? "0" : printed("%+.*e", 2, v);
 }
 
 bool significant(const stats::Shift& s) {
