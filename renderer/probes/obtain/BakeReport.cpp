@@ -263,7 +263,7 @@ nlohmann::json bakeReportJson(const BakeReport& r) {
     return j;
 }
 
-// "bounces: 9 passes (until converged: the last added 0.8% of the light)", per scenario
+// "bounces: 9 pass(es) (converged: the last added 0.80% of the light)", per scenario
 // when they differ.
 std::string bouncesText(const BakeReport& r) {
     const BakeStats& st = *r.stats;
