@@ -20,6 +20,7 @@
 #include "bench/report/ResultJson.h"
 #include "bench/runner/BenchContext.h"
 #include "bench/runner/BenchTruth.h"
+#include "bench/runner/FewerBouncePasses.h"
 #include "bench/report/PredictionMeasured.h"
 #include "bench/runner/CacheModelRun.h"
 #include "bench/runner/PredictionRun.h"
@@ -322,10 +323,15 @@ int runBench(const BenchArgs& a) {
     o.progress = progress;
     bench::RunnerInputs in{&s, &set, view, render::defaultFrameSettings(s), &debug};
     bench::TruthBySize truths;
+    bench::FewerBouncePasses fewerPasses;
     if (a.truth) {
         const std::string cacheDir = a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir;
         truths = bench::computeBenchTruth(s, view, plan, {a.truthSpp, 32, cacheDir, progress}, &result.truth);
         in.truth = &truths;
+        fewerPasses = bench::bakeOneFewerBouncePass(s, set, progress);
+        result.truth["fewer_bounce_passes"] = bench::fewerBouncePassesJson(fewerPasses);
+        if (fewerPasses.set) in.fewerPassProbes = &*fewerPasses.set;
+        else progress("note: no reference with one bounce pass fewer: " + fewerPasses.why);
     }
     std::vector<bench::AccuracyPictures> pictures;
     std::vector<bench::TruthMaps> truthMaps;

@@ -54,16 +54,26 @@ struct TruthAccuracy {
 // A profile's error against the truth, split: the reference's own (the probes: their
 // resolution, interpolation and the bake) and what the profile's switches add on top (the
 // profile's figure minus the reference's; negative where a switch happens to land nearer the
-// truth). Both measured only when both frames were.
+// truth). Both measured only when both frames were. Beside them, when measured, the reference
+// with probes of one bounce pass fewer: what the bake's last pass buys.
 struct TruthErrorSplit {
     bool measured = false;
     double referenceFlip = 0, referenceRelativeMse = 0;
     double switchesFlip = 0, switchesRelativeMse = 0;
+    bool fewerPassesMeasured = false;
+    double fewerPassesFlip = 0, fewerPassesRelativeMse = 0;
 };
-inline TruthErrorSplit splitTruthError(const TruthAccuracy& profile, const TruthAccuracy& reference) {
+inline TruthErrorSplit splitTruthError(const TruthAccuracy& profile, const TruthAccuracy& reference,
+                                       const TruthAccuracy& fewerPasses = {}) {
     if (!profile.measured || !reference.measured) return {};
-    return {true, reference.flipMean, reference.relativeMse, profile.flipMean - reference.flipMean,
-            profile.relativeMse - reference.relativeMse};
+    return {true,
+            reference.flipMean,
+            reference.relativeMse,
+            profile.flipMean - reference.flipMean,
+            profile.relativeMse - reference.relativeMse,
+            fewerPasses.measured,
+            fewerPasses.flipMean,
+            fewerPasses.relativeMse};
 }
 
 // What the report shows side by side per session: the truth, the reference and the profile
@@ -114,6 +124,9 @@ struct SessionResult {
     const VariantResult& reference() const { return variants[size_t(session.referenceVariant)]; }
     const DeltaResult* vsReference() const;
     TruthPictures truthPictures;
+    // `bench --truth`: the reference rendered with the probes of one bounce pass fewer
+    // (FewerBouncePasses.h); not measured when they could not be baked.
+    TruthAccuracy referenceFewerPassesVsTruth;
 };
 
 struct BenchSettings {

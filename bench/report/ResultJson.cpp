@@ -175,13 +175,21 @@ nlohmann::json profileJson(const SessionResult& s, const std::string& renderer) 
         j["accuracy"] = accuracyJson(p.accuracy);
         j["accuracy_vs_truth"] = truthJson(p.vsTruth);
         j["reference_accuracy_vs_truth"] = truthJson(s.reference().vsTruth);
-        const TruthErrorSplit split = splitTruthError(p.vsTruth, s.reference().vsTruth);
+        const TruthErrorSplit split =
+            splitTruthError(p.vsTruth, s.reference().vsTruth, s.referenceFewerPassesVsTruth);
+        auto fewer = [&](double v) {
+            return split.fewerPassesMeasured ? nlohmann::json(v) : nlohmann::json(nullptr);
+        };
         j["truth_error_split"] =
-            split.measured ? nlohmann::json{{"reference_flip", split.referenceFlip},
-                                            {"reference_relative_mse", split.referenceRelativeMse},
-                                            {"switches_flip", split.switchesFlip},
-                                            {"switches_relative_mse", split.switchesRelativeMse}}
-                           : nlohmann::json(nullptr);
+            split.measured
+                ? nlohmann::json{{"reference_flip", split.referenceFlip},
+                                 {"reference_relative_mse", split.referenceRelativeMse},
+                                 {"switches_flip", split.switchesFlip},
+                                 {"switches_relative_mse", split.switchesRelativeMse},
+                                 {"reference_one_pass_fewer_flip", fewer(split.fewerPassesFlip)},
+                                 {"reference_one_pass_fewer_relative_mse",
+                                  fewer(split.fewerPassesRelativeMse)}}
+                : nlohmann::json(nullptr);
         const TruthPictures& tp = s.truthPictures;
         auto file = [](const std::string& f) { return f.empty() ? nlohmann::json(nullptr) : nlohmann::json(f); };
         if (!tp.truthFile.empty())

@@ -30,6 +30,21 @@ std::string floorText(const BenchResult& r) {
     return worst < 0.0 ? std::string() : "; the truth's own noise adds about " + scientific(worst) + " to rel. MSE";
 }
 
+// " (8 of 9 passes)" from truth.fewer_bounce_passes, or "" when not baked.
+std::string passesText(const BenchResult& r) {
+    if (!r.truth.is_object() || !r.truth.contains("fewer_bounce_passes")) return {};
+    const nlohmann::json& f = r.truth["fewer_bounce_passes"];
+    if (!f.value("baked_passes", nlohmann::json()).is_number()) return {};
+    return " (" + f["baked_passes"].dump() + " of " + f["passes"].dump() + " passes)";
+}
+
+// "; not measured here: WHY" when the fewer-pass probes could not be baked.
+std::string fewerWhyNot(const BenchResult& r) {
+    if (!r.truth.is_object() || !r.truth.contains("fewer_bounce_passes")) return {};
+    const nlohmann::json& why = r.truth["fewer_bounce_passes"].value("why_not", nlohmann::json());
+    return why.is_string() ? "; not measured here: " + why.get<std::string>() : std::string();
+}
+
 std::string truthCell(const std::string& text, const std::string& cls = "") {
     return "<td" + (cls.empty() ? "" : " class=\"" + cls + "\"") + ">" + htmlEscape(text) + "</td>";
 }
@@ -77,13 +92,20 @@ std::string truthHtml(const BenchResult& r) {
               << "</tr>\n";
         }
         h << "</table>\n";
-        if (const TruthErrorSplit split = splitTruthError(s.profile().vsTruth, s.reference().vsTruth);
-            split.measured)
+        if (const TruthErrorSplit split = splitTruthError(s.profile().vsTruth, s.reference().vsTruth,
+                                                          s.referenceFewerPassesVsTruth);
+            split.measured) {
             h << "<p class=\"note\">" << htmlEscape(s.session.profile.name) << "'s error against the truth: "
               << "the reference's own FLIP " << fixed(split.referenceFlip, 4) << ", rel. MSE "
               << htmlEscape(scientific(split.referenceRelativeMse)) << " (the probes); its switches add FLIP "
               << htmlEscape(signedFixed(split.switchesFlip, 4)) << ", rel. MSE "
-              << htmlEscape(signedScientific(split.switchesRelativeMse)) << ".</p>\n";
+              << htmlEscape(signedScientific(split.switchesRelativeMse)) << ".";
+            if (split.fewerPassesMeasured)
+                h << " With one bounce pass fewer" << htmlEscape(passesText(r)) << " the reference is at FLIP "
+                  << fixed(split.fewerPassesFlip, 4) << ", rel. MSE "
+                  << htmlEscape(scientific(split.fewerPassesRelativeMse)) << ": what the last pass buys.";
+            h << "</p>\n";
+        }
         const TruthPictures& p = s.truthPictures;
         figure(h, p.truthFile, "truth");
         figure(h, p.referenceFile, "reference: FLIP " + fixed(s.reference().vsTruth.flipMean, 4));
@@ -101,8 +123,8 @@ std::string truthMarkdown(const BenchResult& r) {
     out << "\nAgainst the path-traced truth (" << sppText(r)
         << " spp; FLIP/PSNR of the tonemapped frame, relative MSE of the radiance" << floorText(r)
         << "):\n\n"
-        << "| profile | FLIP | PSNR dB | rel. MSE | reference FLIP | reference PSNR dB | reference rel. MSE | switches add: FLIP | switches add: rel. MSE |\n"
-        << "|---|---|---|---|---|---|---|---|---|\n";
+        << "| profile | FLIP | PSNR dB | rel. MSE | reference FLIP | reference PSNR dB | reference rel. MSE | switches add: FLIP | switches add: rel. MSE | reference, one bounce pass fewer" << passesText(r) << ": FLIP | its rel. MSE |\n"
+        << "|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (const SessionResult& s : r.sessions) {
         const TruthAccuracy& p = s.profile().vsTruth;
         const TruthAccuracy& ref = s.reference().vsTruth;
@@ -110,15 +132,22 @@ std::string truthMarkdown(const BenchResult& r) {
             return a.measured ? fixed(a.flipMean, 4) + " | " + psnrText(a.psnr) + " | " + scientific(a.relativeMse)
                               : std::string("n/a | n/a | n/a");
         };
-        const TruthErrorSplit split = splitTruthError(p, ref);
+        const TruthErrorSplit split = splitTruthError(p, ref, s.referenceFewerPassesVsTruth);
         const std::string added = split.measured ? signedFixed(split.switchesFlip, 4) + " | " +
                                                        signedScientific(split.switchesRelativeMse)
                                                  : std::string("n/a | n/a");
+        const std::string fewer = split.fewerPassesMeasured
+                                      ? fixed(split.fewerPassesFlip, 4) + " | " +
+                                            scientific(split.fewerPassesRelativeMse)
+                                      : std::string("n/a | n/a");
         out << "| " << s.session.profile.name << " | " << cells(p) << " | " << cells(ref) << " | "
-            << added << " |\n";
+            << added << " | " << fewer << " |\n";
     }
     out << "\nThe profile's error is the reference's own (the probes: resolution, interpolation, "
-           "the bake) plus what its switches add (the difference; negative: nearer the truth).\n";
+           "the bake) plus what its switches add (the difference; negative: nearer the truth). "
+           "The last columns: the reference with probes baked one bounce pass short, so the "
+           "difference to the reference's columns is what the bake's last pass buys"
+        << fewerWhyNot(r) << ".\n";
     return out.str();
 }
 

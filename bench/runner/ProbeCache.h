@@ -1,6 +1,6 @@
 #pragma once
 // The probes a benchmark renders with when no probe file is given: `probebench bake --volumes
-// VOLUMES --rays 128` (every other option bake's default: 2 bounces, RGBA16F, day, auto stored
+// VOLUMES --rays 128` (every other option bake's default: bounces until converged, RGBA16F, day, auto stored
 // sparse), obtained as bake obtains them (probes/obtain/ObtainProbes.h: the placement cache
 // first, so a cache hit places nothing) into a file of the cache folder named by the options
 // and the Embree ISA (probeCachePath). `bake --rays 128 --volumes VOLUMES --out F` writes the

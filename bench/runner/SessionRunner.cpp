@@ -5,6 +5,7 @@
 #include "core/MachineState.h"
 #include "core/Error.h"
 #include "frame/FrameRenderer.h"
+#include "truth/PathTracer.h"
 #include "passes/GiApplyPass.h"
 
 #include <algorithm>
@@ -210,6 +211,23 @@ void timeGroup(const SizeGroup& g, const RunnerInputs& in, const RunnerOptions& 
     }
 }
 
+// The reference variant rendered with the probes of one bounce pass fewer, against the truth
+// (as the others: the first frame after a cut). A GL error here is the bench's failure.
+TruthAccuracy fewerPassAccuracy(const Variant& reference, const RunnerInputs& in,
+                                const render::RenderView& rv, const image::ImageF& truthHdr,
+                                double pixelsPerDegree) {
+    const std::uint64_t mark = in.debug ? in.debug->mark() : 0;
+    render::GiOptions gi{in.fewerPassProbes, 0, reference.switches};
+    render::FrameRenderer renderer(*in.scene, in.settings, gi);
+    renderer.render(rv);
+    const TruthAccuracy a = truthAccuracyOf(renderer, truthHdr,
+                                            truth::tonemap(truthHdr, in.settings.exposure),
+                                            pixelsPerDegree);
+    if (std::string why = glErrorText(in.debug, mark); !why.empty())
+        throw Error("bench --truth: the reference with one bounce pass fewer: " + why);
+    return a;
+}
+
 // One session's result from its group's timed variants: its own variants (ids, labels, roles)
 // with the shared measurements, then accuracy against its reference and its deltas.
 SessionResult finishSession(const Session& session, const std::vector<size_t>& slots,
@@ -257,6 +275,9 @@ SessionResult finishSession(const Session& session, const std::vector<size_t>& s
                         std::to_string(session.height));
         captureTruthAccuracy(out, renderers, it->second, in.settings.exposure, o.pixelsPerDegree,
                              truthMaps);
+        if (in.fewerPassProbes && out.reference().ok())
+            out.referenceFewerPassesVsTruth =
+                fewerPassAccuracy(out.reference().variant, in, rv, it->second, o.pixelsPerDegree);
     }
     pairDeltas(out);
     return out;

@@ -39,6 +39,9 @@ struct RunnerInputs {
     gl::DebugOutput* debug = nullptr; // GL errors fail the variant that caused them
     // `bench --truth`: the ground truth at every session's size; null = no truth accuracy.
     const TruthBySize* truth = nullptr;
+    // With `truth`: the probes with one bounce pass fewer (FewerBouncePasses.h); the reference
+    // variant renders with them too, into SessionResult::referenceFewerPassesVsTruth.
+    const probes::ProbeSet* fewerPassProbes = nullptr;
 };
 
 // `pictures` (optional) receives, parallel to the sessions, the profile variant's per-pixel

@@ -7,6 +7,7 @@
 #include "bench/report/BenchResult.h"
 #include "frame/FrameRenderer.h"
 #include "image/Image.h"
+#include "metrics/ImageMetrics.h"
 
 #include <map>
 #include <utility>
@@ -22,6 +23,11 @@ struct TruthMaps {
     image::Image8 truth, reference, profile;
     image::ImageF referenceFlip, profileFlip; // 1-channel FLIP against the truth
 };
+
+// One rendered frame (the renderer's last) against the truth; `flip` (optional) receives FLIP's map.
+TruthAccuracy truthAccuracyOf(render::FrameRenderer& renderer, const image::ImageF& truthHdr,
+                              const image::Image8& truthLdr, double pixelsPerDegree,
+                              metrics::FlipResult* flip = nullptr);
 
 void captureTruthAccuracy(SessionResult& s, const std::vector<render::FrameRenderer*>& renderers,
                           const image::ImageF& truthHdr, float exposure, double pixelsPerDegree,

@@ -50,6 +50,22 @@ TEST(BenchTruthCli, EveryRowIsMeasuredAgainstTheTruthReferenceIncluded) {
     }
     const auto& p = j["profiles"][0];
     EXPECT_TRUE(p["reference_accuracy_vs_truth"].is_object());
+    // What convergence buys: the converged bench probes baked one pass short, the reference
+    // rendered with them. The Cornell box's light needs several passes, so the last one shows.
+    const auto& fewer = j["truth"]["fewer_bounce_passes"];
+    ASSERT_TRUE(fewer["passes"].is_number()) << fewer.dump();
+    EXPECT_GE(fewer["passes"].get<int>(), 3);
+    EXPECT_EQ(fewer["baked_passes"].get<int>(), fewer["passes"].get<int>() - 1);
+    EXPECT_TRUE(fewer["why_not"].is_null());
+    const auto& split = p["truth_error_split"];
+    ASSERT_TRUE(split["reference_one_pass_fewer_flip"].is_number()) << split.dump();
+    EXPECT_GT(split["reference_one_pass_fewer_flip"].get<double>(), 0.0);
+    EXPECT_NE(split["reference_one_pass_fewer_flip"].get<double>(), split["reference_flip"].get<double>());
+    EXPECT_GT(split["reference_one_pass_fewer_relative_mse"].get<double>(), 0.0);
+    EXPECT_NE(r.output.find("one bounce pass fewer (" + std::to_string(fewer["baked_passes"].get<int>()) +
+                            " of " + std::to_string(fewer["passes"].get<int>()) + " passes)"),
+              std::string::npos)
+        << r.output;
     for (const char* k : {"truth", "reference", "profile", "reference_heatmap", "profile_heatmap"})
         EXPECT_TRUE(fs::exists(p["truth_pictures"][k].get<std::string>())) << k;
     const std::string html = benchTruthReadText(dir / "report.html");

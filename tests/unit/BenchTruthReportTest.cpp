@@ -112,6 +112,36 @@ TEST(BenchTruthReport, EachProfilesErrorIsSplitIntoTheReferencesAndTheSwitches) 
     EXPECT_EQ(withSwitches, 1) << "the low profile's switches add to the reference's error";
 }
 
+// Issue 43 item 3's last column: the reference with probes of one bounce pass fewer, shown in
+// the JSON, the Markdown table (with the pass counts) and the HTML; or why it is missing.
+TEST(BenchTruthReport, TheReferenceWithOneBouncePassFewerSitsBesideTheSplit) {
+    BenchResult r = benchTruthReportResult(true);
+    r.truth["fewer_bounce_passes"] = {{"passes", 9}, {"baked_passes", 8}, {"seconds", 1.0}, {"why_not", nullptr}};
+    for (SessionResult& s : r.sessions)
+        s.referenceFewerPassesVsTruth = {true, 0.2, 0.6, 20.0, 0.05};
+    const nlohmann::json j = benchJson(r);
+    for (const auto& p : j["profiles"]) {
+        EXPECT_DOUBLE_EQ(p["truth_error_split"]["reference_one_pass_fewer_flip"].get<double>(), 0.2);
+        EXPECT_DOUBLE_EQ(p["truth_error_split"]["reference_one_pass_fewer_relative_mse"].get<double>(), 0.05);
+    }
+    const std::string md = markdownSummary(r);
+    EXPECT_NE(md.find("reference, one bounce pass fewer (8 of 9 passes): FLIP"), std::string::npos) << md;
+    EXPECT_NE(md.find("| 0.2000 | 5.00e-02 |"), std::string::npos) << md;
+    EXPECT_NE(htmlReport(r).find("With one bounce pass fewer (8 of 9 passes) the reference is at FLIP 0.2000"),
+              std::string::npos);
+
+    // Not baked (e.g. a single-pass bake): the columns say n/a and the note says why.
+    BenchResult none = benchTruthReportResult(true);
+    none.truth["fewer_bounce_passes"] = {{"passes", 1}, {"baked_passes", nullptr}, {"seconds", nullptr},
+                                         {"why_not", "the probes ran 1 bounce pass(es)"}};
+    const nlohmann::json jn = benchJson(none);
+    for (const auto& p : jn["profiles"])
+        EXPECT_TRUE(p["truth_error_split"]["reference_one_pass_fewer_flip"].is_null());
+    const std::string mdn = markdownSummary(none);
+    EXPECT_NE(mdn.find("| n/a | n/a |\n"), std::string::npos) << mdn;
+    EXPECT_NE(mdn.find("not measured here: the probes ran 1 bounce pass(es)"), std::string::npos) << mdn;
+}
+
 TEST(BenchTruthReport, WithoutATruthTheKeysAreNullAndNoSectionIsShown) {
     const BenchResult r = benchTruthReportResult(false);
     const nlohmann::json j = benchJson(r);
