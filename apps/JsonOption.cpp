@@ -1,5 +1,7 @@
 #include "JsonOption.h"
 
+#include "OutputPaths.h"
+
 #include "core/Error.h"
 #include "core/FileIO.h"
 
@@ -26,6 +28,17 @@ void JsonOption::add(CLI::App& cmd, const std::string& what) {
                                  "(the text for people then goes to stderr)")
                   ->expected(0, 1)
                   ->type_name("[FILE]");
+    // The one output-folder rule (OutputPaths.h): FILE's folder is checked once the command
+    // line is parsed, before the command does any work; --mkdir creates it. A command that
+    // writes other files has its own --mkdir (added before this) covering them too.
+    const CLI::Option* mkdir = cmd.get_option_no_throw("--mkdir");
+    if (!mkdir)
+        mkdir = cmd.add_flag("--mkdir", mkdir_,
+                             "Create the missing parent folders of the --json FILE (else a "
+                             "missing folder is an error, before any work)");
+    cmd.parse_complete_callback([this, mkdir] {
+        if (!file().empty()) prepareOutputParent("--json", file(), mkdir->count() > 0);
+    });
 }
 
 void writeJson(const JsonOption& json, const std::string& text) {

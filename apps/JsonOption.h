@@ -25,6 +25,7 @@ public:
 
 private:
     std::string value_;
+    bool mkdir_ = false; // the command's --mkdir when it has none of its own
     const CLI::Option* option_ = nullptr;
 };
 

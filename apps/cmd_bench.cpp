@@ -441,11 +441,11 @@ const RegisterCommand registerBench{
              ->capture_default_str();
          cmd.add_option("--cache-dir", a->cacheDir,
                         "Folder of the baked-probe cache (default: ~/.cache/probebench)");
-         a->json.add(cmd, "The full result");
-         cmd.add_option("--html", a->html, "Write the self-contained HTML report to this file");
          cmd.add_flag("--mkdir", a->mkdir,
                       "Create missing parent folders of --json, --html, --heatmaps (else a "
                       "missing folder is an error, before any work)");
+         a->json.add(cmd, "The full result");
+         cmd.add_option("--html", a->html, "Write the self-contained HTML report to this file");
          cmd.add_option("--heatmaps", a->heatmaps,
                         "Folder for the FLIP heat-map PNGs (default: <json/html name>-heatmaps/)");
          cmd.add_option("--timing", a->timing,

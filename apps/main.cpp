@@ -51,6 +51,9 @@ int main(int argc, char** argv) {
         std::cerr << "probebench: error: "
                   << usageMessage(app, e, std::vector<std::string>(argv + 1, argv + argc)) << "\n";
         return kUsageExit;
+    } catch (const pb::Error& e) { // a check once the line is parsed (JsonOption's output folder)
+        std::cerr << "probebench: error: " << e.what() << "\n";
+        return 1;
     }
     try {
         for (auto& [sub, run] : runners)

@@ -1,7 +1,7 @@
 // One rule for every command that writes a file (apps/OutputPaths.h prepareOutputParent, issue
 // 42 item 5): a missing parent folder is refused before any work, naming the folder, unless
 // --mkdir asks for it; then it is created. bench --html and truth --out-hdr used to create the
-// folder silently while render refused.
+// folder silently while render refused; every other command's --json failed only when writing.
 #include "support/RunCommand.h"
 #include "support/TestEnv.h"
 
@@ -30,7 +30,11 @@ std::vector<Case> cases() {
             {"bench", {"bench", "--scene", "cornell", "--rounds", "1"}, "--html", "b.html"},
             {"truth", {"truth", "--scene", "cornell", "--spp", "1", "--width", "8", "--height", "6"},
              "--out-hdr", "t.pfm"},
-            {"render", {"render", "--scene", "cornell"}, "--out", "r.png"}};
+            {"render", {"render", "--scene", "cornell"}, "--out", "r.png"},
+            // Every --json FILE (JsonOption.h): checked once the line is parsed; commands
+            // without outputs of their own get --mkdir with it.
+            {"profiles_json", {"profiles"}, "--json", "p.json"},
+            {"stress_json", {"stress", "--scene", "cornell"}, "--json", "s.json"}};
 }
 
 } // namespace
@@ -53,6 +57,14 @@ TEST(OutputFolderRuleCli, EveryCommandRefusesAMissingFolderBeforeAnyWork) {
                 << c.name << " worked before refusing (" << work << "):\n" << r.output;
         EXPECT_FALSE(fs::exists(missing.parent_path())) << c.name;
     }
+}
+
+TEST(OutputFolderRuleCli, MkdirCreatesTheJsonFolderOfACommandWithoutOtherOutputs) {
+    const fs::path made = outputDir() / "made_by_profiles" / "p.json";
+    fs::remove_all(outputDir() / "made_by_profiles");
+    const CommandResult r = runProbebench({"profiles", "--json", made.string(), "--mkdir"});
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    EXPECT_TRUE(fs::exists(made)) << r.output;
 }
 
 TEST(OutputFolderRuleCli, MkdirCreatesTheFolder) {
