@@ -261,11 +261,12 @@ int runBench(const BenchArgs& a) {
     if (!a.heatmaps.empty()) checkOutputFolder("--heatmaps", a.heatmaps, a.mkdir);
     scene::Scene s = loadSceneWithOverrides(a.scene);
     std::string probesPath = a.probes;
+    int bakedPasses = 0; // the bench's probes' bounce passes when baked here (0: unknown)
     probes::ProbeSet set =
         a.probes.empty()
             ? bench::benchProbes(s, a.volumes,
                                  a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir,
-                                 &probesPath, progress)
+                                 &probesPath, progress, &bakedPasses)
             : readProbesForScene(a.probes, s, a.force);
     const std::unique_ptr<bench::RespondRun> respond = prepareResponse(a, s, set, probesPath);
 
@@ -324,11 +325,24 @@ int runBench(const BenchArgs& a) {
     bench::RunnerInputs in{&s, &set, view, render::defaultFrameSettings(s), &debug};
     bench::TruthBySize truths;
     bench::FewerBouncePasses fewerPasses;
+    bench::TruthBySize directTruths;
+    scene::Scene directScene;
     if (a.truth) {
         const std::string cacheDir = a.cacheDir.empty() ? bench::defaultProbeCacheDir() : a.cacheDir;
         truths = bench::computeBenchTruth(s, view, plan, {a.truthSpp, 32, cacheDir, progress}, &result.truth);
         in.truth = &truths;
-        fewerPasses = bench::bakeOneFewerBouncePass(s, set, progress);
+        if (bench::hasDirectLight(s)) {
+            directScene = bench::directLightScene(s);
+            directTruths = bench::computeBenchDirectTruth(directScene, view, plan,
+                                                          {a.truthSpp, 1, cacheDir, progress},
+                                                          &result.truth["direct_light"]);
+            in.directTruth = &directTruths;
+            in.directScene = &directScene;
+        } else {
+            result.truth["direct_light"] = {{"why_not", "no sun and no punctual light: the "
+                                                        "rasterizer draws no direct light"}};
+        }
+        fewerPasses = bench::bakeOneFewerBouncePass(s, set, bakedPasses, progress);
         result.truth["fewer_bounce_passes"] = bench::fewerBouncePassesJson(fewerPasses);
         if (fewerPasses.set) in.fewerPassProbes = &*fewerPasses.set;
         else progress("note: no reference with one bounce pass fewer: " + fewerPasses.why);

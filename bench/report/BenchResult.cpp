@@ -34,4 +34,9 @@ void pairDeltas(SessionResult& s) {
     }
 }
 
+TruthErrorSplit sessionTruthSplit(const SessionResult& s) {
+    return splitTruthError(s.profile().vsTruth, s.reference().vsTruth, s.referenceFewerPassesVsTruth,
+                           s.directLightVsTruth);
+}
+
 } // namespace pb::bench

@@ -62,9 +62,14 @@ struct TruthErrorSplit {
     double switchesFlip = 0, switchesRelativeMse = 0;
     bool fewerPassesMeasured = false;
     double fewerPassesFlip = 0, fewerPassesRelativeMse = 0;
+    // Under all of it, when measured: the direct light's own error (the frame without GI of the
+    // sun and punctual lights against their traced light), which no probe set removes.
+    bool directMeasured = false;
+    double directFlip = 0, directRelativeMse = 0;
 };
 inline TruthErrorSplit splitTruthError(const TruthAccuracy& profile, const TruthAccuracy& reference,
-                                       const TruthAccuracy& fewerPasses = {}) {
+                                       const TruthAccuracy& fewerPasses = {},
+                                       const TruthAccuracy& direct = {}) {
     if (!profile.measured || !reference.measured) return {};
     return {true,
             reference.flipMean,
@@ -73,8 +78,14 @@ inline TruthErrorSplit splitTruthError(const TruthAccuracy& profile, const Truth
             profile.relativeMse - reference.relativeMse,
             fewerPasses.measured,
             fewerPasses.flipMean,
-            fewerPasses.relativeMse};
+            fewerPasses.relativeMse,
+            direct.measured,
+            direct.flipMean,
+            direct.relativeMse};
 }
+// The split of session `s`'s profile, with everything the session measured.
+struct SessionResult;
+TruthErrorSplit sessionTruthSplit(const SessionResult& s);
 
 // What the report shows side by side per session: the truth, the reference and the profile
 // frames (PNG files) and their FLIP heat maps against the truth ("" when not written).
@@ -127,6 +138,9 @@ struct SessionResult {
     // `bench --truth`: the reference rendered with the probes of one bounce pass fewer
     // (FewerBouncePasses.h); not measured when they could not be baked.
     TruthAccuracy referenceFewerPassesVsTruth;
+    // `bench --truth`: the frame without GI of the scene's sun and punctual lights alone
+    // against their traced light (BenchTruth.h directLightScene): the direct light's own error.
+    TruthAccuracy directLightVsTruth;
 };
 
 struct BenchSettings {

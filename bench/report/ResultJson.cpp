@@ -175,10 +175,12 @@ nlohmann::json profileJson(const SessionResult& s, const std::string& renderer) 
         j["accuracy"] = accuracyJson(p.accuracy);
         j["accuracy_vs_truth"] = truthJson(p.vsTruth);
         j["reference_accuracy_vs_truth"] = truthJson(s.reference().vsTruth);
-        const TruthErrorSplit split =
-            splitTruthError(p.vsTruth, s.reference().vsTruth, s.referenceFewerPassesVsTruth);
+        const TruthErrorSplit split = sessionTruthSplit(s);
         auto fewer = [&](double v) {
             return split.fewerPassesMeasured ? nlohmann::json(v) : nlohmann::json(nullptr);
+        };
+        auto direct = [&](double v) {
+            return split.directMeasured ? nlohmann::json(v) : nlohmann::json(nullptr);
         };
         j["truth_error_split"] =
             split.measured
@@ -188,7 +190,9 @@ nlohmann::json profileJson(const SessionResult& s, const std::string& renderer) 
                                  {"switches_relative_mse", split.switchesRelativeMse},
                                  {"reference_one_pass_fewer_flip", fewer(split.fewerPassesFlip)},
                                  {"reference_one_pass_fewer_relative_mse",
-                                  fewer(split.fewerPassesRelativeMse)}}
+                                  fewer(split.fewerPassesRelativeMse)},
+                                 {"direct_light_flip", direct(split.directFlip)},
+                                 {"direct_light_relative_mse", direct(split.directRelativeMse)}}
                 : nlohmann::json(nullptr);
         const TruthPictures& tp = s.truthPictures;
         auto file = [](const std::string& f) { return f.empty() ? nlohmann::json(nullptr) : nlohmann::json(f); };

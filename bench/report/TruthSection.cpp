@@ -45,6 +45,15 @@ std::string fewerWhyNot(const BenchResult& r) {
     return why.is_string() ? "; not measured here: " + why.get<std::string>() : std::string();
 }
 
+// The direct-light floor in one sentence (Markdown and HTML).
+std::string directLightText(const TruthErrorSplit& split) {
+    return "The direct light alone (the frame without GI of the sun and punctual lights, sky and "
+           "emission off) is FLIP " + fixed(split.directFlip, 4) + ", rel. MSE " +
+           scientific(split.directRelativeMse) +
+           " from the traced direct light: the rasterizer's own error (shadow map, unshadowed "
+           "punctual lights), under every row's and beyond any probe set's reach.";
+}
+
 std::string truthCell(const std::string& text, const std::string& cls = "") {
     return "<td" + (cls.empty() ? "" : " class=\"" + cls + "\"") + ">" + htmlEscape(text) + "</td>";
 }
@@ -92,9 +101,7 @@ std::string truthHtml(const BenchResult& r) {
               << "</tr>\n";
         }
         h << "</table>\n";
-        if (const TruthErrorSplit split = splitTruthError(s.profile().vsTruth, s.reference().vsTruth,
-                                                          s.referenceFewerPassesVsTruth);
-            split.measured) {
+        if (const TruthErrorSplit split = sessionTruthSplit(s); split.measured) {
             h << "<p class=\"note\">" << htmlEscape(s.session.profile.name) << "'s error against the truth: "
               << "the reference's own FLIP " << fixed(split.referenceFlip, 4) << ", rel. MSE "
               << htmlEscape(scientific(split.referenceRelativeMse)) << " (the probes); its switches add FLIP "
@@ -104,6 +111,8 @@ std::string truthHtml(const BenchResult& r) {
                 h << " With one bounce pass fewer" << htmlEscape(passesText(r)) << " the reference is at FLIP "
                   << fixed(split.fewerPassesFlip, 4) << ", rel. MSE "
                   << htmlEscape(scientific(split.fewerPassesRelativeMse)) << ": what the last pass buys.";
+            if (split.directMeasured)
+                h << " " << htmlEscape(directLightText(split));
             h << "</p>\n";
         }
         const TruthPictures& p = s.truthPictures;
@@ -132,7 +141,7 @@ std::string truthMarkdown(const BenchResult& r) {
             return a.measured ? fixed(a.flipMean, 4) + " | " + psnrText(a.psnr) + " | " + scientific(a.relativeMse)
                               : std::string("n/a | n/a | n/a");
         };
-        const TruthErrorSplit split = splitTruthError(p, ref, s.referenceFewerPassesVsTruth);
+        const TruthErrorSplit split = sessionTruthSplit(s);
         const std::string added = split.measured ? signedFixed(split.switchesFlip, 4) + " | " +
                                                        signedScientific(split.switchesRelativeMse)
                                                  : std::string("n/a | n/a");
@@ -148,6 +157,14 @@ std::string truthMarkdown(const BenchResult& r) {
            "The last columns: the reference with probes baked one bounce pass short, so the "
            "difference to the reference's columns is what the bake's last pass buys"
         << fewerWhyNot(r) << ".\n";
+    std::string lastSize;
+    for (const SessionResult& s : r.sessions) { // one line per size: the floor is the view's
+        const std::string size = std::to_string(s.session.width) + "x" + std::to_string(s.session.height);
+        const TruthErrorSplit split = sessionTruthSplit(s);
+        if (!split.directMeasured || size == lastSize) continue;
+        lastSize = size;
+        out << "\nAt " << size << ": " << directLightText(split) << "\n";
+    }
     return out.str();
 }
 

@@ -10,57 +10,97 @@
 
 namespace pb::bench {
 
-TruthBySize computeBenchTruth(const scene::Scene& s, const scene::View& view, const BenchPlan& plan,
-                              const BenchTruthOptions& o, nlohmann::json* info) {
+namespace {
+
+// Per session size: the truth of `s` with `base`'s depth and spp, from the cache or traced
+// (progress per decile); `sizes` receives each size's noise, time and cache file.
+TruthBySize traceEverySize(const scene::Scene& s, const scene::View& view, const BenchPlan& plan,
+                           truth::TruthSettings base, const BenchTruthOptions& o,
+                           const std::string& what, nlohmann::json& sizes) {
     TruthBySize out;
-    nlohmann::json sizes = nlohmann::json::array();
+    sizes = nlohmann::json::array();
     for (const Session& session : plan.sessions) {
         const std::pair<int, int> key{session.width, session.height};
         if (out.count(key)) continue;
-        truth::TruthSettings ts;
+        truth::TruthSettings ts = base;
         ts.width = session.width;
         ts.height = session.height;
-        ts.spp = o.spp;
-        ts.maxDepth = o.maxDepth;
         const std::uint64_t hash = truth::truthInputHash(s, view, ts);
         std::optional<truth::TruthResult> r = truth::loadCachedTruth(o.cacheDir, hash, ts);
         const bool cached = r.has_value();
         const std::string size = std::to_string(ts.width) + "x" + std::to_string(ts.height);
         if (!r) {
-            if (o.progress) o.progress("path-tracing the truth at " + size + ", " + std::to_string(ts.spp) + " spp");
+            if (o.progress) o.progress("path-tracing " + what + " at " + size + ", " + std::to_string(ts.spp) + " spp");
             int lastDecile = -1;
             r = truth::renderTruth(s, view, ts, [&](int done, int total) {
                 int decile = total > 0 ? 10 * done / total : 10;
                 if (decile > lastDecile && o.progress && decile < 10)
-                    o.progress("truth " + size + ": " + std::to_string(decile * 10) + "%");
+                    o.progress(what + " " + size + ": " + std::to_string(decile * 10) + "%");
                 lastDecile = decile;
             });
             truth::storeCachedTruth(o.cacheDir, hash, *r);
         }
-        char line[200];
-        std::snprintf(line, sizeof line, "truth %s: mean luminance %.5g +- %.2g (%.3f%%)%s", size.c_str(),
-                      r->noise.meanLuminance, r->noise.standardError, 100.0 * r->noise.relativeStandardError,
-                      cached ? ", cached" : "");
+        char line[240];
+        std::snprintf(line, sizeof line, "%s %s: mean luminance %.5g +- %.2g (%.3f%%)%s", what.c_str(),
+                      size.c_str(), r->noise.meanLuminance, r->noise.standardError,
+                      100.0 * r->noise.relativeStandardError, cached ? ", cached" : "");
         if (o.progress) o.progress(line);
         if (!r->note.empty() && o.progress) o.progress("note: " + r->note);
+        auto known = [&](double v) { return r->noise.varianceKnown ? nlohmann::json(v) : nlohmann::json(nullptr); };
         sizes.push_back({{"width", ts.width},
                          {"height", ts.height},
                          {"mean_luminance", r->noise.meanLuminance},
-                         {"standard_error", r->noise.varianceKnown ? nlohmann::json(r->noise.standardError) : nlohmann::json(nullptr)},
-                         {"relative_standard_error",
-                          r->noise.varianceKnown ? nlohmann::json(r->noise.relativeStandardError) : nlohmann::json(nullptr)},
-                         {"pixel_relative_standard_error",
-                          r->noise.varianceKnown ? nlohmann::json(r->noise.pixelRelativeStandardError) : nlohmann::json(nullptr)},
-                         {"relative_mse_noise_floor",
-                          r->noise.varianceKnown ? nlohmann::json(r->noise.relativeMseNoiseFloor) : nlohmann::json(nullptr)},
+                         {"standard_error", known(r->noise.standardError)},
+                         {"relative_standard_error", known(r->noise.relativeStandardError)},
+                         {"pixel_relative_standard_error", known(r->noise.pixelRelativeStandardError)},
+                         {"relative_mse_noise_floor", known(r->noise.relativeMseNoiseFloor)},
                          {"seconds", r->seconds},
                          {"cached", cached},
                          {"cache_file", truth::truthCachePath(o.cacheDir, hash)},
                          {"note", r->note.empty() ? nlohmann::json(nullptr) : nlohmann::json(r->note)}});
         out.emplace(key, std::move(r->hdr));
     }
+    return out;
+}
+
+} // namespace
+
+TruthBySize computeBenchTruth(const scene::Scene& s, const scene::View& view, const BenchPlan& plan,
+                              const BenchTruthOptions& o, nlohmann::json* info) {
+    truth::TruthSettings ts;
+    ts.spp = o.spp;
+    ts.maxDepth = o.maxDepth;
+    nlohmann::json sizes;
+    TruthBySize out = traceEverySize(s, view, plan, ts, o, "truth", sizes);
     if (info)
         *info = {{"spp", o.spp}, {"max_depth", o.maxDepth}, {"seed", 1}, {"sizes", sizes}, {"heatmap_scale", nullptr}};
+    return out;
+}
+
+scene::Scene directLightScene(const scene::Scene& s) {
+    scene::Scene d = s;
+    d.sky.radiance = glm::vec3(0.0f);
+    for (scene::Material& m : d.materials) {
+        m.emissive = glm::vec3(0.0f);
+        m.emissiveTexture = -1;
+    }
+    return d;
+}
+
+bool hasDirectLight(const scene::Scene& s) {
+    const bool sun = s.sun.enabled && s.sun.intensity * s.sun.color != glm::vec3(0.0f);
+    return sun || !s.lights.empty();
+}
+
+TruthBySize computeBenchDirectTruth(const scene::Scene& direct, const scene::View& view,
+                                    const BenchPlan& plan, const BenchTruthOptions& o,
+                                    nlohmann::json* info) {
+    truth::TruthSettings ts;
+    ts.spp = std::min(o.spp, kDirectTruthSpp);
+    ts.maxDepth = 1;
+    nlohmann::json sizes;
+    TruthBySize out = traceEverySize(direct, view, plan, ts, o, "direct-light truth", sizes);
+    if (info) *info = {{"spp", ts.spp}, {"max_depth", 1}, {"sizes", sizes}};
     return out;
 }
 

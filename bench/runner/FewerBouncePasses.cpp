@@ -8,6 +8,7 @@
 namespace pb::bench {
 
 FewerBouncePasses bakeOneFewerBouncePass(const scene::Scene& s, const probes::ProbeSet& set,
+                                         int knownPasses,
                                          const std::function<void(const std::string&)>& progress) {
     FewerBouncePasses out;
     const auto t0 = std::chrono::steady_clock::now();
@@ -17,8 +18,8 @@ FewerBouncePasses bakeOneFewerBouncePass(const scene::Scene& s, const probes::Pr
         out.why = why;
         return out;
     }
-    out.passes = set.settings.bounces;
-    if (out.passes == 0) { // converged: count the passes of the first scenario, as rendered
+    out.passes = set.settings.bounces > 0 ? set.settings.bounces : knownPasses;
+    if (out.passes <= 0) { // converged: count the passes of the first scenario, as rendered
         if (progress) progress("baking the probes' first scenario again to count its bounce passes");
         probes::BakeRequest count = *r;
         count.onlyScenarios = {0};

@@ -21,10 +21,12 @@ struct FewerBouncePasses {
     double seconds = 0.0; // the bakes this took (a converged set is baked once more to count)
 };
 
-// A converged set (bounces 0) does not record how many passes it ran, so it is baked once
-// more (its first scenario only) to count them. `progress` gets a line per bake. Never throws
-// for probes it cannot rebuild: `why` says so (a bake error still throws pb::Error).
+// A converged set (bounces 0) does not record how many passes it ran: `knownPasses` (> 0) when
+// the caller baked it, else it is baked once more (its first scenario only) to count them.
+// `progress` gets a line per bake. Never throws for probes it cannot rebuild: `why` says so (a
+// bake error still throws pb::Error).
 FewerBouncePasses bakeOneFewerBouncePass(const scene::Scene& s, const probes::ProbeSet& set,
+                                         int knownPasses,
                                          const std::function<void(const std::string&)>& progress);
 
 // What the JSON's truth.fewer_bounce_passes shows: passes, the baked passes, seconds or why not.

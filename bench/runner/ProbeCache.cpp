@@ -35,7 +35,8 @@ probes::BakeOptions benchBakeOptions(const std::string& volumes) {
 
 probes::ProbeSet benchProbes(const scene::Scene& s, const std::string& volumes,
                              const std::string& cacheDir, std::string* pathOut,
-                             const std::function<void(const std::string&)>& progress) {
+                             const std::function<void(const std::string&)>& progress,
+                             int* passes) {
     const probes::BakeOptions o = benchBakeOptions(volumes);
     const std::string path = probes::probeCachePath(s, o, cacheDir);
     if (pathOut) *pathOut = path;
@@ -57,7 +58,9 @@ probes::ProbeSet benchProbes(const scene::Scene& s, const std::string& volumes,
         };
         hooks.note = [&](const std::string& note) { progress("note: " + note); };
     }
-    return probes::obtainProbes(s, o, path, probes::Reuse::PlacementAndBake, hooks).set;
+    probes::ObtainedProbes got = probes::obtainProbes(s, o, path, probes::Reuse::PlacementAndBake, hooks);
+    if (passes) *passes = got.baked && !got.stats.passes.empty() ? got.stats.passes.front() : 0;
+    return std::move(got.set);
 }
 
 } // namespace pb::bench

@@ -21,9 +21,11 @@ std::string defaultProbeCacheDir();
 probes::BakeOptions benchBakeOptions(const std::string& volumes);
 
 // The cached or freshly baked probes; `path` receives the cache file, `progress` a line when
-// a placement ran and when a bake starts.
+// a placement ran and when a bake starts, `passes` the first scenario's bounce passes when
+// baked here (0 when read from the cache: the file does not record them).
 probes::ProbeSet benchProbes(const scene::Scene& s, const std::string& volumes,
                              const std::string& cacheDir, std::string* path = nullptr,
-                             const std::function<void(const std::string&)>& progress = {});
+                             const std::function<void(const std::string&)>& progress = {},
+                             int* passes = nullptr);
 
 } // namespace pb::bench

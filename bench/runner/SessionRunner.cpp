@@ -228,6 +228,23 @@ TruthAccuracy fewerPassAccuracy(const Variant& reference, const RunnerInputs& in
     return a;
 }
 
+// The frame without GI of the direct-light scene (sun and punctual lights only) against its
+// traced direct light: the rasterizer's own error, under every probe set's.
+TruthAccuracy directLightAccuracy(const RunnerInputs& in, const render::RenderView& rv,
+                                  const image::ImageF& directTruth, double pixelsPerDegree) {
+    const std::uint64_t mark = in.debug ? in.debug->mark() : 0;
+    render::FrameSettings settings = in.settings; // the frame's exposure, no sky ambient
+    settings.ambientUp = settings.ambientDown = glm::vec3(0.0f);
+    render::FrameRenderer renderer(*in.directScene, settings, render::GiOptions{});
+    renderer.render(rv);
+    const TruthAccuracy a = truthAccuracyOf(renderer, directTruth,
+                                            truth::tonemap(directTruth, in.settings.exposure),
+                                            pixelsPerDegree);
+    if (std::string why = glErrorText(in.debug, mark); !why.empty())
+        throw Error("bench --truth: the direct-light frame: " + why);
+    return a;
+}
+
 // One session's result from its group's timed variants: its own variants (ids, labels, roles)
 // with the shared measurements, then accuracy against its reference and its deltas.
 SessionResult finishSession(const Session& session, const std::vector<size_t>& slots,
@@ -278,6 +295,13 @@ SessionResult finishSession(const Session& session, const std::vector<size_t>& s
         if (in.fewerPassProbes && out.reference().ok())
             out.referenceFewerPassesVsTruth =
                 fewerPassAccuracy(out.reference().variant, in, rv, it->second, o.pixelsPerDegree);
+        if (in.directTruth && in.directScene) {
+            auto direct = in.directTruth->find({session.width, session.height});
+            if (direct == in.directTruth->end())
+                throw Error("bench --truth: no direct-light truth computed at " +
+                            std::to_string(session.width) + "x" + std::to_string(session.height));
+            out.directLightVsTruth = directLightAccuracy(in, rv, direct->second, o.pixelsPerDegree);
+        }
     }
     pairDeltas(out);
     return out;

@@ -42,6 +42,11 @@ struct RunnerInputs {
     // With `truth`: the probes with one bounce pass fewer (FewerBouncePasses.h); the reference
     // variant renders with them too, into SessionResult::referenceFewerPassesVsTruth.
     const probes::ProbeSet* fewerPassProbes = nullptr;
+    // With `truth`: the direct-light truth (BenchTruth.h computeBenchDirectTruth) of
+    // `directScene`; the frame without GI of that scene against it goes to
+    // SessionResult::directLightVsTruth.
+    const TruthBySize* directTruth = nullptr;
+    const scene::Scene* directScene = nullptr;
 };
 
 // `pictures` (optional) receives, parallel to the sessions, the profile variant's per-pixel

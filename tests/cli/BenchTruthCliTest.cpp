@@ -62,6 +62,9 @@ TEST(BenchTruthCli, EveryRowIsMeasuredAgainstTheTruthReferenceIncluded) {
     EXPECT_GT(split["reference_one_pass_fewer_flip"].get<double>(), 0.0);
     EXPECT_NE(split["reference_one_pass_fewer_flip"].get<double>(), split["reference_flip"].get<double>());
     EXPECT_GT(split["reference_one_pass_fewer_relative_mse"].get<double>(), 0.0);
+    // The Cornell box has no sun and no punctual light: no direct-light floor, and why.
+    EXPECT_TRUE(j["truth"]["direct_light"]["why_not"].is_string()) << j["truth"].dump();
+    EXPECT_TRUE(split["direct_light_flip"].is_null());
     EXPECT_NE(r.output.find("one bounce pass fewer (" + std::to_string(fewer["baked_passes"].get<int>()) +
                             " of " + std::to_string(fewer["passes"].get<int>()) + " passes)"),
               std::string::npos)
@@ -71,6 +74,28 @@ TEST(BenchTruthCli, EveryRowIsMeasuredAgainstTheTruthReferenceIncluded) {
     const std::string html = benchTruthReadText(dir / "report.html");
     EXPECT_NE(html.find("Against the ground truth"), std::string::npos);
     EXPECT_NE(html.find("alt=\"truth\" src=\"data:image/png;base64,"), std::string::npos);
+}
+
+// Where the sun shines, the direct light's own error is measured: the frame without GI of the
+// sun alone against its traced light (courtyard: a shadow-mapped sun over open ground).
+TEST(BenchTruthCli, ASunlitSceneGetsTheDirectLightFloor) {
+    const fs::path dir = outputDir();
+    auto args = tinyTruthBench(dir);
+    *(std::find(args.begin(), args.end(), "cornell")) = "courtyard";
+    args.erase(std::find(args.begin(), args.end(), "--ablate"));
+    auto r = runProbebench(args);
+    ASSERT_EQ(r.exitCode, 0) << r.output;
+    auto j = nlohmann::json::parse(benchTruthReadText(dir / "out.json"));
+    const auto& direct = j["truth"]["direct_light"];
+    ASSERT_TRUE(direct.contains("sizes")) << direct.dump();
+    EXPECT_EQ(direct["max_depth"], 1);
+    EXPECT_GT(direct["sizes"][0]["mean_luminance"].get<double>(), 0.0) << "the sun lights the ground";
+    const auto& split = j["profiles"][0]["truth_error_split"];
+    ASSERT_TRUE(split["direct_light_flip"].is_number()) << split.dump();
+    // Not zero: a shadow map is not a shadow ray. Not the whole error either: the GI is missing.
+    EXPECT_GT(split["direct_light_flip"].get<double>(), 0.0);
+    EXPECT_LT(split["direct_light_flip"].get<double>(), 0.5);
+    EXPECT_NE(r.output.find("At 64x36: The direct light alone"), std::string::npos) << r.output;
 }
 
 TEST(BenchTruthCli, TruthSppZeroIsAOneLineError) {

@@ -117,16 +117,26 @@ TEST(BenchTruthReport, EachProfilesErrorIsSplitIntoTheReferencesAndTheSwitches) 
 TEST(BenchTruthReport, TheReferenceWithOneBouncePassFewerSitsBesideTheSplit) {
     BenchResult r = benchTruthReportResult(true);
     r.truth["fewer_bounce_passes"] = {{"passes", 9}, {"baked_passes", 8}, {"seconds", 1.0}, {"why_not", nullptr}};
-    for (SessionResult& s : r.sessions)
+    for (SessionResult& s : r.sessions) {
         s.referenceFewerPassesVsTruth = {true, 0.2, 0.6, 20.0, 0.05};
+        s.directLightVsTruth = {true, 0.03, 0.4, 30.0, 0.002};
+    }
     const nlohmann::json j = benchJson(r);
     for (const auto& p : j["profiles"]) {
+        EXPECT_DOUBLE_EQ(p["truth_error_split"]["direct_light_flip"].get<double>(), 0.03);
+        EXPECT_DOUBLE_EQ(p["truth_error_split"]["direct_light_relative_mse"].get<double>(), 0.002);
         EXPECT_DOUBLE_EQ(p["truth_error_split"]["reference_one_pass_fewer_flip"].get<double>(), 0.2);
         EXPECT_DOUBLE_EQ(p["truth_error_split"]["reference_one_pass_fewer_relative_mse"].get<double>(), 0.05);
     }
     const std::string md = markdownSummary(r);
     EXPECT_NE(md.find("reference, one bounce pass fewer (8 of 9 passes): FLIP"), std::string::npos) << md;
     EXPECT_NE(md.find("| 0.2000 | 5.00e-02 |"), std::string::npos) << md;
+    // The direct-light floor once per size, in both reports.
+    const std::string floor = "The direct light alone (the frame without GI of the sun and punctual "
+                              "lights, sky and emission off) is FLIP 0.0300, rel. MSE 2.00e-03";
+    EXPECT_NE(md.find("At 64x36: " + floor), std::string::npos) << md;
+    EXPECT_EQ(md.find(floor), md.rfind(floor)) << "one line per size, not per profile\n" << md;
+    EXPECT_NE(htmlReport(r).find(floor), std::string::npos);
     EXPECT_NE(htmlReport(r).find("With one bounce pass fewer (8 of 9 passes) the reference is at FLIP 0.2000"),
               std::string::npos);
 
