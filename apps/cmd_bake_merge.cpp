@@ -2,6 +2,7 @@
 // I/N`) into the probe file one bake of the same inputs writes, byte for byte
 // (renderer/probes/store/ProbeFileParts.h says why it is exact and what it checks).
 #include "CommandRegistry.h"
+#include "OutputPaths.h"
 #include "core/Error.h"
 #include "probes/store/ProbeFile.h"
 #include "probes/store/ProbeFileParts.h"
@@ -14,9 +15,11 @@ namespace {
 struct BakeMergeArgs {
     std::vector<std::string> parts;
     std::string out;
+    bool mkdir = false; // --mkdir: create --out's folder
 };
 
 int runBakeMerge(const BakeMergeArgs& a) {
+    prepareOutputParent("--out", a.out, a.mkdir); // OutputPaths.h: before reading any part
     std::vector<probes::ProbeFilePart> parts;
     for (const std::string& path : a.parts)
         parts.push_back(probes::readProbeFilePart(path));
@@ -43,6 +46,7 @@ const RegisterCommand registerBakeMerge{{
                        "The probe file to write (identical to the one a single bake of the same "
                        "inputs writes)")
             ->required();
+        cmd.add_flag("--mkdir", a->mkdir, "Create the missing parent folder of --out (else a missing folder is an error, before any work)");
         return [a] { return runBakeMerge(*a); };
     },
 }};

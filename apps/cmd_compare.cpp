@@ -1,6 +1,7 @@
 // probebench compare: image-error metrics (PSNR, SSIM, LDR-FLIP) of a test PNG against a
 // reference PNG, optionally with a FLIP heat map. GL-free.
 #include "CommandRegistry.h"
+#include "OutputPaths.h"
 #include "JsonOption.h"
 #include "NumberChecks.h"
 #include "core/Error.h"
@@ -18,6 +19,7 @@ namespace {
 struct CompareArgs {
     std::string test, reference, heatmap;
     double ppd = 67.0;
+    bool mkdir = false; // --mkdir: create --heatmap's and --json's folders
     JsonOption json;
 };
 
@@ -26,6 +28,7 @@ std::string size(const image::Image8& img) {
 }
 
 int runCompare(const CompareArgs& a) {
+    if (!a.heatmap.empty()) prepareOutputParent("--heatmap", a.heatmap, a.mkdir); // OutputPaths.h
     const image::Image8 test = image::readPng(a.test);
     const image::Image8 reference = image::readPng(a.reference);
     if (test.width != reference.width || test.height != reference.height)
@@ -89,6 +92,7 @@ const RegisterCommand registerCompare{{
         cmd.add_option("--heatmap", a->heatmap,
                        "Write the per-pixel FLIP error as a PNG heat map (black = no error, "
                        "pale yellow = 1)");
+        cmd.add_flag("--mkdir", a->mkdir, "Create the missing parent folder of --heatmap and --json (else a missing folder is an error, before any work)");
         a->json.add(cmd, "The metrics (psnr_db is null for identical images, see \"identical\")");
         return [a] { return runCompare(*a); };
     },

@@ -3,6 +3,7 @@
 // `bench --respond`); this command reads its options, the scene and the probe file, and writes
 // the JSON, the frames and the report.
 #include "CommandRegistry.h"
+#include "OutputPaths.h"
 #include "JsonOption.h"
 #include "PlatformOptions.h"
 #include "ProbeOptions.h"
@@ -24,6 +25,7 @@ namespace pb::app {
 namespace {
 
 struct RespondArgs {
+    bool mkdir = false; // --mkdir: create --out-dir's and --json's parent folders
     SceneArgs scene;
     platform::PlatformOptions platform;
     std::string probes;
@@ -42,6 +44,7 @@ void respondProgress(const std::string& line) {
 }
 
 int go(RespondArgs& a) {
+    if (!a.outDir.empty()) checkOutputFolder("--out-dir", a.outDir, a.mkdir); // OutputPaths.h
     // A profile's update budget applies unless the command line gives one.
     const profile::PlatformProfile platformProfile = resolveProfile(a.profileArgs);
     bench::RespondBudget budget{
@@ -129,6 +132,7 @@ const RegisterCommand registerRespond{
          cmd.add_option("--cache-dir", a->run.cacheDir,
                         "Where the converged re-bake is cached (default: the probe cache folder, "
                         "as bench and truth use)");
+         cmd.add_flag("--mkdir", a->mkdir, "Create the missing parent folder of --out-dir and --json (else a missing folder is an error, before any work)");
          a->json.add(cmd, "schedules[] with t95_frames, t99_frames, overshoot, flicker, far_drift, "
                           "rays_per_frame, cpu_ms_per_frame, bytes_uploaded, error_curve");
          return [a] { return go(*a); };

@@ -3,6 +3,7 @@
 // HTML report and Markdown summary (bench/README.md "Sweeps"; bench/sweep/ holds the GL-free
 // plan, state and merge, SweepEngines.h the two engines).
 #include "CommandRegistry.h"
+#include "OutputPaths.h"
 #include "bench/sweep/SweepEngines.h"
 #include "bench/sweep/SweepFinish.h"
 #include "bench/gate_gl/WorkerProcess.h"
@@ -23,6 +24,7 @@ struct SweepArgs {
     std::string plan, engine = "local", out, partition, binary;
     int maxParallel = 0, chunk = 1;
     double pollSeconds = 2.0;
+    bool mkdir = false; // --mkdir: create --out's parent folder
     bool resume = false;
 };
 
@@ -94,6 +96,7 @@ int runSweep(const SweepArgs& a) {
         throw UsageError("--poll-seconds: must be in (0, 600]");
     if (!a.partition.empty() && a.engine != "slurm")
         throw Error("--partition: applies to --engine slurm only");
+    checkOutputFolder("--out", a.out, a.mkdir); // OutputPaths.h: before any job runs
     const sweep::SweepPlan plan = sweep::loadSweepPlan(a.plan);
     sweep::PlanState fresh;
     fresh.name = plan.name;
@@ -162,6 +165,7 @@ const RegisterCommand registerSweep{{
                        "The output folder: new or empty, or this plan's with --resume (on a "
                        "cluster: a shared filesystem path every node sees)")
             ->required();
+        cmd.add_flag("--mkdir", a->mkdir, "Create the missing parent folder of --out (else a missing folder is an error, before any work)");
         cmd.add_option("--partition", a->partition, "Slurm partition (default: the cluster's)");
         cmd.add_option("--max-parallel", a->maxParallel,
                        "Tasks running at once (local default 1; slurm: the array's %M, default "

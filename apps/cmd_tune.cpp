@@ -6,6 +6,7 @@
 // memory, FLIP), writes the winner as a profile inheriting the base, loads it back and
 // re-measures it. The search itself is bench/tune (GL-free); this file wires it to GL.
 #include "CommandRegistry.h"
+#include "OutputPaths.h"
 #include "DeviceOptions.h"
 #include "JsonOption.h"
 #include "ProbeOptions.h"
@@ -48,6 +49,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct TuneArgs {
+    bool mkdir = false; // --mkdir: create --out's and --json's folders
     bool force = false; // --probes baked for another scene
     SceneArgs scene;
     platform::PlatformOptions platform;
@@ -317,6 +319,7 @@ void printComparison(const bench::TuneCandidate& found, const bench::TuneMeasure
 
 int runTune(const TuneArgs& a) {
     validateTune(a);
+    prepareOutputParent("--out", a.out, a.mkdir); // the one rule (OutputPaths.h)
     const profile::ProfileSearch search = profileSearch();
     profile::PlatformProfile base = profile::loadProfile(a.base, search);
     for (const std::string& kv : a.sets)
@@ -533,6 +536,7 @@ const RegisterCommand registerTune{
              ->capture_default_str();
          cmd.add_option("--ppd", a->ppd, "FLIP viewing condition, pixels per degree")
              ->capture_default_str();
+         cmd.add_flag("--mkdir", a->mkdir, "Create the missing parent folder of --out and --json (else a missing folder is an error, before any work)");
          a->json.add(cmd, "The whole search");
          return [a] {
              const StdoutToStderr textToStderr(a->json.toStdout());

@@ -34,7 +34,15 @@ std::vector<Case> cases() {
             // Every --json FILE (JsonOption.h): checked once the line is parsed; commands
             // without outputs of their own get --mkdir with it.
             {"profiles_json", {"profiles"}, "--json", "p.json"},
-            {"stress_json", {"stress", "--scene", "cornell"}, "--json", "s.json"}};
+            {"stress_json", {"stress", "--scene", "cornell"}, "--json", "s.json"},
+            // The other commands' own outputs: refused before reading any input (the inputs
+            // named here do not exist, so any work would fail on them first).
+            {"tune", {"tune", "--scene", "cornell", "--budget-ms", "10", "--budget-mib", "64", "--probes", "none.probes"},
+             "--out", "t.toml"},
+            {"respond", {"respond", "--scene", "cornell", "--probes", "none.probes"}, "--out-dir", "r"},
+            {"compare", {"compare", "--test", "none.png", "--reference", "none.png"}, "--heatmap", "h.png"},
+            {"sweep", {"sweep", "--plan", "none.toml"}, "--out", "s"},
+            {"bake_merge", {"bake-merge", "none.part"}, "--out", "m.probes"}};
 }
 
 } // namespace
