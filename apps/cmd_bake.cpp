@@ -215,6 +215,8 @@ void printReport(const BakeArgs& a, const BakeReport& r) {
         writeJson(a.json, bakeReportJson(r).dump(2) + "\n");
     else
         std::cout << bakeReportText(r);
+    // Exit 0 still: the probes are usable, only noisier than asked (issue 42 item 3).
+    if (const std::string w = noiseTargetWarning(r); !w.empty()) std::cerr << "warning: " << w << "\n";
 }
 
 // --write-volumes without --out: only the placement.

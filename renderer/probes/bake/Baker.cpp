@@ -19,6 +19,8 @@
 #include "probes/store/SparseStorage.h"
 
 #include <algorithm>
+#include <map>
+#include <tuple>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -49,6 +51,37 @@ struct ProbeIndex {
         return {int(v), int(flat - first[v])};
     }
 };
+
+// BakeStats::noisiestRegion: the volume with most of `above` (flat indices, ProbeIndex), and
+// its aligned block of kNoisyBlockCells^3 cells with most of them.
+std::optional<BakeStats::NoisyRegion> noisiestRegion(const std::vector<ProbeVolume>& vols,
+                                                     const std::vector<std::size_t>& above) {
+    if (above.empty()) return std::nullopt;
+    const ProbeIndex index(vols);
+    std::vector<std::size_t> perVolume(vols.size(), 0);
+    for (std::size_t flat : above)
+        ++perVolume[std::size_t(index.locate(flat).first)];
+    const std::size_t v = std::size_t(
+        std::max_element(perVolume.begin(), perVolume.end()) - perVolume.begin());
+    std::map<std::tuple<int, int, int>, std::size_t> blocks;
+    for (std::size_t flat : above) {
+        const auto [vol, probe] = index.locate(flat);
+        if (std::size_t(vol) != v) continue;
+        const glm::ivec3 b = vols[v].probeCoords(probe) / kNoisyBlockCells;
+        ++blocks[{b.x, b.y, b.z}];
+    }
+    const auto best = std::max_element(blocks.begin(), blocks.end(), [](const auto& a, const auto& b) {
+        return a.second < b.second;
+    });
+    const auto [bx, by, bz] = best->first;
+    BakeStats::NoisyRegion r;
+    r.volume = vols[v].name;
+    r.from = glm::ivec3(bx, by, bz) * kNoisyBlockCells;
+    r.to = glm::min(r.from + glm::ivec3(kNoisyBlockCells - 1), vols[v].counts - glm::ivec3(1));
+    r.probes = best->second;
+    r.probesInVolume = perVolume[v];
+    return r;
+}
 
 QuantisationError measureQuantisation(const std::vector<float>& before, const ProbeTexture& after,
                                       QuantisationError e) {
@@ -631,6 +664,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
         st.seconds = since(t0);
         st.quantisation = std::move(errors);
         run.noise.summarise(st);
+        st.noisiestRegion = noisiestRegion(run.set.volumes, run.noise.aboveTargetProbes());
         st.passes = run.passes;
         st.lastChange = run.lastChange;
         st.freeSpaceCandidates = tiles.candidates;

@@ -18,6 +18,7 @@
 #include "scene/Scene.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace pb::probes {
@@ -79,6 +80,10 @@ struct BakePhase {
     double wallSeconds = 0.0, cpuSeconds = 0.0; // cpu: the whole process, all threads
 };
 
+// The edge, in cells, of the block BakeStats::noisiestRegion names: small enough to point at a
+// place (a corner, a doorway), large enough to gather a noisy region's probes.
+inline constexpr int kNoisyBlockCells = 4;
+
 struct BakeStats {
     // invalidProbes: inside geometry, as the geometry pass classified them (sparse storage
     // then stores none of them, and marks its absent probes invalid too: ProbeCounts.h).
@@ -103,6 +108,15 @@ struct BakeStats {
     std::size_t noisyProbePasses = 0, tracedProbePasses = 0;
     std::size_t probesAboveTarget = 0, tracedProbes = 0; // tracedProbes: over the scenarios
     std::uint64_t extraRoundRays = 0;
+    // Where the probes above the target after the round cap gather: the volume with most of
+    // them and, in it, the block of kNoisyBlockCells^3 cells holding most (cells inclusive).
+    // Empty when every probe met the target (or there was none).
+    struct NoisyRegion {
+        std::string volume;
+        glm::ivec3 from{0}, to{0};
+        std::size_t probes = 0, probesInVolume = 0;
+    };
+    std::optional<NoisyRegion> noisiestRegion;
     // The bounce passes each baked scenario ran (BakeSettings::bounces; 0 asks until the
     // light converges), and the share of its light the last pass added (1 for one pass).
     std::vector<int> passes;

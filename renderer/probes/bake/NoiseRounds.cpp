@@ -117,7 +117,10 @@ void NoiseRounds::finishScenario() {
         if (!traced_[p]) continue;
         const float n = finalNoise(p, 0.0f, 0.0f);
         finals_.push_back(n);
-        if (active() && n > target_) ++aboveAfterAll_;
+        if (active() && n > target_) {
+            ++aboveAfterAll_;
+            aboveFlat_.push_back(p);
+        }
     }
 }
 

@@ -58,6 +58,9 @@ public:
     // Records every traced probe's final noise.
     void finishScenario();
     void summarise(BakeStats& stats) const;
+    // The flat indices of the probes above the target after every pass and round (once per
+    // scenario that left them there).
+    const std::vector<std::size_t>& aboveTargetProbes() const { return aboveFlat_; }
 
     std::uint64_t extraRays = 0; // primary rays of rounds after the first
 
@@ -75,6 +78,7 @@ private:
     std::vector<double> carriedVar_, carriedMean_;
     std::vector<std::uint8_t> traced_;
     std::vector<float> finals_;
+    std::vector<std::size_t> aboveFlat_;
     std::size_t multiRound_ = 0, probePasses_ = 0, aboveAfterAll_ = 0;
 };
 

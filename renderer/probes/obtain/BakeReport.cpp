@@ -245,7 +245,14 @@ nlohmann::json bakeReportJson(const BakeReport& r) {
                       {"probe_passes_with_more_rounds", r.stats->noisyProbePasses},
                       {"probes", r.stats->tracedProbes},
                       {"probes_above_target", r.stats->probesAboveTarget},
-                      {"extra_round_rays", r.stats->extraRoundRays}};
+                      {"extra_round_rays", r.stats->extraRoundRays},
+                      {"above_target_region", nullptr}};
+        if (const auto& g = r.stats->noisiestRegion)
+            j["noise"]["above_target_region"] = {{"volume", g->volume},
+                                                 {"cells_from", {g->from.x, g->from.y, g->from.z}},
+                                                 {"cells_to", {g->to.x, g->to.y, g->to.z}},
+                                                 {"probes", g->probes},
+                                                 {"probes_in_volume", g->probesInVolume}};
         nlohmann::json passes = nlohmann::json::array();
         for (std::size_t i = 0; i < r.stats->passes.size() && i < r.set.scenarios.size(); ++i)
             passes.push_back({{"scenario", r.set.scenarios[i].name},
@@ -281,6 +288,21 @@ std::string bouncesText(const BakeReport& r) {
                       100.0 * st.lastChange[i]);
     }
     return o + "\n";
+}
+
+std::string noiseTargetWarning(const BakeReport& r) {
+    if (!r.stats || r.stats->probesAboveTarget == 0 || r.set.settings.noiseTarget <= 0) return {};
+    const BakeStats& st = *r.stats;
+    std::string o = strf("%zu of %zu probes (%.1f%%) stayed above the noise target %.3g%% after "
+                         "%d rounds a pass",
+                         st.probesAboveTarget, st.tracedProbes,
+                         st.tracedProbes ? 100.0 * double(st.probesAboveTarget) / double(st.tracedProbes) : 0.0,
+                         100.0 * r.set.settings.noiseTarget, kMaxNoiseRounds);
+    if (const auto& g = st.noisiestRegion)
+        o += strf("; most in volume '%s' (%zu of them; cells x %d..%d, y %d..%d, z %d..%d hold %zu)",
+                  g->volume.c_str(), g->probesInVolume, g->from.x, g->to.x, g->from.y, g->to.y,
+                  g->from.z, g->to.z, g->probes);
+    return o + strf("; p95 %.3g%%: more --rays lower it", 100.0 * st.noiseP95);
 }
 
 std::string bakeReportText(const BakeReport& r) {

@@ -44,4 +44,8 @@ nlohmann::json bakeReportJson(const BakeReport& r);
 // The summary lines, each ending in a newline; "wrote FILE" last when something was written.
 std::string bakeReportText(const BakeReport& r);
 
+// One line (no "warning: ", no newline) when probes stayed above the noise target after the
+// round cap: how many, their share, where most of them are and what to do; "" otherwise.
+std::string noiseTargetWarning(const BakeReport& r);
+
 } // namespace pb::probes
