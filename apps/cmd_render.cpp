@@ -21,8 +21,10 @@
 #include "probes/store/ProbeFile.h"
 #include "probes/store/VolumeRanksFile.h"
 #include "profile/SwitchTable.h"
+#include "scene/DefaultView.h"
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
@@ -110,15 +112,29 @@ int runInteractive(platform::Platform& p, render::FrameRenderer& r, const scene:
     return 0;
 }
 
+// What the view sees (scene::checkView), for --verbose, --json and the default view's warning.
+std::string viewCheckText(const scene::ViewCheck& c) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "sees %.0f%% geometry from the front, %.0f%% sky, %.0f%% back faces",
+                  100.0 * c.frontFraction, 100.0 * c.skyFraction, 100.0 * c.backFraction);
+    return buf;
+}
+
 nlohmann::json renderJson(const RenderArgs& a, const scene::Scene& s, const scene::View& view,
-                          const platform::Platform& platform, const render::FrameRenderer& r,
-                          double ms) {
+                          const scene::ViewCheck& check, const platform::Platform& platform,
+                          const render::FrameRenderer& r, double ms) {
     auto orNull = [](const std::string& v) {
         return v.empty() ? nlohmann::json(nullptr) : nlohmann::json(v);
     };
     nlohmann::json j;
     j["scene"] = s.name;
     j["view"] = view.name;
+    j["camera"] = app::cameraSpec(view); // ready for --camera
+    j["view_check"] = {{"front_fraction", check.frontFraction},
+                       {"sky_fraction", check.skyFraction},
+                       {"back_fraction", check.backFraction},
+                       {"inside_closed_mesh", check.insideClosedMesh},
+                       {"good", check.good()}};
     j["platform"] = platform.description();
     j["width"] = a.width;
     j["height"] = a.height;
@@ -272,6 +288,15 @@ int runRender(RenderArgs& a) {
     const bool coverage = debugView == render::GiDebugView::VolumeCoverage;
     scene::Scene s = loadSceneWithOverrides(a.scene);
     scene::View view = chooseRenderView(s, a);
+    // The default view is chosen by what it sees (DefaultView.h); one that still sees badly is
+    // said, with its pose as a --camera to start from (issue 42 item 1).
+    const bool defaultView = a.view.empty() && a.camera.empty();
+    const scene::ViewCheck check =
+        defaultView || a.verbose || a.json ? scene::checkView(s, view) : scene::ViewCheck{};
+    if (defaultView && !check.good())
+        std::cerr << "warning: the default view of '" << s.name << "' " << viewCheckText(check)
+                  << (check.insideClosedMesh ? ", from inside a closed mesh" : "")
+                  << "; pass --camera or --view (it was --camera " << app::cameraSpec(view) << ")\n";
     probes::ProbeSet probeSet;
     render::GiOptions gi;
     if (!a.probes.empty()) {
@@ -300,8 +325,10 @@ int runRender(RenderArgs& a) {
     // Counting reads the GPU back after every volume: only when asked for.
     if (renderer.giApplyPass() && (a.verbose || a.json || coverage))
         renderer.giApplyPass()->setCountPixels(true);
-    info << "scene " << sceneSummary(s) << "; view '" << view.name << "'\n"
-         << "platform: " << platform->description() << "\n";
+    info << "scene " << sceneSummary(s) << "; view '" << view.name << "'\n";
+    if (a.verbose)
+        info << "view: --camera " << app::cameraSpec(view) << "; " << viewCheckText(check) << "\n";
+    info << "platform: " << platform->description() << "\n";
     if (const render::GpuProbes* gp = renderer.gpuProbes())
         printGiLine(info, *gp, probeSet, platformProfile, debugView);
     if (a.verbose)
@@ -314,7 +341,7 @@ int runRender(RenderArgs& a) {
     const RenderedFrame frame = renderFrame(a, renderer, s, view, debug, glMark, coverage);
     writeFrame(a, renderer, frame);
     printFrameReport(info, a, renderer, frame.ms, coverage);
-    if (a.json) writeJson(a.json, renderJson(a, s, view, *platform, renderer, frame.ms).dump(2) + "\n");
+    if (a.json) writeJson(a.json, renderJson(a, s, view, check, *platform, renderer, frame.ms).dump(2) + "\n");
     if (platform->isWindowed()) return runInteractive(*platform, renderer, s, view, a.frames);
     return 0;
 }

@@ -161,6 +161,28 @@ float score(const ViewCheck& c) {
            (c.insideClosedMesh ? 10.0f : 0.0f);
 }
 
+// Poses outside the bounds looking at their centre: from 8 sides (the axes, then the
+// diagonals), elevated 30 then 15 degrees, at 1.1 then 1.5 times the bounding sphere's radius
+// (near enough that the model fills most of a 16:9 frame).
+std::vector<View> outsideViews(const Bounds& b) {
+    std::vector<View> out;
+    const glm::vec3 centre = b.center();
+    const float radius = 0.5f * glm::length(b.size());
+    for (float distance : {1.1f, 1.5f})
+        for (float elevation : {30.0f, 15.0f})
+            for (int side = 0; side < 8; ++side) {
+                const float yaw = glm::radians(45.0f * float(side % 4 * 2 + side / 4));
+                const float e = glm::radians(elevation);
+                const glm::vec3 dir(std::cos(e) * std::cos(yaw), std::sin(e), std::cos(e) * std::sin(yaw));
+                View v;
+                v.name = "default";
+                v.position = centre + dir * (distance * radius);
+                v.target = centre;
+                out.push_back(v);
+            }
+    return out;
+}
+
 float longSide(const Bounds& b) {
     const glm::vec3 size = b.size();
     return glm::max(glm::max(size.x, size.z), 1e-3f * glm::length(size));
@@ -210,6 +232,16 @@ View makeDefaultView(const Scene& scene) {
                             best = v;
                         }
                     }
+    // No pose inside the bounds sees well: a model rather than a place (a diorama on a thick
+    // base, a statue, a vehicle). Look at it from outside, as one walks around a table.
+    for (const View& v : outsideViews(b)) {
+        const ViewCheck c = look(scene, grid, v, length, diagonal);
+        if (c.good()) return v;
+        if (score(c) > bestScore) {
+            bestScore = score(c);
+            best = v;
+        }
+    }
     return best;
 }
 

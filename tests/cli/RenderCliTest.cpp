@@ -8,7 +8,9 @@
 #include <cmath>
 #include <fstream>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <regex>
+#include <sstream>
 
 namespace fs = std::filesystem;
 using namespace pb::test;
@@ -188,3 +190,44 @@ INSTANTIATE_TEST_SUITE_P(Shared, SharedSceneRender,
                              std::string n = info.param.substr(0, info.param.find('/'));
                              return n;
                          });
+
+// Issue 42 item 1: the default view says what it sees. One that sees no geometry is warned
+// about in one line with its pose as a ready --camera; a good one is not; a pose the user
+// chose is not second-guessed. --json gives the pose and the check.
+TEST(RenderCli, ADefaultViewThatSeesNothingIsWarnedWithItsCamera) {
+    const fs::path dir = outputDir();
+    auto empty = runProbebench({"render", "--scene", "empty", "--width", "32", "--height", "18",
+                                "--out", (dir / "empty.png").string()});
+    ASSERT_EQ(empty.exitCode, 0) << empty.output;
+    EXPECT_NE(empty.output.find("warning: the default view of 'empty' sees 0% geometry from the front"),
+              std::string::npos)
+        << empty.output;
+    EXPECT_NE(empty.output.find("; pass --camera or --view (it was --camera "), std::string::npos)
+        << empty.output;
+
+    auto cornell = runProbebench({"render", "--scene", "cornell", "--width", "32", "--height", "18",
+                                  "--out", (dir / "cornell.png").string(), "--json",
+                                  (dir / "cornell.json").string()});
+    ASSERT_EQ(cornell.exitCode, 0) << cornell.output;
+    EXPECT_EQ(cornell.output.find("warning:"), std::string::npos) << cornell.output;
+    std::ifstream in(dir / "cornell.json");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const auto j = nlohmann::json::parse(ss.str());
+    EXPECT_TRUE(j["view_check"]["good"].get<bool>()) << j.dump();
+    EXPECT_GE(j["view_check"]["front_fraction"].get<double>(), 0.5);
+    // The pose, given back as --camera, renders the same picture.
+    auto again = runProbebench({"render", "--scene", "cornell", "--width", "32", "--height", "18",
+                                "--camera", j["camera"].get<std::string>(), "--out",
+                                (dir / "again.png").string()});
+    ASSERT_EQ(again.exitCode, 0) << again.output;
+    const auto a = pb::image::readPng((dir / "cornell.png").string());
+    const auto b = pb::image::readPng((dir / "again.png").string());
+    EXPECT_EQ(a.pixels, b.pixels);
+
+    // A camera the user chose that sees only sky: their choice, no warning.
+    auto sky = runProbebench({"render", "--scene", "cornell", "--width", "32", "--height", "18",
+                              "--camera", "0,1,50,0,1,100", "--out", (dir / "sky.png").string()});
+    ASSERT_EQ(sky.exitCode, 0) << sky.output;
+    EXPECT_EQ(sky.output.find("warning:"), std::string::npos) << sky.output;
+}

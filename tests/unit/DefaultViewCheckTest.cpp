@@ -4,6 +4,7 @@
 // (where the scene has any light) much of it lit directly. checkView itself is tested on views
 // that must fail, including a closed room whose light is elsewhere.
 #include "scene/DefaultView.h"
+#include "scene/SceneBuilder.h"
 #include "scene/SceneLoader.h"
 #include "support/TestEnv.h"
 
@@ -58,6 +59,24 @@ TEST(DefaultViewCheck, SharedScenes) {
           "japanese_bridge_garden/japanese_bridge_garden.gltf",
           "dream_apartment/dream_apartment.gltf"})
         expectGoodDefaultView(loadGltf((pb::test::scenesDir() / file).string()), file);
+}
+
+// Issue 42 item 1: a diorama - a city block on a thick solid base that fills most of the
+// bounds' height - got a default view inside or under its base (every eye height of the
+// interior search lies in the base). Its default view must see the block from outside.
+TEST(DefaultViewCheck, ADioramaOnAThickBaseIsSeenFromOutside) {
+    Scene s;
+    s.name = "diorama";
+    SceneBuilder b(s);
+    const int stone = b.material("base", {0.5f, 0.5f, 0.5f});
+    const int wall = b.material("wall", {0.7f, 0.6f, 0.5f});
+    b.box("base", {-5, 0, -4}, {5, 6, 4}, stone);
+    b.box("house_a", {-4, 6, -3}, {-1, 8, 0}, wall);
+    b.box("house_b", {0.5f, 6, -3.5f}, {3.5f, 9, -1}, wall);
+    b.box("house_c", {-2, 6, 1}, {2, 7.5f, 3.5f}, wall);
+    s.views.insert(s.views.begin(), makeDefaultView(s));
+    expectGoodDefaultView(s, "diorama");
+    EXPECT_GT(s.views.front().position.y, 6.0f) << "above the base's top";
 }
 
 TEST(DefaultViewCheck, CompressedTestFiles) {
