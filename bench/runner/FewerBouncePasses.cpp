@@ -1,7 +1,7 @@
 #include "FewerBouncePasses.h"
 
 #include "probes/bake/Baker.h"
-#include "probes/obtain/RebuiltRequest.h"
+#include "probes/bake/RebuiltRequest.h"
 
 #include <chrono>
 

@@ -211,38 +211,39 @@ void timeGroup(const SizeGroup& g, const RunnerInputs& in, const RunnerOptions& 
     }
 }
 
-// The reference variant rendered with the probes of one bounce pass fewer, against the truth
-// (as the others: the first frame after a cut). A GL error here is the bench's failure.
+// One frame of a renderer built for the purpose (the first after a cut, as every variant's
+// accuracy frame) against a truth; a GL error on the way is the bench's failure, named `what`.
+TruthAccuracy extraFrameAccuracy(const scene::Scene& scene, const render::FrameSettings& settings,
+                                 const render::GiOptions& gi, const RunnerInputs& in,
+                                 const render::RenderView& rv, const image::ImageF& truthHdr,
+                                 double pixelsPerDegree, const std::string& what) {
+    const std::uint64_t mark = in.debug ? in.debug->mark() : 0;
+    render::FrameRenderer renderer(scene, settings, gi);
+    renderer.render(rv);
+    const TruthAccuracy a = truthAccuracyOf(
+        renderer, truthHdr, truth::tonemap(truthHdr, settings.exposure), pixelsPerDegree);
+    if (std::string why = glErrorText(in.debug, mark); !why.empty())
+        throw Error("bench --truth: " + what + ": " + why);
+    return a;
+}
+
+// The reference variant rendered with the probes of one bounce pass fewer.
 TruthAccuracy fewerPassAccuracy(const Variant& reference, const RunnerInputs& in,
                                 const render::RenderView& rv, const image::ImageF& truthHdr,
                                 double pixelsPerDegree) {
-    const std::uint64_t mark = in.debug ? in.debug->mark() : 0;
-    render::GiOptions gi{in.fewerPassProbes, 0, reference.switches};
-    render::FrameRenderer renderer(*in.scene, in.settings, gi);
-    renderer.render(rv);
-    const TruthAccuracy a = truthAccuracyOf(renderer, truthHdr,
-                                            truth::tonemap(truthHdr, in.settings.exposure),
-                                            pixelsPerDegree);
-    if (std::string why = glErrorText(in.debug, mark); !why.empty())
-        throw Error("bench --truth: the reference with one bounce pass fewer: " + why);
-    return a;
+    return extraFrameAccuracy(*in.scene, in.settings,
+                              render::GiOptions{in.fewerPassProbes, 0, reference.switches}, in, rv,
+                              truthHdr, pixelsPerDegree, "the reference with one bounce pass fewer");
 }
 
 // The frame without GI of the direct-light scene (sun and punctual lights only) against its
 // traced direct light: the rasterizer's own error, under every probe set's.
 TruthAccuracy directLightAccuracy(const RunnerInputs& in, const render::RenderView& rv,
                                   const image::ImageF& directTruth, double pixelsPerDegree) {
-    const std::uint64_t mark = in.debug ? in.debug->mark() : 0;
     render::FrameSettings settings = in.settings; // the frame's exposure, no sky ambient
     settings.ambientUp = settings.ambientDown = glm::vec3(0.0f);
-    render::FrameRenderer renderer(*in.directScene, settings, render::GiOptions{});
-    renderer.render(rv);
-    const TruthAccuracy a = truthAccuracyOf(renderer, directTruth,
-                                            truth::tonemap(directTruth, in.settings.exposure),
-                                            pixelsPerDegree);
-    if (std::string why = glErrorText(in.debug, mark); !why.empty())
-        throw Error("bench --truth: the direct-light frame: " + why);
-    return a;
+    return extraFrameAccuracy(*in.directScene, settings, render::GiOptions{}, in, rv, directTruth,
+                              pixelsPerDegree, "the direct-light frame");
 }
 
 // One session's result from its group's timed variants: its own variants (ids, labels, roles)

@@ -3,7 +3,7 @@
 // --truth` bakes "one bounce pass fewer" - which is the converged bake without its last pass
 // only because a fixed count of N passes bakes what the converged bake's first N passes did.
 #include "probes/bake/Baker.h"
-#include "probes/obtain/RebuiltRequest.h"
+#include "probes/bake/RebuiltRequest.h"
 #include "scene/BuiltinScenes.h"
 #include "scene/SceneLoader.h"
 

@@ -1,5 +1,7 @@
 #include "probes/bake/SceneMatch.h"
 
+#include "probes/bake/RebuiltRequest.h"
+
 #include "core/Error.h"
 #include "probes/bake/Baker.h"
 
@@ -8,18 +10,8 @@
 namespace pb::probes {
 
 bool probeSetMatchesScene(const ProbeSet& set, const scene::Scene& scene) {
-    BakeRequest request;
-    request.volumes = set.volumes;
-    request.scenarios = set.scenarios;
-    request.settings = set.settings;
-    request.freeSpace = set.freeSpace;
-    request.freeSpaceBudgetBytes = set.freeSpaceBudgetBytes;
     auto matches = [&](const scene::Scene& candidate) {
-        for (bool sparse : {false, true}) {
-            request.sparse = sparse;
-            if (bakeInputHash(candidate, request) == set.inputHash) return true;
-        }
-        return false;
+        return rebuiltBakeRequest(candidate, set).has_value();
     };
     if (matches(scene)) return true;
     // Nodes marked --dynamic now but baked static: the same scene, probes that include them

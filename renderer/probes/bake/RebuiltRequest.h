@@ -14,7 +14,8 @@
 namespace pb::probes {
 
 // The request whose bakeInputHash(scene, request) is set.inputHash, or nothing with `why`
-// saying so (the set was baked for another scene or by an older bake).
+// saying so (the set was baked for another scene or by an older bake). SceneMatch.h asks it
+// whether a probe file belongs to a scene.
 std::optional<BakeRequest> rebuiltBakeRequest(const scene::Scene& scene, const ProbeSet& set,
                                               std::string* why = nullptr);
 
