@@ -215,8 +215,10 @@ void printReport(const BakeArgs& a, const BakeReport& r) {
         writeJson(a.json, bakeReportJson(r).dump(2) + "\n");
     else
         std::cout << bakeReportText(r);
-    // Exit 0 still: the probes are usable, only noisier than asked (issue 42 item 3).
-    if (const std::string w = noiseTargetWarning(r); !w.empty()) std::cerr << "warning: " << w << "\n";
+    // Exit 0 still: the probes are usable, only noisier than asked (issue 42 item 3). JSON on
+    // stdout carries it (noise.probes_above_target, above_target_region) and stays the only output.
+    if (const std::string w = noiseTargetWarning(r); !w.empty() && !a.json.toStdout())
+        std::cerr << "warning: " << w << "\n";
 }
 
 // --write-volumes without --out: only the placement.

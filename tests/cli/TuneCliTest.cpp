@@ -69,7 +69,8 @@ TEST(TuneCli, RespectsItsBudgetsAndWritesAProfileThatLoads) {
     // 4608 + an 18432 upsample target. 30000 bytes over the probes leave out every RGBA32F one.
     const double budget = probeMiB() + 30000.0 / (1024.0 * 1024.0);
     auto args = tuneArgs(dir / "profiles" / "tuned.toml", std::to_string(budget));
-    args.insert(args.end(), {"--json", (dir / "tune.json").string()});
+    // profiles/ does not exist yet: --mkdir asks for it (the one output-folder rule).
+    args.insert(args.end(), {"--json", (dir / "tune.json").string(), "--mkdir"});
     auto r = runProbebench(args);
     ASSERT_EQ(r.exitCode, 0) << r.output;
     EXPECT_NE(r.output.find("Pareto front"), std::string::npos) << r.output;
