@@ -13,14 +13,19 @@ uniform sampler2D u_gbuffer_albedo;
 uniform sampler2D u_gbuffer_normal;
 uniform sampler2D u_gbuffer_emissive;
 uniform sampler2D u_gbuffer_depth;
-uniform sampler2DShadow u_shadowMap;
+uniform sampler2DShadow u_shadowMap;      // the view map (ShadowPass.h)...
+uniform sampler2DShadow u_shadowMapScene; // ...and the whole-scene map, its fallback
 uniform mat4 u_relFromClip;        // inverse of the camera's clip-from-camera-relative matrix
-uniform mat4 u_shadowFromRel;      // camera-relative world -> shadow texture space [0,1]^3
+uniform mat4 u_shadowFromRel;      // camera-relative world -> view map texture space [0,1]^3
+uniform mat4 u_shadowSceneFromRel; // ... -> scene map texture space
 uniform int u_sunEnabled;
 uniform vec3 u_toSun;
 uniform vec3 u_sunIrradiance;      // colour * intensity
-uniform float u_shadowNormalOffset; // world units, about 1.5 shadow texels
-uniform vec2 u_shadowTexel;
+uniform float u_shadowNormalOffset; // world units, 1.5 texels of the view map (scene map: ...Scene...)
+uniform float u_shadowSceneNormalOffset;
+uniform float u_shadowTexel;        // one texel of the view map in texture space
+uniform float u_shadowDepthTexel;   // one texel's world size in depth-texture units
+uniform float u_shadowSceneDepthTexel;
 uniform vec3 u_skyRadiance;
 uniform vec3 u_ambientUp;          // indirect irradiance for an upward normal...
 uniform vec3 u_ambientDown;        // ...and a downward one
@@ -71,15 +76,42 @@ vec3 indirectIrradiance(vec3 n, ivec2 px) {
 }
 #endif
 
-float sunShadow(vec3 rel, vec3 n) {
-    vec4 s = u_shadowFromRel * vec4(rel + n * u_shadowNormalOffset, 1.0);
+// Depth bias in texels of the map: a constant for the texel's own depth step, plus a slope
+// term that follows the receiver's angle to the sun, clamped so that a surface seen edge-on
+// does not push its comparison behind a thin wall (ShadowPass.cpp). Environment overrides are
+// for experiments only: PB_SHADOW_* in DirectLightingPass.cpp.
+uniform vec3 u_shadowBias; // x: constant texels, y: texels per unit of tan(angle), z: max tan
+
+// The receiver in one map's texture space: normal-offset by sin(angle) x the map's offset,
+// depth-biased by the map's texel (u_shadowBias).
+vec3 shadowCoord(mat4 fromRel, float normalOffset, float depthTexel, vec3 rel, vec3 n,
+                 float sinT, float tanT) {
+    vec4 s = fromRel * vec4(rel + n * (normalOffset * sinT), 1.0);
     vec3 p = s.xyz / s.w;
+    p.z -= depthTexel * (u_shadowBias.x + u_shadowBias.y * tanT);
+    return p;
+}
+
+// The view map's 3 x 3 bilinear PCF where it covers the receiver (with the kernel's reach);
+// else the whole-scene map's single bilinear tap (a rare fallback: surfaces the view fit's
+// rays missed, dynamic objects), else lit (outside the scene's bounds).
+float sunShadow(vec3 rel, vec3 n, float ndl) {
+    float sinT = sqrt(max(1.0 - ndl * ndl, 0.0));
+    float tanT = min(sinT / max(ndl, 1e-3), u_shadowBias.z);
+    vec3 p = shadowCoord(u_shadowFromRel, u_shadowNormalOffset, u_shadowDepthTexel, rel, n, sinT, tanT);
+    float edge = 1.5 * u_shadowTexel;
+    if (p.x > edge && p.x < 1.0 - edge && p.y > edge && p.y < 1.0 - edge) {
+        if (p.z >= 1.0) return 1.0;
+        float lit = 0.0;
+        for (int y = -1; y <= 1; ++y)
+            for (int x = -1; x <= 1; ++x)
+                lit += texture(u_shadowMap, vec3(p.xy + vec2(x, y) * u_shadowTexel, p.z));
+        return lit / 9.0;
+    }
+    p = shadowCoord(u_shadowSceneFromRel, u_shadowSceneNormalOffset, u_shadowSceneDepthTexel, rel,
+                    n, sinT, tanT);
     if (p.x <= 0.0 || p.x >= 1.0 || p.y <= 0.0 || p.y >= 1.0 || p.z >= 1.0) return 1.0;
-    float lit = 0.0;
-    for (int y = -1; y <= 1; ++y)
-        for (int x = -1; x <= 1; ++x)
-            lit += texture(u_shadowMap, vec3(p.xy + vec2(x, y) * u_shadowTexel, p.z));
-    return lit / 9.0;
+    return texture(u_shadowMapScene, p);
 }
 
 vec3 punctualIrradiance(vec3 rel, vec3 n) {
@@ -141,7 +173,7 @@ void main() {
     vec3 irradiance = indirectIrradiance(n, px) + punctualIrradiance(rel, n);
     if (u_sunEnabled != 0) {
         float ndl = max(dot(n, u_toSun), 0.0);
-        if (ndl > 0.0) irradiance += u_sunIrradiance * ndl * sunShadow(rel, n);
+        if (ndl > 0.0) irradiance += u_sunIrradiance * ndl * sunShadow(rel, n, ndl);
     }
     // Lambert: outgoing radiance = albedo / pi * irradiance.
     vec3 radiance = emissive + albedo / PI * irradiance * u_preExposure; // emissive: pre-exposed

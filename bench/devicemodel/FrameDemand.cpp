@@ -86,12 +86,13 @@ std::vector<PassDemand> frameDemand(const FrameDemandInputs& in) {
         PassDemand d;
         d.pass = pass;
         if (pass == "shadow") {
-            const U64 texels = U64(in.facts.shadowMapSize) * U64(in.facts.shadowMapSize);
+            U64 texels = 0;
+            for (int side : in.facts.shadowMapSizes) texels += U64(side) * U64(side);
             d.fragments = texels;
             applyProgram(in, d, true);
             d.bytesWritten = texels * 4;
             d.pixelsWritten = texels;
-            d.draws = in.facts.meshes;
+            d.draws = in.facts.meshes * int(in.facts.shadowMapSizes.size());
         } else if (pass == "gbuffer") {
             d.fragments = U64(double(pixels) * covered + 0.5);
             applyProgram(in, d, true);

@@ -2,8 +2,8 @@
 // What each pass of one frame asks of the GPU (PassModel.h's PassDemand), built from figures the
 // testbed counts exactly. One row per pass, in frame order; the rules, in one place:
 //
-//   shadow        fragments = shadow-map texels (depth-only; the map is written whole);
-//                 writes 4 B per texel; one draw per mesh.
+//   shadow        fragments = the shadow maps' texels (depth-only; each map is written whole);
+//                 writes 4 B per texel; one draw per mesh per map.
 //   gbuffer       fragments = covered pixels (the cost model's share of GI pixels, times the
 //                 frame); texture samples = the program's texture instructions per fragment;
 //                 writes every pixel's GBuffer bytes; one draw per mesh.
@@ -52,7 +52,9 @@ struct PassProgram {
 // The renderer's fixed facts the rules need (filled where the renderer is linked).
 struct FrameFacts {
     int gbufferBytesPerPixel = 0; // every GBuffer channel and the depth-stencil
-    int shadowMapSize = 0;        // texels per side; 0: no shadow pass
+    // The sun's depth maps (render::ShadowPass: the view map and the whole-scene map), texels
+    // per side of each; empty: no shadow pass.
+    std::vector<int> shadowMapSizes;
     int meshes = 0;               // draws of the gbuffer and shadow passes
 };
 

@@ -8,6 +8,7 @@
 #include "costmodel/CostModel.h"
 #include "frame/FrameRenderer.h"
 #include "frame/FrameSkips.h"
+#include "passes/ShadowPass.h"
 #include "gl/TextureFormat.h"
 #include "passes/GBufferLayout.h"
 
@@ -47,8 +48,10 @@ dm::FrameFacts frameFacts(const scene::Scene& s) {
     for (const render::GBufferChannel& c : render::kGBufferChannels)
         f.gbufferBytesPerPixel += int(gl::formatInfo(c.format).bytesPerTexel);
     f.gbufferBytesPerPixel += int(gl::formatInfo(render::kGBufferDepthFormat).bytesPerTexel);
-    f.shadowMapSize =
-        render::shadowSkipReason(s).empty() ? render::defaultFrameSettings(s).shadowMapSize : 0;
+    if (render::shadowSkipReason(s).empty()) {
+        const int side = render::defaultFrameSettings(s).shadowMapSize;
+        f.shadowMapSizes = {side, render::sceneShadowMapSize(side)};
+    }
     f.meshes = int(s.instances.size());
     return f;
 }

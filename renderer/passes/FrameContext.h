@@ -25,12 +25,19 @@ struct FrameSettings {
     bool indirectOnly = false; // debug view gi_only: the lighting outputs the indirect term
 };
 
+// One sun shadow map as the lighting reads it (ShadowPass.h).
+struct ShadowMapView {
+    const gl::Texture* map = nullptr;
+    glm::mat4 fromRel{1.0f}; // camera-relative world -> shadow texture space [0,1]^3
+    float texel = 0.0f;      // one texel in texture space
+    float normalOffset = 0.0f; // world units: kNormalOffsetTexels texels
+    float depthTexel = 0.0f;   // one texel's world size in depth-texture units
+};
+
 struct ShadowResult {
     bool enabled = false;
-    const gl::Texture* map = nullptr;
-    glm::mat4 shadowFromRel{1.0f};
-    float normalOffset = 0.0f;
-    glm::vec2 texel{0.0f};
+    ShadowMapView view;  // fitted to what the camera sees
+    ShadowMapView scene; // the whole scene: the fallback outside the view map
 };
 
 // The GI evaluation target the apply pass filled, for the lighting (absent without probes).

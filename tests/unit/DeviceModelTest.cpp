@@ -270,7 +270,7 @@ TEST(FrameDemand, TheGiPassComesFromTheReplayAndTheVariantsFetchOrder) {
     in.cost = &report;
     in.l2Cache = "round L2";
     in.passes = {"gbuffer", "gi-apply", "direct", "gi-dynamic-sh"};
-    in.facts = {25, 0, 3};
+    in.facts = {25, {}, 3};
     in.programs["gi-apply"] = {12.0, "test", -1};
     in.programs["gbuffer"] = {2.0, "test", 1.0};
     std::vector<dm::PassDemand> d = dm::frameDemand(in);
