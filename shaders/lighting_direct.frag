@@ -78,8 +78,7 @@ vec3 indirectIrradiance(vec3 n, ivec2 px) {
 
 // Depth bias in texels of the map: a constant for the texel's own depth step, plus a slope
 // term that follows the receiver's angle to the sun, clamped so that a surface seen edge-on
-// does not push its comparison behind a thin wall (ShadowPass.cpp). Environment overrides are
-// for experiments only: PB_SHADOW_* in DirectLightingPass.cpp.
+// does not push its comparison behind a thin wall (ShadowPass.cpp, kDepthBias).
 uniform vec3 u_shadowBias; // x: constant texels, y: texels per unit of tan(angle), z: max tan
 
 // The receiver in one map's texture space: normal-offset by sin(angle) x the map's offset,

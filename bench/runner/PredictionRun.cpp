@@ -8,9 +8,9 @@
 #include "costmodel/CostModel.h"
 #include "frame/FrameRenderer.h"
 #include "frame/FrameSkips.h"
-#include "passes/ShadowPass.h"
 #include "gl/TextureFormat.h"
 #include "passes/GBufferLayout.h"
+#include "passes/ShadowPass.h"
 
 #include <map>
 #include <memory>

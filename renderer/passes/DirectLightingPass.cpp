@@ -1,8 +1,6 @@
 #include "passes/DirectLightingPass.h"
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <string>
 
 namespace pb::render {
@@ -26,15 +24,6 @@ void setLights(const gl::Program& prog, const scene::Scene& s, const RenderView&
         prog.set(at("u_lightCone", i),
                  glm::vec4(std::cos(l.outerConeAngle), std::cos(l.innerConeAngle), 0, 0));
     }
-}
-// The sun's depth bias (lighting_direct.frag, u_shadowBias): 1 texel, plus 1.5 texels per unit
-// of tan(angle to the sun) up to tan = 3. Chosen on the courtyard golden (less left acne on its
-// far wall) and ShadowSeamLeakTest (more leaks); PB_SHADOW_BIAS=c,s,max overrides it for such
-// experiments.
-glm::vec3 shadowBias() {
-    glm::vec3 b(1.0f, 1.5f, 3.0f);
-    if (const char* e = std::getenv("PB_SHADOW_BIAS")) std::sscanf(e, "%f,%f,%f", &b.x, &b.y, &b.z);
-    return b;
 }
 } // namespace
 
@@ -72,7 +61,7 @@ void DirectLightingPass::execute(FrameContext& frame) {
         prog.set("u_shadowSceneFromRel", sc.fromRel);
         prog.set("u_shadowSceneNormalOffset", sc.normalOffset);
         prog.set("u_shadowSceneDepthTexel", sc.depthTexel);
-        prog.set("u_shadowBias", shadowBias());
+        prog.set("u_shadowBias", frame.shadow.bias);
     }
     const int giUnit = sceneShadowUnit + 1;
     if (frame.gi.enabled) {

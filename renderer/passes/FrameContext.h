@@ -38,6 +38,9 @@ struct ShadowResult {
     bool enabled = false;
     ShadowMapView view;  // fitted to what the camera sees
     ShadowMapView scene; // the whole scene: the fallback outside the view map
+    // Depth bias in texels of the map read (ShadowPass.cpp): x constant, y per unit of the
+    // receiver's tan(angle to the sun), z the largest tan that counts.
+    glm::vec3 bias{0.0f};
 };
 
 // The GI evaluation target the apply pass filled, for the lighting (absent without probes).

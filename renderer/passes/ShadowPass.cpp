@@ -12,6 +12,10 @@ namespace {
 // term follows the *caster's* slope without bound, and a thin wall seen edge-on by the sun
 // was pushed behind the floor it shadows. The shader's term follows the receiver's angle to
 // the sun and is clamped (lighting_direct.frag, sunShadow).
+// 1 texel, plus 1.5 texels per unit of tan(angle to the sun) up to tan = 3: chosen by a sweep
+// on the courtyard golden (acne on its far wall below it) and ShadowSeamLeakTest (leaks above
+// it), studies/results/2026-12-02-sun-shadow-view-fit.md.
+constexpr glm::vec3 kDepthBias{1.0f, 1.5f, 3.0f};
 constexpr double kNormalOffsetTexels = 1.5;
 
 void drawDepth(const FrameContext& frame, const gl::Framebuffer& fbo, const glm::dmat4& clipFromCentreRel,
@@ -68,6 +72,16 @@ void ShadowPass::ensure(Map& map, int size, const char* label) {
                                                 map.depth.get());
 }
 
+std::optional<LightSquare> ShadowPass::fitFor(const RenderView& view, const glm::dmat4& lightFromWorld,
+                                              const LightSquare& sceneSquare) {
+    const FitKey key{view.eye, view.relFromClip, view.farPlane, lightFromWorld};
+    if (fitKey_ != key) {
+        fit_ = fitShadowToView(*grid_, view, lightFromWorld, sceneSquare);
+        fitKey_ = key;
+    }
+    return fit_;
+}
+
 void ShadowPass::execute(FrameContext& frame) {
     const scene::Scene& s = frame.scene.scene();
     frame.shadow = {};
@@ -76,6 +90,7 @@ void ShadowPass::execute(FrameContext& frame) {
     if (!grid_ || gridScene_ != &s) {
         grid_ = std::make_unique<scene::RayGrid>(s);
         gridScene_ = &s;
+        fitKey_.reset();
     }
 
     // Light space centred on the bounds (double precision: offsets may be ~1e6 units).
@@ -86,7 +101,7 @@ void ShadowPass::execute(FrameContext& frame) {
     const glm::dmat4 lightView = glm::lookAt(toSun * radius, glm::dvec3(0.0), up);
     const LightSquare sceneSquare{glm::dvec2(-radius), 2.0 * radius};
     const glm::dmat4 lightFromWorld = lightView * glm::translate(glm::dmat4(1.0), -centre);
-    const std::optional<LightSquare> fit = fitShadowToView(*grid_, frame.view, lightFromWorld, sceneSquare);
+    const std::optional<LightSquare> fit = fitFor(frame.view, lightFromWorld, sceneSquare);
     const LightSquare viewSquare = fit.value_or(sceneSquare);
 
     auto ortho = [&](const LightSquare& q) {
@@ -106,6 +121,7 @@ void ShadowPass::execute(FrameContext& frame) {
 
     const glm::dmat4 centreRelFromRel = glm::translate(glm::dmat4(1.0), frame.view.eye - centre);
     frame.shadow.enabled = true;
+    frame.shadow.bias = kDepthBias;
     frame.shadow.view = mapView(*view_.depth, ortho(viewSquare), centreRelFromRel, viewSquare.size, 2.0 * radius);
     frame.shadow.scene = mapView(*scene_.depth, ortho(sceneSquare), centreRelFromRel, sceneSquare.size, 2.0 * radius);
 }

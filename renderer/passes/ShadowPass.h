@@ -15,6 +15,7 @@
 #include "passes/ShadowViewFit.h"
 
 #include <memory>
+#include <optional>
 
 namespace pb::scene {
 class RayGrid;
@@ -39,9 +40,23 @@ private:
     };
     void ensure(Map& map, int size, const char* label);
 
+    // The fit's CPU rays run when the camera or the sun moved, not every frame: the bench
+    // times the same view many times, and its CPU clock would count them.
+    std::optional<LightSquare> fitFor(const RenderView& view, const glm::dmat4& lightFromWorld,
+                                      const LightSquare& sceneSquare);
+
     Map view_, scene_;
     std::unique_ptr<scene::RayGrid> grid_; // built on the first sunlit frame
     const scene::Scene* gridScene_ = nullptr;
+    struct FitKey {
+        glm::dvec3 eye{0.0};
+        glm::mat4 relFromClip{0.0f};
+        float farPlane = 0.0f;
+        glm::dmat4 lightFromWorld{0.0};
+        bool operator==(const FitKey&) const = default;
+    };
+    std::optional<FitKey> fitKey_;
+    std::optional<LightSquare> fit_;
 };
 
 } // namespace pb::render
