@@ -3,7 +3,10 @@
 // shifts that do not fit, and moves nested volumes together.
 #include "probes/placement/LatticeShiftSearch.h"
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <thread>
 #include <gtest/gtest.h>
 
 using namespace pb::probes;
@@ -92,4 +95,36 @@ TEST(LatticeShiftSearch, ShiftsThatDoNotFitAreNeverTried) {
     EXPECT_EQ(s.cells, glm::vec3(0.0f)); // every fitting x shift is worse
     EXPECT_EQ(tried, 3 * int(kLatticeShiftSteps.size()));
     EXPECT_EQ(s.trials, tried - 4); // the 4 negative x shifts were not baked
+}
+
+TEST(LatticeShiftSearch, TrialsScoredSideBySideChooseAsOneByOne) {
+    // An axis's trials may run on threads of their own: the result, errors and trial count must
+    // be those of scoring them one by one, ties included (the first of equal errors wins).
+    auto ridge = [](const std::vector<ProbeVolume>& v) {
+        const glm::vec3 s = shiftOf(v);
+        // Equal minima at x -0.2 and +0.2, a step in y, a flat z.
+        return 1.0 + std::abs(std::abs(double(s.x)) - 0.2) + (s.y > 0.05f ? -0.3 : 0.0);
+    };
+    std::vector<ProbeVolume> one = nested();
+    const LatticeShift a = searchLatticeShift(one, kCell, ridge, fitsAll, 1);
+    std::atomic<int> running{0}, most{0};
+    auto watched = [&](const std::vector<ProbeVolume>& v) {
+        const int now = ++running;
+        int seen = most.load();
+        while (now > seen && !most.compare_exchange_weak(seen, now)) {
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        --running;
+        return ridge(v);
+    };
+    std::vector<ProbeVolume> four = nested();
+    const LatticeShift b = searchLatticeShift(four, kCell, watched, fitsAll, 4);
+    EXPECT_EQ(a.cells, b.cells);
+    EXPECT_NEAR(a.cells.x, -0.2f, 1e-5f); // the first of the two equal minima
+    EXPECT_GT(a.cells.y, 0.05f);
+    EXPECT_EQ(a.errorBefore, b.errorBefore);
+    EXPECT_EQ(a.errorAfter, b.errorAfter);
+    EXPECT_EQ(a.trials, b.trials);
+    EXPECT_EQ(one[0].center, four[0].center);
+    EXPECT_GT(most.load(), 1); // they did run side by side
 }

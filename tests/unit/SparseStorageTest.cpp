@@ -115,6 +115,33 @@ TEST(SparseLayout, PackThenUnpackKeepsStoredTilesAndZeroesTheRest) {
     }
 }
 
+TEST(SparseLayout, ZeroingInPlaceGivesThePackUnpackRoundTrip) {
+    // Sparse storage zeroes the absent tiles in place instead of packing and unpacking: the
+    // bytes and texels must be those of the round trip, in every format.
+    const glm::ivec3 counts(3, 2, 4);
+    std::vector<ProbeState> states(24);
+    for (std::size_t i = 0; i < states.size(); ++i)
+        states[i].stored = (i * 5) % 4 != 1;
+    const std::vector<int> slots = packedSlots(states);
+    const glm::ivec3 packed = packedCounts(storedCount(states), counts);
+    for (StorageFormat f : {StorageFormat::Rgba16f, StorageFormat::Rgba32f, StorageFormat::Bc6h})
+        for (bool irradiance : {true, false}) {
+            const int tile = irradiance ? kIrradianceTile : kVisibilityTile;
+            const TextureShape shape =
+                irradiance ? irradianceShape(counts) : visibilityShape(counts);
+            ProbeTexture inPlace = randomTexture(shape, f, 11u + unsigned(f));
+            const ProbeTexture roundTrip = unpackTiles(
+                packTiles(inPlace, slots, counts, packed, tile, f), slots, counts, packed, tile, f);
+            zeroUnslottedTiles(inPlace, slots, counts, tile, f);
+            EXPECT_EQ(inPlace.stored, roundTrip.stored) << formatName(f) << " tile " << tile;
+            EXPECT_EQ(inPlace.texels, roundTrip.texels) << formatName(f) << " tile " << tile;
+            EXPECT_EQ(inPlace.shape, roundTrip.shape);
+        }
+    ProbeTexture wrong = randomTexture(irradianceShape(counts), StorageFormat::Rgba16f, 3u);
+    EXPECT_THROW(zeroUnslottedTiles(wrong, slots, counts, kVisibilityTile, StorageFormat::Rgba16f),
+                 pb::Error);
+}
+
 // One small triangle inside cell (1, 1, 1) of a 5x5x5 grid with unit cells: exactly that
 // cell's 8 corners are kept. A triangle in a root's fade margin keeps its boundary cell.
 TEST(SparseStorage, KeepsExactlyTheCornersOfSurfaceCells) {

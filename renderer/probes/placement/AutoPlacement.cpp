@@ -1,6 +1,7 @@
 #include "probes/placement/AutoPlacement.h"
 
 #include "core/Error.h"
+#include "core/ParallelFor.h"
 #include "probes/placement/LatticeAlignment.h"
 #include "probes/store/MemoryReport.h"
 #include "probes/placement/PlacementError.h"
@@ -8,10 +9,12 @@
 #include "probes/store/FreeSpaceTiles.h"
 #include "probes/store/SparseStorage.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <sstream>
 
 namespace pb::probes {
@@ -359,11 +362,19 @@ private:
             finestCell = glm::min(finestCell, v.cellSize());
         // The unshifted estimate + at most one trial per step and axis.
         const int most = 1 + 3 * int(kLatticeShiftSteps.size());
+        // An axis's trials run side by side, each on its share of the cores: one trial bake
+        // keeps 2 cores only about 70% busy (its serial steps: allocation, sparse masks,
+        // sampler set-up), while separate trials keep every core busy. Same result either way.
+        const int cores = resolveThreadCount(req_.adaptive.threads);
+        const int concurrent = std::min(cores, 1 + int(kLatticeShiftSteps.size()));
+        const int threadsEach = std::max(1, cores / concurrent);
+        std::mutex progressLock;
         int estimates = 0;
         best.latticeShift = searchLatticeShift(
             best.volumes, finestCell,
             [&](const std::vector<ProbeVolume>& v) {
-                const double e = estimate.relativeError(v, req_.sparse);
+                const double e = estimate.relativeError(v, req_.sparse, threadsEach);
+                const std::lock_guard<std::mutex> lock(progressLock);
                 if (req_.progress) req_.progress("lattice search", ++estimates, most);
                 return e;
             },
@@ -372,7 +383,8 @@ private:
                 r.volumes = v;
                 r.bytes = storedBytes(v);
                 return fits(r);
-            });
+            },
+            concurrent);
         best.bytes = storedBytes(best.volumes);
         best.onProbePlanes = onPlanes(best);
         best.latticeSearched = true;

@@ -8,6 +8,9 @@
 // one with the lowest estimated error when it beats the current one by more than
 // kLatticeShiftMargin (relative), and only shifts whose placement still `fits` (a sparse
 // placement stores a different number of probes once shifted). 3 * 8 trial bakes at most.
+// An axis's trials do not depend on each other, so they may be scored side by side
+// (`concurrent`); the choice is made afterwards in step order, so it is the same for any
+// concurrency.
 //
 // Why it is safe to shift: auto's outer volume reaches half of its own cell beyond the scene
 // bounds (AutoLattice::HalfCellMargin), and no shift reaches half of the finest cell, so the
@@ -44,8 +47,12 @@ using PlacementFits = std::function<bool(const std::vector<ProbeVolume>&)>;
 
 // Searches the shift of `volumes` (finest cell `cell`, world units per axis) and applies the
 // one kept to `volumes`. `error`: the estimated error of a placement
-// (PlacementErrorEstimate::relativeError); `fits`: whether it is still within the budget.
+// (PlacementErrorEstimate::relativeError); `fits`: whether it is still within the budget,
+// always called on the calling thread. `concurrent` > 1: up to that many `error` calls run at
+// once on threads of their own (the unshifted estimate beside the first axis's trials), so
+// `error` must then be safe to call from several threads.
 LatticeShift searchLatticeShift(std::vector<ProbeVolume>& volumes, const glm::vec3& cell,
-                                const PlacementScore& error, const PlacementFits& fits);
+                                const PlacementScore& error, const PlacementFits& fits,
+                                int concurrent = 1);
 
 } // namespace pb::probes

@@ -48,13 +48,14 @@ PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const 
     trialNoise(req.settings);
     req.threads = settings.threads;
     req.rayScene = &rs;
+    req.sparse = true; // see the header: the gather reads surface cells
     const ProbeSet earlier = bakeProbes(scene, req);
     const ProbeSampler sampler(earlier, 0);
     truth_ = gatherIrradiance(rs, scenario, scene.lights, points_, &sampler, g);
 }
 
 double PlacementErrorEstimate::relativeError(const std::vector<ProbeVolume>& volumes,
-                                             bool sparse) const {
+                                             bool sparse, int threads) const {
     BakeRequest req;
     req.volumes = volumes;
     req.scenarios = {scenario_};
@@ -64,7 +65,7 @@ double PlacementErrorEstimate::relativeError(const std::vector<ProbeVolume>& vol
     // not the storage format, is what the estimate compares.
     req.settings.format = StorageFormat::Rgba32f;
     trialNoise(req.settings);
-    req.threads = settings_.threads;
+    req.threads = threads < 0 ? settings_.threads : threads;
     req.sparse = sparse;
     req.rayScene = &rays_;
     const ProbeSet set = bakeProbes(scene_, req);

@@ -12,7 +12,9 @@
 // The truth is gathered at `points` surface samples (SurfaceSamples.h) with `gatherRays` rays
 // (SurfaceGather.h): the last bounce exact, the earlier ones (bounces > 1) read at the hits
 // from a finer grid baked once (one volume over the static bounds at `truthSpacing`,
-// `probeRays` rays). Each candidate is baked as the real bake will be (`bounces`) with
+// `probeRays` rays, stored sparse: the gather's hits lie on surfaces, whose cells keep all
+// their corner probes, so the probes in open air need no rays; on the five shared scenes,
+// rooms and the courtyard the searches chose the same shifts with it, to the same estimates). Each candidate is baked as the real bake will be (`bounces`) with
 // `probeRays` rays, sampled at the same points, and scored with irradianceErrors().relative
 // (IrradianceError.h). The bounce count matters: with one bounce the dark regions that only
 // the second bounce lights dominate the error, and the ranking of shifts changed on the
@@ -48,7 +50,10 @@ public:
                            const Scenario& scenario, float sealedBelow, float truthSpacing,
                            const PlacementErrorSettings& settings = {});
     // The candidate's mean relative error (sparse: stored as `bake --sparse` stores it).
-    double relativeError(const std::vector<ProbeVolume>& volumes, bool sparse) const;
+    // `threads` (0: all cores) never changes the result; < 0: the settings' count. Safe to
+    // call from several threads at once (the lattice search scores an axis's shifts so).
+    double relativeError(const std::vector<ProbeVolume>& volumes, bool sparse,
+                         int threads = -1) const;
     std::size_t pointCount() const { return points_.size(); }
 
 private:

@@ -221,4 +221,27 @@ ProbeTexture unpackTiles(const ProbeTexture& packed, const std::vector<int>& slo
     return out;
 }
 
+void zeroUnslottedTiles(ProbeTexture& t, const std::vector<int>& slots,
+                        const glm::ivec3& denseCounts, int tile, StorageFormat f) {
+    if (t.stored.size() != storedBytes(t.shape, f) ||
+        t.shape != shapeFor(denseCounts, tile, t.shape.channels))
+        throw Error("zeroUnslottedTiles: texture does not match its grid");
+    const Units u = unitsOf(t.shape, f);
+    const int tileUnits = tile / u.texels;
+    const std::size_t row = std::size_t(t.shape.width / u.texels) * u.bytes;
+    const std::size_t layer = row * std::size_t(t.shape.height / u.texels);
+    ProbeVolume grid;
+    grid.counts = denseCounts;
+    for (std::size_t i = 0; i < slots.size(); ++i) {
+        if (slots[i] >= 0) continue;
+        const glm::ivec3 at = grid.probeCoords(int(i)); // (x, layer, z), as copyTile reads it
+        for (int r = 0; r < tileUnits; ++r)
+            std::memset(t.stored.data() + std::size_t(at.y) * layer +
+                            std::size_t(at.z * tileUnits + r) * row +
+                            std::size_t(at.x * tileUnits) * u.bytes,
+                        0, std::size_t(tileUnits) * u.bytes);
+    }
+    decodeStored(t, f);
+}
+
 } // namespace pb::probes

@@ -120,6 +120,11 @@ ProbeTexture packTiles(const ProbeTexture& dense, const std::vector<int>& slots,
 ProbeTexture unpackTiles(const ProbeTexture& packed, const std::vector<int>& slots,
                          const glm::ivec3& denseCounts, const glm::ivec3& packedCounts, int tile,
                          StorageFormat f);
+// unpackTiles(packTiles(t, ...)) done in place: the stored bytes of the tiles without a slot
+// zeroed, and the texels decoded again. The same bytes and texels, without the two copies
+// (sparse storage applies it to every texture of every bake, the lattice search's trials too).
+void zeroUnslottedTiles(ProbeTexture& t, const std::vector<int>& slots,
+                        const glm::ivec3& denseCounts, int tile, StorageFormat f);
 
 // GPU bytes of the per-probe state texture (RGBA32F, every grid probe): for sparse volumes
 // the indirection, counted by the memory report.

@@ -248,17 +248,12 @@ void storeOnly(ProbeSet& set, const std::vector<std::vector<std::uint8_t>>& keep
             states[i].irradianceOnly = valid && !keep[vi][i] && tiles[vi][i];
             states[i].valid = states[i].stored || states[i].irradianceOnly;
         }
-        // Zero what is not stored the way the file's round trip does: pack, then unpack.
-        auto roundTrip = [&](ProbeTexture& t, int tile, const std::vector<int>& slots) {
-            const glm::ivec3 packed = packedCounts(
-                std::size_t(std::count_if(slots.begin(), slots.end(), [](int s) { return s >= 0; })),
-                v.counts);
-            t = unpackTiles(packTiles(t, slots, v.counts, packed, tile, set.format()), slots,
-                            v.counts, packed, tile, set.format());
-        };
-        roundTrip(set.visibility[vi], kVisibilityTile, packedSlots(states));
+        // Zero what is not stored the way the file's round trip (pack, then unpack) does.
+        zeroUnslottedTiles(set.visibility[vi], packedSlots(states), v.counts, kVisibilityTile,
+                           set.format());
         for (auto& scenario : set.irradiance)
-            roundTrip(scenario[vi], kIrradianceTile, irradianceSlots(states));
+            zeroUnslottedTiles(scenario[vi], irradianceSlots(states), v.counts, kIrradianceTile,
+                               set.format());
         // The SH record keeps the probes with irradiance (ProbeFile.cpp): the rest read zeros.
         for (auto& scenario : set.sh)
             for (std::size_t p = 0; p < states.size() && vi < scenario.size(); ++p)
