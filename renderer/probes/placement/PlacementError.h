@@ -14,8 +14,9 @@
 // from a finer grid baked once (one volume over the static bounds at `truthSpacing`,
 // `probeRays` rays, stored sparse: the gather's hits lie on surfaces, whose cells keep all
 // their corner probes, so the probes in open air need no rays; on the five shared scenes,
-// rooms and the courtyard the searches chose the same shifts with it, to the same estimates). Each candidate is baked as the real bake will be (`bounces`) with
-// `probeRays` rays, sampled at the same points, and scored with irradianceErrors().relative
+// rooms and the courtyard the searches chose the same shifts with it, to the same
+// estimates). Each candidate is baked as the real bake will be (`bounces`) with `probeRays`
+// rays, sampled at the same points, and scored with irradianceErrors().relative
 // (IrradianceError.h). The bounce count matters: with one bounce the dark regions that only
 // the second bounce lights dominate the error, and the ranking of shifts changed on the
 // space-ship hallway. Built once per scene and scenario; deterministic for any thread count.

@@ -26,21 +26,25 @@ glm::ivec3 gridPositionOf(int slot, const glm::ivec3& grid) {
     return {t.x, t.z, t.y};
 }
 
+// Byte offset of row `r` (in units) of the tile at grid position `at` (x, layer, z) of a
+// texture of `shape`: the layout copyTile and zeroUnslottedTiles share.
+std::size_t tileRowOffset(const TextureShape& shape, const glm::ivec3& at, int tile, int r,
+                          const Units& u) {
+    const int tileUnits = tile / u.texels;
+    const std::size_t row = std::size_t(shape.width / u.texels) * u.bytes;
+    const std::size_t layer = row * std::size_t(shape.height / u.texels);
+    return std::size_t(at.y) * layer + std::size_t(at.z * tileUnits + r) * row +
+           std::size_t(at.x * tileUnits) * u.bytes;
+}
+
 // Copies one tile of stored bytes from grid position `from` of `src` to `to` of `dst`.
 void copyTile(const ProbeTexture& src, const glm::ivec3& from, ProbeTexture& dst,
               const glm::ivec3& to, int tile, const Units& u) {
     const int tileUnits = tile / u.texels;
-    const std::size_t srcRow = std::size_t(src.shape.width / u.texels) * u.bytes;
-    const std::size_t dstRow = std::size_t(dst.shape.width / u.texels) * u.bytes;
-    const std::size_t srcLayer = srcRow * std::size_t(src.shape.height / u.texels);
-    const std::size_t dstLayer = dstRow * std::size_t(dst.shape.height / u.texels);
-    for (int r = 0; r < tileUnits; ++r) {
-        const std::size_t s = from.y * srcLayer + std::size_t(from.z * tileUnits + r) * srcRow +
-                              std::size_t(from.x * tileUnits) * u.bytes;
-        const std::size_t d = to.y * dstLayer + std::size_t(to.z * tileUnits + r) * dstRow +
-                              std::size_t(to.x * tileUnits) * u.bytes;
-        std::memcpy(dst.stored.data() + d, src.stored.data() + s, std::size_t(tileUnits) * u.bytes);
-    }
+    for (int r = 0; r < tileUnits; ++r)
+        std::memcpy(dst.stored.data() + tileRowOffset(dst.shape, to, tile, r, u),
+                    src.stored.data() + tileRowOffset(src.shape, from, tile, r, u),
+                    std::size_t(tileUnits) * u.bytes);
 }
 
 TextureShape shapeFor(const glm::ivec3& counts, int tile, int channels) {
@@ -228,18 +232,14 @@ void zeroUnslottedTiles(ProbeTexture& t, const std::vector<int>& slots,
         throw Error("zeroUnslottedTiles: texture does not match its grid");
     const Units u = unitsOf(t.shape, f);
     const int tileUnits = tile / u.texels;
-    const std::size_t row = std::size_t(t.shape.width / u.texels) * u.bytes;
-    const std::size_t layer = row * std::size_t(t.shape.height / u.texels);
     ProbeVolume grid;
     grid.counts = denseCounts;
     for (std::size_t i = 0; i < slots.size(); ++i) {
         if (slots[i] >= 0) continue;
         const glm::ivec3 at = grid.probeCoords(int(i)); // (x, layer, z), as copyTile reads it
         for (int r = 0; r < tileUnits; ++r)
-            std::memset(t.stored.data() + std::size_t(at.y) * layer +
-                            std::size_t(at.z * tileUnits + r) * row +
-                            std::size_t(at.x * tileUnits) * u.bytes,
-                        0, std::size_t(tileUnits) * u.bytes);
+            std::memset(t.stored.data() + tileRowOffset(t.shape, at, tile, r, u), 0,
+                        std::size_t(tileUnits) * u.bytes);
     }
     decodeStored(t, f);
 }
