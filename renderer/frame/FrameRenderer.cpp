@@ -22,7 +22,9 @@ namespace pb::render {
 FrameSettings defaultFrameSettings(const scene::Scene& scene) {
     FrameSettings s;
     s.exposure = scene.exposure;
-    s.ambientUp = scene.sky.radiance * (0.25f * glm::pi<float>());
+    // The sky's irradiance on an open upward surface (pi L) times the share of the sky the
+    // scene's surfaces see: a closed interior is not lit like an open square.
+    s.ambientUp = scene.sky.radiance * (glm::pi<float>() * scene.sky.visibility);
     s.ambientDown = s.ambientUp * 0.3f; // light bounced off the ground is dimmer than the sky
     return s;
 }

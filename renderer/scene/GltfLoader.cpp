@@ -9,6 +9,7 @@
 #include "scene/GltfNodes.h"
 #include "scene/GltfPrepass.h"
 #include "scene/SceneLoader.h"
+#include "scene/SkyVisibility.h"
 
 #include <cmath>
 #include <cstring>
@@ -148,6 +149,7 @@ Scene loadGltfUnchecked(const std::string& path, const SceneOptions& options) {
     emitGroupedWarnings(ctx);
     checkExtent(path, scene.worldBounds());
     scene.views.front() = makeDefaultView(scene);
+    scene.sky.visibility = meanSkyVisibility(scene);
     return scene;
 }
 

@@ -26,12 +26,15 @@ public:
     // Nearest hit along origin + t * direction (direction unit length) for t in (0, maxDistance].
     RayHit cast(const glm::vec3& origin, const glm::vec3& direction, float maxDistance) const;
 
-private:
     struct Tri {
         glm::vec3 v0, e1, e2;
         glm::vec3 facing; // geometric normal agreeing with the vertex normals; 0: double-sided
         bool emissive = false;
     };
+    // The world-space triangles cast() tests (static, visible), for sampling their surfaces.
+    const std::vector<Tri>& triangles() const { return tris_; }
+
+private:
     void build();
     size_t cellIndex(const glm::ivec3& cell) const;
 

@@ -96,6 +96,10 @@ struct Sun {
 
 struct Sky {
     glm::vec3 radiance{0.35f, 0.45f, 0.6f}; // constant radiance; a uniform sky L gives E = pi*L
+    // The share of the sky the scene's surfaces see (meanSkyVisibility, SkyVisibility.h): the
+    // flat ambient of frames without GI is pi * L * visibility. The loaders measure it; 0.25
+    // (the old fixed pi/4) for scenes built by hand.
+    float visibility = 0.25f;
 };
 
 struct View {

@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "scene/BuiltinScenes.h"
 #include "scene/DefaultView.h"
+#include "scene/SkyVisibility.h"
 
 #include <algorithm>
 #include <cctype>
@@ -63,6 +64,7 @@ Scene makeBuiltinScene(const std::string& name) {
         s.materials.back().name = "default";
     }
     s.views.insert(s.views.begin(), makeDefaultView(s));
+    s.sky.visibility = meanSkyVisibility(s);
     return s;
 }
 
@@ -78,7 +80,10 @@ Scene loadScene(const std::string& nameOrPath, const SceneOptions& options) {
                 throw Error("--dynamic: no node named '" + node + "' in built-in scene '" +
                             nameOrPath + "'");
         }
-        if (!options.dynamicNodes.empty()) s.views.front() = makeDefaultView(s);
+        if (!options.dynamicNodes.empty()) { // dynamic objects neither block nor hold a view
+            s.views.front() = makeDefaultView(s);
+            s.sky.visibility = meanSkyVisibility(s);
+        }
         return s;
     }
     if (!hasGltfExtension(nameOrPath))
