@@ -7,6 +7,7 @@
 #include "probes/store/ProbeFile.h"
 #include "probes/ProbeSampler.h"
 
+#include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <set>
@@ -228,6 +229,43 @@ TEST(BakeDeterminism, SameInputsGiveIdenticalBytesForAnyThreadCount) {
     r.slabProbes = 0;
     r.settings.seed = 2;
     EXPECT_NE(serializeProbeSet(bakeProbes(s, r)), reference) << "the seed must matter";
+}
+
+// The lattice search's trial bakes skip what their sampler never reads (the SH fit, the noise
+// measurement): their irradiance and visibility are the full bake's, byte for byte.
+TEST(BakeDeterminism, IrradianceOnlyTrialKeepsTheIrradianceBytes) {
+    pb::scene::Scene s = emptyScene(glm::vec3(0.2f, 0.3f, 0.5f));
+    s.sun.enabled = true;
+    int wall = addMaterial(s, glm::vec3(0.7f, 0.5f, 0.3f));
+    int lamp = addMaterial(s, glm::vec3(0.1f), glm::vec3(4.0f, 3.0f, 1.0f));
+    addInstance(s, boxPrimitive({-2, 0, -2}, {2, 3, 2}, true, wall)); // closed: lit inside only
+    addInstance(s, boxPrimitive({-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f}, false, wall));
+    addInstance(s, boxPrimitive({-0.3f, 2.5f, -0.3f}, {0.3f, 2.9f, 0.3f}, false, lamp));
+    pb::scene::Light point;
+    point.position = {1, 1, 1};
+    point.intensity = 5.0f;
+    s.lights.push_back(point);
+    BakeRequest r = request({volume("v", {0, 1.5f, 0}, {1.8f, 1.4f, 1.8f}, {4, 3, 4})}, s, 2, 64);
+    r.settings.noiseTarget = 0.0f; // as the trials bake: one round
+    BakeStats fullStats, trialStats;
+    const ProbeSet full = bakeProbes(s, r, &fullStats);
+    r.irradianceOnly = true;
+    const ProbeSet trial = bakeProbes(s, r, &trialStats);
+    ASSERT_EQ(trial.irradiance.size(), full.irradiance.size());
+    ASSERT_GT(*std::max_element(full.irradiance[0][0].texels.begin(),
+                                full.irradiance[0][0].texels.end()), 0.1f) << "a lit room";
+    EXPECT_EQ(trial.irradiance[0][0].texels, full.irradiance[0][0].texels);
+    EXPECT_EQ(trial.visibility[0].texels, full.visibility[0].texels);
+    auto shLength = [](const ProbeSet& set) {
+        double sum = 0.0;
+        for (const glm::vec3& c : set.sh[0][0])
+            sum += double(glm::length(c));
+        return sum;
+    };
+    EXPECT_GT(shLength(full), 0.0);
+    EXPECT_EQ(shLength(trial), 0.0) << "a trial fits no SH";
+    EXPECT_GT(fullStats.noiseMean, 0.0);
+    EXPECT_EQ(trialStats.noiseMean, 0.0) << "a trial measures no noise";
 }
 
 TEST(BakeNesting, ChildRingTakesTheParentsIrradiance) {

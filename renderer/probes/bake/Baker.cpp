@@ -374,8 +374,10 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
         if (!mask.needed(set, v, p)) return;
         float* out = irr[size_t(t)].data();
         run.slab.convolve(i, conv, out);
-        run.slab.projectSh(i, conv, &run.passSh[size_t(v)][size_t(p) * kShL2Coefficients]);
-        run.noise.firstRound(i, run.slab, conv, out);
+        if (!run.req.irradianceOnly) {
+            run.slab.projectSh(i, conv, &run.passSh[size_t(v)][size_t(p) * kShL2Coefficients]);
+            run.noise.firstRound(i, run.slab, conv, out);
+        }
         for (int y = 0; y < kIrradianceInterior; ++y)
             for (int x = 0; x < kIrradianceInterior; ++x)
                 for (int ch = 0; ch < 3; ++ch)
@@ -625,7 +627,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     const RadianceMask mask(run);
     bakeRadiance(run, mask);
     // The SH technique's probes: every pass's ray samples projected and summed (probes/sh/ShIrradiance.h).
-    finishSh(run);
+    if (!run.req.irradianceOnly) finishSh(run);
     const std::vector<BakePhase> phaseTimes = run.phases.take();
     if (req.recordRays) *req.recordRays = own->stopRecording();
 

@@ -58,6 +58,10 @@ struct BakeRequest {
     // samples of probes that must sit where the file's full bake put them. An input (hashed
     // when set).
     int geometryRays = 0;
+    // Not an input: a trial bake whose irradiance alone is read (the lattice search's,
+    // PlacementError.h): no SH projection and no noise measurement (its set's SH stay zero
+    // and its noise statistics empty). The irradiance is byte for byte the full bake's.
+    bool irradianceOnly = false;
 };
 
 struct BakeProgress {

@@ -49,6 +49,7 @@ PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const 
     req.threads = settings.threads;
     req.rayScene = &rs;
     req.sparse = true; // see the header: the gather reads surface cells
+    req.irradianceOnly = true;
     const ProbeSet earlier = bakeProbes(scene, req);
     const ProbeSampler sampler(earlier, 0);
     truth_ = gatherIrradiance(rs, scenario, scene.lights, points_, &sampler, g);
@@ -68,6 +69,7 @@ double PlacementErrorEstimate::relativeError(const std::vector<ProbeVolume>& vol
     req.threads = threads < 0 ? settings_.threads : threads;
     req.sparse = sparse;
     req.rayScene = &rays_;
+    req.irradianceOnly = true; // the sampler below reads nothing else
     const ProbeSet set = bakeProbes(scene_, req);
     const ProbeSampler sampler(set, 0);
     std::vector<SampleQuery> queries;
