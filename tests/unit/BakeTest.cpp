@@ -38,6 +38,23 @@ BakeRequest request(std::vector<ProbeVolume> vols, const pb::scene::Scene& s, in
     return r;
 }
 
+// A closed room (inward faces, so the sun and sky stay outside) lit from inside by an emissive
+// box and a point light; `wall` (optional) receives the walls' material index.
+pb::scene::Scene litClosedRoom(int* wall = nullptr) {
+    pb::scene::Scene s = emptyScene(glm::vec3(0.2f, 0.3f, 0.5f));
+    s.sun.enabled = true;
+    const int walls = addMaterial(s, glm::vec3(0.7f, 0.5f, 0.3f));
+    if (wall) *wall = walls;
+    int lamp = addMaterial(s, glm::vec3(0.1f), glm::vec3(4.0f, 3.0f, 1.0f));
+    addInstance(s, boxPrimitive({-2, 0, -2}, {2, 3, 2}, true, walls));
+    addInstance(s, boxPrimitive({-0.3f, 2.5f, -0.3f}, {0.3f, 2.9f, 0.3f}, false, lamp));
+    pb::scene::Light point;
+    point.position = {1, 1, 1};
+    point.intensity = 5.0f;
+    s.lights.push_back(point);
+    return s;
+}
+
 // Calls f(value) for every interior irradiance texel channel (RGB) of valid probes.
 template <class F> void forEachIrradiance(const ProbeSet& set, int scenario, F f) {
     for (size_t v = 0; v < set.volumes.size(); ++v) {
@@ -200,16 +217,7 @@ TEST(BakeStatsPhases, SplitTheTracingTimeWithoutGapsOrOverlap) {
 }
 
 TEST(BakeDeterminism, SameInputsGiveIdenticalBytesForAnyThreadCount) {
-    pb::scene::Scene s = emptyScene(glm::vec3(0.2f, 0.3f, 0.5f));
-    s.sun.enabled = true;
-    int wall = addMaterial(s, glm::vec3(0.7f, 0.5f, 0.3f));
-    int lamp = addMaterial(s, glm::vec3(0.1f), glm::vec3(4.0f, 3.0f, 1.0f));
-    addInstance(s, boxPrimitive({-2, 0, -2}, {2, 3, 2}, true, wall));
-    addInstance(s, boxPrimitive({-0.3f, 2.5f, -0.3f}, {0.3f, 2.9f, 0.3f}, false, lamp));
-    pb::scene::Light point;
-    point.position = {1, 1, 1};
-    point.intensity = 5.0f;
-    s.lights.push_back(point);
+    const pb::scene::Scene s = litClosedRoom();
     BakeRequest r = request({volume("v", {0, 1.5f, 0}, {1.8f, 1.4f, 1.8f}, {4, 3, 4})}, s, 2, 64);
     r.settings.format = StorageFormat::Rgba16f;
     std::vector<std::uint8_t> reference;
@@ -234,17 +242,9 @@ TEST(BakeDeterminism, SameInputsGiveIdenticalBytesForAnyThreadCount) {
 // The lattice search's trial bakes skip what their sampler never reads (the SH fit, the noise
 // measurement): their irradiance and visibility are the full bake's, byte for byte.
 TEST(BakeDeterminism, IrradianceOnlyTrialKeepsTheIrradianceBytes) {
-    pb::scene::Scene s = emptyScene(glm::vec3(0.2f, 0.3f, 0.5f));
-    s.sun.enabled = true;
-    int wall = addMaterial(s, glm::vec3(0.7f, 0.5f, 0.3f));
-    int lamp = addMaterial(s, glm::vec3(0.1f), glm::vec3(4.0f, 3.0f, 1.0f));
-    addInstance(s, boxPrimitive({-2, 0, -2}, {2, 3, 2}, true, wall)); // closed: lit inside only
-    addInstance(s, boxPrimitive({-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f}, false, wall));
-    addInstance(s, boxPrimitive({-0.3f, 2.5f, -0.3f}, {0.3f, 2.9f, 0.3f}, false, lamp));
-    pb::scene::Light point;
-    point.position = {1, 1, 1};
-    point.intensity = 5.0f;
-    s.lights.push_back(point);
+    int wall = 0;
+    pb::scene::Scene s = litClosedRoom(&wall);
+    addInstance(s, boxPrimitive({-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f}, false, wall)); // a block
     BakeRequest r = request({volume("v", {0, 1.5f, 0}, {1.8f, 1.4f, 1.8f}, {4, 3, 4})}, s, 2, 64);
     r.settings.noiseTarget = 0.0f; // as the trials bake: one round
     BakeStats fullStats, trialStats;
