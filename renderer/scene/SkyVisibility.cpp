@@ -47,8 +47,15 @@ float meanSkyVisibility(const RayGrid& grid, int samples) {
         bounds.extend(t.v0 + t.e1);
         bounds.extend(t.v0 + t.e2);
     }
+    // A flat scene (a floor alone) gets a little height on its flat axes, or every eye would
+    // lie in its plane and see nothing.
+    const float diagonal = glm::length(bounds.size());
+    for (int a = 0; a < 3; ++a) {
+        const float grow = std::max(0.0f, 0.01f * diagonal - (bounds.max[a] - bounds.min[a]));
+        bounds.min[a] -= 0.5f * grow;
+        bounds.max[a] += 0.5f * grow;
+    }
     const glm::vec3 size = bounds.size();
-    const float diagonal = glm::length(size);
     const float lift = 1e-4f * diagonal; // off the surface, past RayGrid's own minimum distance
     Lcg rng;
     int open = 0, seen = 0;
@@ -68,7 +75,9 @@ float meanSkyVisibility(const RayGrid& grid, int samples) {
         const glm::vec3 r = cosineDirection(hit.normal, rng);
         if (!std::isfinite(grid.cast(p + hit.normal * lift, r, 2.0f * diagonal).distance)) ++open;
     }
-    return seen > 0 ? float(open) / float(seen) : 0.0f;
+    // Nothing seen from inside the bounds (every surface faces away from them): nothing
+    // encloses anything, the sky is open.
+    return seen > 0 ? float(open) / float(seen) : 1.0f;
 }
 
 float meanSkyVisibility(const Scene& scene, int samples) {

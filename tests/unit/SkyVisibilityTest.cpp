@@ -37,6 +37,13 @@ TEST(SkyVisibility, OpenFloorSeesNearlyAllOfIt) {
     EXPECT_LE(v, 1.0f);
 }
 
+TEST(SkyVisibility, AFloorAloneSeesAllOfIt) {
+    // No height at all: the eyes must still find the floor (from above; its back is not seen).
+    scene::Primitive floor;
+    test::addQuad(floor, {-10, 0, -10}, {20, 0, 0}, {0, 0, 20}, {0, 1, 0});
+    EXPECT_EQ(scene::meanSkyVisibility(sceneOf({floor})), 1.0f);
+}
+
 TEST(SkyVisibility, RoomWithoutCeilingSeesItsOpening) {
     // A unit cube room open at the top: the view factor of a cube's face to the opposite face
     // is 0.1998, to an adjacent face 0.2000, so every face sees 0.2 of the sky.
