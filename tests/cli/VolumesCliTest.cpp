@@ -44,7 +44,12 @@ TEST(VolumesCli, RankOrdersByLostAccuracyAndBudgetKeepsTheValuableChild) {
     ASSERT_EQ(byName.size(), 3u);
     EXPECT_GT(byName["sunlit_room"]["loss"].get<double>(),
               byName["dark_room"]["loss"].get<double>());
-    EXPECT_GT(byName["house"]["loss"].get<double>(), byName["sunlit_room"]["loss"].get<double>());
+    // The house with its children omitted leaves every pixel to the ambient, which in this
+    // closed house is nearly black (the sky share its surfaces see, SkyVisibility.h): the loss is
+    // about all of the indirect light, a relative MSE near 1. (With the old fixed pi/4 sky
+    // ambient it was several times that, and ranked the house first.)
+    EXPECT_GT(byName["house"]["loss"].get<double>(), 0.8);
+    EXPECT_LT(byName["house"]["loss"].get<double>(), 1.05);
     EXPECT_EQ(j["drop_order"][0]["volume"], "dark_room");
     ASSERT_TRUE(fs::exists(probes.string() + ".ranks.json"));
 
