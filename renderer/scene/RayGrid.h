@@ -25,16 +25,16 @@ public:
     const std::vector<glm::vec3>& emitterCentroids() const { return emitters_; }
     // Nearest hit along origin + t * direction (direction unit length) for t in (0, maxDistance].
     RayHit cast(const glm::vec3& origin, const glm::vec3& direction, float maxDistance) const;
+    // The box the grid covers: the triangles' bounds, every side at least 1e-3 of the
+    // diagonal (empty without triangles).
+    const Bounds& bounds() const { return bounds_; }
 
+private:
     struct Tri {
         glm::vec3 v0, e1, e2;
         glm::vec3 facing; // geometric normal agreeing with the vertex normals; 0: double-sided
         bool emissive = false;
     };
-    // The world-space triangles cast() tests (static, visible), for sampling their surfaces.
-    const std::vector<Tri>& triangles() const { return tris_; }
-
-private:
     void build();
     size_t cellIndex(const glm::ivec3& cell) const;
 

@@ -39,14 +39,8 @@ glm::vec3 cosineDirection(const glm::vec3& n, Lcg& rng) {
 } // namespace
 
 float meanSkyVisibility(const RayGrid& grid, int samples) {
-    const std::vector<RayGrid::Tri>& tris = grid.triangles();
-    if (tris.empty() || samples <= 0) return 0.0f;
-    Bounds bounds;
-    for (const RayGrid::Tri& t : tris) {
-        bounds.extend(t.v0);
-        bounds.extend(t.v0 + t.e1);
-        bounds.extend(t.v0 + t.e2);
-    }
+    if (grid.empty() || samples <= 0) return 0.0f;
+    Bounds bounds = grid.bounds();
     // A flat scene (a floor alone) gets a little height on its flat axes, or every eye would
     // lie in its plane and see nothing.
     const float diagonal = glm::length(bounds.size());
