@@ -24,9 +24,9 @@ namespace pb::render {
 
 class GiUpsamplePass;
 
-// Defaults derived from the scene: its exposure, and an ambient of a quarter of the sky's
-// irradiance from above, less from below (a crude stand-in for sky visibility until the GI
-// passes fill the indirect input).
+// Defaults derived from the scene: its exposure, and an ambient of the sky's irradiance times
+// the share of the sky its surfaces see (Sky::visibility) from above, less from below: the
+// indirect light of pixels no probe volume covers, and of frames without GI.
 FrameSettings defaultFrameSettings(const scene::Scene& scene);
 
 // Baked probes for the GI apply pass; the set is only read during construction (uploaded).
