@@ -207,12 +207,12 @@ View makeDefaultView(const Bounds& b) {
 // opposite direction and the other horizontal axis. The first pose that sees well wins, else
 // the best-scoring one. Each pose is judged by what it sees (look(): front faces, sky, back
 // faces, depth, an eye inside a closed mesh, how much of it receives light). Deterministic.
-View makeDefaultView(const Scene& scene) {
+View makeDefaultView(const Scene& scene) { return makeDefaultView(scene, RayGrid(scene)); }
+
+View makeDefaultView(const Scene& scene, const RayGrid& grid) {
     const Bounds b = scene.staticWorldBounds();
     const View simple = makeDefaultView(b);
-    if (b.empty()) return simple;
-    const RayGrid grid(scene);
-    if (grid.empty()) return simple;
+    if (b.empty() || grid.empty()) return simple;
     const glm::vec3 size = b.size();
     const float diagonal = glm::length(size);
     const int longAxis = size.x > size.z ? 0 : 2;

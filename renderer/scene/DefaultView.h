@@ -11,6 +11,9 @@ View makeDefaultView(const Bounds& staticBounds);
 // is in or against something or the view is blocked, the nearest pose (in a fixed search
 // order) that sees well. See DefaultView.cpp.
 View makeDefaultView(const Scene& scene);
+// The same with the scene's ray grid built already (the loaders share one with SkyVisibility).
+class RayGrid;
+View makeDefaultView(const Scene& scene, const RayGrid& grid);
 
 // What a view sees of the static geometry, from a 16x9 grid of CPU rays across its frustum
 // (16:9) and 14 rays all around the eye. The default view is judged by it.

@@ -1,6 +1,5 @@
 // loadGltf: tinygltf parses the file, the Gltf* parts check and convert what it found.
 #include "core/FileIO.h"
-#include "scene/DefaultView.h"
 #include "scene/GltfContext.h"
 #include "scene/GltfDecompress.h"
 #include "scene/GltfInputChecks.h"
@@ -9,7 +8,6 @@
 #include "scene/GltfNodes.h"
 #include "scene/GltfPrepass.h"
 #include "scene/SceneLoader.h"
-#include "scene/SkyVisibility.h"
 
 #include <cmath>
 #include <cstring>
@@ -148,8 +146,7 @@ Scene loadGltfUnchecked(const std::string& path, const SceneOptions& options) {
     if (scene.materials.empty()) gltf::defaultMaterial(ctx);
     emitGroupedWarnings(ctx);
     checkExtent(path, scene.worldBounds());
-    scene.views.front() = makeDefaultView(scene);
-    scene.sky.visibility = meanSkyVisibility(scene);
+    deriveFromGeometry(scene);
     return scene;
 }
 

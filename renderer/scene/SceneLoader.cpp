@@ -3,6 +3,7 @@
 #include "core/Error.h"
 #include "scene/BuiltinScenes.h"
 #include "scene/DefaultView.h"
+#include "scene/RayGrid.h"
 #include "scene/SkyVisibility.h"
 
 #include <algorithm>
@@ -63,9 +64,15 @@ Scene makeBuiltinScene(const std::string& name) {
         s.materials.push_back(Material{});
         s.materials.back().name = "default";
     }
-    s.views.insert(s.views.begin(), makeDefaultView(s));
-    s.sky.visibility = meanSkyVisibility(s);
+    s.views.insert(s.views.begin(), View{});
+    deriveFromGeometry(s);
     return s;
+}
+
+void deriveFromGeometry(Scene& scene) {
+    const RayGrid grid(scene);
+    scene.views.front() = makeDefaultView(scene, grid);
+    scene.sky.visibility = meanSkyVisibility(grid);
 }
 
 Scene loadScene(const std::string& nameOrPath, const SceneOptions& options) {
@@ -80,10 +87,8 @@ Scene loadScene(const std::string& nameOrPath, const SceneOptions& options) {
                 throw Error("--dynamic: no node named '" + node + "' in built-in scene '" +
                             nameOrPath + "'");
         }
-        if (!options.dynamicNodes.empty()) { // dynamic objects neither block nor hold a view
-            s.views.front() = makeDefaultView(s);
-            s.sky.visibility = meanSkyVisibility(s);
-        }
+        // Dynamic objects neither block a view nor the sky.
+        if (!options.dynamicNodes.empty()) deriveFromGeometry(s);
         return s;
     }
     if (!hasGltfExtension(nameOrPath))

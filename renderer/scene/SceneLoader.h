@@ -29,6 +29,11 @@ Scene loadGltf(const std::string& path, const SceneOptions& options = {});
 // Built-in procedural scenes: "cornell", "rooms", "courtyard" (and "empty": no geometry, for
 // furnace tests). Throws pb::Error listing the valid names for an unknown one.
 Scene makeBuiltinScene(const std::string& name);
+
+// What loading derives from the static geometry, from one CPU ray grid (RayGrid.h): the first
+// view becomes the default view (DefaultView.h) and the sky's share is measured
+// (SkyVisibility.h). The loaders call it once they know which instances are dynamic.
+void deriveFromGeometry(Scene& scene);
 const std::vector<std::string>& builtinSceneNames();
 bool isBuiltinScene(const std::string& name);
 
