@@ -21,10 +21,11 @@ uniform mat4 u_shadowSceneFromRel; // ... -> scene map texture space
 uniform int u_sunEnabled;
 uniform vec3 u_toSun;
 uniform vec3 u_sunIrradiance;      // colour * intensity
-uniform float u_shadowNormalOffset; // world units, 1.5 texels of the view map (scene map: ...Scene...)
+uniform float u_shadowNormalOffset; // world units, half a texel of the view map (scene map: ...Scene...)
 uniform float u_shadowSceneNormalOffset;
 uniform float u_shadowTexel;        // one texel of the view map in texture space
 uniform float u_shadowDepthTexel;   // one texel's world size in depth-texture units
+uniform mat3 u_shadowNormalToMap;   // world normal -> normal in the view map's texture space
 uniform float u_shadowSceneDepthTexel;
 uniform vec3 u_skyRadiance;
 uniform vec3 u_ambientUp;          // indirect irradiance for an upward normal...
@@ -76,39 +77,91 @@ vec3 indirectIrradiance(vec3 n, ivec2 px) {
 }
 #endif
 
-// Depth bias in texels of the map: a constant for the texel's own depth step, plus a slope
-// term that follows the receiver's angle to the sun, clamped so that a surface seen edge-on
-// does not push its comparison behind a thin wall (ShadowPass.cpp, kDepthBias).
-uniform vec3 u_shadowBias; // x: constant texels, y: texels per unit of tan(angle), z: max tan
+// The receiver's depth bias, in texels of the map read. Most of the bias is the casters'
+// (ShadowPass.cpp, shadow_depth.vert: each caster drawn moved into its back side), so the
+// receiver keeps only x: a constant half texel; y: the steepest receiver plane, in texels of
+// depth per texel, that the PCF taps follow.
+uniform vec2 u_shadowBias;
+
+// Above every caster's depth and below the clear depth 1: compared with it, a tap passes only
+// where nothing was drawn (the maps span the scene's diameter, so no caster comes this far).
+const float kOpenDepth = 0.99999;
 
 // The receiver in one map's texture space: normal-offset by sin(angle) x the map's offset,
-// depth-biased by the map's texel (u_shadowBias).
-vec3 shadowCoord(mat4 fromRel, float normalOffset, float depthTexel, vec3 rel, vec3 n,
-                 float sinT, float tanT) {
+// depth-biased by u_shadowBias.x of the map's texels.
+vec3 shadowCoord(mat4 fromRel, float normalOffset, float depthTexel, vec3 rel, vec3 n, float sinT) {
     vec4 s = fromRel * vec4(rel + n * (normalOffset * sinT), 1.0);
     vec3 p = s.xyz / s.w;
-    p.z -= depthTexel * (u_shadowBias.x + u_shadowBias.y * tanT);
+    p.z -= depthTexel * u_shadowBias.x;
     return p;
 }
 
-// The view map's 3 x 3 bilinear PCF where it covers the receiver (with the kernel's reach);
-// else the whole-scene map's single bilinear tap (a rare fallback: surfaces the view fit's
-// rays missed, dynamic objects), else lit (outside the scene's bounds).
+// The view map's 3 x 3 bilinear PCF, as four taps: along one axis the three taps at -1, 0, +1
+// texel weigh the four texels they touch 1 - f, 1, 1, f (f: the receiver's fraction past a
+// texel centre), which two bilinear taps give exactly, with weights 2 - f and 1 + f.
+struct Pcf4 {
+    vec2 uv[2];     // the two taps' positions along x and y: [0] between texels i0 - 1 and i0, [1] i0 + 1 and i0 + 2
+    vec2 weight[2]; // their weights, per axis (summing to 3)
+};
+
+Pcf4 pcf4(vec2 uv) {
+    vec2 c = uv / u_shadowTexel - 0.5;
+    vec2 i0 = floor(c);
+    vec2 f = c - i0;
+    Pcf4 k;
+    k.weight[0] = 2.0 - f;
+    k.weight[1] = 1.0 + f;
+    k.uv[0] = (i0 - 0.5 + 1.0 / k.weight[0]) * u_shadowTexel;
+    k.uv[1] = (i0 + 1.5 + f / k.weight[1]) * u_shadowTexel;
+    return k;
+}
+
+// The view map's PCF where it covers the receiver (with the kernel's reach); else the
+// whole-scene map's single bilinear tap (a rare fallback: surfaces the view fit's rays missed,
+// dynamic objects), else lit (outside the scene's bounds).
 float sunShadow(vec3 rel, vec3 n, float ndl) {
     float sinT = sqrt(max(1.0 - ndl * ndl, 0.0));
-    float tanT = min(sinT / max(ndl, 1e-3), u_shadowBias.z);
-    vec3 p = shadowCoord(u_shadowFromRel, u_shadowNormalOffset, u_shadowDepthTexel, rel, n, sinT, tanT);
+    vec3 p = shadowCoord(u_shadowFromRel, u_shadowNormalOffset, u_shadowDepthTexel, rel, n, sinT);
     float edge = 1.5 * u_shadowTexel;
     if (p.x > edge && p.x < 1.0 - edge && p.y > edge && p.y < 1.0 - edge) {
         if (p.z >= 1.0) return 1.0;
+        // A tap where the receiver's plane falls away from the sun compares the plane's depth
+        // there, not the centre's: a floor beside a wall's foot otherwise reads the foot one
+        // tap along as deeper than itself and is lit through it. Where the plane rises towards
+        // the sun the tap keeps the centre's depth: beyond a concave corner (a wall under the
+        // ceiling) the plane runs outside the room, in front of the occluder. Depth per unit of
+        // texture x and y, from the normal in the map's space, clamped at u_shadowBias.y texels
+        // of depth per texel.
+        vec3 nm = u_shadowNormalToMap * n;
+        float maxSlope = u_shadowBias.y * u_shadowDepthTexel / u_shadowTexel;
+        vec2 dz = clamp(-nm.xy / (abs(nm.z) > 1e-8 ? nm.z : 1e-8), -maxSlope, maxSlope);
+        Pcf4 k = pcf4(p.xy);
         float lit = 0.0;
-        for (int y = -1; y <= 1; ++y)
-            for (int x = -1; x <= 1; ++x)
-                lit += texture(u_shadowMap, vec3(p.xy + vec2(x, y) * u_shadowTexel, p.z));
-        return lit / 9.0;
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i) {
+                vec2 uv = vec2(k.uv[i].x, k.uv[j].y);
+                float z = p.z + max(dot(uv - p.xy, dz), 0.0);
+                lit += k.weight[i].x * k.weight[j].y * texture(u_shadowMap, vec3(uv, z));
+            }
+        // A penumbra: some taps may reach past the outline of every caster, where the map
+        // holds its clear depth and says lit whatever the receiver. A receiver on the outline
+        // (a room's back corner, its wall seen edge-on by the sun) got the sun through them.
+        // Average over the texels a caster was drawn into instead: the same taps compared with
+        // kOpenDepth pass only at cleared texels, so they count the lit weight that came from
+        // nowhere (issue 42, ShadowZeroThickness).
+        if (lit > 1e-4 && lit < 9.0 - 1e-4) {
+            float open = 0.0;
+            for (int j = 0; j < 2; ++j)
+                for (int i = 0; i < 2; ++i)
+                    open += k.weight[i].x * k.weight[j].y *
+                            texture(u_shadowMap, vec3(k.uv[i].x, k.uv[j].y, kOpenDepth));
+            float covered = 9.0 - open; // > 0 unless every tap read nothing: then lit
+            return covered > 1e-3 ? clamp((lit - open) / covered, 0.0, 1.0) : 1.0;
+        }
+        return clamp(lit / 9.0, 0.0, 1.0);
     }
     p = shadowCoord(u_shadowSceneFromRel, u_shadowSceneNormalOffset, u_shadowSceneDepthTexel, rel,
-                    n, sinT, tanT);
+                    n, sinT);
     if (p.x <= 0.0 || p.x >= 1.0 || p.y <= 0.0 || p.y >= 1.0 || p.z >= 1.0) return 1.0;
     return texture(u_shadowMapScene, p);
 }

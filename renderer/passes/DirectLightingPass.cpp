@@ -58,6 +58,7 @@ void DirectLightingPass::execute(FrameContext& frame) {
         prog.set("u_shadowTexel", v.texel);
         prog.set("u_shadowNormalOffset", v.normalOffset);
         prog.set("u_shadowDepthTexel", v.depthTexel);
+        prog.set("u_shadowNormalToMap", v.normalToMap);
         prog.set("u_shadowSceneFromRel", sc.fromRel);
         prog.set("u_shadowSceneNormalOffset", sc.normalOffset);
         prog.set("u_shadowSceneDepthTexel", sc.depthTexel);

@@ -30,17 +30,18 @@ struct ShadowMapView {
     const gl::Texture* map = nullptr;
     glm::mat4 fromRel{1.0f}; // camera-relative world -> shadow texture space [0,1]^3
     float texel = 0.0f;      // one texel in texture space
-    float normalOffset = 0.0f; // world units: kNormalOffsetTexels texels
+    float normalOffset = 0.0f; // world units: kNormalOffsetTexels texels (ShadowPass.cpp)
     float depthTexel = 0.0f;   // one texel's world size in depth-texture units
+    glm::mat3 normalToMap{1.0f}; // world normal -> the receiver plane's normal in texture space
 };
 
 struct ShadowResult {
     bool enabled = false;
     ShadowMapView view;  // fitted to what the camera sees
     ShadowMapView scene; // the whole scene: the fallback outside the view map
-    // Depth bias in texels of the map read (ShadowPass.cpp): x constant, y per unit of the
-    // receiver's tan(angle to the sun), z the largest tan that counts.
-    glm::vec3 bias{0.0f};
+    // The receiver's share of the depth bias (ShadowPass.cpp, kReceiverBias): x a constant in
+    // texels of the map read, y the steepest receiver plane the PCF taps follow.
+    glm::vec2 bias{0.0f};
 };
 
 // The GI evaluation target the apply pass filled, for the lighting (absent without probes).

@@ -2,33 +2,50 @@
 
 #include "scene/RayGrid.h"
 
+#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace pb::render {
 
 namespace {
 
-// Depth bias, in the lighting shader rather than glPolygonOffset: glPolygonOffset's slope
-// term follows the *caster's* slope without bound, and a thin wall seen edge-on by the sun
-// was pushed behind the floor it shadows. The shader's term follows the receiver's angle to
-// the sun and is clamped (lighting_direct.frag, sunShadow).
-// 1 texel, plus 1.5 texels per unit of tan(angle to the sun) up to tan = 3: chosen by a sweep
-// on the courtyard golden (acne on its far wall below it) and ShadowSeamLeakTest (leaks above
-// it), studies/results/2026-12-02-sun-shadow-view-fit.md.
-constexpr glm::vec3 kDepthBias{1.0f, 1.5f, 3.0f};
-constexpr double kNormalOffsetTexels = 1.5;
+// Depth bias, mostly on the casters (shadow_depth.vert), in texels of the map drawn: each caster
+// moves into its back side, by x texels plus y per unit of tan(angle to the sun), tan capped
+// at z. The side the sun lights is pushed away from the sun: it is also a receiver and must not
+// shadow itself. The side facing away from the sun is pulled towards it: the lighting never
+// lights it, it only occludes, and pulled it still covers the floor at a wall's foot and the
+// corner of a room of single faces (issue 42's box, ShadowZeroThickness) where a receiver-side
+// bias let the sun through. The pull stays under what the receiver keeps (kReceiverBias and
+// half a texel of normal offset): a convex edge's unlit face, right behind its sunlit face,
+// then never pokes through it. glPolygonOffset cannot do this: its slope term follows the
+// caster without bound and pushes a wall seen edge-on behind the floor it shadows.
+// Chosen by ShadowZeroThickness, ShadowSeamLeakTest, TruthDirect and the courtyard golden:
+// studies/results/2026-12-03-caster-side-shadow-bias.md.
+constexpr glm::vec3 kLitSideBias{1.0f, 1.5f, 6.0f};
+constexpr glm::vec3 kUnlitSideBias{0.5f, 0.5f, 3.0f};
+// What the receiver keeps: x a constant, in texels; y the steepest receiver plane (texels of
+// depth per texel) its PCF taps follow (lighting_direct.frag, sunShadow).
+constexpr glm::vec2 kReceiverBias{0.5f, 3.0f};
+constexpr double kNormalOffsetTexels = 0.5;
 
 void drawDepth(const FrameContext& frame, const gl::Framebuffer& fbo, const glm::dmat4& clipFromCentreRel,
-               const glm::dvec3& centre) {
+               const glm::dvec3& centre, double depthTexel) {
     const scene::Scene& s = frame.scene.scene();
     fbo.bind();
     glClearDepthf(1.0f);
     glClear(GL_DEPTH_BUFFER_BIT);
     const gl::Program& prog = frame.programs.get("shadow_depth.vert", "shadow_depth.frag");
     prog.use();
+    prog.set("u_toSun", glm::normalize(s.sun.toSun));
+    prog.set("u_depthTexel", float(2.0 * depthTexel)); // clip z spans 2
+    prog.set("u_litSideBias", kLitSideBias);
+    prog.set("u_unlitSideBias", kUnlitSideBias);
     for (const scene::Instance& inst : s.instances) {
         const scene::Primitive& prim = s.primitives[size_t(inst.primitive)];
-        if (s.materials[size_t(prim.material)].invisible()) continue;
+        const scene::Material& mat = s.materials[size_t(prim.material)];
+        if (mat.invisible()) continue;
+        prog.set("u_doubleSided", mat.doubleSided ? 1 : 0);
+        prog.set("u_normalFromLocal", glm::mat3(glm::inverseTranspose(inst.transform)));
         glm::dmat4 model(inst.transform);
         model[3] -= glm::dvec4(centre, 0.0);
         prog.set("u_lightFromLocal", glm::mat4(clipFromCentreRel * model));
@@ -51,6 +68,7 @@ ShadowMapView mapView(const gl::Texture& depth, const glm::dmat4& clipFromCentre
     const double texelWorld = squareSize / double(size);
     m.normalOffset = float(kNormalOffsetTexels * texelWorld);
     m.depthTexel = float(texelWorld / depthRange);
+    m.normalToMap = glm::mat3(glm::inverseTranspose(glm::dmat3(m.fromRel)));
     return m;
 }
 
@@ -115,13 +133,15 @@ void ShadowPass::execute(FrameContext& frame) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE); // winding is unreliable in real scenes
-    drawDepth(frame, *view_.fbo, ortho(viewSquare), centre);
-    drawDepth(frame, *scene_.fbo, ortho(sceneSquare), centre);
+    drawDepth(frame, *view_.fbo, ortho(viewSquare), centre,
+              viewSquare.size / double(size) / (2.0 * radius));
+    drawDepth(frame, *scene_.fbo, ortho(sceneSquare), centre,
+              sceneSquare.size / double(sceneShadowMapSize(size)) / (2.0 * radius));
     glDisable(GL_DEPTH_TEST);
 
     const glm::dmat4 centreRelFromRel = glm::translate(glm::dmat4(1.0), frame.view.eye - centre);
     frame.shadow.enabled = true;
-    frame.shadow.bias = kDepthBias;
+    frame.shadow.bias = kReceiverBias;
     frame.shadow.view = mapView(*view_.depth, ortho(viewSquare), centreRelFromRel, viewSquare.size, 2.0 * radius);
     frame.shadow.scene = mapView(*scene_.depth, ortho(sceneSquare), centreRelFromRel, sceneSquare.size, 2.0 * radius);
 }
