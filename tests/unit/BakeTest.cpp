@@ -268,6 +268,34 @@ TEST(BakeDeterminism, IrradianceOnlyTrialKeepsTheIrradianceBytes) {
     EXPECT_EQ(trialStats.noiseMean, 0.0) << "a trial measures no noise";
 }
 
+// Stored sparse, a trial keeps only the surface cells' probes and reads nothing else, so it
+// traces the geometry of those alone: what it stores is the full bake's, byte for byte, for
+// fewer rays.
+TEST(BakeDeterminism, SparseIrradianceOnlyTrialTracesOnlyTheKeptProbes) {
+    int wall = 0;
+    pb::scene::Scene s = litClosedRoom(&wall);
+    addInstance(s, boxPrimitive({-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f}, false, wall)); // a block
+    // 0.5 m cells in a 4 x 3 x 4 m room: the middle's probes touch no surface cell.
+    BakeRequest r = request({volume("v", {0, 1.5f, 0}, {1.9f, 1.4f, 1.9f}, {9, 7, 9})}, s, 2, 32);
+    r.settings.noiseTarget = 0.0f; // as the trials bake: one round
+    r.sparse = true;
+    BakeStats fullStats, trialStats;
+    const ProbeSet full = bakeProbes(s, r, &fullStats);
+    r.irradianceOnly = true;
+    const ProbeSet trial = bakeProbes(s, r, &trialStats);
+    ASSERT_LT(full.storedCount(), std::size_t(full.volumes[0].probeCount())) << "some probes dropped";
+    EXPECT_EQ(trial.storedCount(), full.storedCount());
+    EXPECT_EQ(trial.irradiance[0][0].texels, full.irradiance[0][0].texels);
+    EXPECT_EQ(trial.visibility[0].texels, full.visibility[0].texels);
+    for (std::size_t p = 0; p < full.states[0].size(); ++p) {
+        const ProbeState &a = full.states[0][p], &b = trial.states[0][p];
+        if (!a.stored) continue;
+        EXPECT_TRUE(b.stored) << p;
+        EXPECT_EQ(a.offset, b.offset) << p;
+    }
+    EXPECT_LT(trialStats.primaryRays, fullStats.primaryRays) << "the dropped probes' geometry is not traced";
+}
+
 TEST(BakeNesting, ChildRingTakesTheParentsIrradiance) {
     pb::scene::Scene s = emptyScene(glm::vec3(0.3f));
     s.sun.enabled = true;

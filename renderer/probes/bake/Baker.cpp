@@ -187,46 +187,6 @@ ProbeSet emptySet(const scene::Scene& scene, const BakeRequest& req) {
     return set;
 }
 
-// 1. Geometry: per probe its state (validity, relocation) and its visibility tile.
-void bakeGeometry(BakeRun& run) {
-    ProbeSet& set = run.set;
-    // The geometry pass's rotation does not follow the seed: where probes sit (relocation) and
-    // which are valid must not change when a scene is re-baked with another seed, only the
-    // radiance's sampling noise may (the seed's job). kGeometrySeed keeps the rotation the
-    // default seed always had.
-    const int rays = run.req.geometryRays > 0 ? run.req.geometryRays : run.cfg.raysPerProbe;
-    const auto dirs = passDirections(rays, geometryStream(kGeometrySeed));
-    const ProbeConvolution conv(dirs);
-    std::vector<GeometryScratch> scratch(static_cast<size_t>(run.threads));
-    std::vector<std::vector<float>> vis(
-        static_cast<size_t>(run.threads),
-        std::vector<float>(kVisibilityInterior * kVisibilityInterior * 2));
-    parallelFor(
-        run.index.total(), run.threads,
-        [&](std::size_t flat, int t) {
-            auto [v, p] = run.locate(flat);
-            const ProbeVolume& vol = set.volumes[size_t(v)];
-            glm::ivec3 c = vol.probeCoords(p);
-            float* out = vis[size_t(t)].data();
-            ProbeState& st = set.states[size_t(v)][size_t(p)];
-            bakeProbeGeometry(run.rs, vol, c, dirs, conv, run.cfg, scratch[size_t(t)], st, out,
-                              run.counters[size_t(t)].primary);
-            if (!st.valid) return;
-            float* tile = tileOrigin(set.visibility[size_t(v)], c, kVisibilityTile);
-            const int pitch = set.visibility[size_t(v)].shape.width;
-            for (int y = 0; y < kVisibilityInterior; ++y)
-                for (int x = 0; x < kVisibilityInterior; ++x)
-                    for (int ch = 0; ch < 2; ++ch)
-                        tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 2 + size_t(ch)] =
-                            out[(y * kVisibilityInterior + x) * 2 + ch];
-        },
-        [&](std::size_t done) { run.report("geometry", done); });
-    run.doneBefore += run.index.total();
-    for (ProbeTexture& t : set.visibility)
-        fillAllBorders(t, kVisibilityInterior);
-    run.phases.mark("geometry");
-}
-
 // Which probes the radiance passes trace. Sparse storage keeps only the surface corners and
 // the free-space lattice (SparseStorage.h), and the radiance of a kept probe reads only kept
 // probes: a later pass
@@ -249,16 +209,65 @@ struct RadianceMask {
         }
         for (int p : run.parents)
             if (p >= 0) isParent[size_t(p)] = true;
+        geometryOnlyKept = run.req.irradianceOnly && !keep.empty() && !irradianceOnly;
     }
     // With FreeSpace::Irradiance or Ranked a probe sparse storage leaves out is still traced:
     // it may keep its irradiance tile (ProbeState::irradianceOnly), and Ranked compares it
     // with its stand-in. Its irradiance is the sum of every pass, so every pass traces it.
+    // A trial bake (BakeRequest::irradianceOnly) stored sparse with stand-ins drops the
+    // probes sparse storage leaves out, and reads only surface cells, whose corners it keeps:
+    // their geometry is not traced either (geometryOnlyKept).
+    bool geometryNeeded(int v, int p) const {
+        return !geometryOnlyKept || isParent[size_t(v)] || keep[size_t(v)][size_t(p)] != 0;
+    }
+    bool geometryOnlyKept = false;
     bool needed(const ProbeSet& set, int v, int p) const {
         if (!set.states[size_t(v)][size_t(p)].valid) return false;
         return keep.empty() || isParent[size_t(v)] || irradianceOnly ||
                keep[size_t(v)][size_t(p)] != 0;
     }
 };
+
+// 1. Geometry: per probe its state (validity, relocation) and its visibility tile.
+void bakeGeometry(BakeRun& run, const RadianceMask& mask) {
+    ProbeSet& set = run.set;
+    // The geometry pass's rotation does not follow the seed: where probes sit (relocation) and
+    // which are valid must not change when a scene is re-baked with another seed, only the
+    // radiance's sampling noise may (the seed's job). kGeometrySeed keeps the rotation the
+    // default seed always had.
+    const int rays = run.req.geometryRays > 0 ? run.req.geometryRays : run.cfg.raysPerProbe;
+    const auto dirs = passDirections(rays, geometryStream(kGeometrySeed));
+    const ProbeConvolution conv(dirs);
+    std::vector<GeometryScratch> scratch(static_cast<size_t>(run.threads));
+    std::vector<std::vector<float>> vis(
+        static_cast<size_t>(run.threads),
+        std::vector<float>(kVisibilityInterior * kVisibilityInterior * 2));
+    parallelFor(
+        run.index.total(), run.threads,
+        [&](std::size_t flat, int t) {
+            auto [v, p] = run.locate(flat);
+            if (!mask.geometryNeeded(v, p)) return;
+            const ProbeVolume& vol = set.volumes[size_t(v)];
+            glm::ivec3 c = vol.probeCoords(p);
+            float* out = vis[size_t(t)].data();
+            ProbeState& st = set.states[size_t(v)][size_t(p)];
+            bakeProbeGeometry(run.rs, vol, c, dirs, conv, run.cfg, scratch[size_t(t)], st, out,
+                              run.counters[size_t(t)].primary);
+            if (!st.valid) return;
+            float* tile = tileOrigin(set.visibility[size_t(v)], c, kVisibilityTile);
+            const int pitch = set.visibility[size_t(v)].shape.width;
+            for (int y = 0; y < kVisibilityInterior; ++y)
+                for (int x = 0; x < kVisibilityInterior; ++x)
+                    for (int ch = 0; ch < 2; ++ch)
+                        tile[(size_t(y + 1) * pitch + size_t(x + 1)) * 2 + size_t(ch)] =
+                            out[(y * kVisibilityInterior + x) * 2 + ch];
+        },
+        [&](std::size_t done) { run.report("geometry", done); });
+    run.doneBefore += run.index.total();
+    for (ProbeTexture& t : set.visibility)
+        fillAllBorders(t, kVisibilityInterior);
+    run.phases.mark("geometry");
+}
 
 // The converged bake (BakeSettings::noiseTarget): the slab's probes still above the target get
 // more rounds, each a fresh ray rotation and fresh emitter samples, averaged into their tile
@@ -623,8 +632,8 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
                                   size_t(req.settings.bounces > 0 ? req.settings.bounces : 2),
                 .counters = std::vector<RayCounters>(static_cast<size_t>(threads))};
     run.noise = NoiseRounds(req.settings.noiseTarget);
-    bakeGeometry(run);
     const RadianceMask mask(run);
+    bakeGeometry(run, mask);
     bakeRadiance(run, mask);
     // The SH technique's probes: every pass's ray samples projected and summed (probes/sh/ShIrradiance.h).
     if (!run.req.irradianceOnly) finishSh(run);

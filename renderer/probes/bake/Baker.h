@@ -60,7 +60,9 @@ struct BakeRequest {
     int geometryRays = 0;
     // Not an input: a trial bake whose irradiance alone is read (the lattice search's,
     // PlacementError.h): no SH projection and no noise measurement (its set's SH stay zero
-    // and its noise statistics empty). The irradiance is byte for byte the full bake's.
+    // and its noise statistics empty); stored sparse with stand-ins, no geometry pass for the
+    // probes sparse storage drops (their states stay default; the trial's surface lookups
+    // read only kept probes). What it stores is byte for byte the full bake's.
     bool irradianceOnly = false;
 };
 
