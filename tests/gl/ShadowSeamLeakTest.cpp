@@ -56,6 +56,27 @@ struct LeakCase {
 
 void PrintTo(const LeakCase& c, std::ostream* os) { *os << c.name << "/" << c.view; }
 
+// Renders `view` without GI and counts the pixels whose radiance exceeds 1e-3 in any channel
+// (room for nothing but rounding: every pixel of these closed rooms is black in the truth).
+struct LitPixels {
+    int count = 0;
+    float brightest = 0.0f;
+};
+
+LitPixels litPixels(const scene::Scene& s, const scene::View& view, int w, int h) {
+    render::FrameRenderer renderer(s, render::defaultFrameSettings(s));
+    renderer.render(render::makeRenderView(view, s.worldBounds(), w, h));
+    const image::ImageF img = renderer.readRadiance();
+    LitPixels out;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            const float l = std::max({img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2)});
+            out.brightest = std::max(out.brightest, l);
+            if (l > 1e-3f) ++out.count;
+        }
+    return out;
+}
+
 class ShadowSeamLeak : public test::GlTest, public ::testing::WithParamInterface<LeakCase> {};
 
 } // namespace
@@ -65,23 +86,11 @@ TEST_P(ShadowSeamLeak, AClosedRoomStaysDark) {
     scene::Scene s = twoThinRooms(c.toSun);
     const scene::View* view = s.findView(c.view);
     ASSERT_NE(view, nullptr);
-    const int w = 320, h = 180;
-    render::FrameRenderer renderer(s, render::defaultFrameSettings(s));
-    renderer.render(render::makeRenderView(*view, s.worldBounds(), w, h));
-    const image::ImageF img = renderer.readRadiance();
-    checkNoGlErrors("rendering");
-
     // A lit sun-facing surface here has radiance albedo / pi * 5 = 1.1; the leak lines of the
-    // old shadow lookup reached 0.1 to 1.1. 1e-3 leaves room for nothing but rounding.
-    int lit = 0;
-    float brightest = 0.0f;
-    for (int y = 0; y < img.height; ++y)
-        for (int x = 0; x < img.width; ++x) {
-            const float l = std::max({img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2)});
-            brightest = std::max(brightest, l);
-            if (l > 1e-3f) ++lit;
-        }
-    EXPECT_EQ(lit, 0) << "pixels with sun in the closed room, brightest " << brightest;
+    // old shadow lookup reached 0.1 to 1.1.
+    const LitPixels lit = litPixels(s, *view, 320, 180);
+    checkNoGlErrors("rendering");
+    EXPECT_EQ(lit.count, 0) << "pixels with sun in the closed room, brightest " << lit.brightest;
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -160,20 +169,9 @@ TEST_P(ShadowZeroThickness, TheRoomStaysDark) {
     scene::Scene s = zeroThicknessRoom(GetParam());
     const scene::View* view = s.findView(GetParam().name);
     ASSERT_NE(view, nullptr);
-    const int w = 640, h = 360;
-    render::FrameRenderer renderer(s, render::defaultFrameSettings(s));
-    renderer.render(render::makeRenderView(*view, s.worldBounds(), w, h));
-    const image::ImageF img = renderer.readRadiance();
+    const LitPixels lit = litPixels(s, *view, 640, 360);
     checkNoGlErrors("rendering");
-    int lit = 0;
-    float brightest = 0.0f;
-    for (int y = 0; y < img.height; ++y)
-        for (int x = 0; x < img.width; ++x) {
-            const float l = std::max({img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2)});
-            brightest = std::max(brightest, l);
-            if (l > 1e-3f) ++lit;
-        }
-    EXPECT_EQ(lit, 0) << "pixels with sun in the closed room, brightest " << brightest;
+    EXPECT_EQ(lit.count, 0) << "pixels with sun in the closed room, brightest " << lit.brightest;
 }
 
 INSTANTIATE_TEST_SUITE_P(
