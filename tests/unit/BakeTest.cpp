@@ -55,6 +55,14 @@ pb::scene::Scene litClosedRoom(int* wall = nullptr) {
     return s;
 }
 
+// litClosedRoom with a 1 m block of the walls' material on its floor.
+pb::scene::Scene litRoomWithBlock() {
+    int wall = 0;
+    pb::scene::Scene s = litClosedRoom(&wall);
+    addInstance(s, boxPrimitive({-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f}, false, wall));
+    return s;
+}
+
 // Calls f(value) for every interior irradiance texel channel (RGB) of valid probes.
 template <class F> void forEachIrradiance(const ProbeSet& set, int scenario, F f) {
     for (size_t v = 0; v < set.volumes.size(); ++v) {
@@ -242,9 +250,7 @@ TEST(BakeDeterminism, SameInputsGiveIdenticalBytesForAnyThreadCount) {
 // The lattice search's trial bakes skip what their sampler never reads (the SH fit, the noise
 // measurement): their irradiance and visibility are the full bake's, byte for byte.
 TEST(BakeDeterminism, IrradianceOnlyTrialKeepsTheIrradianceBytes) {
-    int wall = 0;
-    pb::scene::Scene s = litClosedRoom(&wall);
-    addInstance(s, boxPrimitive({-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f}, false, wall)); // a block
+    const pb::scene::Scene s = litRoomWithBlock();
     BakeRequest r = request({volume("v", {0, 1.5f, 0}, {1.8f, 1.4f, 1.8f}, {4, 3, 4})}, s, 2, 64);
     r.settings.noiseTarget = 0.0f; // as the trials bake: one round
     BakeStats fullStats, trialStats;
@@ -272,9 +278,7 @@ TEST(BakeDeterminism, IrradianceOnlyTrialKeepsTheIrradianceBytes) {
 // traces the geometry of those alone: what it stores is the full bake's, byte for byte, for
 // fewer rays.
 TEST(BakeDeterminism, SparseIrradianceOnlyTrialTracesOnlyTheKeptProbes) {
-    int wall = 0;
-    pb::scene::Scene s = litClosedRoom(&wall);
-    addInstance(s, boxPrimitive({-0.5f, 0, -0.5f}, {0.5f, 1, 0.5f}, false, wall)); // a block
+    const pb::scene::Scene s = litRoomWithBlock();
     // 0.5 m cells in a 4 x 3 x 4 m room: the middle's probes touch no surface cell.
     BakeRequest r = request({volume("v", {0, 1.5f, 0}, {1.9f, 1.4f, 1.9f}, {9, 7, 9})}, s, 2, 32);
     r.settings.noiseTarget = 0.0f; // as the trials bake: one round

@@ -193,11 +193,15 @@ ProbeSet emptySet(const scene::Scene& scene, const BakeRequest& req) {
 // looks up the previous one at surface hits, i.e. at surface cells' corners. So the others'
 // radiance is not traced. Except in a parent volume: its children's rings are blended
 // towards it at ring positions, which need not lie on a surface. Their geometry pass still
-// ran: the states stay as dense.
+// runs (the states stay as dense), except in a trial bake (geometryOnlyKept).
 struct RadianceMask {
     std::vector<std::vector<std::uint8_t>> keep; // sparse only: per volume, per probe
     std::vector<bool> isParent;
     bool irradianceOnly = false; // left-out probes may keep their irradiance (FreeSpace)
+    // A trial bake (BakeRequest::irradianceOnly) stored sparse with stand-ins drops the
+    // probes sparse storage leaves out and reads only surface cells, whose corners it keeps:
+    // their geometry is not traced either.
+    bool geometryOnlyKept = false;
 
     explicit RadianceMask(const BakeRun& run)
         : isParent(run.set.volumes.size(), false),
@@ -211,16 +215,12 @@ struct RadianceMask {
             if (p >= 0) isParent[size_t(p)] = true;
         geometryOnlyKept = run.req.irradianceOnly && !keep.empty() && !irradianceOnly;
     }
-    // With FreeSpace::Irradiance or Ranked a probe sparse storage leaves out is still traced:
-    // it may keep its irradiance tile (ProbeState::irradianceOnly), and Ranked compares it
-    // with its stand-in. Its irradiance is the sum of every pass, so every pass traces it.
-    // A trial bake (BakeRequest::irradianceOnly) stored sparse with stand-ins drops the
-    // probes sparse storage leaves out, and reads only surface cells, whose corners it keeps:
-    // their geometry is not traced either (geometryOnlyKept).
     bool geometryNeeded(int v, int p) const {
         return !geometryOnlyKept || isParent[size_t(v)] || keep[size_t(v)][size_t(p)] != 0;
     }
-    bool geometryOnlyKept = false;
+    // With FreeSpace::Irradiance or Ranked a probe sparse storage leaves out is still traced:
+    // it may keep its irradiance tile (ProbeState::irradianceOnly), and Ranked compares it
+    // with its stand-in. Its irradiance is the sum of every pass, so every pass traces it.
     bool needed(const ProbeSet& set, int v, int p) const {
         if (!set.states[size_t(v)][size_t(p)].valid) return false;
         return keep.empty() || isParent[size_t(v)] || irradianceOnly ||
