@@ -25,6 +25,7 @@
 #include "bench/runner/CacheModelRun.h"
 #include "bench/runner/PredictionRun.h"
 #include "bench/runner/ProbeCache.h"
+#include "bench/runner/SectionTimer.h"
 #include "bench/runner/SessionRunner.h"
 #include "bench/shaders/MesaShim.h"
 #include "bench/shaders_gl/TargetWorkers.h"
@@ -466,6 +467,7 @@ const RegisterCommand registerBench{
                         "auto (timer queries where the driver's are trustworthy, else the CPU "
                         "clock around glFinish), cpu, cpu-time (process CPU time around glFinish: "
                         "steadier on a shared machine), or query")
+             ->check(CLI::IsMember(bench::timingRequestNames()))
              ->capture_default_str();
          cmd.add_flag("--no-floor", a->noFloor, "Skip the GI pass's texture-fetch floor");
          cmd.add_flag("--no-cache-model", a->noCacheModel,

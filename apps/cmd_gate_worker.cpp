@@ -7,6 +7,7 @@
 #include "SceneOptions.h"
 #include "bench/gate_gl/CallgrindFrame.h"
 #include "bench/gate_gl/GateWorker.h"
+#include "bench/runner/SectionTimer.h"
 #include "core/Error.h"
 #include "gl/Capabilities.h"
 #include "gl/DriverQuirks.h"
@@ -77,6 +78,7 @@ const RegisterCommand registerGateWorker{
          cmd.add_option("--width", a->width, "Frame width")->capture_default_str();
          cmd.add_option("--height", a->height, "Frame height")->capture_default_str();
          cmd.add_option("--timing", a->timing, "Timing method (as probebench bench --timing)")
+             ->check(CLI::IsMember(bench::timingRequestNames()))
              ->capture_default_str();
          cmd.add_option("--warmup", a->warmup, "Warm-up frames per profile")->capture_default_str();
          cmd.add_option("--callgrind-profiles", a->callgrindProfiles,

@@ -35,8 +35,14 @@ struct TimingChoice {
     std::string reason;          // one line: why this method on this driver
 };
 
-// requested: "auto" (queries where the driver's are trustworthy, else cpu), "cpu", "cpu-time"
-// or "query". Throws pb::Error for "query" on a context without timer queries, or an unknown
+// The names --timing takes, for the command lines to check before any work.
+inline const std::vector<std::string>& timingRequestNames() {
+    static const std::vector<std::string> names{"auto", "cpu", "cpu-time", "query"};
+    return names;
+}
+
+// requested: one of timingRequestNames(): "auto" (queries where the driver's are trustworthy,
+// else cpu), "cpu", "cpu-time" or "query". Throws pb::Error for "query" on a context without timer queries, or an unknown
 // name.
 TimingChoice chooseTiming(const std::string& requested, const gl::GlCaps& caps,
                           const gl::DriverQuirks& quirks);

@@ -261,6 +261,14 @@ TEST(BenchCli, ErrorsAreOneLineAndWriteNothing) {
     r = runProbebench(zero);
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_TRUE(firstLineIsTheError(r, "--rounds must be")) << r.output;
+    // An unknown timing method is refused before the view search and the bake (it was
+    // found only after both).
+    auto timing = tinyBench(dir, todayProfile(dir));
+    timing.insert(timing.end(), {"--timing", "cpu-finish"});
+    r = runProbebench(timing);
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_TRUE(firstLineIsTheError(r, "--timing: 'cpu-finish' is not one of auto, cpu"))
+        << r.output;
     EXPECT_FALSE(fs::exists(dir / "out.json"));
     EXPECT_FALSE(fs::exists(dir / "report.html"));
 }

@@ -4,6 +4,11 @@
 // ratios agree within their intervals. Timings are never asserted, only their agreement: each
 // side's interval is its own (the bench's paired delta at its confidence level, the gate's
 // per-round ratios at 99%), and an interval widens on a noisy machine rather than moves.
+// Both run llvmpipe on one thread (LP_NUM_THREADS=0): with its worker threads the ratio moves
+// with the cores that other tests leave free (the half-resolution profile has a larger serial
+// share than the reference), and the two runs are minutes apart under different loads (a
+// fresh clone's run saw gate 1.72-1.82 against bench 1.40-1.48). On one thread a shared core
+// slows both profiles of a round alike.
 #include "support/RunCommand.h"
 #include "support/TestEnv.h"
 
@@ -11,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 
 namespace pb::test {
@@ -43,6 +49,7 @@ std::pair<double, double> agreeMedianInterval(std::vector<double> x, double leve
 const char* kAgreeCamera = "0,1,0.9,0,1.2,-1,80";
 
 TEST(BenchGateAgree, HandheldOverReferenceAgreesWithinTheirIntervals) {
+    ::setenv("LP_NUM_THREADS", "0", 1); // inherited by both commands (see the file's comment)
     const fs::path dir = outputDir();
     const fs::path cache = dir / "cache";
     // The gate's per-round ratios: a tiny baseline's recording run (30 rounds).
@@ -94,11 +101,12 @@ TEST(BenchGateAgree, HandheldOverReferenceAgreesWithinTheirIntervals) {
     const double benchLow = (ref + d["ci_low"].get<double>()) / ref;
     const double benchHigh = (ref + d["ci_high"].get<double>()) / ref;
     const double benchRatio = (ref + d["estimate"].get<double>()) / ref;
-    // Agreement as the gate itself judges a ratio: within its ratio threshold (10%) of the
-    // gate's interval. The two runs are minutes apart on a machine CI shares with other tests,
-    // so a load change between them moves one against the other by a few percent; what this
-    // catches is the disagreement issue 41 found (bench 1.46x the reference, gate 0.88x).
-    const double slack = base["suite"]["timing"]["ratio_threshold"].get<double>() *
+    // Agreement within twice the gate's ratio threshold (2 x 10%) of the gate's interval. Each
+    // interval is of one process; from process to process the ratio itself moves more than
+    // that (JIT code and memory placement): nine quiet runs of this test on one thread gave
+    // gate medians of 1.63-1.86 and a bench at most 0.14 above the gate's interval. What
+    // this catches is the disagreement issue 41 found (bench 1.46x the reference, gate 0.88x).
+    const double slack = 2 * base["suite"]["timing"]["ratio_threshold"].get<double>() *
                          0.5 * (gateLow + gateHigh);
     std::printf("[ agree ] gate ratio median interval [%.4f, %.4f] (%zu rounds); bench %.4f "
                 "[%.4f, %.4f]; slack %.4f\n",
