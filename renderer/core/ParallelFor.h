@@ -19,8 +19,8 @@ template <class T> struct alignas(kCacheLine) PerThread { T value{}; };
 // Threads to use for `requested` (0 = all hardware threads).
 int resolveThreadCount(int requested);
 
-// Runs body(item, threadIndex) for item in [0, count) on `threads` threads, the calling thread
-// being thread 0. Between its chunks the calling thread invokes `tick(done)` about every
+// Runs body(item, threadIndex) for item in [0, count) on `threads` threads (<= 0: all hardware
+// threads, resolveThreadCount; never more than `count`), the calling thread being thread 0. Between its chunks the calling thread invokes `tick(done)` about every
 // 100 ms (progress), and once more with the final count. Rethrows the first exception a body
 // threw, after all threads stopped.
 void parallelFor(std::size_t count, int threads,

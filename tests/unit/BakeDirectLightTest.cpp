@@ -115,6 +115,29 @@ TEST(BakeParallelFor, RunsEveryItemOnceAndRethrows) {
     parallelFor(0, 2, [](std::size_t, int) { FAIL(); });
 }
 
+TEST(BakeParallelFor, ZeroThreadsMeansEveryCore) {
+    // `threads` 0 is "all cores" wherever the project takes a thread count; seven callers
+    // passed 0 and ran on one thread (the truth's path tracer among them). Two items, each
+    // waiting until a second thread has entered: on one thread the first waits out its
+    // 10 s and the run fails. (A one-core machine has nothing to show.)
+    const int cores = pb::resolveThreadCount(0);
+    if (cores < 2) GTEST_SKIP() << "one hardware thread";
+    std::atomic<int> entered{0}, maxThread{0};
+    parallelFor(2, 0, [&](std::size_t, int t) {
+        ++entered;
+        int m = maxThread.load();
+        while (t > m && !maxThread.compare_exchange_weak(m, t)) {
+        }
+        const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+        while (entered.load() < 2 && std::chrono::steady_clock::now() < until)
+            std::this_thread::yield();
+    });
+    EXPECT_EQ(entered.load(), 2);
+    EXPECT_EQ(maxThread.load(), 1) << "0 threads ran the two items on one thread";
+    // Never more threads than items, whatever `threads` asks.
+    parallelFor(1, 0, [&](std::size_t, int t) { EXPECT_EQ(t, 0); });
+}
+
 TEST(BakeParallelFor, TheCallingThreadIsWorkerZeroAndTicks) {
     // Progress callbacks (a terminal bar) run on the caller's thread, never on a helper.
     const std::thread::id caller = std::this_thread::get_id();
