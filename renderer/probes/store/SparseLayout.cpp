@@ -234,14 +234,25 @@ void zeroUnslottedTiles(ProbeTexture& t, const std::vector<int>& slots,
     const int tileUnits = tile / u.texels;
     ProbeVolume grid;
     grid.counts = denseCounts;
+    // quantise() leaves an RGBA32F texture's texels scaled; decoding unscales them.
+    const bool texelWise = f != StorageFormat::Bc6h && t.storageScale == 1.0f;
     for (std::size_t i = 0; i < slots.size(); ++i) {
         if (slots[i] >= 0) continue;
         const glm::ivec3 at = grid.probeCoords(int(i)); // (x, layer, z), as copyTile reads it
         for (int r = 0; r < tileUnits; ++r)
             std::memset(t.stored.data() + tileRowOffset(t.shape, at, tile, r, u), 0,
                         std::size_t(tileUnits) * u.bytes);
+        // RGBA32F and RGBA16F decode texel by texel, and a zero stored texel decodes to 0:
+        // zeroing the same tiles' texels gives what decoding the whole texture again would,
+        // without a pass over every texel (the placement's reference grid holds ~170 MiB).
+        if (!texelWise) continue;
+        float* origin = tileOrigin(t, at, tile);
+        const std::size_t pitch = std::size_t(t.shape.width) * std::size_t(t.shape.channels);
+        for (int r = 0; r < tile; ++r)
+            std::fill_n(origin + std::size_t(r) * pitch, std::size_t(tile * t.shape.channels),
+                        0.0f);
     }
-    decodeStored(t, f);
+    if (!texelWise) decodeStored(t, f); // a BC6H block's texels depend on each other
 }
 
 } // namespace pb::probes
