@@ -71,6 +71,13 @@ float quantiseHalf(float v) {
     return glm::unpackHalf1x16(glm::packHalf1x16(clampForHalf(v)));
 }
 
+void sanitise(ProbeTexture& t) {
+    t.stored.clear();
+    scaleTexels(t, t.storageScale); // as quantise: RGBA32F's scale is 1, a no-op
+    for (float& v : t.texels)
+        v = std::isfinite(v) ? v : 0.0f;
+}
+
 void quantise(ProbeTexture& t, StorageFormat f) {
     const TextureShape& s = t.shape;
     t.stored.assign(storedBytes(s, f), 0);

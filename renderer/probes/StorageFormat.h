@@ -35,6 +35,9 @@ std::size_t storedBytes(const TextureShape& s, StorageFormat f);
 // replaces t.texels by the decoded values divided by the scale (what GL samples, times
 // 1 / storageScale: the true values). Deterministic; with scale 1 exactly as without one.
 void quantise(ProbeTexture& t, StorageFormat f);
+// The texels quantise(t, Rgba32f) leaves, without the stored bytes (left empty): non-finite
+// values become 0. For sets read only on the CPU (the lattice search's trial bakes).
+void sanitise(ProbeTexture& t);
 // Fills t.texels from t.stored (t.shape and t.storageScale set). Throws pb::Error when the
 // size is wrong.
 void decodeStored(ProbeTexture& t, StorageFormat f);

@@ -32,7 +32,9 @@ bool isValidStorageScale(float s) {
 }
 
 void assignStorageScale(std::vector<ProbeTexture>& scenarioTextures, StorageFormat f) {
-    const float s = chooseStorageScale(maxIrradiance(scenarioTextures), f);
+    // RGBA32F is never scaled (chooseStorageScale): no pass over every texel for its maximum.
+    const float s =
+        f == StorageFormat::Rgba32f ? 1.0f : chooseStorageScale(maxIrradiance(scenarioTextures), f);
     for (ProbeTexture& t : scenarioTextures)
         t.storageScale = s;
 }

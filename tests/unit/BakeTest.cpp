@@ -300,6 +300,25 @@ TEST(BakeDeterminism, SparseIrradianceOnlyTrialTracesOnlyTheKeptProbes) {
     EXPECT_LT(trialStats.primaryRays, fullStats.primaryRays) << "the dropped probes' geometry is not traced";
 }
 
+// In RGBA32F (as the lattice search bakes) a trial keeps its texels alone: the same texels as
+// the full bake's, and no stored bytes (nothing writes or uploads a trial; the reference grid's
+// were about 170 MiB).
+TEST(BakeDeterminism, Rgba32fTrialKeepsTexelsWithoutStoredBytes) {
+    const pb::scene::Scene s = litRoomWithBlock();
+    BakeRequest r = request({volume("v", {0, 1.5f, 0}, {1.9f, 1.4f, 1.9f}, {9, 7, 9})}, s, 2, 32);
+    r.settings.noiseTarget = 0.0f;
+    r.settings.format = StorageFormat::Rgba32f;
+    r.sparse = true;
+    const ProbeSet full = bakeProbes(s, r);
+    r.irradianceOnly = true;
+    const ProbeSet trial = bakeProbes(s, r);
+    ASSERT_FALSE(full.irradiance[0][0].stored.empty());
+    EXPECT_EQ(trial.irradiance[0][0].texels, full.irradiance[0][0].texels);
+    EXPECT_EQ(trial.visibility[0].texels, full.visibility[0].texels);
+    EXPECT_TRUE(trial.irradiance[0][0].stored.empty());
+    EXPECT_TRUE(trial.visibility[0].stored.empty());
+}
+
 TEST(BakeNesting, ChildRingTakesTheParentsIrradiance) {
     pb::scene::Scene s = emptyScene(glm::vec3(0.3f));
     s.sun.enabled = true;

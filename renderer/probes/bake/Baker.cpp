@@ -547,7 +547,8 @@ void bakeRadiance(BakeRun& run, const RadianceMask& mask) {
 }
 
 // 3. Storage format: every texture quantised to the format, with its error per texture.
-std::vector<QuantisationError> quantiseSet(ProbeSet& set, StorageFormat format, int threads) {
+std::vector<QuantisationError> quantiseSet(ProbeSet& set, StorageFormat format, int threads,
+                                          bool storedBytes) {
     std::vector<ProbeTexture*> all;
     std::vector<QuantisationError> errors;
     for (size_t v = 0; v < set.visibility.size(); ++v) {
@@ -562,6 +563,10 @@ std::vector<QuantisationError> quantiseSet(ProbeSet& set, StorageFormat format, 
         }
     }
     parallelFor(all.size(), threads, [&](std::size_t i, int) {
+        if (format == StorageFormat::Rgba32f && !storedBytes) { // texels only (Baker.h)
+            sanitise(*all[i]);
+            return;
+        }
         if (format == StorageFormat::Rgba32f) { // stores the floats as they are: no error
             quantise(*all[i], format);
             return;
@@ -641,7 +646,8 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
     if (req.recordRays) *req.recordRays = own->stopRecording();
 
     const auto tq = Clock::now();
-    std::vector<QuantisationError> errors = quantiseSet(run.set, req.settings.format, threads);
+    std::vector<QuantisationError> errors = quantiseSet(run.set, req.settings.format, threads,
+                                                           !req.irradianceOnly);
     // Invalid as baked, before sparse storage marks its absent probes invalid too.
     std::vector<std::size_t> bakedInvalid = invalidPerVolume(run.set);
     // Left-out valid probes keep nothing, or irradiance and SH (all of them, or the ones

@@ -62,7 +62,8 @@ struct BakeRequest {
     // PlacementError.h): no SH projection and no noise measurement (its set's SH stay zero
     // and its noise statistics empty); stored sparse with stand-ins, no geometry pass for the
     // probes sparse storage drops (their states stay default; the trial's surface lookups
-    // read only kept probes). What it stores is byte for byte the full bake's.
+    // read only kept probes). Its texels are the full bake's, bit for bit; in RGBA32F it keeps
+    // no stored bytes (ProbeTexture::stored stays empty: nothing writes or uploads a trial).
     bool irradianceOnly = false;
 };
 

@@ -227,19 +227,20 @@ ProbeTexture unpackTiles(const ProbeTexture& packed, const std::vector<int>& slo
 
 void zeroUnslottedTiles(ProbeTexture& t, const std::vector<int>& slots,
                         const glm::ivec3& denseCounts, int tile, StorageFormat f) {
-    if (t.stored.size() != storedBytes(t.shape, f) ||
+    // quantise() leaves an RGBA32F texture's texels scaled; decoding unscales them.
+    const bool texelWise = f != StorageFormat::Bc6h && t.storageScale == 1.0f;
+    const bool bytes = !t.stored.empty() || !texelWise; // else texels alone (sanitise())
+    if ((bytes && t.stored.size() != storedBytes(t.shape, f)) ||
         t.shape != shapeFor(denseCounts, tile, t.shape.channels))
         throw Error("zeroUnslottedTiles: texture does not match its grid");
     const Units u = unitsOf(t.shape, f);
     const int tileUnits = tile / u.texels;
     ProbeVolume grid;
     grid.counts = denseCounts;
-    // quantise() leaves an RGBA32F texture's texels scaled; decoding unscales them.
-    const bool texelWise = f != StorageFormat::Bc6h && t.storageScale == 1.0f;
     for (std::size_t i = 0; i < slots.size(); ++i) {
         if (slots[i] >= 0) continue;
         const glm::ivec3 at = grid.probeCoords(int(i)); // (x, layer, z), as copyTile reads it
-        for (int r = 0; r < tileUnits; ++r)
+        for (int r = 0; r < tileUnits && bytes; ++r)
             std::memset(t.stored.data() + tileRowOffset(t.shape, at, tile, r, u), 0,
                         std::size_t(tileUnits) * u.bytes);
         // RGBA32F and RGBA16F decode texel by texel, and a zero stored texel decodes to 0:

@@ -124,7 +124,8 @@ ProbeTexture unpackTiles(const ProbeTexture& packed, const std::vector<int>& slo
 // zeroed, and the texels decoded again. The same bytes and texels, without the two copies
 // (sparse storage applies it to every texture of every bake, the lattice search's trials too).
 // The texels must be what the stored bytes decode to, as quantise() and the file reader leave
-// them: RGBA32F and RGBA16F then zero the texels of those tiles alone.
+// them: RGBA32F and RGBA16F then zero the texels of those tiles alone. A texture without stored
+// bytes (sanitise()) has only its texels zeroed.
 void zeroUnslottedTiles(ProbeTexture& t, const std::vector<int>& slots,
                         const glm::ivec3& denseCounts, int tile, StorageFormat f);
 
