@@ -52,13 +52,26 @@ std::vector<std::vector<std::uint64_t>> occupiedCells(const Lattice& L,
     const glm::dvec3 cell = L.cellSize(L.levels);
     const double minCell = std::min(cell.x, std::min(cell.y, cell.z));
     const glm::ivec3 nf = L.cells(L.levels);
-    std::vector<Cell> finest;
+    // The finest cells hit, as a bitmap over the finest grid where it is small enough (a bit
+    // per cell, its index the cell's key): reading it in order gives the sorted distinct keys
+    // that sorting every sample gave (the samples repeat each cell many times; the sort was
+    // about a tenth of the apartment's placement time). Larger grids sort the samples' keys.
+    const std::uint64_t cellCount =
+        std::uint64_t(nf.x) * std::uint64_t(nf.y) * std::uint64_t(nf.z);
+    constexpr std::uint64_t kBitmapCells = std::uint64_t(1) << 28; // 32 MiB
+    const bool bitmap = cellCount <= kBitmapCells;
+    std::vector<std::uint64_t> hit(bitmap ? std::size_t((cellCount + 63) / 64) : 0, 0);
+    std::vector<std::uint64_t> sampled; // the keys, without the bitmap
     auto add = [&](const glm::vec3& p) {
         glm::dvec3 f = (glm::dvec3(p) - L.origin) / cell;
         Cell c;
         for (int a = 0; a < 3; ++a)
             c[a] = std::clamp(int(std::floor(f[a])), 0, nf[a] - 1);
-        finest.push_back(c);
+        const std::uint64_t key = L.cellKey(c, L.levels);
+        if (bitmap)
+            hit[std::size_t(key >> 6)] |= std::uint64_t(1) << (key & 63);
+        else
+            sampled.push_back(key);
     };
     for (std::size_t t = 0; t < tris.size(); ++t) {
         const raytrace::WorldTriangle& w = tris[t];
@@ -77,18 +90,21 @@ std::vector<std::vector<std::uint64_t>> occupiedCells(const Lattice& L,
             add(w.a + u * (w.b - w.a) + v * (w.c - w.a));
         }
     }
-    // The finest level first; the coarser ones from its distinct cells only (the samples
-    // repeat each cell many times, and sorting them once is the costly part).
+    // The finest level first; the coarser ones from its distinct cells only.
     std::vector<std::vector<std::uint64_t>> out(size_t(L.levels) + 1);
     auto sortedUnique = [](std::vector<std::uint64_t>& keys) {
         std::sort(keys.begin(), keys.end());
         keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
     };
     std::vector<std::uint64_t>& fine = out[size_t(L.levels)];
-    fine.reserve(finest.size());
-    for (const Cell& f : finest)
-        fine.push_back(L.cellKey(f, L.levels));
-    sortedUnique(fine);
+    if (bitmap) {
+        for (std::size_t w = 0; w < hit.size(); ++w)
+            for (std::uint64_t bits = hit[w]; bits != 0; bits &= bits - 1)
+                fine.push_back(std::uint64_t(w) * 64 + std::uint64_t(__builtin_ctzll(bits)));
+    } else {
+        fine = std::move(sampled);
+        sortedUnique(fine);
+    }
     std::vector<Cell> distinct;
     distinct.reserve(fine.size());
     for (std::uint64_t key : fine) { // key = (y * n.z + z) * n.x + x (Lattice::cellKey)
