@@ -4,6 +4,7 @@
 
 #include <glad/gl.h>
 
+#include <algorithm>
 #include <ctime>
 
 namespace pb::bench {
@@ -17,8 +18,8 @@ TimingChoice chooseTiming(const std::string& requested, const gl::GlCaps& caps,
         c.reason = why;
         return c;
     };
-    if (requested != "auto" && requested != "cpu" && requested != "cpu-time" &&
-        requested != "query")
+    const std::vector<std::string>& names = timingRequestNames();
+    if (std::find(names.begin(), names.end(), requested) == names.end())
         throw Error("--timing '" + requested + "': expected auto, cpu, cpu-time or query");
     if (requested == "cpu") return cpu("CPU clock around glFinish per pass (--timing cpu)");
     if (requested == "cpu-time") {

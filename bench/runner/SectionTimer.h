@@ -42,8 +42,8 @@ inline const std::vector<std::string>& timingRequestNames() {
 }
 
 // requested: one of timingRequestNames(): "auto" (queries where the driver's are trustworthy,
-// else cpu), "cpu", "cpu-time" or "query". Throws pb::Error for "query" on a context without timer queries, or an unknown
-// name.
+// else cpu), "cpu", "cpu-time" or "query". Throws pb::Error for "query" on a context without
+// timer queries, or an unknown name.
 TimingChoice chooseTiming(const std::string& requested, const gl::GlCaps& caps,
                           const gl::DriverQuirks& quirks);
 

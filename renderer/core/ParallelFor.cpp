@@ -17,8 +17,7 @@ int resolveThreadCount(int requested) {
 
 void parallelFor(std::size_t count, int threads, const std::function<void(std::size_t, int)>& body,
                  const std::function<void(std::size_t)>& tick) {
-    // 0 means all cores, as for resolveThreadCount: seven callers passed 0 so and ran on one
-    // thread (the truth's path tracer, the worst-case view search, the placement's corner rays).
+    // <= 0 means all cores, as everywhere a thread count is taken (resolveThreadCount).
     threads = std::min<int>(resolveThreadCount(threads), int(std::max<std::size_t>(count, 1)));
     std::atomic<std::size_t> next{0}, done{0};
     std::atomic<bool> failed{false};

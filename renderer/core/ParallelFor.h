@@ -20,8 +20,9 @@ template <class T> struct alignas(kCacheLine) PerThread { T value{}; };
 int resolveThreadCount(int requested);
 
 // Runs body(item, threadIndex) for item in [0, count) on `threads` threads (<= 0: all hardware
-// threads, resolveThreadCount; never more than `count`), the calling thread being thread 0. Between its chunks the calling thread invokes `tick(done)` about every
-// 100 ms (progress), and once more with the final count. Rethrows the first exception a body
+// threads, resolveThreadCount; never more than `count`), the calling thread being thread 0.
+// Between its chunks the calling thread invokes `tick(done)` about every 100 ms (progress), and
+// once more with the final count. Rethrows the first exception a body
 // threw, after all threads stopped.
 void parallelFor(std::size_t count, int threads,
                  const std::function<void(std::size_t item, int thread)>& body,

@@ -73,21 +73,22 @@ float quantiseHalf(float v) {
 
 void sanitise(ProbeTexture& t) {
     t.stored.clear();
-    scaleTexels(t, t.storageScale); // as quantise: RGBA32F's scale is 1, a no-op
+    scaleTexels(t, t.storageScale); // RGBA32F's scale is 1 (chooseStorageScale): a no-op
     for (float& v : t.texels)
         v = std::isfinite(v) ? v : 0.0f;
 }
 
 void quantise(ProbeTexture& t, StorageFormat f) {
     const TextureShape& s = t.shape;
-    t.stored.assign(storedBytes(s, f), 0);
-    scaleTexels(t, t.storageScale);
     if (f == StorageFormat::Rgba32f) {
-        for (float& v : t.texels)
-            v = std::isfinite(v) ? v : 0.0f;
+        sanitise(t);
+        t.stored.resize(storedBytes(s, f));
         std::memcpy(t.stored.data(), t.texels.data(), t.stored.size());
         return; // decoding would copy the same floats back
-    } else if (f == StorageFormat::Rgba16f) {
+    }
+    t.stored.assign(storedBytes(s, f), 0);
+    scaleTexels(t, t.storageScale);
+    if (f == StorageFormat::Rgba16f) {
         for (std::size_t i = 0; i < t.texels.size(); ++i) {
             std::uint16_t h = glm::packHalf1x16(clampForHalf(t.texels[i]));
             std::memcpy(t.stored.data() + 2 * i, &h, 2);

@@ -546,7 +546,8 @@ void bakeRadiance(BakeRun& run, const RadianceMask& mask) {
     run.set.scenarios = std::move(baked);
 }
 
-// 3. Storage format: every texture quantised to the format, with its error per texture.
+// 3. Storage format: every texture quantised to the format, with its error per texture
+// (`storedBytes` false: RGBA32F keeps its texels alone, without the file's bytes).
 std::vector<QuantisationError> quantiseSet(ProbeSet& set, StorageFormat format, int threads,
                                           bool storedBytes) {
     std::vector<ProbeTexture*> all;
@@ -563,12 +564,11 @@ std::vector<QuantisationError> quantiseSet(ProbeSet& set, StorageFormat format, 
         }
     }
     parallelFor(all.size(), threads, [&](std::size_t i, int) {
-        if (format == StorageFormat::Rgba32f && !storedBytes) { // texels only (Baker.h)
-            sanitise(*all[i]);
-            return;
-        }
         if (format == StorageFormat::Rgba32f) { // stores the floats as they are: no error
-            quantise(*all[i], format);
+            if (storedBytes)
+                quantise(*all[i], format);
+            else
+                sanitise(*all[i]); // the texels alone (BakeRequest::irradianceOnly)
             return;
         }
         std::vector<float> before = all[i]->texels;

@@ -240,9 +240,10 @@ void zeroUnslottedTiles(ProbeTexture& t, const std::vector<int>& slots,
     for (std::size_t i = 0; i < slots.size(); ++i) {
         if (slots[i] >= 0) continue;
         const glm::ivec3 at = grid.probeCoords(int(i)); // (x, layer, z), as copyTile reads it
-        for (int r = 0; r < tileUnits && bytes; ++r)
-            std::memset(t.stored.data() + tileRowOffset(t.shape, at, tile, r, u), 0,
-                        std::size_t(tileUnits) * u.bytes);
+        if (bytes)
+            for (int r = 0; r < tileUnits; ++r)
+                std::memset(t.stored.data() + tileRowOffset(t.shape, at, tile, r, u), 0,
+                            std::size_t(tileUnits) * u.bytes);
         // RGBA32F and RGBA16F decode texel by texel, and a zero stored texel decodes to 0:
         // zeroing the same tiles' texels gives what decoding the whole texture again would,
         // without a pass over every texel (the placement's reference grid holds ~170 MiB).
