@@ -5,6 +5,7 @@
 #include "core/ParallelFor.h"
 #include "raytrace/AliasTable.h"
 #include "truth/CameraRays.h"
+#include "truth/GBufferAlbedo.h"
 #include "truth/TruthScene.h"
 
 #include <chrono>
@@ -164,6 +165,8 @@ struct Integrator {
                 L += beta * h.emitted * w;
             }
             if (depth >= maxDepth) break;
+            // What the camera sees is shaded with the GBuffer's albedo (GBufferAlbedo.h).
+            if (depth == 0) h.albedo = asGBufferStoresAlbedo(h.albedo);
             const glm::vec3 f = h.albedo / kPi;
             if (f == glm::vec3(0.0f)) break;
             const glm::vec3& ng = h.geometricNormal;

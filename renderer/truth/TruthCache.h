@@ -13,7 +13,7 @@
 namespace pb::truth {
 
 // Bump whenever the tracer's output changes for the same inputs.
-constexpr std::uint32_t kTruthAlgorithmVersion = 2; // 2: the bake's alias table
+constexpr std::uint32_t kTruthAlgorithmVersion = 3; // 2: the bake's alias table; 3: the camera hit's albedo as the GBuffer stores it
 
 std::uint64_t truthInputHash(const scene::Scene& scene, const scene::View& view,
                              const TruthSettings& settings);

@@ -2,8 +2,11 @@
 // E / (1 - a) inside a closed emitting box of albedo a), a sunlit Lambertian plane
 // (albedo / pi * E_sun * cos), and a floor under a square area light (the view factor of a
 // differential area to a parallel square). Statistical checks allow 5 standard errors as the
-// tracer itself reports them, so they also test that report.
+// tracer itself reports them, so they also test that report. The surface the camera sees
+// reflects with its albedo as the GBuffer stores it (8-bit sRGB, GBufferAlbedo.h), the
+// surfaces behind it with the exact one; the sunlit plane's exact check fails without that.
 #include "scene/SceneBuilder.h"
+#include "truth/GBufferAlbedo.h"
 #include "truth/PathTracer.h"
 
 #include <cmath>
@@ -74,7 +77,8 @@ TEST_P(WhiteFurnace, ClosedEmittingBoxGivesEOverOneMinusAlbedo) {
     ts.spp = 64;
     ts.maxDepth = 1024; // a^1024: no truncation bias worth naming
     truth::TruthResult r = truth::renderTruth(s, v, ts);
-    const glm::vec3 expected = E / (1.0f - albedo);
+    // E emitted + the first hit's stored albedo times what arrives there, E / (1 - a).
+    const glm::vec3 expected = E + truth::throughSrgb8(albedo) * E / (1.0f - albedo);
     const double expectedLum = 0.2126 * expected.r + 0.7152 * expected.g + 0.0722 * expected.b;
     ASSERT_TRUE(r.noise.varianceKnown);
     if (albedo > 0.0f) { // albedo 0: exact, no noise
@@ -111,8 +115,8 @@ TEST(TruthClosedForm, SunlitPlaneIsAlbedoOverPiTimesIrradianceTimesCosine) {
     ts.spp = 4;
     truth::TruthResult r = truth::renderTruth(s, v, ts);
     // Sun NEE is exact and every bounce escapes to the black sky: each pixel is the formula.
-    const glm::vec3 expected =
-        albedo / kTruthClosedFormPi * s.sun.color * s.sun.intensity * s.sun.toSun.y;
+    const glm::vec3 expected = truth::asGBufferStoresAlbedo(albedo) / kTruthClosedFormPi *
+                               s.sun.color * s.sun.intensity * s.sun.toSun.y;
     for (int y = 0; y < ts.height; ++y)
         for (int x = 0; x < ts.width; ++x)
             for (int c = 0; c < 3; ++c)
@@ -136,7 +140,7 @@ TEST(TruthClosedForm, FloorUnderSquareLightFollowsTheViewFactor) {
     ts.spp = 256;
     truth::TruthResult r = truth::renderTruth(s, v, ts);
     const double F = 4.0 * viewFactorCorner(side / 2, side / 2, h);
-    const double expected = albedo * Le * F; // albedo / pi * (Le * pi * F)
+    const double expected = truth::throughSrgb8(albedo) * Le * F; // albedo / pi * (Le * pi * F)
     EXPECT_NEAR(r.noise.meanLuminance, expected, 5.0 * r.noise.standardError + 1e-3 * expected)
         << "F " << F << ", SE " << r.noise.standardError;
     EXPECT_LT(r.noise.relativeStandardError, 0.01); // NEE makes this an easy integral
@@ -155,5 +159,6 @@ TEST(TruthClosedForm, DirectOnlyDepthOneDropsTheInterreflection) {
     ts.spp = 128;
     ts.maxDepth = 1;
     truth::TruthResult r = truth::renderTruth(s, scene::View{"in", {0, 0, 0}, {0, 0, -1}, 90.0f}, ts);
-    EXPECT_NEAR(r.noise.meanLuminance, 1.0 + albedo, 5.0 * r.noise.standardError + 1e-4);
+    EXPECT_NEAR(r.noise.meanLuminance, 1.0 + truth::throughSrgb8(albedo),
+                5.0 * r.noise.standardError + 1e-4);
 }

@@ -2,6 +2,7 @@
 // decoded) scales the albedo, an emissive texture the emission, and MASK alpha cuts holes the
 // camera and the light see through.
 #include "scene/SceneBuilder.h"
+#include "truth/GBufferAlbedo.h"
 #include "truth/PathTracer.h"
 
 #include <cmath>
@@ -71,7 +72,9 @@ TEST(TruthMaterial, BaseColourTextureScalesTheAlbedo) {
     auto r = truth::renderTruth(s, scene::View{"v", {0, 0, 3}, {0, 0, 0}, 10.0f}, tiny());
     const float texel[3] = {200, 100, 50};
     for (int c = 0; c < 3; ++c) {
-        const float expected = 0.5f * srgbToLinear(texel[c] / 255.0f) / kTruthMaterialPi * 2.0f;
+        // The GBuffer stores factor x texel in 8-bit sRGB (GBufferAlbedo.h).
+        const float albedo = truth::throughSrgb8(0.5f * srgbToLinear(texel[c] / 255.0f));
+        const float expected = albedo / kTruthMaterialPi * 2.0f;
         EXPECT_NEAR(r.hdr.at(1, 1, c), expected, 1e-5f) << c;
     }
 }
@@ -108,7 +111,7 @@ TEST(TruthMaterial, MaskAlphaCutsAHoleForCameraAndLight) {
     ts.height = 2;
     // 8 pixels across x in [-0.8, 0.8] at the mask's depth (a narrow view of the quad).
     auto r = truth::renderTruth(s, scene::View{"v", {0, 0, 3}, {0, 0, 0}, 10.0f}, ts);
-    const float lit = 0.5f / kTruthMaterialPi * 2.0f;
+    const float lit = truth::throughSrgb8(0.5f) / kTruthMaterialPi * 2.0f;
     EXPECT_NEAR(r.hdr.at(0, 0, 0), lit, 1e-5f) << "through the hole to the lit floor";
     EXPECT_NEAR(r.hdr.at(7, 0, 0), 0.0f, 1e-6f) << "the opaque half, black";
 }
