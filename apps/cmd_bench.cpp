@@ -451,8 +451,9 @@ const RegisterCommand registerBench{
          cmd.add_option("--volumes", a->volumes,
                         "Without --probes: the volumes to bake, auto (stored sparse), "
                         "auto-uniform or a volumes file (bench/volumes/rooms_nested.toml nests a "
-                        "volume per room); the probes are what 'bake --volumes V --rays 128' "
-                        "writes, byte for byte, cached in --cache-dir")
+                        "volume per room); the probes are what 'bake --volumes V " +
+                            bench::benchBakeFlags() +
+                            "' writes, byte for byte, cached in --cache-dir")
              ->capture_default_str();
          cmd.add_option("--cache-dir", a->cacheDir,
                         "Folder of the baked-probe cache (default: ~/.cache/probebench)");

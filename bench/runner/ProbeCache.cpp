@@ -29,8 +29,16 @@ std::string seconds(double s) {
 probes::BakeOptions benchBakeOptions(const std::string& volumes) {
     probes::BakeOptions o;
     o.volumes = volumes;
-    o.settings.raysPerProbe = 128;
+    o.settings.raysPerProbe = kBenchRaysPerProbe;
+    o.settings.noiseTarget = kBenchNoiseTarget;
     return o;
+}
+
+std::string benchBakeFlags() {
+    char text[64];
+    std::snprintf(text, sizeof text, "--rays %d --noise-target %g", kBenchRaysPerProbe,
+                  double(kBenchNoiseTarget));
+    return text;
 }
 
 probes::ProbeSet benchProbes(const scene::Scene& s, const std::string& volumes,

@@ -44,10 +44,11 @@ TEST(OneWayToProbesCli, BenchAndBakeWithTheSameOptionsWriteTheSameBytes) {
     const fs::path dir = outputDir() / "one_way_to_probes";
     fs::remove_all(dir);
     fs::create_directories(dir);
-    // The bench bakes as `bake --rays 128` does (bench/runner/ProbeCache.h), auto placement.
+    // The bench bakes as `bake --rays 128 --noise-target 0.015` does (bench/runner/ProbeCache.h),
+    // auto placement.
     const fs::path baked = dir / "bake.pbp";
-    const CommandResult bake =
-        runProbebench({"bake", "--scene", "cornell", "--rays", "128", "--out", baked.string()});
+    const CommandResult bake = runProbebench({"bake", "--scene", "cornell", "--rays", "128",
+                                              "--noise-target", "0.015", "--out", baked.string()});
     ASSERT_EQ(bake.exitCode, 0) << bake.output;
     const CommandResult first = benchCornell(dir / "cache");
     ASSERT_EQ(first.exitCode, 0) << first.output;
