@@ -50,7 +50,8 @@ std::string directLightText(const TruthErrorSplit& split) {
     return "The direct light alone (the frame without GI of the sun and punctual lights, sky and "
            "emission off) is FLIP " + fixed(split.directFlip, 4) + ", rel. MSE " +
            scientific(split.directRelativeMse) +
-           " from the traced direct light: the rasterizer's own error (shadow map, unshadowed "
+           " from the traced direct light: the rasterizer's own error (edges without "
+           "anti-aliasing against a truth that averages each pixel, the shadow map, unshadowed "
            "punctual lights), under every row's and beyond any probe set's reach.";
 }
 
