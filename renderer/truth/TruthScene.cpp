@@ -3,24 +3,12 @@
 #include "core/Error.h"
 #include "raytrace/EmbreeIsa.h"
 #include "raytrace/RayScene.h"
+#include "truth/Srgb.h"
 
-#include <array>
 #include <cmath>
 
 namespace pb::truth {
 namespace {
-
-const std::array<float, 256>& srgbLut() {
-    static const std::array<float, 256> lut = [] {
-        std::array<float, 256> l{};
-        for (int i = 0; i < 256; ++i) {
-            float c = float(i) / 255.0f;
-            l[size_t(i)] = c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-        }
-        return l;
-    }();
-    return lut;
-}
 
 // GL's bilinear filter on an sRGB8_A8 texture with REPEAT wrapping (glTF's default sampler):
 // texels are decoded to linear before filtering, alpha is linear. No mipmaps: the truth
@@ -28,7 +16,6 @@ const std::array<float, 256>& srgbLut() {
 glm::vec4 sampleTexture(const scene::Texture& t, glm::vec2 uv) {
     if (t.width <= 0 || t.height <= 0 || t.rgba8.size() < size_t(t.width) * t.height * 4)
         return glm::vec4(1.0f);
-    const auto& lut = srgbLut();
     float x = uv.x * float(t.width) - 0.5f, y = uv.y * float(t.height) - 0.5f;
     if (!std::isfinite(x) || !std::isfinite(y)) return glm::vec4(1.0f);
     float fx = std::floor(x), fy = std::floor(y);
@@ -39,7 +26,8 @@ glm::vec4 sampleTexture(const scene::Texture& t, glm::vec2 uv) {
         for (int i = 0; i < 2; ++i) {
             int tx = wrap((long long)fx + i, t.width), ty = wrap((long long)fy + j, t.height);
             const std::uint8_t* p = &t.rgba8[(size_t(ty) * size_t(t.width) + size_t(tx)) * 4];
-            glm::vec4 c(lut[p[0]], lut[p[1]], lut[p[2]], float(p[3]) / 255.0f);
+            glm::vec4 c(srgb8ToLinear(p[0]), srgb8ToLinear(p[1]), srgb8ToLinear(p[2]),
+                        float(p[3]) / 255.0f);
             sum += c * ((i ? wx : 1.0f - wx) * (j ? wy : 1.0f - wy));
         }
     return sum;
@@ -50,11 +38,10 @@ glm::vec3 meanTextureColour(const scene::Scene& s, int texture) {
     const scene::Texture& t = s.textures[size_t(texture)];
     std::size_t n = std::size_t(t.width) * std::size_t(t.height);
     if (n == 0 || t.rgba8.size() < n * 4) return glm::vec3(1.0f);
-    const auto& lut = srgbLut();
     double sum[3] = {0, 0, 0};
     for (std::size_t i = 0; i < n; ++i)
         for (int c = 0; c < 3; ++c)
-            sum[c] += lut[t.rgba8[i * 4 + size_t(c)]];
+            sum[c] += srgb8ToLinear(t.rgba8[i * 4 + size_t(c)]);
     return glm::vec3(float(sum[0] / double(n)), float(sum[1] / double(n)), float(sum[2] / double(n)));
 }
 
