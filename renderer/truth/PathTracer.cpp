@@ -6,8 +6,10 @@
 #include "raytrace/AliasTable.h"
 #include "truth/CameraRays.h"
 #include "truth/GBufferAlbedo.h"
+#include "truth/ScrambledSobol.h"
 #include "truth/TruthScene.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
@@ -16,31 +18,6 @@ namespace pb::truth {
 namespace {
 
 constexpr float kPi = glm::pi<float>();
-
-std::uint64_t splitmix64(std::uint64_t x) {
-    x += 0x9e3779b97f4a7c15ull;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-}
-
-// PCG32 (O'Neill 2014), one stream per (seed, pixel, sample).
-class Rng {
-public:
-    Rng(std::uint64_t seed, std::uint64_t pixel, std::uint64_t sample)
-        : state_(splitmix64(seed ^ splitmix64(pixel ^ splitmix64(sample)))) {}
-    float next() {
-        std::uint64_t old = state_;
-        state_ = old * 6364136223846793005ull + 1442695040888963407ull;
-        auto xorshifted = std::uint32_t(((old >> 18u) ^ old) >> 27u);
-        auto rot = std::uint32_t(old >> 59u);
-        std::uint32_t r = (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
-        return float(r >> 8) * (1.0f / 16777216.0f); // [0, 1)
-    }
-
-private:
-    std::uint64_t state_;
-};
 
 float maxComponent(const glm::vec3& c) { return std::max(c.r, std::max(c.g, c.b)); }
 
@@ -113,9 +90,10 @@ struct Integrator {
 
     // One emissive triangle by power; returns the MIS-weighted irradiance estimate (before
     // albedo / pi).
-    glm::vec3 emissiveLight(const glm::vec3& x, const glm::vec3& ng, const glm::vec3& ns, Rng& rng) const {
+    glm::vec3 emissiveLight(const glm::vec3& x, const glm::vec3& ng, const glm::vec3& ns, PathSampler& rng) const {
         if (lights.empty()) return glm::vec3(0.0f);
-        float u0 = rng.next(), u1 = rng.next(), u2 = rng.next();
+        float u0 = rng.next1D(), u1, u2;
+        rng.next2D(u1, u2);
         std::size_t i = lights.pick(u0);
         const EmissiveTriangle& tri = ts.emissiveTriangles()[i];
         float su = std::sqrt(u1);
@@ -150,7 +128,7 @@ struct Integrator {
         return float(lights.probability(size_t(i))) / tri.area * h.t * h.t / cosL;
     }
 
-    glm::vec3 radiance(glm::vec3 o, glm::vec3 d, Rng& rng) const {
+    glm::vec3 radiance(glm::vec3 o, glm::vec3 d, PathSampler& rng) const {
         glm::vec3 L(0.0f), beta(1.0f);
         float prevBsdfPdf = 0.0f;
         const float inf = std::numeric_limits<float>::infinity();
@@ -173,7 +151,8 @@ struct Integrator {
             const glm::vec3& ns = h.shadingNormal;
             L += beta * f * (deltaLights(h.position, ng, ns) + emissiveLight(h.position, ng, ns, rng));
 
-            float u1 = rng.next(), u2 = rng.next();
+            float u1, u2;
+            rng.next2D(u1, u2);
             glm::vec3 wi = cosineSample(ns, u1, u2);
             float cosS = glm::dot(ns, wi);
             if (cosS <= 0.0f || glm::dot(ng, wi) <= 0.0f) break; // below the true surface
@@ -181,7 +160,7 @@ struct Integrator {
             prevBsdfPdf = cosS / kPi;
             if (depth >= 3) {
                 float q = std::min(0.95f, maxComponent(beta));
-                if (rng.next() >= q) break;
+                if (rng.next1D() >= q) break;
                 beta /= q;
             }
             o = h.position + ng * ts.epsilon();
@@ -247,9 +226,13 @@ TruthResult renderTruth(const scene::Scene& scene, const scene::View& view,
     const raytrace::AliasTable lightTable(weights);
     const Integrator integrator{scene, ts, lightTable, settings.maxDepth};
 
-    // Per pixel: the mean colour and the sample variance of its luminance.
+    // Per pixel: the mean colour, and the variance of the mean of its luminance from the spread
+    // of its kBatches independently scrambled batches (ScrambledSobol.h: within a batch the
+    // samples are stratified, so their own spread would overstate the noise). pixelVariance
+    // holds n times that variance, a per-sample variance, so the sums below read as before.
     std::vector<double> pixelVariance(size_t(W) * size_t(H), 0.0);
     const int n = settings.spp;
+    const int batches = std::min(n, kBatches);
     parallelFor(
         size_t(H), settings.threads,
         [&](std::size_t row, int) {
@@ -257,24 +240,33 @@ TruthResult renderTruth(const scene::Scene& scene, const scene::View& view,
             for (int x = 0; x < W; ++x) {
                 const std::uint64_t pixel = std::uint64_t(y) * std::uint64_t(W) + std::uint64_t(x);
                 glm::dvec3 sum(0.0);
-                double lumSum = 0.0, lumSq = 0.0;
+                double batchSum[kBatches] = {}, batchCount[kBatches] = {};
                 for (int s = 0; s < n; ++s) {
-                    Rng rng(settings.seed, pixel, std::uint64_t(s));
-                    float jx = rng.next(), jy = rng.next();
-                    glm::vec3 L = integrator.radiance(camera.eye(), camera.direction(x, y, jx, jy), rng);
+                    PathSampler sampler(settings.seed, pixel, std::uint32_t(s));
+                    float jx, jy;
+                    sampler.next2D(jx, jy);
+                    glm::vec3 L = integrator.radiance(camera.eye(), camera.direction(x, y, jx, jy), sampler);
                     sum += glm::dvec3(L);
-                    double lum = double(luminance(L));
-                    lumSum += lum;
-                    lumSq += lum * lum;
+                    batchSum[s % kBatches] += double(luminance(L));
+                    batchCount[s % kBatches] += 1.0;
                 }
                 float* px = &result.hdr.pixels[size_t(pixel) * 4];
                 px[0] = float(sum.x / n);
                 px[1] = float(sum.y / n);
                 px[2] = float(sum.z / n);
                 px[3] = 1.0f;
-                if (n >= 2) {
-                    double mean = lumSum / n;
-                    pixelVariance[size_t(pixel)] = std::max(0.0, (lumSq - n * mean * mean) / (n - 1));
+                if (batches >= 2) {
+                    // Var(mean) ~ sum_b (c_b / n)^2 (m_b - m)^2 * B / (B - 1): the usual estimate
+                    // from B independent batch means, weighted by their sizes c_b.
+                    double total = 0.0;
+                    for (int b = 0; b < batches; ++b) total += batchSum[b];
+                    const double mean = total / n;
+                    double v = 0.0;
+                    for (int b = 0; b < batches; ++b) {
+                        const double w = batchCount[b] / n, d = batchSum[b] / batchCount[b] - mean;
+                        v += w * w * d * d;
+                    }
+                    pixelVariance[size_t(pixel)] = n * v * batches / (batches - 1);
                 }
             }
         },

@@ -9,9 +9,11 @@
 // (a constant radiance) is reached by BSDF sampling only, which for a uniform sky is already
 // proportional to the integrand. Russian roulette from the 4th vertex on.
 //
-// Deterministic: sample s of pixel p draws from a generator seeded by (seed, p, s), and each
-// pixel is summed by one thread in sample order, so the image is bit-identical for any thread
-// count.
+// Random numbers: a pixel's samples are stratified per dimension pair, in kBatches
+// independently scrambled batches (ScrambledSobol.h); at the same spp the image is less noisy
+// than with independent samples. Deterministic: sample s of pixel p draws from (seed, p, s),
+// and each pixel is summed by one thread in sample order, so the image is bit-identical for
+// any thread count.
 #include "image/Image.h"
 #include "scene/Scene.h"
 
@@ -30,7 +32,9 @@ struct TruthSettings {
 };
 
 // The estimator's own noise: the standard error of the image's mean luminance, from each
-// pixel's sample variance (pixels are independent: SE^2 = sum_p s_p^2 / n / P^2).
+// pixel's variance (pixels are independent: SE^2 = sum_p s_p^2 / n / P^2). s_p^2 / n is the
+// variance of pixel p's mean estimated from its independent batches (ScrambledSobol.h), not
+// the spread of its stratified samples.
 struct TruthNoise {
     double meanLuminance = 0.0;      // Rec. 709 luminance, scene units (before exposure)
     double standardError = 0.0;      // of meanLuminance; 0 when spp < 2 (no variance estimate)

@@ -13,7 +13,7 @@
 namespace pb::truth {
 
 // Bump whenever the tracer's output changes for the same inputs.
-constexpr std::uint32_t kTruthAlgorithmVersion = 3; // 2: the bake's alias table; 3: the camera hit's albedo as the GBuffer stores it
+constexpr std::uint32_t kTruthAlgorithmVersion = 4; // 2: the bake's alias table; 3: the camera hit's albedo as the GBuffer stores it; 4: stratified samples (ScrambledSobol.h)
 
 std::uint64_t truthInputHash(const scene::Scene& scene, const scene::View& view,
                              const TruthSettings& settings);
