@@ -1,6 +1,7 @@
 #pragma once
 // 64-bit FNV-1a: the probe file's checksum and the bake cache's input hash. Not
 // cryptographic; it catches truncation, bit flips and changed inputs, which is all we need.
+// And splitmix64, the seed mixer of the bake's and the truth's random streams.
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -30,6 +31,15 @@ public:
 private:
     std::uint64_t h_ = 0xcbf29ce484222325ull;
 };
+
+// splitmix64 (Steele, Lea and Flood 2014): advances `state` by the golden-ratio increment and
+// returns it mixed. The bake's ray rotations and the truth's sample keys draw from it.
+inline std::uint64_t splitmix64(std::uint64_t& state) {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
 
 inline std::uint64_t fnv1a64(const void* data, std::size_t size) {
     Hasher h;

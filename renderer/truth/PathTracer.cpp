@@ -240,7 +240,7 @@ TruthResult renderTruth(const scene::Scene& scene, const scene::View& view,
             for (int x = 0; x < W; ++x) {
                 const std::uint64_t pixel = std::uint64_t(y) * std::uint64_t(W) + std::uint64_t(x);
                 glm::dvec3 sum(0.0);
-                double batchSum[kBatches] = {}, batchCount[kBatches] = {};
+                double batchSum[kBatches] = {};
                 for (int s = 0; s < n; ++s) {
                     PathSampler sampler(settings.seed, pixel, std::uint32_t(s));
                     float jx, jy;
@@ -248,7 +248,6 @@ TruthResult renderTruth(const scene::Scene& scene, const scene::View& view,
                     glm::vec3 L = integrator.radiance(camera.eye(), camera.direction(x, y, jx, jy), sampler);
                     sum += glm::dvec3(L);
                     batchSum[s % kBatches] += double(luminance(L));
-                    batchCount[s % kBatches] += 1.0;
                 }
                 float* px = &result.hdr.pixels[size_t(pixel) * 4];
                 px[0] = float(sum.x / n);
@@ -263,7 +262,9 @@ TruthResult renderTruth(const scene::Scene& scene, const scene::View& view,
                     const double mean = total / n;
                     double v = 0.0;
                     for (int b = 0; b < batches; ++b) {
-                        const double w = batchCount[b] / n, d = batchSum[b] / batchCount[b] - mean;
+                        // Batch b holds samples b, b + kBatches, ...
+                        const double count = double((n - b + kBatches - 1) / kBatches);
+                        const double w = count / n, d = batchSum[b] / count - mean;
                         v += w * w * d * d;
                     }
                     pixelVariance[size_t(pixel)] = n * v * batches / (batches - 1);

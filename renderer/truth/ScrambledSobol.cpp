@@ -1,14 +1,11 @@
 #include "truth/ScrambledSobol.h"
 
+#include "core/Hash.h"
+
 namespace pb::truth {
 namespace {
 
-std::uint64_t mix64(std::uint64_t x) {
-    x += 0x9e3779b97f4a7c15ull;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-}
+std::uint64_t mix64(std::uint64_t x) { return splitmix64(x); } // x mixed (x itself is a copy)
 
 // Laine and Karras's hash in bit-reversed order: adding and multiplying by even constants only
 // carries from low bits to high bits, so after the reversal each bit depends on the bits above

@@ -49,6 +49,8 @@ void hashScene(Hasher& h, const scene::Scene& s) {
     raytrace::hashLights(h, s.lights);
 }
 
+} // namespace
+
 // The volume's fields as ProbeVolume::forEachField lists them, with one exception kept so that
 // every existing probe file keeps its hash (the gate's committed bake among them): `parent` was
 // hashed after `counts`, before the list existed.
@@ -63,8 +65,6 @@ void hashVolume(Hasher& h, const ProbeVolume& v) {
             h.pod(field);
     });
 }
-
-} // namespace
 
 void hashBakeVersionsAndScene(Hasher& h, const scene::Scene& scene) {
     h.pod(kBakeAlgorithmVersion);

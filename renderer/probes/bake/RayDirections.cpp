@@ -5,13 +5,6 @@
 
 namespace pb::probes {
 
-std::uint64_t splitmix64(std::uint64_t& state) {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-
 float uniformFloat(std::uint64_t& state) {
     return float(splitmix64(state) >> 40) * (1.0f / 16777216.0f);
 }

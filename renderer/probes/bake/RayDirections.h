@@ -2,15 +2,16 @@
 // Probe ray directions: N spherical Fibonacci points, randomly rotated once per pass.
 // One rotation per (seed, scenario, pass) is shared by every probe of that pass, so the
 // cosine / cosine-power convolution weights are computed once per pass (ProbeConvolution.h).
-// The RNG is splitmix64 with explicit float conversion: the same seed gives the same
+// The RNG is splitmix64 (core/Hash.h) with explicit float conversion: the same seed gives the same
 // directions on any machine and any thread count.
+#include "core/Hash.h"
+
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
 
 namespace pb::probes {
 
-std::uint64_t splitmix64(std::uint64_t& state);
 // Uniform in [0, 1) from the top 24 bits.
 float uniformFloat(std::uint64_t& state);
 

@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 #include "core/ParallelFor.h"
+#include "probes/bake/BakeHash.h"
 #include "probes/placement/LatticeAlignment.h"
 #include "probes/store/MemoryReport.h"
 #include "probes/placement/PlacementError.h"
@@ -17,8 +18,6 @@
 #include <memory>
 #include <mutex>
 #include <sstream>
-#include <string>
-#include <type_traits>
 
 namespace pb::probes {
 namespace {
@@ -151,28 +150,18 @@ private:
     // mark every triangle's cells (about 5 ms a call on the apartment's 178k triangles), and the
     // placement asks again for placements it has seen (the bisection's ends, the lattice
     // search's fit checks and its result): 71 calls for 51 placements there. So each answer is
-    // kept, by the volumes' defining fields (always asked from the placing thread).
+    // kept, by the volumes' hash as the bake's input hash takes them (always asked from the
+    // placing thread).
     std::size_t storedBytes(const std::vector<ProbeVolume>& volumes) const {
         if (!req_.sparse) return memoryReport(volumes, req_.format).total.storedTotal();
-        const std::string key = volumesKey(volumes);
-        if (auto it = storedBytesSeen_.find(key); it != storedBytesSeen_.end()) return it->second;
-        const std::size_t bytes = sparseStoredBytes(volumes);
-        storedBytesSeen_.emplace(key, bytes);
-        return bytes;
-    }
-
-    // Every field that defines the volumes (ProbeVolume::forEachField), bit for bit.
-    static std::string volumesKey(const std::vector<ProbeVolume>& volumes) {
-        std::string key;
+        Hasher h;
         for (const ProbeVolume& v : volumes)
-            ProbeVolume::forEachField(v, [&key](const char*, const auto& field) {
-                using Field = std::decay_t<decltype(field)>;
-                if constexpr (std::is_same_v<Field, std::string>)
-                    key.append(field).push_back('\0');
-                else
-                    key.append(reinterpret_cast<const char*>(&field), sizeof(Field));
-            });
-        return key;
+            hashVolume(h, v);
+        if (auto it = storedBytesSeen_.find(h.value()); it != storedBytesSeen_.end())
+            return it->second;
+        const std::size_t bytes = sparseStoredBytes(volumes);
+        storedBytesSeen_.emplace(h.value(), bytes);
+        return bytes;
     }
 
     std::size_t sparseStoredBytes(const std::vector<ProbeVolume>& volumes) const {
@@ -432,7 +421,7 @@ private:
     bool reserved_ = false; // the free-space tiles' share is kept out of the placement's budget
     bool defaultBudget_ = false;
     std::vector<raytrace::WorldTriangle> triangles_;
-    mutable std::map<std::string, std::size_t> storedBytesSeen_; // storedBytes' answers
+    mutable std::map<std::uint64_t, std::size_t> storedBytesSeen_; // storedBytes' answers
     std::unique_ptr<raytrace::RayScene> rays_;
     int placements_ = 0;
     std::string capNote_; // the first uniform fit's note (its spacing was capped)
