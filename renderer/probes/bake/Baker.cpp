@@ -176,7 +176,9 @@ struct BakeRun {
 
 ProbeSet emptySet(const scene::Scene& scene, const BakeRequest& req) {
     ProbeSet set;
-    set.inputHash = bakeInputHash(scene, req);
+    // A trial is never written nor compared with a file, and hashing the scene's geometry
+    // for each of the lattice search's trials cost about 1% of a default bake.
+    set.inputHash = req.irradianceOnly ? 0 : bakeInputHash(scene, req);
     set.settings = req.settings;
     set.volumes = req.volumes;
     set.scenarios = req.scenarios;
@@ -206,8 +208,13 @@ struct RadianceMask {
     explicit RadianceMask(const BakeRun& run)
         : isParent(run.set.volumes.size(), false),
           irradianceOnly(run.req.freeSpace != FreeSpace::StandIns) {
-        if (run.req.sparse) {
-            const std::vector<raytrace::WorldTriangle> triangles = raytrace::staticBakeTriangles(run.scene);
+        if (run.req.sparse && run.req.keptProbes) {
+            keep = *run.req.keptProbes;
+        } else if (run.req.sparse) {
+            std::vector<raytrace::WorldTriangle> own;
+            if (!run.req.staticTriangles) own = raytrace::staticBakeTriangles(run.scene);
+            const std::vector<raytrace::WorldTriangle>& triangles =
+                run.req.staticTriangles ? *run.req.staticTriangles : own;
             for (size_t v = 0; v < run.set.volumes.size(); ++v)
                 keep.push_back(sparseKeptProbes(run.set.volumes[v], run.parents[v] < 0, triangles));
         }

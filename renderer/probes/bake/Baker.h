@@ -63,8 +63,19 @@ struct BakeRequest {
     // and its noise statistics empty); stored sparse with stand-ins, no geometry pass for the
     // probes sparse storage drops (their states stay default; the trial's surface lookups
     // read only kept probes). Its texels are the full bake's, bit for bit; in RGBA32F it keeps
-    // no stored bytes (ProbeTexture::stored stays empty: nothing writes or uploads a trial).
+    // no stored bytes (ProbeTexture::stored stays empty: nothing writes or uploads a trial)
+    // and no input hash (ProbeSet::inputHash 0).
     bool irradianceOnly = false;
+    // Not an input: the scene's staticBakeTriangles (raytrace/StaticTriangles.h), when the
+    // caller has them already (the placement's trial bakes: gathering the apartment's 178k
+    // triangles again for each of 25 trials cost about 2% of a default bake). Sparse storage
+    // reads them; it must be what staticBakeTriangles(scene) returns.
+    const std::vector<raytrace::WorldTriangle>* staticTriangles = nullptr;
+    // Not an input: with `sparse`, sparseKeptProbes of each volume (SparseStorage.h), when the
+    // caller has them already (the lattice search's budget check marks every trial's
+    // surface cells before the trial bakes; each mark visits every triangle). Must be what
+    // sparseKeptProbes returns for these volumes.
+    const std::vector<std::vector<std::uint8_t>>* keptProbes = nullptr;
 };
 
 struct BakeProgress {

@@ -154,20 +154,45 @@ private:
     // placing thread).
     std::size_t storedBytes(const std::vector<ProbeVolume>& volumes) const {
         if (!req_.sparse) return memoryReport(volumes, req_.format).total.storedTotal();
+        return seen(volumes).bytes;
+    }
+
+    // What sparse storage keeps of these volumes and what that stores, marked once per
+    // placement. The lattice search hands the masks on to its trial bakes
+    // (BakeRequest::keptProbes), which would mark the same cells again.
+    struct SparseSeen {
+        std::vector<std::vector<std::uint8_t>> kept; // sparseKeptProbes per volume
+        std::size_t bytes = 0;
+    };
+    static std::uint64_t volumesHash(const std::vector<ProbeVolume>& volumes) {
         Hasher h;
         for (const ProbeVolume& v : volumes)
             hashVolume(h, v);
-        if (auto it = storedBytesSeen_.find(h.value()); it != storedBytesSeen_.end())
-            return it->second;
-        const std::size_t bytes = sparseStoredBytes(volumes);
-        storedBytesSeen_.emplace(h.value(), bytes);
-        return bytes;
+        return h.value();
+    }
+    // seen()'s answer if it was asked before, else nothing; never writes.
+    const SparseSeen* seenBefore(const std::vector<ProbeVolume>& volumes) const {
+        const auto it = sparseSeen_.find(volumesHash(volumes));
+        return it == sparseSeen_.end() ? nullptr : &it->second;
+    }
+    const SparseSeen& seen(const std::vector<ProbeVolume>& volumes) const {
+        const std::uint64_t h = volumesHash(volumes);
+        if (auto it = sparseSeen_.find(h); it != sparseSeen_.end()) return it->second;
+        SparseSeen s;
+        const std::vector<int> parents = validateVolumes(volumes, "sparse storage");
+        for (std::size_t v = 0; v < volumes.size(); ++v)
+            s.kept.push_back(sparseKeptProbes(volumes[v], parents[v] < 0, triangles_));
+        s.bytes = sparseStoredBytes(volumes, s.kept);
+        return sparseSeen_.emplace(h, std::move(s)).first->second;
     }
 
-    std::size_t sparseStoredBytes(const std::vector<ProbeVolume>& volumes) const {
+    std::size_t sparseStoredBytes(const std::vector<ProbeVolume>& volumes,
+                                  const std::vector<std::vector<std::uint8_t>>& masks) const {
         // With free-space irradiance every probe left out keeps an irradiance tile unless it
         // bakes inside geometry, which is not known yet: all count (an upper bound).
-        const std::vector<std::size_t> kept = sparseProbeCounts(volumes, triangles_);
+        std::vector<std::size_t> kept;
+        for (const std::vector<std::uint8_t>& m : masks)
+            kept.push_back(std::size_t(std::count(m.begin(), m.end(), std::uint8_t(1))));
         std::vector<std::size_t> rest;
         for (std::size_t v = 0; v < volumes.size(); ++v)
             rest.push_back(req_.freeSpace == FreeSpace::Irradiance
@@ -391,7 +416,11 @@ private:
         best.latticeShift = searchLatticeShift(
             best.volumes, finestCell,
             [&](const std::vector<ProbeVolume>& v) {
-                const double e = estimate.relativeError(v, req_.sparse, threadsEach);
+                // Runs on several threads at once: only looks up what fits() marked (every
+                // shifted candidate, on the placing thread, before the trials start).
+                const SparseSeen* marked = req_.sparse ? seenBefore(v) : nullptr;
+                const double e = estimate.relativeError(v, req_.sparse, threadsEach,
+                                                        marked ? &marked->kept : nullptr);
                 const std::lock_guard<std::mutex> lock(progressLock);
                 if (req_.progress) req_.progress("lattice search", ++estimates, most);
                 return e;
@@ -421,7 +450,7 @@ private:
     bool reserved_ = false; // the free-space tiles' share is kept out of the placement's budget
     bool defaultBudget_ = false;
     std::vector<raytrace::WorldTriangle> triangles_;
-    mutable std::map<std::uint64_t, std::size_t> storedBytesSeen_; // storedBytes' answers
+    mutable std::map<std::uint64_t, SparseSeen> sparseSeen_; // seen()'s answers, by volume hash
     std::unique_ptr<raytrace::RayScene> rays_;
     int placements_ = 0;
     std::string capNote_; // the first uniform fit's note (its spacing was capped)

@@ -24,9 +24,9 @@ PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const 
                                                const Scenario& scenario, float sealedBelow,
                                                float truthSpacing,
                                                const PlacementErrorSettings& settings)
-    : scene_(scene), rays_(rs), scenario_(scenario), settings_(settings) {
-    points_ =
-        surfaceSamples(raytrace::staticBakeTriangles(scene), rs, settings.points, sealedBelow, settings.seed);
+    : scene_(scene), rays_(rs), scenario_(scenario), settings_(settings),
+      triangles_(raytrace::staticBakeTriangles(scene)) {
+    points_ = surfaceSamples(triangles_, rs, settings.points, sealedBelow, settings.seed);
     if (points_.empty())
         throw Error("placement error estimate: the scene has no open static surface");
     if (settings.bounces < 1) throw Error("placement error estimate: bounces must be at least 1");
@@ -48,6 +48,7 @@ PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const 
     trialNoise(req.settings);
     req.threads = settings.threads;
     req.rayScene = &rs;
+    req.staticTriangles = &triangles_;
     req.sparse = true; // see the header: the gather reads surface cells
     req.irradianceOnly = true;
     const ProbeSet earlier = bakeProbes(scene, req);
@@ -56,7 +57,8 @@ PlacementErrorEstimate::PlacementErrorEstimate(const scene::Scene& scene, const 
 }
 
 double PlacementErrorEstimate::relativeError(const std::vector<ProbeVolume>& volumes,
-                                             bool sparse, int threads) const {
+                                             bool sparse, int threads,
+                                             const std::vector<std::vector<std::uint8_t>>* kept) const {
     BakeRequest req;
     req.volumes = volumes;
     req.scenarios = {scenario_};
@@ -69,6 +71,8 @@ double PlacementErrorEstimate::relativeError(const std::vector<ProbeVolume>& vol
     req.threads = threads < 0 ? settings_.threads : threads;
     req.sparse = sparse;
     req.rayScene = &rays_;
+    req.staticTriangles = &triangles_;
+    req.keptProbes = sparse ? kept : nullptr;
     req.irradianceOnly = true; // the sampler below reads nothing else
     const ProbeSet set = bakeProbes(scene_, req);
     const ProbeSampler sampler(set, 0);

@@ -24,6 +24,7 @@
 #include "raytrace/RayScene.h"
 #include "probes/Scenario.h"
 #include "probes/bake/SurfaceGather.h"
+#include "raytrace/StaticTriangles.h"
 #include "scene/Scene.h"
 
 #include <vector>
@@ -53,8 +54,10 @@ public:
     // The candidate's mean relative error (sparse: stored as `bake --sparse` stores it).
     // `threads` (0: all cores) never changes the result; < 0: the settings' count. Safe to
     // call from several threads at once (the lattice search scores an axis's shifts so).
+    // `kept`: sparseKeptProbes of each volume when the caller has them (BakeRequest::keptProbes).
     double relativeError(const std::vector<ProbeVolume>& volumes, bool sparse,
-                         int threads = -1) const;
+                         int threads = -1,
+                         const std::vector<std::vector<std::uint8_t>>* kept = nullptr) const;
     std::size_t pointCount() const { return points_.size(); }
 
 private:
@@ -62,6 +65,7 @@ private:
     const raytrace::RayScene& rays_; // one BVH for every trial bake
     Scenario scenario_;
     PlacementErrorSettings settings_;
+    std::vector<raytrace::WorldTriangle> triangles_; // the scene's, for every trial's sparse mask
     std::vector<GatherPoint> points_;
     std::vector<glm::vec3> truth_;
 };
