@@ -290,7 +290,7 @@ public:
             }
         fillOctahedralBorder(t.data(), tile, 4, interior_);
         ProbeTexture one = ProbeTexture::make({tile, tile, 1, 4});
-        one.texels = t;
+        one.texels.assign(t.begin(), t.end());
         const glm::vec2 tc = tileCoord(glm::ivec3(0), dir, interior_);
         float e[4];
         bilinearFetch(one, tc.x, tc.y, 0, e);

@@ -7,6 +7,7 @@
 // border around a 6x6 (14x14) octahedral interior. Texel (col, row, layer) of a C-channel
 // texture is at float index ((layer * height + row) * width + col) * C; row 0 comes first,
 // exactly as glTexImage3D consumes it.
+#include "core/HugePages.h"
 #include "probes/ProbeVolume.h"
 
 #include <cstddef>
@@ -40,7 +41,11 @@ TextureShape visibilityShape(const glm::ivec3& counts);
 // power of two; texels always hold true values.
 struct ProbeTexture {
     TextureShape shape;
-    std::vector<float> texels;
+    // In 2 MiB pages where the kernel allows it (core/HugePages.h): a sparse trial bake's dense
+    // textures are tens of MiB written once, and at 4 KiB a page their first touch cost more
+    // than the zeroing itself on the 2-core VM. Sized only by make() and assign(), which
+    // write every value (the allocator leaves resize()'s new floats unset).
+    HugePageVector<float> texels;
     std::vector<std::uint8_t> stored;
     float storageScale = 1.0f;
 

@@ -95,8 +95,9 @@ std::vector<float> litSurfaceSamplingProbeTexels(const pb::raytrace::RayScene& r
     return out;
 }
 
-// Mean relative error of the texels facing down (where the square is) against quadrature.
-double meanRelativeError(const std::vector<float>& texels, float sun) {
+// Mean relative error of the texels facing down (where the square is) against quadrature
+// (`texels`: a texture's or a plain float vector).
+template <class Floats> double meanRelativeError(const Floats& texels, float sun) {
     double sum = 0.0;
     int n = 0;
     for (int j = 0; j < kIrradianceInterior; ++j)

@@ -161,7 +161,7 @@ TEST(ResponseEvent, ChecksNamesAndFramesAgainstTheScene) {
 
 TEST(ProbeUpdate, AnEventWithNoEffectChangesNothingBitForBit) {
     Fixture f = bakedCornellWithLamp();
-    const std::vector<float> before = f.set.irradiance[0][0].texels;
+    const auto before = f.set.irradiance[0][0].texels;
     const World initial = f.world;
     // A light scaled by 1 leaves the bake's inputs as they were: nothing is marked.
     World after = f.world;

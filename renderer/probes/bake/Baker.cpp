@@ -486,8 +486,8 @@ double addIncrement(const BakeRun& run, const RadianceMask& mask, std::vector<Pr
                     const std::vector<std::vector<glm::vec3>>& incSh) {
     std::vector<std::pair<double, double>> probes; // (increment, total) mean luminance
     for (std::size_t v = 0; v < total.size(); ++v) {
-        std::vector<float>& t = total[v].texels;
-        const std::vector<float>& d = inc[v].texels;
+        auto& t = total[v].texels;
+        const auto& d = inc[v].texels;
         for (std::size_t i = 0; i < t.size(); i += 4)
             for (std::size_t ch = 0; ch < 3; ++ch)
                 t[i + ch] += d[i + ch];
@@ -578,7 +578,7 @@ std::vector<QuantisationError> quantiseSet(ProbeSet& set, StorageFormat format, 
                 sanitise(*all[i]); // the texels alone (BakeRequest::irradianceOnly)
             return;
         }
-        std::vector<float> before = all[i]->texels;
+        std::vector<float> before(all[i]->texels.begin(), all[i]->texels.end());
         quantise(*all[i], format);
         errors[i] = measureQuantisation(before, *all[i], errors[i]);
     });
