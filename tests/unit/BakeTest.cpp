@@ -300,6 +300,38 @@ TEST(BakeDeterminism, SparseIrradianceOnlyTrialTracesOnlyTheKeptProbes) {
     EXPECT_LT(trialStats.primaryRays, fullStats.primaryRays) << "the dropped probes' geometry is not traced";
 }
 
+// The lattice search hands each trial the scene's triangles and the sparse masks its budget
+// check already marked (BakeRequest::staticTriangles, keptProbes): the same bytes as a trial
+// that gathers and marks them itself. A wrong mask changes them (the mask is what the trial
+// reads), and a trial carries no input hash (nothing writes or compares it).
+TEST(BakeDeterminism, SparseTrialTakesTheCallersTrianglesAndMasks) {
+    const pb::scene::Scene s = litRoomWithBlock();
+    BakeRequest r = request({volume("v", {0, 1.5f, 0}, {1.9f, 1.4f, 1.9f}, {9, 7, 9})}, s, 2, 32);
+    r.settings.noiseTarget = 0.0f;
+    r.sparse = true;
+    r.irradianceOnly = true;
+    const ProbeSet own = bakeProbes(s, r);
+    const std::vector<pb::raytrace::WorldTriangle> triangles = pb::raytrace::staticBakeTriangles(s);
+    const std::vector<std::vector<std::uint8_t>> kept{sparseKeptProbes(r.volumes[0], true, triangles)};
+    r.staticTriangles = &triangles;
+    r.keptProbes = &kept;
+    const ProbeSet handed = bakeProbes(s, r);
+    EXPECT_EQ(handed.irradiance[0][0].texels, own.irradiance[0][0].texels);
+    EXPECT_EQ(handed.visibility[0].texels, own.visibility[0].texels);
+    EXPECT_EQ(handed.storedCount(), own.storedCount());
+    EXPECT_EQ(own.inputHash, 0u) << "a trial is never written";
+
+    const std::vector<std::vector<std::uint8_t>> all{
+        std::vector<std::uint8_t>(kept[0].size(), std::uint8_t(1))};
+    ASSERT_NE(all, kept) << "some probes are dropped";
+    r.keptProbes = &all;
+    EXPECT_GT(bakeProbes(s, r).storedCount(), own.storedCount()) << "the mask handed in is used";
+
+    r.irradianceOnly = false;
+    r.keptProbes = nullptr;
+    EXPECT_NE(bakeProbes(s, r).inputHash, 0u);
+}
+
 // In RGBA32F (as the lattice search bakes) a trial keeps its texels alone: the same texels as
 // the full bake's, and no stored bytes (nothing writes or uploads a trial; the reference grid's
 // were about 170 MiB).
