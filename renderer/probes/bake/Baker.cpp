@@ -210,13 +210,10 @@ struct RadianceMask {
           irradianceOnly(run.req.freeSpace != FreeSpace::StandIns) {
         if (run.req.sparse && run.req.keptProbes) {
             keep = *run.req.keptProbes;
+        } else if (run.req.sparse && run.req.staticTriangles) {
+            keep = sparseKeptMasks(run.set.volumes, *run.req.staticTriangles);
         } else if (run.req.sparse) {
-            std::vector<raytrace::WorldTriangle> own;
-            if (!run.req.staticTriangles) own = raytrace::staticBakeTriangles(run.scene);
-            const std::vector<raytrace::WorldTriangle>& triangles =
-                run.req.staticTriangles ? *run.req.staticTriangles : own;
-            for (size_t v = 0; v < run.set.volumes.size(); ++v)
-                keep.push_back(sparseKeptProbes(run.set.volumes[v], run.parents[v] < 0, triangles));
+            keep = sparseKeptMasks(run.set.volumes, raytrace::staticBakeTriangles(run.scene));
         }
         for (int p : run.parents)
             if (p >= 0) isParent[size_t(p)] = true;

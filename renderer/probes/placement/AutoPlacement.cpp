@@ -179,9 +179,7 @@ private:
         const std::uint64_t h = volumesHash(volumes);
         if (auto it = sparseSeen_.find(h); it != sparseSeen_.end()) return it->second;
         SparseSeen s;
-        const std::vector<int> parents = validateVolumes(volumes, "sparse storage");
-        for (std::size_t v = 0; v < volumes.size(); ++v)
-            s.kept.push_back(sparseKeptProbes(volumes[v], parents[v] < 0, triangles_));
+        s.kept = sparseKeptMasks(volumes, triangles_);
         s.bytes = sparseStoredBytes(volumes, s.kept);
         return sparseSeen_.emplace(h, std::move(s)).first->second;
     }
@@ -190,9 +188,7 @@ private:
                                   const std::vector<std::vector<std::uint8_t>>& masks) const {
         // With free-space irradiance every probe left out keeps an irradiance tile unless it
         // bakes inside geometry, which is not known yet: all count (an upper bound).
-        std::vector<std::size_t> kept;
-        for (const std::vector<std::uint8_t>& m : masks)
-            kept.push_back(std::size_t(std::count(m.begin(), m.end(), std::uint8_t(1))));
+        const std::vector<std::size_t> kept = keptCounts(masks);
         std::vector<std::size_t> rest;
         for (std::size_t v = 0; v < volumes.size(); ++v)
             rest.push_back(req_.freeSpace == FreeSpace::Irradiance

@@ -180,15 +180,26 @@ std::size_t freeSpaceOnlyProbes(const ProbeSet& set, const std::vector<raytrace:
     return n;
 }
 
+std::vector<std::vector<std::uint8_t>>
+sparseKeptMasks(const std::vector<ProbeVolume>& volumes,
+                const std::vector<raytrace::WorldTriangle>& triangles) {
+    const std::vector<int> parents = validateVolumes(volumes, "sparse storage");
+    std::vector<std::vector<std::uint8_t>> out;
+    for (std::size_t i = 0; i < volumes.size(); ++i)
+        out.push_back(sparseKeptProbes(volumes[i], parents[i] < 0, triangles));
+    return out;
+}
+
+std::vector<std::size_t> keptCounts(const std::vector<std::vector<std::uint8_t>>& masks) {
+    std::vector<std::size_t> out;
+    for (const std::vector<std::uint8_t>& m : masks)
+        out.push_back(std::size_t(std::count(m.begin(), m.end(), std::uint8_t(1))));
+    return out;
+}
+
 std::vector<std::size_t> sparseProbeCounts(const std::vector<ProbeVolume>& volumes,
                                            const std::vector<raytrace::WorldTriangle>& triangles) {
-    const std::vector<int> parents = validateVolumes(volumes, "sparse storage");
-    std::vector<std::size_t> out;
-    for (std::size_t i = 0; i < volumes.size(); ++i) {
-        std::vector<std::uint8_t> m = sparseKeptProbes(volumes[i], parents[i] < 0, triangles);
-        out.push_back(std::size_t(std::count(m.begin(), m.end(), std::uint8_t(1))));
-    }
-    return out;
+    return keptCounts(sparseKeptMasks(volumes, triangles));
 }
 
 const char* freeSpaceName(FreeSpace f) {

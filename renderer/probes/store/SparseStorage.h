@@ -44,8 +44,17 @@ std::vector<std::uint8_t> freeSpaceLatticeProbes(const ProbeVolume& v);
 std::vector<std::uint8_t> sparseKeptProbes(const ProbeVolume& v, bool root,
                                            const std::vector<raytrace::WorldTriangle>& triangles);
 
-// How many probes each volume stores sparse (sparseKeptProbes; validity unknown before the
-// bake, so all count).
+// sparseKeptProbes of every volume of a set (`volumes`: parents before children, as
+// validateVolumes checks; a volume without a parent is a root).
+std::vector<std::vector<std::uint8_t>>
+sparseKeptMasks(const std::vector<ProbeVolume>& volumes,
+                const std::vector<raytrace::WorldTriangle>& triangles);
+
+// The ones of each mask: how many probes each volume stores sparse (validity unknown before
+// the bake, so all count).
+std::vector<std::size_t> keptCounts(const std::vector<std::vector<std::uint8_t>>& masks);
+
+// keptCounts(sparseKeptMasks(volumes, triangles)).
 std::vector<std::size_t> sparseProbeCounts(const std::vector<ProbeVolume>& volumes,
                                            const std::vector<raytrace::WorldTriangle>& triangles);
 
