@@ -408,7 +408,7 @@ const RegisterCommand registerBake{{
         cmd.add_flag("--no-lattice-search", a->noLatticeSearch,
                      "--volumes auto under a budget (the default one too) ends by shifting its "
                      "lattice by up to 0.4 of a cell per axis where trial bakes measure less "
-                     "irradiance error (over 2% less; up to 25 one-scenario bakes with 32 rays; "
+                     "irradiance error (over 2% less; up to 22 one-scenario bakes with 32 rays; "
                      "renderer/probes/placement/LatticeShiftSearch.h); this keeps the lattice as placed "
                      "(auto only)");
         cmd.add_flag("--sparse", a->sparse,

@@ -399,23 +399,21 @@ private:
         glm::vec3 finestCell(std::numeric_limits<float>::infinity());
         for (const ProbeVolume& v : best.volumes)
             finestCell = glm::min(finestCell, v.cellSize());
-        // The unshifted estimate + at most one trial per step and axis.
-        const int most = 1 + 3 * int(kLatticeShiftSteps.size());
-        // An axis's trials run side by side, each on its share of the cores: one trial bake
-        // keeps 2 cores only about 70% busy (its serial steps: allocation, sparse masks,
-        // sampler set-up), while separate trials keep every core busy. Same result either way.
+        // The unshifted estimate + at most kLatticeTrialsPerAxis trials per axis.
+        const int most = 1 + 3 * kLatticeTrialsPerAxis;
+        // A stage's trials run side by side, one per core: one trial bake keeps 2 cores only
+        // about 70% busy (its serial steps: allocation, sparse masks, sampler set-up), while
+        // separate trials keep every core busy (LatticeShiftSearch.h). Same result either way.
         const int cores = resolveThreadCount(req_.adaptive.threads);
-        const int concurrent = std::min(cores, 1 + int(kLatticeShiftSteps.size()));
-        const int threadsEach = std::max(1, cores / concurrent);
         std::mutex progressLock;
         int estimates = 0;
         best.latticeShift = searchLatticeShift(
             best.volumes, finestCell,
-            [&](const std::vector<ProbeVolume>& v) {
+            [&](const std::vector<ProbeVolume>& v, int threads) {
                 // Runs on several threads at once: only looks up what fits() marked (every
                 // shifted candidate, on the placing thread, before the trials start).
                 const SparseSeen* marked = req_.sparse ? seenBefore(v) : nullptr;
-                const double e = estimate.relativeError(v, req_.sparse, threadsEach,
+                const double e = estimate.relativeError(v, req_.sparse, threads,
                                                         marked ? &marked->kept : nullptr);
                 const std::lock_guard<std::mutex> lock(progressLock);
                 if (req_.progress) req_.progress("lattice search", ++estimates, most);
@@ -427,7 +425,7 @@ private:
                 r.bytes = storedBytes(v);
                 return fits(r);
             },
-            concurrent);
+            cores);
         best.bytes = storedBytes(best.volumes);
         best.onProbePlanes = onPlanes(best);
         best.latticeSearched = true;
