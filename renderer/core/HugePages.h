@@ -4,6 +4,14 @@
 // TLB (a page walk per probe tile); blocks of 2 MiB and more are aligned to 2 MiB and marked
 // MADV_HUGEPAGE, so where transparent huge pages are enabled ("madvise" or "always") the
 // kernel backs them with 2 MiB pages. Only where the bytes live changes, never their values.
+//
+// Freed blocks of 2 MiB and more are kept (up to kHugeBlockCacheBytes in all) for the next
+// allocation of the same rounded size: the lattice search's trial bakes allocate and free the
+// same texture and tile sizes over and over, on worker threads whose malloc arenas hand blocks
+// that large back to the kernel on free, so each trial page-faulted and the kernel zeroed its
+// memory again (about 10% of the garden's default bake's CPU samples in `clear_page_erms`).
+// A kept block's bytes are whatever its last user left: as with any allocation here, users
+// write before they read (see construct() below).
 #include <cstddef>
 #include <cstdlib>
 #include <new>
@@ -15,6 +23,16 @@
 #endif
 
 namespace pb {
+
+constexpr std::size_t kHugeBlockCacheBytes = std::size_t(512) << 20;
+
+// A kept block of exactly `bytes` (a multiple of 2 MiB), or nullptr. Thread-safe.
+void* takeHugeBlock(std::size_t bytes);
+// Keeps `p` (from takeHugeBlock or a 2 MiB-aligned aligned_alloc of `bytes`), freeing the
+// oldest kept blocks past kHugeBlockCacheBytes. Thread-safe.
+void keepHugeBlock(void* p, std::size_t bytes);
+// The bytes kept now (for tests and diagnostics).
+std::size_t keptHugeBlockBytes();
 
 template <class T> struct HugePageAllocator {
     using value_type = T;
@@ -31,6 +49,7 @@ template <class T> struct HugePageAllocator {
             return static_cast<T*>(p);
         }
         const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
+        if (void* kept = takeHugeBlock(rounded)) return static_cast<T*>(kept);
         void* p = std::aligned_alloc(kHugePage, rounded);
         if (!p) throw std::bad_alloc();
 #if defined(MADV_HUGEPAGE)
@@ -38,8 +57,13 @@ template <class T> struct HugePageAllocator {
 #endif
         return static_cast<T*>(p);
     }
-    void deallocate(T* p, std::size_t) noexcept {
-        std::free(p);
+    void deallocate(T* p, std::size_t n) noexcept {
+        const std::size_t bytes = n * sizeof(T);
+        if (bytes < kHugePage) {
+            std::free(p);
+            return;
+        }
+        keepHugeBlock(p, (bytes + kHugePage - 1) / kHugePage * kHugePage);
     }
     // vector(n) and resize(n) default-initialise (no zero fill for floats): these arrays are
     // written in full right after, often by several threads, which then also take the page
