@@ -37,6 +37,9 @@ std::size_t keptHugeBlockBytes();
 template <class T> struct HugePageAllocator {
     using value_type = T;
     static constexpr std::size_t kHugePage = std::size_t(2) << 20;
+    static constexpr std::size_t rounded(std::size_t bytes) {
+        return (bytes + kHugePage - 1) / kHugePage * kHugePage;
+    }
 
     HugePageAllocator() = default;
     template <class U> HugePageAllocator(const HugePageAllocator<U>&) {}
@@ -48,12 +51,12 @@ template <class T> struct HugePageAllocator {
             if (!p) throw std::bad_alloc();
             return static_cast<T*>(p);
         }
-        const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
-        if (void* kept = takeHugeBlock(rounded)) return static_cast<T*>(kept);
-        void* p = std::aligned_alloc(kHugePage, rounded);
+        const std::size_t size = rounded(bytes);
+        if (void* kept = takeHugeBlock(size)) return static_cast<T*>(kept);
+        void* p = std::aligned_alloc(kHugePage, size);
         if (!p) throw std::bad_alloc();
 #if defined(MADV_HUGEPAGE)
-        madvise(p, rounded, MADV_HUGEPAGE); // a hint: without THP it fails and nothing changes
+        madvise(p, size, MADV_HUGEPAGE); // a hint: without THP it fails and nothing changes
 #endif
         return static_cast<T*>(p);
     }
@@ -63,7 +66,7 @@ template <class T> struct HugePageAllocator {
             std::free(p);
             return;
         }
-        keepHugeBlock(p, (bytes + kHugePage - 1) / kHugePage * kHugePage);
+        keepHugeBlock(p, rounded(bytes));
     }
     // vector(n) and resize(n) default-initialise (no zero fill for floats): these arrays are
     // written in full right after, often by several threads, which then also take the page

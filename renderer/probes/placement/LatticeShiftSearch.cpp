@@ -27,9 +27,8 @@ std::vector<double> scoreAll(const std::vector<std::vector<ProbeVolume>>& candid
         const std::size_t left = n - done, batch = left >= per ? left / per * per : left;
         const int workers = int(std::min(batch, per));
         const int each = std::max(1, cores / workers);
-        parallelFor(batch, workers, [&](std::size_t i, int) {
-            out[done + i] = error(candidates[done + i], each);
-        });
+        parallelFor(batch, workers,
+                    [&](std::size_t i, int) { out[done + i] = error(candidates[done + i], each); });
         done += batch;
     }
     return out;
@@ -38,8 +37,7 @@ std::vector<double> scoreAll(const std::vector<std::vector<ProbeVolume>>& candid
 } // namespace
 
 LatticeShift searchLatticeShift(std::vector<ProbeVolume>& volumes, const glm::vec3& cell,
-                                const PlacementScore& error, const PlacementFits& fits,
-                                int cores) {
+                                const PlacementScore& error, const PlacementFits& fits, int cores) {
     LatticeShift out;
     glm::vec3 shift(0.0f); // in cells
     for (int axis = 0; axis < 3; ++axis) {
@@ -48,6 +46,9 @@ LatticeShift searchLatticeShift(std::vector<ProbeVolume>& volumes, const glm::ve
         // unshifted placement, scored beside the coarse trials.
         glm::vec3 bestShift = shift;
         double bestError = out.errorAfter;
+        auto bestClearsMargin = [&] {
+            return bestError < out.errorAfter * (1.0 - kLatticeShiftMargin);
+        };
         // Scores this axis's fitting trials at `steps` (cells added to the current shift).
         auto stage = [&](const std::vector<float>& steps, bool withUnshifted) {
             std::vector<glm::vec3> trials;
@@ -76,7 +77,7 @@ LatticeShift searchLatticeShift(std::vector<ProbeVolume>& volumes, const glm::ve
         // current shift too unless that step clears the margin: a gain under the margin may be
         // the estimate's noise, and the current shift's neighbours may hold the real minimum.
         std::vector<float> centres{bestShift[axis] - shift[axis]};
-        if (!(bestError < out.errorAfter * (1.0 - kLatticeShiftMargin))) centres.push_back(0.0f);
+        if (!bestClearsMargin()) centres.push_back(0.0f);
         std::vector<float> fine;
         for (float step : kLatticeFineSteps)
             for (float centre : centres)
@@ -85,7 +86,7 @@ LatticeShift searchLatticeShift(std::vector<ProbeVolume>& volumes, const glm::ve
                     break;
                 }
         stage(fine, false);
-        if (bestError < out.errorAfter * (1.0 - kLatticeShiftMargin)) {
+        if (bestClearsMargin()) {
             shift = bestShift;
             out.errorAfter = bestError;
         }

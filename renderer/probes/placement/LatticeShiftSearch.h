@@ -10,7 +10,7 @@
 // error when it beats the current one by more than kLatticeShiftMargin (relative), and only
 // shifts whose placement still `fits` (a sparse placement stores a different number of probes
 // once shifted). 3 * (4 + 3) trial bakes at most, on the same grid of tenths of a cell as trying
-// all eight steps (3 * 8 bakes, until 2026-12-04), and 16 - 18 on the shared scenes: where the
+// all eight steps (3 * 8 bakes, until 2026-12-04), and 15 - 18 on the shared scenes: where the
 // error falls towards its best step the coarse stage lands next to it and the fine stage finds
 // it; a minimum that the coarse steps miss entirely is not found.
 // A stage's trials do not depend on each other, so they may be scored side by side
