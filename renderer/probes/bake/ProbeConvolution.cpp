@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <vector>
 #include <stdexcept>
 
 namespace pb::probes {
@@ -78,7 +79,12 @@ void ProbeConvolution::irradiance(const float* rgbx, float* out) const {
 }
 
 void ProbeConvolution::irradianceLumaVariance(const float* rgbx, float* out) const {
-    auto luma = [&](int r) { return luminance(rgbx + 4 * size_t(r)); };
+    // Each ray's luminance once (every texel's two sums read it again; the same values).
+    thread_local std::vector<float> rayLuma;
+    rayLuma.resize(std::size_t(rays_));
+    for (int r = 0; r < rays_; ++r)
+        rayLuma[std::size_t(r)] = luminance(rgbx + 4 * size_t(r));
+    auto luma = [&](int r) { return rayLuma[std::size_t(r)]; };
     for (size_t t = 0; t + 1 < irr_.start.size(); ++t) {
         float e = 0.0f;
         for (int k = irr_.start[t]; k < irr_.start[t + 1]; ++k)

@@ -9,6 +9,7 @@
 #include "probes/bake/RayDirections.h"
 
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace pb::probes {
@@ -70,8 +71,6 @@ void RadianceSlab::reset(std::size_t probes, int rays) {
     rays_ = rays;
     const std::size_t n = probes * std::size_t(rays);
     radiance_.resize(n);
-    hits_.resize(n);
-    litSlots_.resize(n);
     pending_.resize(n);
     keys_.resize(n);
     pendingCount_.assign(probes, 0);
@@ -100,7 +99,13 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
     // All rays first, then the shading: what the shading reads from the lit-surface table is
     // prefetched while the following rays are traced (results are per ray: the order of the
     // calls does not matter). The normal and barycentrics come with the hit (RayHit).
-    raytrace::RayHit* hits = hits_.data() + first;
+    // The hits and their lit-surface slots are read only below, for this probe: per-thread
+    // scratch of one probe's rays stays in L1, where a slab-sized array (8 MB at 2^18 rays)
+    // streamed through the caches and evicted the BVH that the next rays traverse.
+    thread_local std::vector<raytrace::RayHit> hitScratch;
+    thread_local std::vector<std::int64_t> litSlotScratch;
+    hitScratch.resize(n);
+    raytrace::RayHit* hits = hitScratch.data();
     for (std::size_t i = 0; i < n; ++i) {
         hits[i] = rs.intersect(origin, rot * dirs[i]);
         if (nee.lit && hits[i].hit()) nee.lit->prefetchTriangle(hits[i].geomID, hits[i].primID);
@@ -122,8 +127,10 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
     slotLitSamples_[slot] = ml;
     // The lit-surface density of each hit the shading below weights: its slot first, and a
     // prefetch, so the random reads of the large density array overlap (same values).
-    std::int64_t* litSlots = litSlots_.data() + first;
+    std::int64_t* litSlots = nullptr;
     if (ml > 0) {
+        litSlotScratch.resize(n);
+        litSlots = litSlotScratch.data();
         for (std::size_t i = 0; i < n; ++i) {
             const raytrace::RayHit& h = hits[i];
             litSlots[i] = -1;
@@ -352,14 +359,24 @@ void RadianceSlab::texelVariance(std::size_t slot, const ProbeConvolution& conv,
 void RadianceSlab::projectSh(std::size_t slot, const ProbeConvolution& conv, glm::vec3* out) const {
     const std::size_t first = slot * std::size_t(rays_);
     const float w = float(4.0 * M_PI) / float(rays_);
-    for (int k = 0; k < kShL2Coefficients; ++k)
-        out[k] = lightSh_[slot * kShL2Coefficients + std::size_t(k)];
+    // RGB + unused lanes: per channel the same multiplies and adds, in the same order, as
+    // the vec3 expression out[k] += (L * w) * y[k], four lanes at a time.
+    typedef float Float4 __attribute__((vector_size(16)));
+    Float4 acc[kShL2Coefficients];
+    for (int k = 0; k < kShL2Coefficients; ++k) {
+        const glm::vec3& a = lightSh_[slot * kShL2Coefficients + std::size_t(k)];
+        acc[k] = Float4{a.x, a.y, a.z, 0.0f};
+    }
     for (std::size_t i = 0; i < std::size_t(rays_); ++i) {
         const float* y = conv.shBasisOfRay(int(i));
-        const glm::vec3 L = glm::vec3(radiance_[first + i]) * w;
+        Float4 L;
+        std::memcpy(&L, &radiance_[first + i], sizeof(L));
+        L *= w;
         for (int k = 0; k < kShL2Coefficients; ++k)
-            out[k] += L * y[k];
+            acc[k] += L * y[k];
     }
+    for (int k = 0; k < kShL2Coefficients; ++k)
+        out[k] = glm::vec3(acc[k][0], acc[k][1], acc[k][2]);
 }
 
 } // namespace pb::probes

@@ -121,8 +121,6 @@ private:
         std::uint32_t ray; // slot * rays + ray index
     };
     int rays_ = 0;
-    std::vector<raytrace::RayHit> hits_;                     // per ray, slot-major
-    std::vector<std::int64_t> litSlots_;           // per ray: LitSurfaces::slotOf of its hit
     std::vector<glm::vec4> radiance_;              // per ray, slot-major: RGB + unused
     // Pending hits, `rays_` places per slot (slot-major), the first pendingCount_[slot] used;
     // keys_: the localityKey of each. Flat and on huge pages (HugePages.h): lookUp reads them
