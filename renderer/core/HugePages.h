@@ -6,10 +6,14 @@
 // kernel backs them with 2 MiB pages. Only where the bytes live changes, never their values.
 //
 // Freed blocks of 2 MiB and more are kept (up to kHugeBlockCacheBytes in all) for the next
-// allocation of the same rounded size: the lattice search's trial bakes allocate and free the
-// same texture and tile sizes over and over, on worker threads whose malloc arenas hand blocks
-// that large back to the kernel on free, so each trial page-faulted and the kernel zeroed its
-// memory again (about 10% of the garden's default bake's CPU samples in `clear_page_erms`).
+// allocation they can hold: the lattice search's trial bakes allocate and free the same texture
+// and tile sizes over and over, on worker threads whose malloc arenas hand blocks that large
+// back to the kernel on free, so each trial page-faulted and the kernel zeroed its memory again
+// (about 10% of the garden's default bake's CPU samples in `clear_page_erms`). An allocation
+// takes the smallest kept block that holds it, up to kHugeBlockReuseFactor times its size: the
+// search's reference grid frees a few blocks of 50 - 120 MiB that the trials and the bake after
+// it can use instead of faulting in fresh ones, while a small array does not pin a block many
+// times its size.
 // A kept block's bytes are whatever its last user left: as with any allocation here, users
 // write before they read (see construct() below).
 #include <cstddef>
@@ -25,14 +29,20 @@
 namespace pb {
 
 constexpr std::size_t kHugeBlockCacheBytes = std::size_t(512) << 20;
+constexpr std::size_t kHugeBlockReuseFactor = 8;
 
-// A kept block of exactly `bytes` (a multiple of 2 MiB), or nullptr. Thread-safe.
+// The smallest kept block of at least `bytes` (a multiple of 2 MiB) and at most
+// kHugeBlockReuseFactor * bytes, the most recently kept of equal ones; nullptr if none.
+// Thread-safe. A block handed out must come back through keepHugeBlock (with `bytes`).
 void* takeHugeBlock(std::size_t bytes);
-// Keeps `p` (from takeHugeBlock or a 2 MiB-aligned aligned_alloc of `bytes`), freeing the
-// oldest kept blocks past kHugeBlockCacheBytes. Thread-safe.
+// Keeps `p` (from takeHugeBlock(bytes), which remembers a larger block's real size, or a
+// 2 MiB-aligned aligned_alloc of `bytes`), freeing the oldest kept blocks past
+// kHugeBlockCacheBytes. Thread-safe.
 void keepHugeBlock(void* p, std::size_t bytes);
 // The bytes kept now (for tests and diagnostics).
 std::size_t keptHugeBlockBytes();
+// Frees every kept block (tests start from an empty cache).
+void releaseKeptHugeBlocks();
 
 template <class T> struct HugePageAllocator {
     using value_type = T;

@@ -1,5 +1,6 @@
-// core/HugePages.h: freed blocks of 2 MiB and more go to the next allocation of the same
-// rounded size, never to another size, and the blocks kept stay under kHugeBlockCacheBytes.
+// core/HugePages.h: freed blocks of 2 MiB and more go to the next allocation they hold (the
+// smallest such, up to kHugeBlockReuseFactor times its size), never to a larger one, come back
+// whole, and the blocks kept stay under kHugeBlockCacheBytes.
 #include "core/HugePages.h"
 
 #include <cstdint>
@@ -13,6 +14,7 @@ constexpr std::size_t kMiB = std::size_t(1) << 20;
 } // namespace
 
 TEST(HugePages, AFreedLargeBlockServesTheNextAllocationOfItsSize) {
+    pb::releaseKeptHugeBlocks(); // what earlier tests kept would serve these allocations
     const std::size_t floats = 5 * kMiB / sizeof(float); // 5 MiB: a 6 MiB block
     const float* first = nullptr;
     {
@@ -35,7 +37,38 @@ TEST(HugePages, AFreedLargeBlockServesTheNextAllocationOfItsSize) {
     EXPECT_EQ(pb::keptHugeBlockBytes(), before);
 }
 
+TEST(HugePages, ASmallerAllocationTakesTheSmallestKeptBlockThatHoldsIt) {
+    pb::releaseKeptHugeBlocks(); // what earlier tests kept would serve these allocations
+    // Blocks of 40, 12 and 100 MiB kept, never touched: only address space.
+    void* b40 = std::aligned_alloc(2 * kMiB, 40 * kMiB);
+    void* b12 = std::aligned_alloc(2 * kMiB, 12 * kMiB);
+    void* b100 = std::aligned_alloc(2 * kMiB, 100 * kMiB);
+    ASSERT_TRUE(b40 && b12 && b100);
+    pb::keepHugeBlock(b40, 40 * kMiB);
+    pb::keepHugeBlock(b12, 12 * kMiB);
+    pb::keepHugeBlock(b100, 100 * kMiB);
+    const std::size_t kept = pb::keptHugeBlockBytes();
+    {
+        pb::HugePageVector<float> a(9 * kMiB / sizeof(float)); // 10 MiB: the 12 MiB block
+        EXPECT_EQ(a.data(), b12);
+        pb::HugePageVector<float> b(30 * kMiB / sizeof(float)); // 30 MiB: the 40 MiB one
+        EXPECT_EQ(b.data(), b40);
+        EXPECT_EQ(pb::keptHugeBlockBytes(), kept - 52 * kMiB);
+        // 4 MiB: the 100 MiB block is over kHugeBlockReuseFactor times that, so a fresh block.
+        pb::HugePageVector<float> c(4 * kMiB / sizeof(float));
+        EXPECT_NE(c.data(), b100);
+    } // a and b come back as the blocks they were, 12 and 40 MiB (c as its own 4 MiB)
+    EXPECT_EQ(pb::keptHugeBlockBytes(), kept + 4 * kMiB);
+    EXPECT_EQ(pb::takeHugeBlock(12 * kMiB), b12);
+    EXPECT_EQ(pb::takeHugeBlock(40 * kMiB), b40);
+    EXPECT_EQ(pb::takeHugeBlock(100 * kMiB), b100);
+    std::free(b12);
+    std::free(b40);
+    std::free(b100);
+}
+
 TEST(HugePages, TheOldestKeptBlocksAreFreedPastTheCap) {
+    pb::releaseKeptHugeBlocks(); // what earlier tests kept would serve these allocations
     const std::size_t half = pb::kHugeBlockCacheBytes / 2;
     void* blocks[3];
     for (void*& b : blocks) {
