@@ -1,6 +1,9 @@
 #include "probes/ProbeLayout.h"
 
 #include "probes/Octahedral.h"
+#include "core/ParallelFor.h"
+
+#include <algorithm>
 
 namespace pb::probes {
 
@@ -12,10 +15,21 @@ TextureShape visibilityShape(const glm::ivec3& c) {
     return {c.x * kVisibilityTile, c.z * kVisibilityTile, c.y, kVisibilityChannels};
 }
 
-ProbeTexture ProbeTexture::make(const TextureShape& s) {
+ProbeTexture ProbeTexture::make(const TextureShape& s, int threads) {
     ProbeTexture t;
     t.shape = s;
-    t.texels.assign(s.floatCount(), 0.0f);
+    const std::size_t n = s.floatCount();
+    constexpr std::size_t kChunk = std::size_t(1) << 20; // floats: 4 MiB, two huge pages
+    if (threads == 1 || n < 2 * kChunk) {
+        t.texels.assign(n, 0.0f);
+        return t;
+    }
+    t.texels.resize(n); // unset (HugePageAllocator), zeroed below
+    float* texels = t.texels.data();
+    parallelFor((n + kChunk - 1) / kChunk, threads, [&](std::size_t chunk, int) {
+        const std::size_t lo = chunk * kChunk, hi = std::min(n, lo + kChunk);
+        std::fill(texels + lo, texels + hi, 0.0f);
+    });
     return t;
 }
 

@@ -49,7 +49,9 @@ struct ProbeTexture {
     std::vector<std::uint8_t> stored;
     float storageScale = 1.0f;
 
-    static ProbeTexture make(const TextureShape& s);
+    // Every texel 0. threads (parallelFor's) > 1: a large texture is zeroed in parallel, so
+    // its first-touch page faults (the kernel clearing each page) are taken on all cores.
+    static ProbeTexture make(const TextureShape& s, int threads = 1);
     float* at(int col, int row, int layer) {
         return texels.data() + ((std::size_t(layer) * shape.height + row) * shape.width + col) *
                                    std::size_t(shape.channels);

@@ -169,12 +169,14 @@ struct BakeRun {
         if (cfg.litSamples > 0 && !lit[s])
             lit[s] = std::make_unique<LitSurfaces>(rs, req.scenarios[s], scene.lights, threads,
                                                    counters[0].shadow);
-        return {cfg.emitterSamples, stream ^ 0x656d6974ull, // "emit"
-                cfg.litSamples, lit[s].get()};
+        EmitterSampling e{cfg.emitterSamples, stream ^ 0x656d6974ull, // "emit"
+                          cfg.litSamples, lit[s].get()};
+        e.projectSh = !req.irradianceOnly; // a trial's SH stay zero (BakeRequest)
+        return e;
     }
 };
 
-ProbeSet emptySet(const scene::Scene& scene, const BakeRequest& req) {
+ProbeSet emptySet(const scene::Scene& scene, const BakeRequest& req, int threads) {
     ProbeSet set;
     // A trial is never written nor compared with a file, and hashing the scene's geometry
     // for each of the lattice search's trials cost about 1% of a default bake.
@@ -184,7 +186,7 @@ ProbeSet emptySet(const scene::Scene& scene, const BakeRequest& req) {
     set.scenarios = req.scenarios;
     for (const ProbeVolume& v : set.volumes) {
         set.states.emplace_back(size_t(v.probeCount()));
-        set.visibility.push_back(ProbeTexture::make(visibilityShape(v.counts)));
+        set.visibility.push_back(ProbeTexture::make(visibilityShape(v.counts), threads));
     }
     return set;
 }
@@ -342,7 +344,7 @@ std::vector<ProbeTexture> bakeRadiancePass(BakeRun& run, const RadianceMask& mas
     std::vector<ProbeTexture> cur;
     run.passSh.clear();
     for (const ProbeVolume& v : set.volumes) {
-        cur.push_back(ProbeTexture::make(irradianceShape(v.counts)));
+        cur.push_back(ProbeTexture::make(irradianceShape(v.counts), run.threads));
         run.passSh.emplace_back(std::size_t(v.probeCount()) * kShL2Coefficients, glm::vec3(0.0f));
     }
     std::vector<SamplerVolume> prevViews, curViews;
@@ -530,12 +532,15 @@ void bakeRadiance(BakeRun& run, const RadianceMask& mask) {
         std::vector<ProbeTexture> total = bakeRadiancePass(run, mask, s, 1, {});
         std::vector<std::vector<glm::vec3>> sh = std::move(run.passSh);
         run.noise.setFloorFromCarried();
-        std::vector<ProbeTexture> last = total;
+        // The previous pass's increment; empty while that is the first pass, whose increment is
+        // `total` itself (a copy of it cost a single-threaded pass over fresh pages).
+        std::vector<ProbeTexture> last;
         int passes = 1;
         double change = 1.0;
         while (passes < cap && (fixed > 0 || passes < 2 || change >= kConvergedChange)) {
             if (fixed == 0 && passes >= 2) ++run.stages; // one more than planned
-            std::vector<ProbeTexture> inc = bakeRadiancePass(run, mask, s, passes + 1, last);
+            std::vector<ProbeTexture> inc =
+                bakeRadiancePass(run, mask, s, passes + 1, last.empty() ? total : last);
             change = addIncrement(run, mask, total, inc, sh, run.passSh);
             last = std::move(inc);
             ++passes;
@@ -633,7 +638,7 @@ ProbeSet bakeProbes(const scene::Scene& scene, const BakeRequest& req, BakeStats
                 .rs = rs,
                 .threads = threads,
                 .progress = progress,
-                .set = emptySet(scene, req),
+                .set = emptySet(scene, req, threads),
                 .parents = std::move(parents),
                 .index = ProbeIndex(req.volumes),
                 // A converging bake plans two passes per scenario and adds the rest as it goes.

@@ -8,6 +8,7 @@
 #include "probes/bake/DirectLight.h"
 #include "probes/bake/RayDirections.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -18,34 +19,59 @@ namespace {
 
 constexpr float kUniformSpherePdf = float(1.0 / (4.0 * M_PI));
 
-// The interior texels' directions, volume-local (as ProbeConvolution's).
-const std::vector<glm::vec3>& texelDirections() {
-    static const std::vector<glm::vec3> dirs = [] {
-        std::vector<glm::vec3> d;
+typedef float Float4 __attribute__((vector_size(16)));
+typedef int Int4 __attribute__((vector_size(16)));
+static_assert(kIrradianceInteriorTexels % 4 == 0, "addToFacingTexels takes four texels a step");
+
+// The interior texels' directions, volume-local (as ProbeConvolution's), as rows of x, y and z
+// so that four texels are one SIMD step.
+struct TexelDirectionRows {
+    float x[kIrradianceInteriorTexels], y[kIrradianceInteriorTexels], z[kIrradianceInteriorTexels];
+};
+const TexelDirectionRows& texelDirectionRows() {
+    static const TexelDirectionRows rows = [] {
+        TexelDirectionRows r{};
         for (int j = 0; j < kIrradianceInterior; ++j)
-            for (int i = 0; i < kIrradianceInterior; ++i)
-                d.push_back(octTexelDirection(i, j, kIrradianceInterior));
-        return d;
+            for (int i = 0; i < kIrradianceInterior; ++i) {
+                const glm::vec3 d = octTexelDirection(i, j, kIrradianceInterior);
+                const int t = j * kIrradianceInterior + i;
+                r.x[t] = d.x, r.y[t] = d.y, r.z[t] = d.z;
+            }
+        return r;
     }();
-    return dirs;
+    return rows;
 }
+
+Float4 load4(const float* p) {
+    Float4 v;
+    std::memcpy(&v, p, sizeof(v));
+    return v;
+}
+void store4(float* p, const Float4& v) { std::memcpy(p, &v, sizeof(v)); }
 
 // One light sample's share c (radiance over the MIS denominator), arriving from the
 // volume-local direction `local`, added to every interior texel facing it as c max(0, n_t.w):
-// RGB into rgb, its luminance and square into y1, y2 (the texel variance's sums).
+// RGB into rgb (rows: the texels' R, then G, then B), its luminance and square into y1, y2
+// (the texel variance's sums). Four texels a step, each lane the scalar arithmetic in the same
+// order (the dot product as glm's, the luminance as Luminance.h's); a texel that does not face
+// the sample adds +0, which leaves its sums (never -0: c >= 0) as they were.
 void addToFacingTexels(const glm::vec3& c, const glm::vec3& local, float* rgb, float* y1,
                        float* y2) {
-    const std::vector<glm::vec3>& texels = texelDirections();
-    for (int t = 0; t < kIrradianceInteriorTexels; ++t) {
-        const float cosT = glm::dot(texels[size_t(t)], local);
-        if (!(cosT > 0.0f)) continue;
-        const glm::vec3 x = c * cosT;
-        rgb[3 * t] += x.r;
-        rgb[3 * t + 1] += x.g;
-        rgb[3 * t + 2] += x.b;
-        const float y = luminance(x);
-        y1[t] += y;
-        y2[t] += y * y;
+    const TexelDirectionRows& d = texelDirectionRows();
+    constexpr int n = kIrradianceInteriorTexels;
+    for (int t = 0; t < n; t += 4) {
+        const Float4 cosT = load4(d.x + t) * local.x + load4(d.y + t) * local.y +
+                            load4(d.z + t) * local.z;
+        const Int4 facing = cosT > 0.0f;
+        const Float4 r = Float4(Int4(c.r * cosT) & facing);
+        const Float4 g = Float4(Int4(c.g * cosT) & facing);
+        const Float4 b = Float4(Int4(c.b * cosT) & facing);
+        store4(rgb + t, load4(rgb + t) + r);
+        store4(rgb + n + t, load4(rgb + n + t) + g);
+        store4(rgb + 2 * n + t, load4(rgb + 2 * n + t) + b);
+        const Float4 y = 0.2126f * r + 0.7152f * g + 0.0722f * b;
+        store4(y1 + t, load4(y1 + t) + y);
+        store4(y2 + t, load4(y2 + t) + y * y);
     }
 }
 
@@ -75,13 +101,24 @@ void RadianceSlab::reset(std::size_t probes, int rays) {
     keys_.resize(n);
     pendingCount_.assign(probes, 0);
     slotSamples_.assign(probes, 0);
-    lightRgb_.assign(probes * kIrradianceInteriorTexels * 3, 0.0f);
-    lightY_.assign(probes * kIrradianceInteriorTexels, 0.0f);
-    lightY2_.assign(probes * kIrradianceInteriorTexels, 0.0f);
     slotLitSamples_.assign(probes, 0);
-    litY_.assign(probes * kIrradianceInteriorTexels, 0.0f);
-    litY2_.assign(probes * kIrradianceInteriorTexels, 0.0f);
-    lightSh_.assign(probes * kShL2Coefficients, glm::vec3(0.0f));
+    // The light samples' sums are zeroed per slot by trace(), on the tracing threads: zeroing
+    // a whole slab here (about 9 MB at 32 rays a probe) was a serial step before every slab.
+    lightRgb_.resize(probes * kIrradianceInteriorTexels * 3);
+    lightY_.resize(probes * kIrradianceInteriorTexels);
+    lightY2_.resize(probes * kIrradianceInteriorTexels);
+    litY_.resize(probes * kIrradianceInteriorTexels);
+    litY2_.resize(probes * kIrradianceInteriorTexels);
+    lightSh_.resize(probes * kShL2Coefficients);
+}
+
+void RadianceSlab::zeroLightSums(std::size_t slot) {
+    constexpr std::size_t t = kIrradianceInteriorTexels;
+    std::fill_n(lightRgb_.begin() + std::ptrdiff_t(slot * t * 3), t * 3, 0.0f);
+    for (std::vector<float>* sums : {&lightY_, &lightY2_, &litY_, &litY2_})
+        std::fill_n(sums->begin() + std::ptrdiff_t(slot * t), t, 0.0f);
+    std::fill_n(lightSh_.begin() + std::ptrdiff_t(slot * kShL2Coefficients), kShL2Coefficients,
+                glm::vec3(0.0f));
 }
 
 void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const Scenario& sc,
@@ -90,6 +127,7 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
                          const ProbeSampler* previous, RayCounters& counters,
                          const EmitterSampling& nee, std::uint64_t probeKey) {
     const std::size_t n = std::size_t(rays_), first = slot * n;
+    zeroLightSums(slot);
     Pending* pending = pending_.data() + first;
     std::uint32_t* keys = keys_.data() + first;
     std::uint32_t pendingCount = 0;
@@ -225,7 +263,7 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
         if (rs.occluded(origin, w, 0.0f, std::max(dist - 2.0f * eps, 0.0f))) continue;
         const glm::vec3 c = tri.radiance / (nPu + float(m) * pdf);
         addToFacingTexels(c, toLocal * w, rgb, y1, y2);
-        addToSh(c, toLocal * w, lightSh_.data() + slot * kShL2Coefficients);
+        if (nee.projectSh) addToSh(c, toLocal * w, lightSh_.data() + slot * kShL2Coefficients);
     }
 }
 
@@ -273,7 +311,7 @@ void RadianceSlab::traceLitSamples(std::size_t slot, const raytrace::RayScene& r
         const float pdf = s.pdfArea * dist * dist / cosL;
         const glm::vec3 c = s.albedoOverPi * e / (nPu + float(ml) * pdf);
         addToFacingTexels(c, toLocal * w, rgb, y1, y2);
-        addToSh(c, toLocal * w, lightSh_.data() + slot * kShL2Coefficients);
+        if (nee.projectSh) addToSh(c, toLocal * w, lightSh_.data() + slot * kShL2Coefficients);
     }
 }
 
@@ -335,8 +373,9 @@ void RadianceSlab::convolve(std::size_t slot, const ProbeConvolution& conv, floa
     conv.irradiance(&finish(slot)->x, outRgb);
     if (slotSamples_[slot] == 0 && slotLitSamples_[slot] == 0) return;
     const float* rgb = lightRgb_.data() + slot * kIrradianceInteriorTexels * 3;
-    for (int i = 0; i < kIrradianceInteriorTexels * 3; ++i)
-        outRgb[i] += rgb[i];
+    for (int t = 0; t < kIrradianceInteriorTexels; ++t)
+        for (int ch = 0; ch < 3; ++ch) // rows of R, G, B (addToFacingTexels)
+            outRgb[3 * t + ch] += rgb[ch * kIrradianceInteriorTexels + t];
 }
 
 void RadianceSlab::texelVariance(std::size_t slot, const ProbeConvolution& conv,

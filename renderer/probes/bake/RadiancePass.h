@@ -71,11 +71,16 @@ struct EmitterSampling {
     // read at their hits (albedo / pi times the previous increment's E_indirect). The sky,
     // emission and direct light were the first pass's; no light samples, no shadow rays.
     bool incrementOnly = false;
+    // Whether the light samples are projected onto SH too (projectSh): not in a bake that keeps
+    // its irradiance alone (BakeRequest::irradianceOnly, the lattice search's trials).
+    bool projectSh = true;
 };
 
 class RadianceSlab {
 public:
-    // Room for `probes` probes of `rays` rays each; forgets the previous slab.
+    // Room for `probes` probes of `rays` rays each; forgets the previous slab. A slot's
+    // results are defined once trace() ran on it (which zeroes its light-sample sums); the
+    // phases below read traced slots only.
     void reset(std::size_t probes, int rays);
     // Phase 1, one slot per probe (slots are independent: any thread). Traces the probe's
     // rays from probeWorld (directions localDirs rotated by volumeRotation); with a
@@ -110,6 +115,8 @@ public:
     void projectSh(std::size_t slot, const ProbeConvolution& conv, glm::vec3* out) const;
 
 private:
+    // Zeroes the slot's emitter and lit-surface sample sums (lightRgb_ ... lightSh_).
+    void zeroLightSums(std::size_t slot);
     // trace()'s lit-surface samples (EmitterSampling::litSamples).
     void traceLitSamples(std::size_t slot, const raytrace::RayScene& rs, const Scenario& sc,
                          const std::vector<scene::Light>& lights, const glm::mat3& rot,
@@ -129,7 +136,8 @@ private:
     HugePageVector<std::uint32_t> keys_;
     std::vector<std::uint32_t> pendingCount_;
     std::vector<glm::vec3> indirect_;              // E_indirect per ray (pending hits only)
-    // Emitter samples per slot and interior texel: RGB sum, luminance sum and sum of squares.
+    // Emitter samples per slot and interior texel: RGB sum (per slot rows of the texels' R,
+    // then G, then B), luminance sum and sum of squares.
     std::vector<int> slotSamples_; // emitter samples each slot's probe took (0: rays alone)
     std::vector<float> lightRgb_, lightY_, lightY2_;
     // Lit-surface samples per slot (RGB into lightRgb_), luminance sums kept apart for the
