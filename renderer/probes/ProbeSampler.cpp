@@ -1,6 +1,7 @@
 #include "probes/ProbeSampler.h"
 
 #include "core/Error.h"
+#include "core/FloatLanes.h"
 #include "probes/AbsentProbeFill.h"
 #include "probes/Octahedral.h"
 #include "core/ParallelFor.h"
@@ -27,15 +28,10 @@ namespace {
 constexpr std::size_t kIrrTileFloats = kIrradianceTile * kIrradianceTile * 3;
 constexpr std::size_t kVisTileFloats = kVisibilityTile * kVisibilityTile * 2;
 
-// GCC/Clang vector types: lane-wise IEEE operations, as scalar code.
-typedef float Float4 __attribute__((vector_size(16)));
+// GCC/Clang vector types: lane-wise IEEE operations, as scalar code (Float4 and load4:
+// core/FloatLanes.h).
 typedef float Float8 __attribute__((vector_size(32)));
 typedef int Int8 __attribute__((vector_size(32)));
-inline Float4 load4(const float* p) {
-    Float4 v;
-    std::memcpy(&v, p, sizeof(v));
-    return v;
-}
 inline Float4 splat(float x) {
     return Float4{x, x, x, x};
 }

@@ -1,11 +1,11 @@
 #include "probes/bake/ProbeConvolution.h"
 
+#include "core/FloatLanes.h"
 #include "core/Luminance.h"
 #include "probes/Octahedral.h"
 #include "probes/ProbeLayout.h"
 
 #include <cmath>
-#include <cstring>
 #include <vector>
 #include <stdexcept>
 
@@ -63,15 +63,11 @@ ProbeConvolution::ProbeConvolution(const std::vector<glm::vec3>& dirs, Parts par
 }
 
 void ProbeConvolution::irradiance(const float* rgbx, float* out) const {
-    // GCC/Clang vector type: lane c computes sum_c += w * L_c exactly like a scalar loop.
-    typedef float Float4 __attribute__((vector_size(16)));
+    // Lane c computes sum_c += w * L_c exactly like a scalar loop (FloatLanes.h).
     for (size_t t = 0; t + 1 < irr_.start.size(); ++t) {
         Float4 sum = {0.0f, 0.0f, 0.0f, 0.0f};
-        for (int e = irr_.start[t]; e < irr_.start[t + 1]; ++e) {
-            Float4 radiance;
-            std::memcpy(&radiance, rgbx + 4 * size_t(irr_.ray[size_t(e)]), sizeof(radiance));
-            sum += irr_.weight[size_t(e)] * radiance;
-        }
+        for (int e = irr_.start[t]; e < irr_.start[t + 1]; ++e)
+            sum += irr_.weight[size_t(e)] * load4(rgbx + 4 * size_t(irr_.ray[size_t(e)]));
         out[3 * t] = sum[0];
         out[3 * t + 1] = sum[1];
         out[3 * t + 2] = sum[2];

@@ -1,5 +1,6 @@
 #include "probes/bake/RadiancePass.h"
 
+#include "core/FloatLanes.h"
 #include "core/Luminance.h"
 #include "core/ParallelFor.h"
 #include "probes/Octahedral.h"
@@ -10,7 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 
 namespace pb::probes {
@@ -19,8 +19,6 @@ namespace {
 
 constexpr float kUniformSpherePdf = float(1.0 / (4.0 * M_PI));
 
-typedef float Float4 __attribute__((vector_size(16)));
-typedef int Int4 __attribute__((vector_size(16)));
 static_assert(kIrradianceInteriorTexels % 4 == 0, "addToFacingTexels takes four texels a step");
 
 // The interior texels' directions, volume-local (as ProbeConvolution's), as rows of x, y and z
@@ -41,13 +39,6 @@ const TexelDirectionRows& texelDirectionRows() {
     }();
     return rows;
 }
-
-Float4 load4(const float* p) {
-    Float4 v;
-    std::memcpy(&v, p, sizeof(v));
-    return v;
-}
-void store4(float* p, const Float4& v) { std::memcpy(p, &v, sizeof(v)); }
 
 // One light sample's share c (radiance over the MIS denominator), arriving from the
 // volume-local direction `local`, added to every interior texel facing it as c max(0, n_t.w):
@@ -400,7 +391,6 @@ void RadianceSlab::projectSh(std::size_t slot, const ProbeConvolution& conv, glm
     const float w = float(4.0 * M_PI) / float(rays_);
     // RGB + unused lanes: per channel the same multiplies and adds, in the same order, as
     // the vec3 expression out[k] += (L * w) * y[k], four lanes at a time.
-    typedef float Float4 __attribute__((vector_size(16)));
     Float4 acc[kShL2Coefficients];
     for (int k = 0; k < kShL2Coefficients; ++k) {
         const glm::vec3& a = lightSh_[slot * kShL2Coefficients + std::size_t(k)];
@@ -408,9 +398,7 @@ void RadianceSlab::projectSh(std::size_t slot, const ProbeConvolution& conv, glm
     }
     for (std::size_t i = 0; i < std::size_t(rays_); ++i) {
         const float* y = conv.shBasisOfRay(int(i));
-        Float4 L;
-        std::memcpy(&L, &radiance_[first + i], sizeof(L));
-        L *= w;
+        const Float4 L = load4(&radiance_[first + i].x) * w;
         for (int k = 0; k < kShL2Coefficients; ++k)
             acc[k] += L * y[k];
     }
