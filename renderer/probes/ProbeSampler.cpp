@@ -2,6 +2,7 @@
 
 #include "core/Error.h"
 #include "core/FloatLanes.h"
+#include "core/FloorToInt.h"
 #include "probes/AbsentProbeFill.h"
 #include "probes/Octahedral.h"
 #include "core/ParallelFor.h"
@@ -24,7 +25,6 @@ namespace pb::probes {
 
 namespace {
 
-// floor() for the texel math: an int conversion (libm's floor is a call without SSE4.1).
 constexpr std::size_t kIrrTileFloats = kIrradianceTile * kIrradianceTile * 3;
 constexpr std::size_t kVisTileFloats = kVisibilityTile * kVisibilityTile * 2;
 
@@ -38,11 +38,9 @@ inline Float4 splat(float x) {
 // load4 of an irradiance texel's RGB reads one float past it: the tile arrays keep that much
 // padding after the last tile.
 constexpr std::size_t kTilePadding = 4;
+// sampleBatch prepares a query this many queries before it finishes it.
+constexpr std::size_t kAhead = 4;
 
-inline int floorToInt(float v) {
-    int i = int(v);
-    return float(i) > v ? i - 1 : i;
-}
 
 // GL_LINEAR + CLAMP_TO_EDGE on one layer, CH channels read (of t.shape.channels).
 template <int CH>
@@ -203,23 +201,31 @@ bool ProbeSampler::influences(const Frame& f, const glm::vec3& p) const {
 }
 
 int ProbeSampler::selectVolume(const glm::vec3& pos) const {
+    glm::vec3 local;
+    return selectVolume(pos, local);
+}
+
+int ProbeSampler::selectVolume(const glm::vec3& pos, glm::vec3& local) const {
     int best = -1;
     float bestVolume = std::numeric_limits<float>::infinity();
     for (size_t i = 0; i < frames_.size(); ++i) {
         const Frame& f = frames_[i];
-        if (f.boxVolume < bestVolume && influences(f, f.toLocal * (pos - f.center))) {
+        if (!(f.boxVolume < bestVolume)) continue;
+        const glm::vec3 p = f.toLocal * (pos - f.center);
+        if (influences(f, p)) {
             best = int(i);
             bestVolume = f.boxVolume;
+            local = p;
         }
     }
     return best;
 }
 
 std::uint32_t ProbeSampler::localityKey(const glm::vec3& pos) const {
-    const int v = selectVolume(pos);
+    glm::vec3 p;
+    const int v = selectVolume(pos, p);
     if (v < 0) return 0;
     const Frame& f = frames_[size_t(v)];
-    const glm::vec3 p = f.toLocal * (pos - f.center);
     glm::ivec3 base(0);
     for (int a = 0; a < 3; ++a) // the base probe of sampleVolume's step 3
         if (f.counts[a] > 1)
@@ -250,17 +256,57 @@ glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
 // arithmetic runs as SIMD loops: the same IEEE operations per corner as a scalar loop, hence
 // the same bits. Corners outside the grid or on an invalid probe are computed on a clamped
 // probe and then ignored (`live` = 0).
+//
+// The part that depends only on the grid cell (volume and base probe, step 3 of
+// sampleVolume): every lookup in the cell reads it.
+struct ProbeSampler::Cell {
+    int volume = -1;
+    glm::ivec3 base{0};
+    alignas(32) float px[8], py[8], pz[8]; // probe position (local)
+    alignas(32) int visMask[8];            // ownVis as 0 / 1 in the weights' lane width
+    int cx[8], cy[8], cz[8];               // the probe computed on (clamped when outside)
+    const float* visTile[8];
+    const float* irrTile[8];
+    bool inside[8]; // in the grid
+    bool valid[8];  // the probe's state (of the clamped probe when outside)
+    bool live[8];   // inside and valid: the corner counts
+    bool filled[8]; // live and a stand-in for an absent probe
+    bool ownVis[8]; // the corner has a visibility tile (not ProbeState::irradianceOnly)
+};
+
+// The last cells built, so that a run of lookups in one cell builds it once. A batch keeps
+// kAhead lookups in flight, each pointing at its cell: kAhead + 1 slots keep every one of
+// them alive while the next cell is built.
+class ProbeSampler::CellCache {
+public:
+    const Cell& get(const ProbeSampler& sampler, const Frame& f, int volume,
+                    const glm::ivec3& base) {
+        if (last_ >= 0) {
+            const Cell& c = cells_[last_];
+            if (c.volume == volume && c.base == base) return c;
+        }
+        last_ = (last_ + 1) % kSlots;
+        sampler.buildCell(f, volume, base, cells_[std::size_t(last_)]);
+        return cells_[std::size_t(last_)];
+    }
+
+private:
+    static constexpr int kSlots = int(kAhead) + 1;
+    Cell cells_[kSlots];
+    int last_ = -1;
+};
+
 struct ProbeSampler::Lookup {
     IrradianceSample out; // final when `done`
     bool done = true;
     const Frame* frame = nullptr;
+    const Cell* cell = nullptr;
     glm::vec3 p, n, alpha;
     glm::vec2 irrCoord;
     float fade = 0.0f;
     // The behind-surface fade (kBehindRampCells): 1 / width (world units) and floor; 0 and 0
     // turn it off (the factor is then exactly 1).
     float behindInvWidth = 0.0f, behindFloor = 0.0f;
-    alignas(16) float px[8], py[8], pz[8]; // probe position (local)
     alignas(16) float dist[8];             // |biased - probe|
     alignas(16) float vx[8], vy[8];        // visibility tile coordinates
     // tileFootprint of each corner's visibility fetch (x0, y0 as a float offset in its tile)
@@ -268,19 +314,14 @@ struct ProbeSampler::Lookup {
     alignas(16) float visFx[8], visFy[8];
     alignas(16) int visOffset[8];
     TileFootprint irrFoot;
-    const float* visTile[8];
-    const float* irrTile[8];
-    bool live[8];
-    bool filled[8]; // live and a stand-in for an absent probe
-    bool ownVis[8]; // the corner has a visibility tile (not ProbeState::irradianceOnly)
-    alignas(32) int visMask[8]; // ownVis as 0 / 1 in the weights' lane width
 };
 
 IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const glm::vec3& normal,
                                             const glm::vec3& view, SampleOptions opt,
                                             SampleTrace* trace) const {
     Lookup k;
-    prepare(vi, pos, normal, view, opt, k, trace);
+    CellCache cells;
+    prepare(vi, pos, normal, view, opt, k, cells, trace);
     return finish(k);
 }
 
@@ -288,18 +329,68 @@ void ProbeSampler::sampleBatch(const SampleQuery* q, std::size_t count, Irradian
                                SampleOptions opt) const {
     // Query i is prepared (addresses computed, tiles prefetched) kAhead queries before it is
     // finished, so its cache misses overlap the arithmetic of the queries in between.
-    constexpr std::size_t kAhead = 4;
     Lookup ring[kAhead];
+    CellCache cells;
     for (std::size_t i = 0; i < count + kAhead; ++i) {
         Lookup& slot = ring[i % kAhead];
         if (i >= kAhead) out[i - kAhead] = finish(slot);
-        if (i < count) prepare(selectVolume(q[i].pos), q[i].pos, q[i].normal, q[i].view, opt, slot);
+        if (i < count)
+            prepare(selectVolume(q[i].pos), q[i].pos, q[i].normal, q[i].view, opt, slot, cells);
+    }
+}
+
+PB_SAMPLER_CLONES void ProbeSampler::buildCell(const Frame& f, int volume, const glm::ivec3& base,
+                                               Cell& c) const {
+    c.volume = volume;
+    c.base = base;
+    const ProbeVolume& vol = *f.src.volume;
+    // The corners as 8-lane vectors built straight from registers and the state loads: 8
+    // scalar stores read back as one vector would stall on store forwarding. Per lane the
+    // same operations as the scalar expression gridOrigin + vec3(c) * gridStep + offset.
+    const Int8 cx0 = base.x + Int8{0, 1, 0, 1, 0, 1, 0, 1};
+    const Int8 cy0 = base.y + Int8{0, 0, 1, 1, 0, 0, 1, 1};
+    const Int8 cz0 = base.z + Int8{0, 0, 0, 0, 1, 1, 1, 1};
+    const Int8 inside = (cx0 < f.counts.x) & (cy0 < f.counts.y) & (cz0 < f.counts.z);
+    const Int8 cx = inside ? cx0 : Int8{} + base.x; // outside: a real probe to compute on
+    const Int8 cy = inside ? cy0 : Int8{} + base.y;
+    const Int8 cz = inside ? cz0 : Int8{} + base.z;
+    const Int8 index = (cy * vol.counts.z + cz) * vol.counts.x + cx; // ProbeVolume::probeIndex
+    const ProbeState* st = f.src.states;
+    const Float8 ox = {st[index[0]].offset.x, st[index[1]].offset.x, st[index[2]].offset.x,
+                       st[index[3]].offset.x, st[index[4]].offset.x, st[index[5]].offset.x,
+                       st[index[6]].offset.x, st[index[7]].offset.x};
+    const Float8 oy = {st[index[0]].offset.y, st[index[1]].offset.y, st[index[2]].offset.y,
+                       st[index[3]].offset.y, st[index[4]].offset.y, st[index[5]].offset.y,
+                       st[index[6]].offset.y, st[index[7]].offset.y};
+    const Float8 oz = {st[index[0]].offset.z, st[index[1]].offset.z, st[index[2]].offset.z,
+                       st[index[3]].offset.z, st[index[4]].offset.z, st[index[5]].offset.z,
+                       st[index[6]].offset.z, st[index[7]].offset.z};
+    const Float8 px = (f.gridOrigin.x + __builtin_convertvector(cx, Float8) * f.gridStep.x) + ox;
+    const Float8 py = (f.gridOrigin.y + __builtin_convertvector(cy, Float8) * f.gridStep.y) + oy;
+    const Float8 pz = (f.gridOrigin.z + __builtin_convertvector(cz, Float8) * f.gridStep.z) + oz;
+    std::memcpy(c.px, &px, sizeof(c.px));
+    std::memcpy(c.py, &py, sizeof(c.py));
+    std::memcpy(c.pz, &pz, sizeof(c.pz));
+    for (int corner = 0; corner < 8; ++corner) {
+        const ProbeState& state = st[index[corner]];
+        c.cx[corner] = cx[corner];
+        c.cy[corner] = cy[corner];
+        c.cz[corner] = cz[corner];
+        c.inside[corner] = inside[corner] != 0;
+        c.valid[corner] = state.valid;
+        c.live[corner] = c.inside[corner] && state.valid;
+        c.ownVis[corner] = !state.irradianceOnly;
+        c.visMask[corner] = c.ownVis[corner] ? 1 : 0;
+        c.filled[corner] = c.live[corner] && !f.fillSource.empty() &&
+                           f.fillSource[std::size_t(index[corner])] != index[corner];
+        c.visTile[corner] = f.visibilityTiles.data() + std::size_t(index[corner]) * kVisTileFloats;
+        c.irrTile[corner] = f.irradianceTiles.data() + std::size_t(index[corner]) * kIrrTileFloats;
     }
 }
 
 PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const glm::vec3& normal,
                                              const glm::vec3& view, SampleOptions opt, Lookup& k,
-                                             SampleTrace* trace) const {
+                                             CellCache& cells, SampleTrace* trace) const {
     k.out = {};
     k.done = true;
     if (trace) *trace = SampleTrace{};
@@ -348,55 +439,24 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
         alpha[a] = std::min(std::max(gb, 0.0f), 1.0f);
     }
 
-    // 4. The 8 surrounding probes: their positions and texel addresses, prefetching the tiles
-    //    (the loads are the cost of a lookup); finish() weights them in corner order.
-    const ProbeVolume& vol = *f.src.volume;
+    // 4. The 8 surrounding probes: their positions and texel addresses (the cell's, built
+    //    once per run of lookups in it), prefetching the tiles (the loads are the cost of a
+    //    lookup); finish() weights them in corner order.
     k.irrCoord = octInteriorCoord(n, kIrradianceInterior) + 1.0f;
-    // The corners as 8-lane vectors built straight from registers and the state loads: 8
-    // scalar stores read back as one vector would stall on store forwarding. Per lane the
-    // same operations as the scalar expression gridOrigin + vec3(c) * gridStep + offset.
-    const Int8 cx0 = base.x + Int8{0, 1, 0, 1, 0, 1, 0, 1};
-    const Int8 cy0 = base.y + Int8{0, 0, 1, 1, 0, 0, 1, 1};
-    const Int8 cz0 = base.z + Int8{0, 0, 0, 0, 1, 1, 1, 1};
-    const Int8 inside = (cx0 < f.counts.x) & (cy0 < f.counts.y) & (cz0 < f.counts.z);
-    const Int8 cx = inside ? cx0 : Int8{} + base.x; // outside: a real probe to compute on
-    const Int8 cy = inside ? cy0 : Int8{} + base.y;
-    const Int8 cz = inside ? cz0 : Int8{} + base.z;
-    const Int8 index = (cy * vol.counts.z + cz) * vol.counts.x + cx; // ProbeVolume::probeIndex
-    const ProbeState* st = f.src.states;
-    const Float8 ox = {st[index[0]].offset.x, st[index[1]].offset.x, st[index[2]].offset.x,
-                       st[index[3]].offset.x, st[index[4]].offset.x, st[index[5]].offset.x,
-                       st[index[6]].offset.x, st[index[7]].offset.x};
-    const Float8 oy = {st[index[0]].offset.y, st[index[1]].offset.y, st[index[2]].offset.y,
-                       st[index[3]].offset.y, st[index[4]].offset.y, st[index[5]].offset.y,
-                       st[index[6]].offset.y, st[index[7]].offset.y};
-    const Float8 oz = {st[index[0]].offset.z, st[index[1]].offset.z, st[index[2]].offset.z,
-                       st[index[3]].offset.z, st[index[4]].offset.z, st[index[5]].offset.z,
-                       st[index[6]].offset.z, st[index[7]].offset.z};
-    const Float8 px = (f.gridOrigin.x + __builtin_convertvector(cx, Float8) * f.gridStep.x) + ox;
-    const Float8 py = (f.gridOrigin.y + __builtin_convertvector(cy, Float8) * f.gridStep.y) + oy;
-    const Float8 pz = (f.gridOrigin.z + __builtin_convertvector(cz, Float8) * f.gridStep.z) + oz;
-    std::memcpy(k.px, &px, sizeof(k.px));
-    std::memcpy(k.py, &py, sizeof(k.py));
-    std::memcpy(k.pz, &pz, sizeof(k.pz));
-    for (int corner = 0; corner < 8; ++corner) {
-        const ProbeState& state = st[index[corner]];
-        k.live[corner] = inside[corner] != 0 && state.valid;
-        k.ownVis[corner] = !state.irradianceOnly;
-        k.visMask[corner] = k.ownVis[corner] ? 1 : 0;
-        k.filled[corner] = k.live[corner] && !f.fillSource.empty() &&
-                           f.fillSource[std::size_t(index[corner])] != index[corner];
-        if (trace && inside[corner]) {
-            trace->corners[corner].probe = {cx[corner], cy[corner], cz[corner]};
+    const Cell& c = cells.get(*this, f, vi, base);
+    k.cell = &c;
+    if (trace)
+        for (int corner = 0; corner < 8; ++corner) {
+            if (!c.inside[corner]) continue;
+            trace->corners[corner].probe = {c.cx[corner], c.cy[corner], c.cz[corner]};
             trace->corners[corner].inGrid = true;
-            trace->corners[corner].valid = state.valid;
+            trace->corners[corner].valid = c.valid[corner];
         }
-    }
     // Per corner: toPoint = biased - probe, dist = |toPoint|, dir = toPoint / dist (n if 0),
     // visibility coordinate = octInteriorCoord(dir, 14) + 1 (Octahedral.h, spelled out).
     const float interior = float(kVisibilityInterior);
     for (int i = 0; i < 8; ++i) {
-        const float tx = biased.x - k.px[i], ty = biased.y - k.py[i], tz = biased.z - k.pz[i];
+        const float tx = biased.x - c.px[i], ty = biased.y - c.py[i], tz = biased.z - c.pz[i];
         const float d = std::sqrt(tx * tx + ty * ty + tz * tz);
         k.dist[i] = d;
         const bool some = d > 0.0f;
@@ -427,14 +487,12 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
     k.irrFoot = tileFootprint(k.irrCoord.x, k.irrCoord.y, kIrradianceTile);
     const int irrOffset = (k.irrFoot.y0 * kIrradianceTile + k.irrFoot.x0) * 3;
     for (int i = 0; i < 8; ++i) {
-        k.visTile[i] = f.visibilityTiles.data() + std::size_t(index[i]) * kVisTileFloats;
-        k.irrTile[i] = f.irradianceTiles.data() + std::size_t(index[i]) * kIrrTileFloats;
-        if (!k.live[i]) continue;
-        const float* v = k.visTile[i] + k.visOffset[i];
+        if (!c.live[i]) continue;
+        const float* v = c.visTile[i] + k.visOffset[i];
         __builtin_prefetch(v);
         __builtin_prefetch(v + kVisibilityTile * 2);
-        __builtin_prefetch(k.irrTile[i] + irrOffset);
-        __builtin_prefetch(k.irrTile[i] + irrOffset + kIrradianceTile * 3);
+        __builtin_prefetch(c.irrTile[i] + irrOffset);
+        __builtin_prefetch(c.irrTile[i] + irrOffset + kIrradianceTile * 3);
         if (trace) recordFootprints(trace->corners[i], {k.vx[i], k.vy[i]}, k.irrCoord);
     }
     if (trace) trace->probesRead = true;
@@ -453,6 +511,7 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
     if (k.done) return k.out;
     IrradianceSample out = k.out;
     const Frame& f = *k.frame;
+    const Cell& c = *k.cell;
     const glm::vec3 &p = k.p, &n = k.n, &alpha = k.alpha;
 
     // The texel fetches: GL_LINEAR inside the tile (TileFootprint), lane by lane on 4-float
@@ -464,7 +523,7 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
     const Float4 irrFx = splat(k.irrFoot.fx), irrFy = splat(k.irrFoot.fy);
     for (int i = 0; i < 8; ++i) {
         // Visibility: a row of the 2x2 footprint is 4 floats (mean, meanSq of x0 and x0+1).
-        const float* v = k.visTile[i] + k.visOffset[i];
+        const float* v = c.visTile[i] + k.visOffset[i];
         const Float4 r0 = load4(v), r1 = load4(v + kVisibilityTile * 2);
         const Float4 left = __builtin_shufflevector(r0, r1, 0, 1, 4, 5);  // x0: top, bottom
         const Float4 right = __builtin_shufflevector(r0, r1, 2, 3, 6, 7); // x0 + 1
@@ -474,7 +533,7 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
         mean[i] = vis[0];
         meanSq[i] = vis[1];
         // Irradiance: RGB of x0 at t, of x0 + 1 at t + 3 (lane 3 is a neighbour's, unused).
-        const float* t = k.irrTile[i] + irrOffset;
+        const float* t = c.irrTile[i] + irrOffset;
         const Float4 t00 = load4(t), t10 = load4(t + 3);
         const Float4 t01 = load4(t + kIrradianceTile * 3), t11 = load4(t + kIrradianceTile * 3 + 3);
         const Float4 top = t00 + (t10 - t00) * irrFx;
@@ -495,7 +554,7 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
     for (int i = 0; i < 8; ++i) {
         // 4a. Wrap shading: probes behind the surface count less (never zero). dirToProbe =
         //     normalize(probe - p), n when that has no length.
-        const float qx = k.px[i] - p.x, qy = k.py[i] - p.y, qz = k.pz[i] - p.z;
+        const float qx = c.px[i] - p.x, qy = c.py[i] - p.y, qz = c.pz[i] - p.z;
         const float len = std::sqrt(qx * qx + qy * qy + qz * qz);
         const bool some = (len > 0.0f) & (len <= std::numeric_limits<float>::max());
         const float ux = qx / len, uy = qy / len, uz = qz / len;
@@ -510,7 +569,7 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
         const float cheb = variance / (variance + dd * dd);
         const float chebW = std::max(cheb * cheb * cheb, kChebyshevFloor);
         // An irradiance-only corner has no visibility: only free cells read it (ProbeState).
-        w = (d01 > mean[i]) & (k.visMask[i] != 0) ? w * chebW : w;
+        w = (d01 > mean[i]) & (c.visMask[i] != 0) ? w * chebW : w;
 
         // 4c. Crush tiny weights (keeps a faint leak from dominating once normalised).
         const float crushed = w * ((w * w) / (kCrushThreshold * kCrushThreshold));
@@ -531,13 +590,13 @@ PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
     Float4 sum4 = splat(0.0f);
     float sumW = 0.0f;
     for (int i = 0; i < 8; ++i) {
-        if (!k.live[i]) continue;
+        if (!c.live[i]) continue;
         const float w = weight[i];
         sum4 += splat(w) * irr[i];
         sumW += w;
         ++out.probes;
-        out.filled += k.filled[i] ? 1 : 0;
-        out.irradianceOnly += k.ownVis[i] ? 0 : 1;
+        out.filled += c.filled[i] ? 1 : 0;
+        out.irradianceOnly += c.ownVis[i] ? 0 : 1;
     }
     const glm::vec3 sumE(sum4[0], sum4[1], sum4[2]);
 

@@ -198,12 +198,21 @@ private:
     std::vector<Frame> frames_;
     std::size_t keyCount_ = 1;
     struct Lookup; // a lookup between its address phase (prepare) and its weights (finish)
+    // What the lookups of one grid cell share: the 8 corner probes' positions, states and
+    // tiles (ProbeSampler.cpp). A batch sorted by localityKey reads the same cell many times
+    // in a row; CellCache builds it once per run of equal cells.
+    struct Cell;
+    class CellCache;
     // Both are also compiled for AVX2 and picked at load time (PB_SAMPLER_CLONES,
     // ProbeSampler.cpp): the 8 corners then run as one 8-lane vector instead of two 4-lane ones.
     void prepare(int volume, const glm::vec3& pos, const glm::vec3& normal, const glm::vec3& view,
-                 SampleOptions opt, Lookup& k, SampleTrace* trace = nullptr) const;
+                 SampleOptions opt, Lookup& k, CellCache& cells,
+                 SampleTrace* trace = nullptr) const;
+    void buildCell(const Frame& f, int volume, const glm::ivec3& base, Cell& c) const;
     IrradianceSample finish(const Lookup& k) const;
     void init(const std::vector<SamplerVolume>& volumes);
+    // selectVolume, and the point in the chosen volume's frame (unset when none is).
+    int selectVolume(const glm::vec3& pos, glm::vec3& local) const;
     bool influences(const Frame& f, const glm::vec3& local) const;
 };
 

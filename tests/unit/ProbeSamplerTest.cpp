@@ -277,6 +277,54 @@ TEST(ProbeSampler, BatchedLookupsEqualSingleLookupsBitForBit) {
     s.sampleBatch(q.data(), 0, nullptr); // an empty batch is fine
 }
 
+TEST(ProbeSampler, BatchedLookupsInRunsOfOneCellEqualSingleLookupsBitForBit) {
+    // The bake sorts its lookups by cell (localityKey), and sampleBatch builds a cell's corner
+    // probes once per run of lookups in it, with four lookups in flight. Runs of every length
+    // from 1 to 9, in the root and in the child volume, must give exactly sample()'s results.
+    ProbeSet set = irregularSet();
+    ProbeSampler s(set, 0);
+    std::uint64_t rng = 11;
+    std::vector<SampleQuery> q;
+    std::vector<std::uint32_t> keys;
+    for (int run = 0; q.size() < 4000; ++run) {
+        const glm::vec3 u(uniformFloat(rng), uniformFloat(rng), uniformFloat(rng));
+        const ProbeVolume& in = set.volumes[run % 3 == 0 ? 1 : 0]; // a third in the child
+        const glm::vec3 centre = in.toWorld((u * 2.0f - 1.0f) * in.halfExtents);
+        const std::uint32_t key = s.localityKey(centre);
+        for (int i = 0; i <= run % 9;) { // points of the same cell as the centre
+            const glm::vec3 p = centre + (glm::vec3(uniformFloat(rng), uniformFloat(rng),
+                                                    uniformFloat(rng)) - 0.5f) * 0.3f;
+            if (s.localityKey(p) != key) continue;
+            q.push_back({p, randomUnit(rng), randomUnit(rng)});
+            keys.push_back(key);
+            ++i;
+        }
+    }
+    std::size_t runs = 1, inChild = 0;
+    for (std::size_t i = 1; i < keys.size(); ++i)
+        runs += keys[i] != keys[i - 1];
+    for (std::uint32_t k : keys)
+        inChild += k > std::uint32_t(set.volumes[0].probeCount());
+    EXPECT_GT(runs, 500u); // many cells, in runs
+    EXPECT_LT(runs, q.size() / 3);
+    EXPECT_GT(inChild, 100u); // the child volume's cells too
+    SampleOptions opt;
+    opt.edgeFade = false;
+    opt.bakeBias = true; // the bake's lookups
+    std::vector<IrradianceSample> batch(q.size());
+    s.sampleBatch(q.data(), q.size(), batch.data(), opt);
+    int lit = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        IrradianceSample one = s.sample(q[i].pos, q[i].normal, q[i].view, opt);
+        ASSERT_EQ(std::memcmp(&one.irradiance, &batch[i].irradiance, sizeof(glm::vec3)), 0)
+            << "query " << i;
+        ASSERT_EQ(one.volume, batch[i].volume) << "query " << i;
+        ASSERT_EQ(one.probes, batch[i].probes) << "query " << i;
+        lit += one.probes > 0;
+    }
+    EXPECT_GT(lit, 2000);
+}
+
 TEST(ProbeSampler, LocalityKeysNameTheCellOfThePoint) {
     ProbeSet set = irregularSet();
     ProbeSampler s(set, 0);
