@@ -325,8 +325,10 @@ void RadianceSlab::lookUp(const ProbeSampler& previous, int threads) {
         for (std::size_t j = 0; j < pendingCount_[s]; ++j)
             order[start[keys_[s * rays + j]]++] = s * rays + j;
 
-    indirect_.resize(radiance_.size());
     constexpr std::size_t kChunk = 2048;
+    // The hits are read in key order, i.e. at random: each one's line is prefetched this many
+    // hits before it is read.
+    constexpr std::size_t kGatherAhead = 16;
     std::vector<std::vector<SampleQuery>> queries(std::size_t(std::max(threads, 1)));
     std::vector<std::vector<IrradianceSample>> results(queries.size());
     SampleOptions noFade;
@@ -337,12 +339,16 @@ void RadianceSlab::lookUp(const ProbeSampler& previous, int threads) {
         std::vector<SampleQuery>& q = queries[std::size_t(t)];
         std::vector<IrradianceSample>& out = results[std::size_t(t)];
         q.clear();
-        for (std::size_t k = lo; k < hi; ++k)
+        for (std::size_t k = lo; k < hi; ++k) {
+            if (k + kGatherAhead < hi) __builtin_prefetch(&pending_[order[k + kGatherAhead]]);
             q.push_back(pending_[order[k]].query);
+        }
         out.resize(q.size());
         previous.sampleBatch(q.data(), q.size(), out.data(), noFade);
+        // E_direct + E_indirect, the sum finish() needs, kept in the hit itself (its line was
+        // just read): no per-ray array written and read back at random.
         for (std::size_t k = lo; k < hi; ++k)
-            indirect_[pending_[order[k]].ray] = out[k - lo].irradiance;
+            pending_[order[k]].direct += out[k - lo].irradiance;
     });
 }
 
@@ -351,10 +357,9 @@ const glm::vec4* RadianceSlab::finish(std::size_t slot) {
     const Pending* pending = pending_.data() + first;
     for (std::uint32_t j = 0; j < pendingCount_[slot]; ++j) {
         const Pending& h = pending[j];
-        // The per-ray expression: emissive + albedo/pi * (direct + indirect).
-        glm::vec3 e = h.direct;
-        e += indirect_[h.ray];
-        glm::vec3 L = glm::vec3(radiance_[h.ray]) + h.albedoOverPi * e;
+        // The per-ray expression: emissive + albedo/pi * (direct + indirect); lookUp() added
+        // the indirect term to `direct`.
+        glm::vec3 L = glm::vec3(radiance_[h.ray]) + h.albedoOverPi * h.direct;
         radiance_[h.ray] = glm::vec4(L, 0.0f);
     }
     return &radiance_[first];

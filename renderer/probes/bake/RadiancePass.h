@@ -124,7 +124,8 @@ private:
                          std::uint64_t probeKey, RayCounters& counters);
     struct Pending { // a hit waiting for E_indirect
         SampleQuery query;
-        glm::vec3 direct, albedoOverPi;
+        glm::vec3 direct; // E_direct (MIS-weighted); lookUp() adds E_indirect
+        glm::vec3 albedoOverPi;
         std::uint32_t ray; // slot * rays + ray index
     };
     int rays_ = 0;
@@ -135,7 +136,6 @@ private:
     HugePageVector<Pending> pending_;
     HugePageVector<std::uint32_t> keys_;
     std::vector<std::uint32_t> pendingCount_;
-    std::vector<glm::vec3> indirect_;              // E_indirect per ray (pending hits only)
     // Emitter samples per slot and interior texel: RGB sum (per slot rows of the texels' R,
     // then G, then B), luminance sum and sum of squares.
     std::vector<int> slotSamples_; // emitter samples each slot's probe took (0: rays alone)
