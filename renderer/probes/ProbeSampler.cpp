@@ -325,8 +325,17 @@ IrradianceSample ProbeSampler::sampleVolume(int vi, const glm::vec3& pos, const 
     return finish(k);
 }
 
+int ProbeSampler::volumeOfKey(std::uint32_t key) const {
+    for (std::size_t i = 0; i < frames_.size(); ++i) {
+        const Frame& f = frames_[i];
+        if (key >= f.firstKey && key - f.firstKey < std::uint32_t(f.src.volume->probeCount()))
+            return int(i);
+    }
+    return -1;
+}
+
 void ProbeSampler::sampleBatch(const SampleQuery* q, std::size_t count, IrradianceSample* out,
-                               SampleOptions opt) const {
+                               SampleOptions opt, const std::uint32_t* keys) const {
     // Query i is prepared (addresses computed, tiles prefetched) kAhead queries before it is
     // finished, so its cache misses overlap the arithmetic of the queries in between.
     Lookup ring[kAhead];
@@ -334,8 +343,10 @@ void ProbeSampler::sampleBatch(const SampleQuery* q, std::size_t count, Irradian
     for (std::size_t i = 0; i < count + kAhead; ++i) {
         Lookup& slot = ring[i % kAhead];
         if (i >= kAhead) out[i - kAhead] = finish(slot);
-        if (i < count)
-            prepare(selectVolume(q[i].pos), q[i].pos, q[i].normal, q[i].view, opt, slot, cells);
+        if (i < count) {
+            const int volume = keys ? volumeOfKey(keys[i]) : selectVolume(q[i].pos);
+            prepare(volume, q[i].pos, q[i].normal, q[i].view, opt, slot, cells);
+        }
     }
 }
 

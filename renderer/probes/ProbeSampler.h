@@ -167,8 +167,9 @@ public:
     // The same as sample() for each query, bit for bit, but pipelined: the probe tiles of
     // the next few queries are prefetched while the current one is weighted (a lookup is
     // bound by its cache misses, not by its arithmetic). out receives count results.
+    // keys (optional): each query's localityKey, which names its volume (no selectVolume).
     void sampleBatch(const SampleQuery* queries, std::size_t count, IrradianceSample* out,
-                     SampleOptions opt = {}) const;
+                     SampleOptions opt = {}, const std::uint32_t* keys = nullptr) const;
     int selectVolume(const glm::vec3& pos) const;
     // True when `pos` lies in the volume's influence region (the apply pass's discard test).
     bool influencesPoint(int volume, const glm::vec3& pos) const;
@@ -213,6 +214,8 @@ private:
     void init(const std::vector<SamplerVolume>& volumes);
     // selectVolume, and the point in the chosen volume's frame (unset when none is).
     int selectVolume(const glm::vec3& pos, glm::vec3& local) const;
+    // The volume a localityKey lies in (-1 for key 0, outside every volume).
+    int volumeOfKey(std::uint32_t key) const;
     bool influences(const Frame& f, const glm::vec3& local) const;
 };
 

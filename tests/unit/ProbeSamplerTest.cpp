@@ -311,15 +311,19 @@ TEST(ProbeSampler, BatchedLookupsInRunsOfOneCellEqualSingleLookupsBitForBit) {
     SampleOptions opt;
     opt.edgeFade = false;
     opt.bakeBias = true; // the bake's lookups
-    std::vector<IrradianceSample> batch(q.size());
+    // With and without the keys (which name the volume instead of selectVolume).
+    std::vector<IrradianceSample> batch(q.size()), keyed(q.size());
     s.sampleBatch(q.data(), q.size(), batch.data(), opt);
+    s.sampleBatch(q.data(), q.size(), keyed.data(), opt, keys.data());
     int lit = 0;
     for (std::size_t i = 0; i < q.size(); ++i) {
         IrradianceSample one = s.sample(q[i].pos, q[i].normal, q[i].view, opt);
-        ASSERT_EQ(std::memcmp(&one.irradiance, &batch[i].irradiance, sizeof(glm::vec3)), 0)
-            << "query " << i;
-        ASSERT_EQ(one.volume, batch[i].volume) << "query " << i;
-        ASSERT_EQ(one.probes, batch[i].probes) << "query " << i;
+        for (const IrradianceSample* b : {&batch[i], &keyed[i]}) {
+            ASSERT_EQ(std::memcmp(&one.irradiance, &b->irradiance, sizeof(glm::vec3)), 0)
+                << "query " << i;
+            ASSERT_EQ(one.volume, b->volume) << "query " << i;
+            ASSERT_EQ(one.probes, b->probes) << "query " << i;
+        }
         lit += one.probes > 0;
     }
     EXPECT_GT(lit, 2000);

@@ -330,6 +330,7 @@ void RadianceSlab::lookUp(const ProbeSampler& previous, int threads) {
     // hits before it is read.
     constexpr std::size_t kGatherAhead = 16;
     std::vector<std::vector<SampleQuery>> queries(std::size_t(std::max(threads, 1)));
+    std::vector<std::vector<std::uint32_t>> queryKeys(queries.size());
     std::vector<std::vector<IrradianceSample>> results(queries.size());
     SampleOptions noFade;
     noFade.edgeFade = false;
@@ -338,13 +339,16 @@ void RadianceSlab::lookUp(const ProbeSampler& previous, int threads) {
         const std::size_t lo = chunk * kChunk, hi = std::min(total, lo + kChunk);
         std::vector<SampleQuery>& q = queries[std::size_t(t)];
         std::vector<IrradianceSample>& out = results[std::size_t(t)];
+        std::vector<std::uint32_t>& qk = queryKeys[std::size_t(t)];
         q.clear();
+        qk.clear();
         for (std::size_t k = lo; k < hi; ++k) {
             if (k + kGatherAhead < hi) __builtin_prefetch(&pending_[order[k + kGatherAhead]]);
             q.push_back(pending_[order[k]].query);
+            qk.push_back(keys_[order[k]]);
         }
         out.resize(q.size());
-        previous.sampleBatch(q.data(), q.size(), out.data(), noFade);
+        previous.sampleBatch(q.data(), q.size(), out.data(), noFade, qk.data());
         // E_direct + E_indirect, the sum finish() needs, kept in the hit itself (its line was
         // just read): no per-ray array written and read back at random.
         for (std::size_t k = lo; k < hi; ++k)
