@@ -212,7 +212,8 @@ void initEmbreeRay(RTCRay& r, const glm::vec3& o, const glm::vec3& d, float tnea
     r.flags = 0;
 }
 
-RayHit RayScene::intersect(const glm::vec3& o, const glm::vec3& d, float tnear, float tfar) const {
+void RayScene::intersect(const glm::vec3& o, const glm::vec3& d, RayHit& out, float tnear,
+                         float tfar) const {
     RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
     RTCRayHit rh;
@@ -221,7 +222,7 @@ RayHit RayScene::intersect(const glm::vec3& o, const glm::vec3& d, float tnear, 
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     if (recorder_->on.load(std::memory_order_relaxed)) record({o, d, tnear, tfar, false});
     rtcIntersect1(scene_, &ctx, &rh);
-    RayHit out;
+    out = RayHit{};
     if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
         out.t = rh.ray.tfar;
         out.geomID = rh.hit.geomID;
@@ -230,7 +231,6 @@ RayHit RayScene::intersect(const glm::vec3& o, const glm::vec3& d, float tnear, 
         out.u = rh.hit.u;
         out.v = rh.hit.v;
     }
-    return out;
 }
 
 float RayScene::portableDistance(const glm::vec3& o, const glm::vec3& d, const RayHit& h) const {

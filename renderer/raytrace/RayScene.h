@@ -68,7 +68,16 @@ public:
     RTCScene handle() const { return scene_; }
     // Closest hit along o + t*d, t in [tnear, tfar]; d need not be unit (t scales with it).
     RayHit intersect(const glm::vec3& o, const glm::vec3& d, float tnear = 0.0f,
-                     float tfar = std::numeric_limits<float>::infinity()) const;
+                     float tfar = std::numeric_limits<float>::infinity()) const {
+        RayHit h;
+        intersect(o, d, h, tnear, tfar);
+        return h;
+    }
+    // The same into `out`, for loops that keep many hits: a returned RayHit is written field
+    // by field and then copied in 16-byte pieces, which stalls on store forwarding (about a
+    // tenth of the bake's own shading time).
+    void intersect(const glm::vec3& o, const glm::vec3& d, RayHit& out, float tnear = 0.0f,
+                   float tfar = std::numeric_limits<float>::infinity()) const;
     bool occluded(const glm::vec3& o, const glm::vec3& d, float tnear, float tfar) const;
     // The distance of hit `h` of the ray o + t*d recomputed in double precision against its
     // triangle's plane, rounded to float; Embree's own t when the ray runs along the plane.

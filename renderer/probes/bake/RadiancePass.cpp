@@ -136,7 +136,7 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
     hitScratch.resize(n);
     raytrace::RayHit* hits = hitScratch.data();
     for (std::size_t i = 0; i < n; ++i) {
-        hits[i] = rs.intersect(origin, rot * dirs[i]);
+        rs.intersect(origin, rot * dirs[i], hits[i]);
         if (nee.lit && hits[i].hit()) nee.lit->prefetchTriangle(hits[i].geomID, hits[i].primID);
     }
     counters.primary += n;
