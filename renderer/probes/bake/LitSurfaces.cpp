@@ -1,6 +1,5 @@
 #include "probes/bake/LitSurfaces.h"
 
-#include "core/FloorToInt.h"
 #include "core/Luminance.h"
 #include "core/ParallelFor.h"
 #include "raytrace/AliasTable.h"
@@ -31,16 +30,6 @@ glm::vec2 subCorner(int i, int j, bool upper, int k) {
 }
 
 } // namespace
-
-int LitSurfaces::subTriangle(float u, float v, int n) {
-    const float su = u * float(n), sv = v * float(n);
-    // floorToInt, not std::floor (a libm call without SSE4.1): two per shaded hit.
-    int i = std::clamp(floorToInt(su), 0, n - 1);
-    int j = std::clamp(floorToInt(sv), 0, n - 1);
-    if (i + j > n - 1) j = n - 1 - i; // rounding put the point past the far edge
-    const bool upper = (su - float(i)) + (sv - float(j)) > 1.0f && i + j <= n - 2;
-    return (i * n + j) * 2 + int(upper);
-}
 
 LitSurfaces::LitSurfaces(const raytrace::RayScene& rs, const Scenario& sc,
                          const std::vector<scene::Light>& lights, int threads,
@@ -173,14 +162,6 @@ std::int64_t LitSurfaces::slotOf(unsigned geomID, unsigned primID, bool back,
     return slotOfBarycentric(geomID, primID, back, u, v);
 }
 
-std::int64_t LitSurfaces::slotOfBarycentric(unsigned geomID, unsigned primID, bool back, float u,
-                                            float v) const {
-    const TriangleSlots* t = entries_.empty() ? nullptr : slotsOf(geomID, primID);
-    if (!t || t->first < 0) return -1;
-    u = std::clamp(u, 0.0f, 1.0f);
-    v = std::clamp(v, 0.0f, 1.0f);
-    return std::int64_t(t->first) + subTriangle(u, v, t->split) * 2 + int(back);
-}
 
 LitPatchSample LitSurfaces::sampleEntry(std::size_t k, float u1, float u2) const {
     LitPatchSample s;
