@@ -12,14 +12,6 @@ namespace pb::probes {
 
 namespace {
 
-// A patch side waiting for its power estimate.
-struct Candidate {
-    glm::vec3 a, b, c, normal, albedoOverPi;
-    float area;
-    unsigned geomID, primID;
-    int slot; // within its triangle's slots
-};
-
 // Corner k (0..2) of sub-triangle `sub` of an n-split triangle, in barycentrics (u, v) of the
 // triangle's corners b and c, scaled by n. Lower (i, j): (i, j), (i+1, j), (i, j+1); upper:
 // (i+1, j), (i+1, j+1), (i, j+1).
@@ -41,13 +33,20 @@ LitSurfaces::LitSurfaces(const raytrace::RayScene& rs, const Scenario& sc,
     const bool anyLight = (sc.sun.enabled && sc.sun.intensity > 0.0f) || !lights.empty();
     if (!anyLight) return;
 
-    // 1. Every side of every patch of every reflecting triangle. The triangles' splits first,
-    //    so that the candidates (818,058 of 76 bytes on the decimated Sponza) are allocated
-    //    once: growing the array copied and page-faulted about twice its size, 0.2 s of CPU.
+    // 1. The reflecting triangles' splits and their patch sides' places ("candidates": every
+    //    side of every patch, numbered triangle by triangle). The candidates themselves are
+    //    enumerated again where they are needed (forEachPatchSide) instead of stored: on the
+    //    decimated Sponza they were 818,058 of 76 bytes, whose fresh pages cost more CPU to
+    //    fault and clear than enumerating them twice.
     geometryFirst_.assign(rs.geometryCount() + 1, 0);
     for (unsigned g = 0; g < rs.geometryCount(); ++g)
         geometryFirst_[g + 1] = geometryFirst_[g] + rs.triangleCount(g);
     triangles_.assign(geometryFirst_.back(), TriangleSlots{});
+    struct Reflecting {
+        unsigned geomID, primID;
+        std::size_t firstCandidate;
+    };
+    std::vector<Reflecting> reflecting;
     std::size_t slotCount = 0, candidateCount = 0;
     for (unsigned g = 0; g < rs.geometryCount(); ++g) {
         const raytrace::SurfaceInfo& surf = rs.surface(g);
@@ -64,51 +63,51 @@ LitSurfaces::LitSurfaces(const raytrace::RayScene& rs, const Scenario& sc,
             t.first = std::int32_t(slotCount);
             t.split = n;
             slotCount += std::size_t(n * n * 4);
+            reflecting.push_back({g, p, candidateCount});
             candidateCount += std::size_t(n * n * (surf.doubleSided ? 2 : 1));
         }
     }
-    HugePageVector<Candidate> candidates;
-    candidates.reserve(candidateCount);
-    for (unsigned g = 0; g < rs.geometryCount(); ++g) {
+    patches_ = candidateCount;
+    // Calls visit(k, corners, normal, albedoOverPi, subArea, slot) for candidate k = the
+    // triangle's first + 0, 1, ... in order: sub-triangle (i, j, lower then upper), then side.
+    auto forEachPatchSide = [&](const Reflecting& r, auto&& visit) {
+        const unsigned g = r.geomID, p = r.primID;
         const raytrace::SurfaceInfo& surf = rs.surface(g);
-        if (surf.albedo == glm::vec3(0.0f)) continue;
         const glm::vec3 albedoOverPi = surf.albedo * float(1.0 / M_PI);
-        for (unsigned p = 0; p < rs.triangleCount(g); ++p) {
-            const TriangleSlots& t = triangles_[geometryFirst_[g] + p];
-            if (t.first < 0) continue; // no area
-            const int n = t.split;
-            glm::vec3 a, b, c;
-            rs.triangleCorners(g, p, a, b, c);
-            const float area = 0.5f * glm::length(glm::cross(b - a, c - a));
-            const glm::vec3 nrm = rs.faceNormal(g, p);
-            const float subArea = area / float(n * n);
-            for (int i = 0; i < n; ++i)
-                for (int j = 0; i + j < n; ++j)
-                    for (int upper = 0; upper < 2; ++upper) {
-                        if (upper && i + j > n - 2) continue;
-                        glm::vec3 corner[3];
-                        for (int k = 0; k < 3; ++k) {
-                            const glm::vec2 uv = subCorner(i, j, upper != 0, k) / float(n);
-                            corner[k] = a + uv.x * (b - a) + uv.y * (c - a);
-                        }
-                        for (int side = 0; side < (surf.doubleSided ? 2 : 1); ++side)
-                            candidates.push_back({corner[0], corner[1], corner[2],
-                                                  side ? -nrm : nrm, albedoOverPi, subArea, g, p,
-                                                  ((i * n + j) * 2 + upper) * 2 + side});
+        const int n = triangles_[geometryFirst_[g] + p].split;
+        glm::vec3 a, b, c;
+        rs.triangleCorners(g, p, a, b, c);
+        const float area = 0.5f * glm::length(glm::cross(b - a, c - a));
+        const glm::vec3 nrm = rs.faceNormal(g, p);
+        const float subArea = area / float(n * n);
+        std::size_t k = r.firstCandidate;
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; i + j < n; ++j)
+                for (int upper = 0; upper < 2; ++upper) {
+                    if (upper && i + j > n - 2) continue;
+                    glm::vec3 corner[3];
+                    for (int q = 0; q < 3; ++q) {
+                        const glm::vec2 uv = subCorner(i, j, upper != 0, q) / float(n);
+                        corner[q] = a + uv.x * (b - a) + uv.y * (c - a);
                     }
-        }
-    }
-    patches_ = candidates.size();
+                    for (int side = 0; side < (surf.doubleSided ? 2 : 1); ++side)
+                        visit(k++, corner, side ? -nrm : nrm, albedoOverPi, subArea,
+                              ((i * n + j) * 2 + upper) * 2 + side);
+                }
+    };
 
     // 2. Their power, from the direct light at the patch centre (shadow rays: all threads).
-    HugePageVector<double> power(candidates.size());
+    HugePageVector<double> power(candidateCount);
     std::vector<PerThread<std::uint64_t>> rays(std::size_t(std::max(threads, 1)));
-    parallelFor(candidates.size(), threads, [&](std::size_t k, int t) {
-        const Candidate& cd = candidates[k];
-        const glm::vec3 centre = (cd.a + cd.b + cd.c) / 3.0f;
-        const glm::vec3 e =
-            directIrradiance(rs, sc, lights, centre, cd.normal, rays[size_t(t)].value);
-        power[k] = double(luminance(cd.albedoOverPi * e)) * double(cd.area);
+    parallelFor(reflecting.size(), threads, [&](std::size_t r, int t) {
+        forEachPatchSide(reflecting[r], [&](std::size_t k, const glm::vec3* corner,
+                                            const glm::vec3& normal, const glm::vec3& albedoOverPi,
+                                            float subArea, int) {
+            const glm::vec3 centre = (corner[0] + corner[1] + corner[2]) / 3.0f;
+            const glm::vec3 e =
+                directIrradiance(rs, sc, lights, centre, normal, rays[size_t(t)].value);
+            power[k] = double(luminance(albedoOverPi * e)) * double(subArea);
+        });
     });
     for (const PerThread<std::uint64_t>& r : rays)
         shadowRays += r.value;
@@ -121,15 +120,16 @@ LitSurfaces::LitSurfaces(const raytrace::RayScene& rs, const Scenario& sc,
         litCount += w > 0.0 && std::isfinite(w);
     entries_.reserve(litCount);
     weights.reserve(litCount);
-    for (std::size_t k = 0; k < candidates.size(); ++k) {
-        if (!(power[k] > 0.0) || !std::isfinite(power[k])) continue;
-        const Candidate& cd = candidates[k];
-        slots[std::size_t(slotsOf(cd.geomID, cd.primID)->first + cd.slot)] =
-            std::int32_t(entries_.size());
-        entries_.push_back({cd.a, cd.b, cd.c, cd.normal, cd.albedoOverPi, 0.0f, cd.geomID,
-                            cd.primID, (cd.slot & 1) != 0});
-        weights.push_back(power[k]);
-    }
+    for (const Reflecting& r : reflecting)
+        forEachPatchSide(r, [&](std::size_t k, const glm::vec3* corner, const glm::vec3& normal,
+                                const glm::vec3& albedoOverPi, float, int slot) {
+            if (!(power[k] > 0.0) || !std::isfinite(power[k])) return;
+            slots[std::size_t(slotsOf(r.geomID, r.primID)->first + slot)] =
+                std::int32_t(entries_.size());
+            entries_.push_back({corner[0], corner[1], corner[2], normal, albedoOverPi, 0.0f,
+                                r.geomID, r.primID, (slot & 1) != 0});
+            weights.push_back(power[k]);
+        });
     raytrace::AliasTable table(weights);
     if (table.empty()) {
         entries_.clear();
