@@ -41,7 +41,6 @@ constexpr std::size_t kTilePadding = 4;
 // sampleBatch prepares a query this many queries before it finishes it.
 constexpr std::size_t kAhead = 4;
 
-
 // GL_LINEAR + CLAMP_TO_EDGE on one layer, CH channels read (of t.shape.channels).
 template <int CH>
 inline void bilinear(const ProbeTexture& t, float x, float y, int layer, float* out) {

@@ -162,7 +162,6 @@ std::int64_t LitSurfaces::slotOf(unsigned geomID, unsigned primID, bool back,
     return slotOfBarycentric(geomID, primID, back, u, v);
 }
 
-
 LitPatchSample LitSurfaces::sampleEntry(std::size_t k, float u1, float u2) const {
     LitPatchSample s;
     if (entries_.empty()) return s;

@@ -352,7 +352,7 @@ void RadianceSlab::lookUp(const ProbeSampler& previous, int threads) {
         // E_direct + E_indirect, the sum finish() needs, kept in the hit itself (its line was
         // just read): no per-ray array written and read back at random.
         for (std::size_t k = lo; k < hi; ++k)
-            pending_[order[k]].direct += out[k - lo].irradiance;
+            pending_[order[k]].irradiance += out[k - lo].irradiance;
     });
 }
 
@@ -361,9 +361,9 @@ const glm::vec4* RadianceSlab::finish(std::size_t slot) {
     const Pending* pending = pending_.data() + first;
     for (std::uint32_t j = 0; j < pendingCount_[slot]; ++j) {
         const Pending& h = pending[j];
-        // The per-ray expression: emissive + albedo/pi * (direct + indirect); lookUp() added
-        // the indirect term to `direct`.
-        glm::vec3 L = glm::vec3(radiance_[h.ray]) + h.albedoOverPi * h.direct;
+        // The per-ray expression: emissive + albedo/pi * (direct + indirect), the sum lookUp()
+        // left in `irradiance`.
+        glm::vec3 L = glm::vec3(radiance_[h.ray]) + h.albedoOverPi * h.irradiance;
         radiance_[h.ray] = glm::vec4(L, 0.0f);
     }
     return &radiance_[first];

@@ -124,7 +124,9 @@ private:
                          std::uint64_t probeKey, RayCounters& counters);
     struct Pending { // a hit waiting for E_indirect
         SampleQuery query;
-        glm::vec3 direct; // E_direct (MIS-weighted); lookUp() adds E_indirect
+        // E_direct (MIS-weighted) when queued; lookUp() adds E_indirect, and finish() reads
+        // the sum.
+        glm::vec3 irradiance;
         glm::vec3 albedoOverPi;
         std::uint32_t ray; // slot * rays + ray index
     };
