@@ -5,7 +5,9 @@
 #include "probes/Octahedral.h"
 #include "probes/ProbeLayout.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 #include <stdexcept>
 
@@ -62,15 +64,39 @@ ProbeConvolution::ProbeConvolution(const std::vector<glm::vec3>& dirs, Parts par
         shBasis(dirs[r], &shBasis_[r * kShL2Coefficients]);
 }
 
+// A texel's sum is one chain of dependent additions (its order fixes the rounding), so one
+// texel at a time waits on the adder's latency at every weight. kChains texels run side by side
+// instead: their first min(lengths) weights interleaved, then each one's remaining weights.
+// Every texel still adds its own weights in their own order: the same bits.
+constexpr std::size_t kChains = 4;
+
 void ProbeConvolution::irradiance(const float* rgbx, float* out) const {
-    // Lane c computes sum_c += w * L_c exactly like a scalar loop (FloatLanes.h).
-    for (size_t t = 0; t + 1 < irr_.start.size(); ++t) {
-        Float4 sum = {0.0f, 0.0f, 0.0f, 0.0f};
-        for (int e = irr_.start[t]; e < irr_.start[t + 1]; ++e)
-            sum += irr_.weight[size_t(e)] * load4(rgbx + 4 * size_t(irr_.ray[size_t(e)]));
-        out[3 * t] = sum[0];
-        out[3 * t + 1] = sum[1];
-        out[3 * t + 2] = sum[2];
+    const std::size_t texels = irr_.start.size() - 1;
+    const int* ray = irr_.ray.data();
+    const float* weight = irr_.weight.data();
+    auto term = [&](int e) { return weight[e] * load4(rgbx + 4 * std::size_t(ray[e])); };
+    for (std::size_t t0 = 0; t0 < texels; t0 += kChains) {
+        const std::size_t chains = std::min(kChains, texels - t0);
+        Float4 sum[kChains] = {};
+        int at[kChains], end[kChains];
+        int common = std::numeric_limits<int>::max();
+        for (std::size_t c = 0; c < kChains; ++c) {
+            // Past the last texel a chain repeats the first (its sum is not written).
+            const std::size_t t = t0 + (c < chains ? c : 0);
+            at[c] = irr_.start[t];
+            end[c] = irr_.start[t + 1];
+            common = std::min(common, end[c] - at[c]);
+        }
+        for (int k = 0; k < common; ++k)
+            for (std::size_t c = 0; c < kChains; ++c)
+                sum[c] += term(at[c] + k);
+        for (std::size_t c = 0; c < chains; ++c) {
+            for (int e = at[c] + common; e < end[c]; ++e)
+                sum[c] += term(e);
+            out[3 * (t0 + c)] = sum[c][0];
+            out[3 * (t0 + c) + 1] = sum[c][1];
+            out[3 * (t0 + c) + 2] = sum[c][2];
+        }
     }
 }
 
@@ -80,18 +106,44 @@ void ProbeConvolution::irradianceLumaVariance(const float* rgbx, float* out) con
     rayLuma.resize(std::size_t(rays_));
     for (int r = 0; r < rays_; ++r)
         rayLuma[std::size_t(r)] = luminance(rgbx + 4 * size_t(r));
-    auto luma = [&](int r) { return rayLuma[std::size_t(r)]; };
-    for (size_t t = 0; t + 1 < irr_.start.size(); ++t) {
-        float e = 0.0f;
-        for (int k = irr_.start[t]; k < irr_.start[t + 1]; ++k)
-            e += irr_.weight[size_t(k)] * luma(irr_.ray[size_t(k)]);
-        const float mu = e / float(M_PI);
-        float v = 0.0f;
-        for (int k = irr_.start[t]; k < irr_.start[t + 1]; ++k) {
-            const float w = irr_.weight[size_t(k)], dy = luma(irr_.ray[size_t(k)]) - mu;
-            v += w * w * dy * dy;
+    const int* ray = irr_.ray.data();
+    const float* weight = irr_.weight.data();
+    const float* luma = rayLuma.data();
+    // kChains texels side by side, as irradiance(): per texel the scalar sums in their order.
+    const std::size_t texels = irr_.start.size() - 1;
+    for (std::size_t t0 = 0; t0 < texels; t0 += kChains) {
+        const std::size_t chains = std::min(kChains, texels - t0);
+        int at[kChains], end[kChains];
+        int common = std::numeric_limits<int>::max();
+        for (std::size_t c = 0; c < kChains; ++c) {
+            const std::size_t t = t0 + (c < chains ? c : 0);
+            at[c] = irr_.start[t];
+            end[c] = irr_.start[t + 1];
+            common = std::min(common, end[c] - at[c]);
         }
-        out[t] = v;
+        float e[kChains] = {}, v[kChains] = {}, mu[kChains] = {};
+        for (int k = 0; k < common; ++k)
+            for (std::size_t c = 0; c < kChains; ++c)
+                e[c] += weight[at[c] + k] * luma[ray[at[c] + k]];
+        for (std::size_t c = 0; c < chains; ++c) {
+            for (int k = at[c] + common; k < end[c]; ++k)
+                e[c] += weight[k] * luma[ray[k]];
+            mu[c] = e[c] / float(M_PI);
+        }
+        for (std::size_t c = chains; c < kChains; ++c)
+            mu[c] = mu[0];
+        for (int k = 0; k < common; ++k)
+            for (std::size_t c = 0; c < kChains; ++c) {
+                const float w = weight[at[c] + k], dy = luma[ray[at[c] + k]] - mu[c];
+                v[c] += w * w * dy * dy;
+            }
+        for (std::size_t c = 0; c < chains; ++c) {
+            for (int k = at[c] + common; k < end[c]; ++k) {
+                const float w = weight[k], dy = luma[ray[k]] - mu[c];
+                v[c] += w * w * dy * dy;
+            }
+            out[t0 + c] = v[c];
+        }
     }
 }
 

@@ -45,6 +45,18 @@ public:
     void irradianceLumaVariance(const float* rgbx, float* outVar) const;
     // dist01: rays() normalised distances; out: interior texels, (mean, meanSq) per texel.
     void visibility(const float* dist01, float* outMeanMeanSq) const;
+    // Irradiance texel t's weights (pi included) and their rays, in the order its sum adds
+    // them: E_t = sum_k weight[k] L(ray[k]), k = 0 .. count-1, left to right. That order is the
+    // contract irradiance() and irradianceLumaVariance() keep, whatever they interleave.
+    struct WeightRow {
+        const int* ray;
+        const float* weight;
+        int count;
+    };
+    WeightRow irradianceRow(int texel) const {
+        const int a = irr_.start[std::size_t(texel)], b = irr_.start[std::size_t(texel) + 1];
+        return {irr_.ray.data() + a, irr_.weight.data() + a, b - a};
+    }
 
 private:
     struct Sparse { // compressed rows: texel t uses entries [start[t], start[t+1])
