@@ -171,6 +171,45 @@ TEST(LitSurfaces, SamplesOnlyTheSunlitPartWithTheDensityARayHitLooksUp) {
     EXPECT_EQ(lit.pdfArea(square.geomID, square.primID, true, {-0.1f, -kBelow, 0.0f}), 0.0f);
 }
 
+// Only triangles with a lit patch have density slots: a hit on a reflecting triangle that lies
+// wholly in shadow finds none (the shading then reads nothing at random; its MIS weight is 1
+// either way, since such a triangle has density 0 everywhere).
+TEST(LitSurfaces, AWhollyShadedTriangleHasNoDensitySlots) {
+    scene::Scene s = emptyScene(glm::vec3(0.0f));
+    const int grey = addMaterial(s, glm::vec3(kAlbedo)), black = addMaterial(s, glm::vec3(0.0f));
+    scene::Primitive lit, shaded, card;
+    lit.material = shaded.material = grey;
+    card.material = black;
+    addQuad(lit, {-1.5f, -kBelow, -0.5f}, {1, 0, 0}, {0, 0, 1}, {0, 1, 0});
+    addQuad(shaded, {0.5f, -kBelow, -0.5f}, {1, 0, 0}, {0, 0, 1}, {0, 1, 0});
+    addQuad(card, {0.25f, -0.5f, -0.75f}, {1.5f, 0, 0}, {0, 0, 1.5f}, {0, 1, 0});
+    for (const scene::Primitive* p : {&lit, &shaded, &card})
+        addInstance(s, *p);
+    const pb::raytrace::RayScene rs(s);
+    std::uint64_t shadow = 0;
+    const LitSurfaces table(rs, sunFromAbove(1.0f), s.lights, 2, shadow);
+    ASSERT_FALSE(table.empty());
+    // Both triangles of each square: points either side of either diagonal.
+    const glm::vec2 points[] = {{-1.3f, 0.1f}, {-0.7f, -0.1f}, {0.7f, 0.1f}, {1.3f, -0.1f}};
+    unsigned prim[4];
+    for (int k = 0; k < 4; ++k) {
+        const float x = points[k].x;
+        const glm::vec3 top(x, -kBelow, points[k].y);
+        const pb::raytrace::RayHit h = rs.intersect(top + glm::vec3(0, 0.25f, 0), {0, -1, 0});
+        ASSERT_TRUE(h.hit()) << x;
+        prim[k] = h.primID;
+        if (x < 0.0f) {
+            EXPECT_GE(table.slotOfBarycentric(h.geomID, h.primID, false, h.u, h.v), 0) << x;
+            EXPECT_GT(table.pdfArea(h.geomID, h.primID, false, top), 0.0f) << x;
+        } else {
+            EXPECT_EQ(table.slotOfBarycentric(h.geomID, h.primID, false, h.u, h.v), -1) << x;
+            EXPECT_EQ(table.pdfArea(h.geomID, h.primID, false, top), 0.0f) << x;
+        }
+    }
+    EXPECT_NE(prim[0], prim[1]);
+    EXPECT_NE(prim[2], prim[3]);
+}
+
 TEST(LitSurfaces, NothingToSampleWithoutSunOrLights) {
     const scene::Scene s = squareScene(false);
     const pb::raytrace::RayScene rs(s);

@@ -59,10 +59,8 @@ LitSurfaces::LitSurfaces(const raytrace::RayScene& rs, const Scenario& sc,
             const float edge = std::max(glm::length(b - a),
                                         std::max(glm::length(c - b), glm::length(a - c)));
             const int n = std::clamp(int(std::ceil(edge / patchEdge)), 1, kMaxSplit);
-            TriangleSlots& t = triangles_[geometryFirst_[g] + p];
-            t.first = std::int32_t(slotCount);
-            t.split = n;
-            slotCount += std::size_t(n * n * 4);
+            // Its slots come in step 3, if any of its patches is lit.
+            triangles_[geometryFirst_[g] + p].split = n;
             reflecting.push_back({g, p, candidateCount});
             candidateCount += std::size_t(n * n * (surf.doubleSided ? 2 : 1));
         }
@@ -112,7 +110,21 @@ LitSurfaces::LitSurfaces(const raytrace::RayScene& rs, const Scenario& sc,
     for (const PerThread<std::uint64_t>& r : rays)
         shadowRays += r.value;
 
-    // 3. The lit ones become entries, in candidate order (deterministic).
+    // 3. The lit ones become entries, in candidate order (deterministic). Only a triangle
+    //    with a lit patch side has slots: a hit on any other one reads no density (slot -1,
+    //    density 0, as its slots' would be), and the density array the shading reads at random
+    //    holds lit triangles only (on the decimated Sponza 1.6M slots were 95% zeros).
+    for (const Reflecting& r : reflecting) {
+        TriangleSlots& t = triangles_[geometryFirst_[r.geomID] + r.primID];
+        const std::size_t sides = rs.surface(r.geomID).doubleSided ? 2 : 1;
+        const std::size_t end = r.firstCandidate + std::size_t(t.split * t.split) * sides;
+        for (std::size_t k = r.firstCandidate; k < end; ++k)
+            if (power[k] > 0.0 && std::isfinite(power[k])) {
+                t.first = std::int32_t(slotCount);
+                slotCount += std::size_t(t.split * t.split * 4);
+                break;
+            }
+    }
     std::vector<std::int32_t> slots(slotCount, -1); // entry index or -1
     std::vector<double> weights;
     std::size_t litCount = 0; // reserved up front: each growth of a huge-page array copies it

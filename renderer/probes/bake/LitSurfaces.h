@@ -116,7 +116,9 @@ private:
         bool back;
     };
     struct TriangleSlots {
-        std::int32_t first = -1; // into slotPdf_: n * n * 2 (sub-triangle) * 2 (side), or -1
+        // Into slotPdf_: n * n * 2 (sub-triangle) * 2 (side); -1 where no patch side is lit
+        // (or the triangle reflects nothing).
+        std::int32_t first = -1;
         std::int32_t split = 0;  // n
     };
     // Sub-triangle slot of barycentrics (u, v) in an n-split triangle.
