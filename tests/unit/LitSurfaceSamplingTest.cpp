@@ -155,7 +155,8 @@ TEST(LitSurfaces, SamplesOnlyTheSunlitPartWithTheDensityARayHitLooksUp) {
         EXPECT_EQ(p.normal, glm::vec3(0, 1, 0));
         EXPECT_NEAR(p.albedoOverPi.r, kAlbedo / float(M_PI), 1e-6f);
         // What MIS needs: the density a ray hitting this point looks up is the sampled one.
-        EXPECT_FLOAT_EQ(lit.pdfArea(p.geomID, p.primID, p.back, p.point), p.pdfArea);
+        const LitPatchSide side = lit.side(std::size_t(p.entry));
+        EXPECT_FLOAT_EQ(lit.pdfArea(side.geomID, side.primID, side.back, p.point), p.pdfArea);
         inverseDensity += 1.0 / double(p.pdfArea) / n;
     }
     // E[1 / pdf] is the area sampled: the sunlit half of the square.

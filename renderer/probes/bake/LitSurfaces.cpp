@@ -131,6 +131,7 @@ LitSurfaces::LitSurfaces(const raytrace::RayScene& rs, const Scenario& sc,
     for (double w : power)
         litCount += w > 0.0 && std::isfinite(w);
     entries_.reserve(litCount);
+    sides_.reserve(litCount);
     weights.reserve(litCount);
     for (const Reflecting& r : reflecting)
         forEachPatchSide(r, [&](std::size_t k, const glm::vec3* corner, const glm::vec3& normal,
@@ -138,15 +139,19 @@ LitSurfaces::LitSurfaces(const raytrace::RayScene& rs, const Scenario& sc,
             if (!(power[k] > 0.0) || !std::isfinite(power[k])) return;
             slots[std::size_t(slotsOf(r.geomID, r.primID)->first + slot)] =
                 std::int32_t(entries_.size());
-            entries_.push_back({corner[0], corner[1], corner[2], normal, albedoOverPi, 0.0f,
-                                r.geomID, r.primID, (slot & 1) != 0});
+            entries_.push_back({corner[0], corner[1], corner[2], normal, albedoOverPi, 0.0f});
+            sides_.push_back({r.geomID, r.primID, (slot & 1) != 0});
             weights.push_back(power[k]);
         });
     raytrace::AliasTable table(weights);
     if (table.empty()) {
         entries_.clear();
+        sides_.clear();
         return;
     }
+    litTriangles_.assign((triangles_.size() + 63) / 64, 0);
+    for (std::size_t k = 0; k < triangles_.size(); ++k)
+        if (triangles_[k].first >= 0) litTriangles_[k >> 6] |= std::uint64_t(1) << (k & 63);
     for (std::size_t e = 0; e < entries_.size(); ++e) {
         const Entry& en = entries_[e];
         const float area = 0.5f * glm::length(glm::cross(en.b - en.a, en.c - en.a));
@@ -160,8 +165,7 @@ LitSurfaces::LitSurfaces(const raytrace::RayScene& rs, const Scenario& sc,
 
 std::int64_t LitSurfaces::slotOf(unsigned geomID, unsigned primID, bool back,
                                  const glm::vec3& x) const {
-    const TriangleSlots* t = entries_.empty() ? nullptr : slotsOf(geomID, primID);
-    if (!t || t->first < 0) return -1;
+    if (!litSlotsOf(geomID, primID)) return -1;
     glm::vec3 a, b, c;
     rs_->triangleCorners(geomID, primID, a, b, c);
     // Barycentrics of x: u for corner b, v for corner c.
@@ -184,9 +188,6 @@ LitPatchSample LitSurfaces::sampleEntry(std::size_t k, float u1, float u2) const
     s.albedoOverPi = e.albedoOverPi;
     s.pdfArea = e.pdfArea;
     s.entry = int(k);
-    s.geomID = e.geomID;
-    s.primID = e.primID;
-    s.back = e.back;
     return s;
 }
 

@@ -39,9 +39,13 @@ struct LitPatchSample {
     glm::vec3 normal;         // of the side that reflects toward the sampler (unit)
     glm::vec3 albedoOverPi;
     float pdfArea = 0.0f;     // P(entry) / area(patch)
-    int entry = -1;
-    unsigned geomID = 0, primID = 0; // the RayScene triangle it lies on
-    bool back = false;               // reflecting from the triangle's back face
+    int entry = -1;           // LitSurfaces::side(entry) names its triangle and side
+};
+
+// Where an entry lies: the RayScene triangle and the side it reflects from.
+struct LitPatchSide {
+    unsigned geomID = 0, primID = 0;
+    bool back = false; // the triangle's back face
 };
 
 class LitSurfaces {
@@ -74,8 +78,8 @@ public:
     // bake's CPU).
     std::int64_t slotOfBarycentric(unsigned geomID, unsigned primID, bool back, float u,
                                    float v) const {
-        const TriangleSlots* t = entries_.empty() ? nullptr : slotsOf(geomID, primID);
-        if (!t || t->first < 0) return -1;
+        const TriangleSlots* t = litSlotsOf(geomID, primID);
+        if (!t) return -1;
         u = std::clamp(u, 0.0f, 1.0f);
         v = std::clamp(v, 0.0f, 1.0f);
         return std::int64_t(t->first) + subTriangle(u, v, t->split) * 2 + int(back);
@@ -86,9 +90,10 @@ public:
     void prefetchSlot(std::int64_t slot) const {
         if (slot >= 0) __builtin_prefetch(&slotPdf_[std::size_t(slot)]);
     }
-    // Hints that slotOf will be asked about this triangle soon.
+    // Hints that slotOf will be asked about this triangle soon (nothing to read for an unlit
+    // one: the bitmap that says so is small enough to stay in the cache).
     void prefetchTriangle(unsigned geomID, unsigned primID) const {
-        if (const TriangleSlots* t = slotsOf(geomID, primID)) __builtin_prefetch(t);
+        if (const TriangleSlots* t = litSlotsOf(geomID, primID)) __builtin_prefetch(t);
     }
 
     // u0 picks the entry (alias table), u1, u2 the point (uniform on its patch).
@@ -102,19 +107,22 @@ public:
     void prefetchEntry(std::size_t k) const {
         const char* p = reinterpret_cast<const char*>(&entries_[k]);
         __builtin_prefetch(p);
-        __builtin_prefetch(p + sizeof(Entry) - 1);
+        __builtin_prefetch(p + sizeof(Entry) - 1); // the same line when the array is aligned
     }
     LitPatchSample sampleEntry(std::size_t k, float u1, float u2) const;
+    LitPatchSide side(std::size_t k) const { return sides_[k]; }
 
 private:
+    // What a sample reads, one cache line (16 floats): the patch's corners, the normal of
+    // its reflecting side, albedo / pi and the density. Where it lies is kept apart (sides_):
+    // the bake never reads it.
     struct Entry {
-        glm::vec3 a, b, c; // the patch's corners
-        glm::vec3 normal;  // of the reflecting side
+        glm::vec3 a, b, c;
+        glm::vec3 normal;
         glm::vec3 albedoOverPi;
         float pdfArea;
-        unsigned geomID, primID;
-        bool back;
     };
+    static_assert(sizeof(Entry) == 64, "one cache line per sampled entry");
     struct TriangleSlots {
         // Into slotPdf_: n * n * 2 (sub-triangle) * 2 (side); -1 where no patch side is lit
         // (or the triangle reflects nothing).
@@ -137,12 +145,26 @@ private:
         const std::size_t k = geometryFirst_[geomID] + primID;
         return k < geometryFirst_[geomID + 1] ? &triangles_[k] : nullptr;
     }
+    // The same for a triangle with a lit patch side; nullptr for any other, decided by the
+    // bitmap (a bit per triangle: 23 KiB on the decimated Sponza) without reading triangles_,
+    // which a hit would read at random (1.5 MiB there).
+    const TriangleSlots* litSlotsOf(unsigned geomID, unsigned primID) const {
+        // (No bitmap: an empty table, nothing lit.)
+        if (litTriangles_.empty() || std::size_t(geomID) + 1 >= geometryFirst_.size())
+            return nullptr;
+        const std::size_t k = geometryFirst_[geomID] + primID;
+        if (k >= geometryFirst_[geomID + 1] || !((litTriangles_[k >> 6] >> (k & 63)) & 1u))
+            return nullptr;
+        return &triangles_[k];
+    }
 
     // The arrays read at random per hit and per sample: several MiB each on a large scene, so
     // on huge pages (HugePages.h), as the sampler's probe tiles.
     const raytrace::RayScene* rs_ = nullptr;
     HugePageVector<Entry> entries_;
+    std::vector<LitPatchSide> sides_;        // per entry
     HugePageVector<TriangleSlots> triangles_; // all geometries' triangles, in id order
+    std::vector<std::uint64_t> litTriangles_; // bit per triangle of triangles_: first >= 0
     std::vector<std::size_t> geometryFirst_;  // [geomID]: its first triangle; one past the end
     HugePageVector<float> slotPdf_;           // the entry's pdfArea, or 0
     raytrace::AliasTable pick_; // entries by power
