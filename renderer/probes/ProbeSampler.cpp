@@ -226,10 +226,10 @@ std::uint32_t ProbeSampler::localityKey(const glm::vec3& pos) const {
     if (v < 0) return 0;
     const Frame& f = frames_[size_t(v)];
     glm::ivec3 base(0);
-    for (int a = 0; a < 3; ++a) // the base probe of sampleVolume's step 3
+    for (int a = 0; a < 3; ++a) // the base probe of sampleVolume's step 3 (int(): as there)
         if (f.counts[a] > 1)
-            base[a] = floorToInt(std::min(std::max((p[a] + f.half[a]) * f.invCell[a], 0.0f),
-                                          float(f.counts[a] - 2)));
+            base[a] = int(std::min(std::max((p[a] + f.half[a]) * f.invCell[a], 0.0f),
+                                   float(f.counts[a] - 2)));
     return f.firstKey + std::uint32_t(f.src.volume->probeIndex(base));
 }
 
@@ -441,10 +441,12 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
             alpha[a] = 0.0f;
             continue;
         }
-        // Clamp in float first: a far-away point must not overflow the int conversion.
+        // Clamp in float first: a far-away point must not overflow the int conversion. g >= 0
+        // then, so truncation is the floor (floorToInt's correction step would be dead weight
+        // on the chain every lookup and every bake hit's key waits for).
         float g =
             std::min(std::max((p[a] + f.half[a]) * f.invCell[a], 0.0f), float(f.counts[a] - 2));
-        base[a] = floorToInt(g);
+        base[a] = int(g);
         float gb = (biased[a] + f.half[a]) * f.invCell[a] - float(base[a]);
         alpha[a] = std::min(std::max(gb, 0.0f), 1.0f);
     }

@@ -131,13 +131,23 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
     // The hits and their lit-surface slots are read only below, for this probe: per-thread
     // scratch of one probe's rays stays in L1, where a slab-sized array (8 MB at 2^18 rays)
     // streamed through the caches and evicted the BVH that the next rays traverse.
+    // Each ray's world direction and its hit's normal are kept too, computed once for the
+    // loops below (the same expressions, so the same values).
     thread_local std::vector<raytrace::RayHit> hitScratch;
+    thread_local std::vector<glm::vec3> dirScratch, normalScratch;
     thread_local std::vector<std::int64_t> litSlotScratch;
     hitScratch.resize(n);
+    dirScratch.resize(n);
+    normalScratch.resize(n);
     raytrace::RayHit* hits = hitScratch.data();
+    glm::vec3* rayDirs = dirScratch.data();
+    glm::vec3* normals = normalScratch.data();
     for (std::size_t i = 0; i < n; ++i) {
-        rs.intersect(origin, rot * dirs[i], hits[i]);
-        if (nee.lit && hits[i].hit()) nee.lit->prefetchTriangle(hits[i].geomID, hits[i].primID);
+        rayDirs[i] = rot * dirs[i];
+        rs.intersect(origin, rayDirs[i], hits[i]);
+        if (!hits[i].hit()) continue;
+        normals[i] = rs.hitNormal(hits[i]);
+        if (nee.lit) nee.lit->prefetchTriangle(hits[i].geomID, hits[i].primID);
     }
     counters.primary += n;
     // Emitters that fill a large part of the probe's sphere (a quarter or more of its rays hit
@@ -164,15 +174,14 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
             const raytrace::RayHit& h = hits[i];
             litSlots[i] = -1;
             if (!h.hit() || rs.surface(h.geomID).albedo == glm::vec3(0.0f)) continue;
-            const glm::vec3 d = rot * dirs[i];
-            const bool back = glm::dot(rs.hitNormal(h), d) > 0.0f;
+            const bool back = glm::dot(normals[i], rayDirs[i]) > 0.0f;
             if (back && !rs.surface(h.geomID).doubleSided) continue;
             litSlots[i] = nee.lit->slotOfBarycentric(h.geomID, h.primID, back, h.u, h.v);
             nee.lit->prefetchSlot(litSlots[i]);
         }
     }
     for (std::size_t i = 0; i < n; ++i) {
-        const glm::vec3 d = rot * dirs[i];
+        const glm::vec3 d = rayDirs[i];
         const raytrace::RayHit& h = hits[i];
         glm::vec3 L;
         if (!h.hit()) {
@@ -180,7 +189,7 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
         } else if (nee.incrementOnly) { // only the previous increment, looked up at the hit
             L = glm::vec3(0.0f);
             const raytrace::SurfaceInfo& surf = rs.surface(h.geomID);
-            glm::vec3 nrm = rs.hitNormal(h);
+            glm::vec3 nrm = normals[i];
             const bool back = glm::dot(nrm, d) > 0.0f;
             if (previous && surf.albedo != glm::vec3(0.0f) && (!back || surf.doubleSided)) {
                 const glm::vec3 x = origin + d * h.t;
@@ -190,7 +199,7 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
             }
         } else {
             const raytrace::SurfaceInfo& surf = rs.surface(h.geomID);
-            glm::vec3 nrm = rs.hitNormal(h);
+            glm::vec3 nrm = normals[i];
             bool back = glm::dot(nrm, d) > 0.0f;
             if (back && !surf.doubleSided) {
                 L = glm::vec3(0.0f);
