@@ -64,11 +64,34 @@ ProbeConvolution::ProbeConvolution(const std::vector<glm::vec3>& dirs, Parts par
         shBasis(dirs[r], &shBasis_[r * kShL2Coefficients]);
 }
 
+namespace {
+
 // A texel's sum is one chain of dependent additions (its order fixes the rounding), so one
 // texel at a time waits on the adder's latency at every weight. kChains texels run side by side
 // instead: their first min(lengths) weights interleaved, then each one's remaining weights.
 // Every texel still adds its own weights in their own order: the same bits.
 constexpr std::size_t kChains = 4;
+
+// The kChains texels from t0 (compressed rows `start`): each one's weights [at, end), and how
+// many weights all of them have (`common`). Past the last texel a chain repeats the first:
+// `chains` says how many are real, and only their sums are written.
+struct ChainGroup {
+    std::size_t chains;
+    int at[kChains], end[kChains], common;
+};
+ChainGroup chainGroup(const std::vector<int>& start, std::size_t t0) {
+    const std::size_t texels = start.size() - 1;
+    ChainGroup g{std::min(kChains, texels - t0), {}, {}, std::numeric_limits<int>::max()};
+    for (std::size_t c = 0; c < kChains; ++c) {
+        const std::size_t t = t0 + (c < g.chains ? c : 0);
+        g.at[c] = start[t];
+        g.end[c] = start[t + 1];
+        g.common = std::min(g.common, g.end[c] - g.at[c]);
+    }
+    return g;
+}
+
+} // namespace
 
 void ProbeConvolution::irradiance(const float* rgbx, float* out) const {
     const std::size_t texels = irr_.start.size() - 1;
@@ -76,17 +99,10 @@ void ProbeConvolution::irradiance(const float* rgbx, float* out) const {
     const float* weight = irr_.weight.data();
     auto term = [&](int e) { return weight[e] * load4(rgbx + 4 * std::size_t(ray[e])); };
     for (std::size_t t0 = 0; t0 < texels; t0 += kChains) {
-        const std::size_t chains = std::min(kChains, texels - t0);
+        const ChainGroup g = chainGroup(irr_.start, t0);
+        const std::size_t chains = g.chains;
+        const int *at = g.at, *end = g.end, common = g.common;
         Float4 sum[kChains] = {};
-        int at[kChains], end[kChains];
-        int common = std::numeric_limits<int>::max();
-        for (std::size_t c = 0; c < kChains; ++c) {
-            // Past the last texel a chain repeats the first (its sum is not written).
-            const std::size_t t = t0 + (c < chains ? c : 0);
-            at[c] = irr_.start[t];
-            end[c] = irr_.start[t + 1];
-            common = std::min(common, end[c] - at[c]);
-        }
         for (int k = 0; k < common; ++k)
             for (std::size_t c = 0; c < kChains; ++c)
                 sum[c] += term(at[c] + k);
@@ -112,15 +128,9 @@ void ProbeConvolution::irradianceLumaVariance(const float* rgbx, float* out) con
     // kChains texels side by side, as irradiance(): per texel the scalar sums in their order.
     const std::size_t texels = irr_.start.size() - 1;
     for (std::size_t t0 = 0; t0 < texels; t0 += kChains) {
-        const std::size_t chains = std::min(kChains, texels - t0);
-        int at[kChains], end[kChains];
-        int common = std::numeric_limits<int>::max();
-        for (std::size_t c = 0; c < kChains; ++c) {
-            const std::size_t t = t0 + (c < chains ? c : 0);
-            at[c] = irr_.start[t];
-            end[c] = irr_.start[t + 1];
-            common = std::min(common, end[c] - at[c]);
-        }
+        const ChainGroup g = chainGroup(irr_.start, t0);
+        const std::size_t chains = g.chains;
+        const int *at = g.at, *end = g.end, common = g.common;
         float e[kChains] = {}, v[kChains] = {}, mu[kChains] = {};
         for (int k = 0; k < common; ++k)
             for (std::size_t c = 0; c < kChains; ++c)
