@@ -110,6 +110,8 @@ public:
         __builtin_prefetch(p + sizeof(Entry) - 1); // the same line when the array is aligned
     }
     LitPatchSample sampleEntry(std::size_t k, float u1, float u2) const;
+    // Entry k's triangle and side (k < size()): what LitPatchSample leaves out, for checks
+    // and diagnostics; the bake never reads it.
     LitPatchSide side(std::size_t k) const { return sides_[k]; }
 
 private:
