@@ -145,6 +145,10 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
     for (std::size_t i = 0; i < n; ++i) {
         rayDirs[i] = rot * dirs[i];
         rs.intersect(origin, rayDirs[i], hits[i]);
+    }
+    // The normals in a loop of their own: between two Embree calls a normal's square root and
+    // division were a dependent chain the next call waited on; here the rays' chains overlap.
+    for (std::size_t i = 0; i < n; ++i) {
         if (!hits[i].hit()) continue;
         normals[i] = rs.hitNormal(hits[i]);
         if (nee.lit) nee.lit->prefetchTriangle(hits[i].geomID, hits[i].primID);
