@@ -204,7 +204,8 @@ int ProbeSampler::selectVolume(const glm::vec3& pos) const {
     return selectVolume(pos, local);
 }
 
-int ProbeSampler::selectVolume(const glm::vec3& pos, glm::vec3& local) const {
+// Inline: the bake's locality keys call it once a shaded hit.
+inline int ProbeSampler::selectVolume(const glm::vec3& pos, glm::vec3& local) const {
     int best = -1;
     float bestVolume = std::numeric_limits<float>::infinity();
     for (size_t i = 0; i < frames_.size(); ++i) {
@@ -221,16 +222,28 @@ int ProbeSampler::selectVolume(const glm::vec3& pos, glm::vec3& local) const {
 }
 
 std::uint32_t ProbeSampler::localityKey(const glm::vec3& pos) const {
-    glm::vec3 p;
-    const int v = selectVolume(pos, p);
-    if (v < 0) return 0;
-    const Frame& f = frames_[size_t(v)];
-    glm::ivec3 base(0);
-    for (int a = 0; a < 3; ++a) // the base probe of sampleVolume's step 3 (int(): as there)
-        if (f.counts[a] > 1)
-            base[a] = int(std::min(std::max((p[a] + f.half[a]) * f.invCell[a], 0.0f),
-                                   float(f.counts[a] - 2)));
-    return f.firstKey + std::uint32_t(f.src.volume->probeIndex(base));
+    std::uint32_t key;
+    localityKeys(&pos, 1, &key);
+    return key;
+}
+
+void ProbeSampler::localityKeys(const glm::vec3* positions, std::size_t count,
+                                std::uint32_t* out) const {
+    for (std::size_t i = 0; i < count; ++i) {
+        glm::vec3 p;
+        const int v = selectVolume(positions[i], p);
+        if (v < 0) {
+            out[i] = 0;
+            continue;
+        }
+        const Frame& f = frames_[size_t(v)];
+        glm::ivec3 base(0);
+        for (int a = 0; a < 3; ++a) // the base probe of sampleVolume's step 3 (int(): as there)
+            if (f.counts[a] > 1)
+                base[a] = int(std::min(std::max((p[a] + f.half[a]) * f.invCell[a], 0.0f),
+                                       float(f.counts[a] - 2)));
+        out[i] = f.firstKey + std::uint32_t(f.src.volume->probeIndex(base));
+    }
 }
 
 IrradianceSample ProbeSampler::sample(const glm::vec3& pos, const glm::vec3& normal,

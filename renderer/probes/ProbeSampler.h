@@ -178,6 +178,9 @@ public:
     // unbiased point in the selected volume): sorting a batch by it makes lookups cache hits.
     // Keys are in [0, localityKeyCount()); 0 = outside every volume.
     std::uint32_t localityKey(const glm::vec3& pos) const;
+    // localityKey of count points into out[0 .. count-1], the same keys, in one call: the bake
+    // asks for a key per shaded hit (two calls a hit were 3% of its own CPU).
+    void localityKeys(const glm::vec3* positions, std::size_t count, std::uint32_t* out) const;
     std::size_t localityKeyCount() const { return keyCount_; }
 
 private:

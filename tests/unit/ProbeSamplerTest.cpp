@@ -352,4 +352,18 @@ TEST(ProbeSampler, LocalityKeysNameTheCellOfThePoint) {
     std::uint32_t inChild = s.localityKey(child.toWorld({0.1f, 0.0f, 0.1f}));
     EXPECT_GT(inChild, std::uint32_t(root.probeCount()));
     EXPECT_LT(inChild, s.localityKeyCount());
+    // The bake asks for a whole probe's keys in one call: each as alone, whatever the point
+    // before it (outside every volume, NaN, another volume's).
+    const std::vector<glm::vec3> points = {rootPoint({3, 2, 4}, {0.1f, 0.2f, 0.3f}),
+                                           {50, 0, 0},
+                                           rootPoint({3, 2, 4}, {0.9f, 0.8f, 0.7f}),
+                                           child.toWorld({0.1f, 0.0f, 0.1f}),
+                                           {NAN, 0, 0},
+                                           rootPoint({2, 2, 4}, {0.5f, 0.5f, 0.5f})};
+    std::vector<std::uint32_t> keys(points.size(), 12345u);
+    s.localityKeys(points.data(), points.size(), keys.data());
+    const std::vector<std::uint32_t> expected = {k, 0u, k, inChild, 0u,
+                                                 s.localityKey(points[5])};
+    EXPECT_EQ(keys, expected);
+    EXPECT_NE(keys[5], k);
 }

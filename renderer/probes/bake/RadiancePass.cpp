@@ -136,6 +136,10 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
     thread_local std::vector<raytrace::RayHit> hitScratch;
     thread_local std::vector<glm::vec3> dirScratch, normalScratch;
     thread_local std::vector<std::int64_t> litSlotScratch;
+    // The queued hits' points, whose locality keys are asked for in one call after the loop.
+    thread_local std::vector<glm::vec3> pointScratch;
+    pointScratch.resize(n);
+    glm::vec3* hitPoints = pointScratch.data();
     hitScratch.resize(n);
     dirScratch.resize(n);
     normalScratch.resize(n);
@@ -199,7 +203,7 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
                 const glm::vec3 x = origin + d * h.t;
                 pending[pendingCount] = {{x, back ? -nrm : nrm, -d}, glm::vec3(0.0f),
                                          surf.albedo * invPi, std::uint32_t(first + i)};
-                keys[pendingCount++] = previous->localityKey(x);
+                hitPoints[pendingCount++] = x;
             }
         } else {
             const raytrace::SurfaceInfo& surf = rs.surface(h.geomID);
@@ -230,7 +234,7 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
                     if (previous) { // finished in convolve(), once lookUp() has E_indirect
                         pending[pendingCount] = {
                             {x, nrm, -d}, e, surf.albedo * invPi, std::uint32_t(first + i)};
-                        keys[pendingCount++] = previous->localityKey(x);
+                        hitPoints[pendingCount++] = x;
                     } else
                         L += surf.albedo * invPi * e;
                 }
@@ -239,6 +243,7 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
         radiance_[first + i] = glm::vec4(L, 0.0f);
     }
     pendingCount_[slot] = pendingCount;
+    if (pendingCount > 0) previous->localityKeys(hitPoints, pendingCount, keys);
     if (ml > 0) traceLitSamples(slot, rs, sc, lights, rot, origin, nee, probeKey, counters);
     if (m == 0) return;
 
