@@ -212,16 +212,15 @@ void initEmbreeRay(RTCRay& r, const glm::vec3& o, const glm::vec3& d, float tnea
     r.flags = 0;
 }
 
-void RayScene::intersect(const glm::vec3& o, const glm::vec3& d, RayHit& out, float tnear,
-                         float tfar) const {
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
+namespace {
+// One ray's closest hit, with the context of the caller.
+inline void intersectOne(RTCScene scene, RTCIntersectContext& ctx, const glm::vec3& o,
+                         const glm::vec3& d, float tnear, float tfar, RayHit& out) {
     RTCRayHit rh;
     initEmbreeRay(rh.ray, o, d, tnear, tfar);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    if (recorder_->on.load(std::memory_order_relaxed)) record({o, d, tnear, tfar, false});
-    rtcIntersect1(scene_, &ctx, &rh);
+    rtcIntersect1(scene, &ctx, &rh);
     out = RayHit{};
     if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
         out.t = rh.ray.tfar;
@@ -230,6 +229,27 @@ void RayScene::intersect(const glm::vec3& o, const glm::vec3& d, RayHit& out, fl
         out.ng = {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
         out.u = rh.hit.u;
         out.v = rh.hit.v;
+    }
+}
+} // namespace
+
+void RayScene::intersect(const glm::vec3& o, const glm::vec3& d, RayHit& out, float tnear,
+                         float tfar) const {
+    RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    if (recorder_->on.load(std::memory_order_relaxed)) record({o, d, tnear, tfar, false});
+    intersectOne(scene_, ctx, o, d, tnear, tfar, out);
+}
+
+void RayScene::intersect(const glm::vec3& o, const glm::vec3* dirs, std::size_t n,
+                         RayHit* out) const {
+    RTCIntersectContext ctx; // Embree leaves it as it found it: one for all the rays
+    rtcInitIntersectContext(&ctx);
+    const float inf = std::numeric_limits<float>::infinity();
+    const bool recording = recorder_->on.load(std::memory_order_relaxed);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (recording) record({o, dirs[i], 0.0f, inf, false});
+        intersectOne(scene_, ctx, o, dirs[i], 0.0f, inf, out[i]);
     }
 }
 

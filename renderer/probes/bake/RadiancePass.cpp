@@ -146,10 +146,9 @@ void RadianceSlab::trace(std::size_t slot, const raytrace::RayScene& rs, const S
     raytrace::RayHit* hits = hitScratch.data();
     glm::vec3* rayDirs = dirScratch.data();
     glm::vec3* normals = normalScratch.data();
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < n; ++i)
         rayDirs[i] = rot * dirs[i];
-        rs.intersect(origin, rayDirs[i], hits[i]);
-    }
+    rs.intersect(origin, rayDirs, n, hits);
     // The normals in a loop of their own: between two Embree calls a normal's square root and
     // division were a dependent chain the next call waited on; here the rays' chains overlap.
     for (std::size_t i = 0; i < n; ++i) {
