@@ -112,3 +112,29 @@ TEST(RaySceneHit, LitPatchFromBarycentricsIsThePatchOfTheHitPoint) {
     // edge (16 patches per wall edge here: ~1e-4 of the hits) may fall on either side.
     EXPECT_LE(differ, 2);
 }
+
+TEST(RaySceneHit, AProbesRaysInOneCallHitWhatEachRayHitsAlone) {
+    const pb::raytrace::RayScene rs(boxAndMirroredBox());
+    const std::vector<glm::vec3> dirs = sphericalFibonacci(200);
+    int hits = 0, misses = 0;
+    // Inside a box (every ray hits) and between the boxes (some rays leave the scene).
+    for (const glm::vec3& o : {glm::vec3(0.1f, -0.05f, 0.02f), glm::vec3(1.5f, 0.1f, 0.05f)}) {
+        std::vector<pb::raytrace::RayHit> fan(dirs.size());
+        rs.intersect(o, dirs.data(), dirs.size(), fan.data());
+        for (std::size_t i = 0; i < dirs.size(); ++i) {
+            const pb::raytrace::RayHit one = rs.intersect(o, dirs[i]);
+            const pb::raytrace::RayHit& h = fan[i];
+            ASSERT_EQ(h.hit(), one.hit()) << "ray " << i;
+            (one.hit() ? hits : misses) += 1;
+            if (!one.hit()) continue;
+            EXPECT_EQ(h.t, one.t);
+            EXPECT_EQ(h.geomID, one.geomID);
+            EXPECT_EQ(h.primID, one.primID);
+            EXPECT_EQ(h.ng, one.ng);
+            EXPECT_EQ(h.u, one.u);
+            EXPECT_EQ(h.v, one.v);
+        }
+    }
+    EXPECT_GT(hits, 200);
+    EXPECT_GT(misses, 10);
+}
