@@ -18,7 +18,7 @@ namespace pb::probes {
 // and the file is built with -ffp-contract=off - so both give the same bits; the AVX2 one runs
 // the 8 corners in one vector. Other architectures build the one version.
 // (Inlining both halves into a cloned sampleBatch, to save the two calls through the ifunc a
-// lookup, made BM_BakeLookups slower: 113 - 145 ns a lookup against 110 - 115.)
+// lookup, made the lookups slower: studies/results/2026-12-04-bake-own-work-4.md.)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
 #define PB_SAMPLER_CLONES __attribute__((target_clones("avx2", "default")))
 #else
@@ -113,6 +113,15 @@ void recordFootprints(CornerFetch& c, glm::vec2 visCoord, glm::vec2 irrCoord) {
                          c.probe.z * kIrradianceTile + irr.y0};
 }
 
+// glm's mat3 * vec3 (the same operations in the same order), always inlined: into the volume's
+// frame, for every lookup and locality key (as glm's call, the lookup's clones passed each vector
+// through memory).
+[[gnu::always_inline]] inline glm::vec3 rotate(const glm::mat3& m, const glm::vec3& v) {
+    return {m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z,
+            m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
+            m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z};
+}
+
 } // namespace
 
 void bilinearFetch(const ProbeTexture& t, float x, float y, int layer, float* out) {
@@ -192,7 +201,7 @@ void ProbeSampler::init(const std::vector<SamplerVolume>& volumes) {
 bool ProbeSampler::influencesPoint(int volume, const glm::vec3& pos) const {
     if (volume < 0 || volume >= int(frames_.size())) return false;
     const Frame& f = frames_[size_t(volume)];
-    return influences(f, f.toLocal * (pos - f.center));
+    return influences(f, rotate(f.toLocal, pos - f.center));
 }
 
 bool ProbeSampler::influences(const Frame& f, const glm::vec3& p) const {
@@ -213,7 +222,7 @@ inline int ProbeSampler::selectVolume(const glm::vec3& pos, glm::vec3& local) co
     for (size_t i = 0; i < frames_.size(); ++i) {
         const Frame& f = frames_[i];
         if (!(f.boxVolume < bestVolume)) continue;
-        const glm::vec3 p = f.toLocal * (pos - f.center);
+        const glm::vec3 p = rotate(f.toLocal, pos - f.center);
         if (influences(f, p)) {
             best = int(i);
             bestVolume = f.boxVolume;
@@ -259,18 +268,13 @@ namespace {
 bool finite3(const glm::vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
-// glm's length, division and mat3 * vec3, spelled out (the same operations in the same order)
-// and always inlined: the lookup's clones called them, passing every vector through memory.
+// glm's length and division, spelled out (the same operations in the same order) and always
+// inlined: the lookup's clones called them, passing every vector through memory.
 [[gnu::always_inline]] inline glm::vec3 safeNormalize(const glm::vec3& v,
                                                       const glm::vec3& fallback) {
     const float len = std::sqrt(v.x * v.x + v.y * v.y + v.z * v.z);
     return len > 0.0f && std::isfinite(len) ? glm::vec3(v.x / len, v.y / len, v.z / len)
                                             : fallback;
-}
-[[gnu::always_inline]] inline glm::vec3 rotate(const glm::mat3& m, const glm::vec3& v) {
-    return {m[0][0] * v.x + m[1][0] * v.y + m[2][0] * v.z,
-            m[0][1] * v.x + m[1][1] * v.y + m[2][1] * v.z,
-            m[0][2] * v.x + m[1][2] * v.y + m[2][2] * v.z};
 }
 
 } // namespace
