@@ -16,7 +16,8 @@ namespace pb::probes {
 // The lookup's two halves exist twice, for the baseline x86-64 and for AVX2 (chosen once by the
 // loader, ifunc). The same IEEE operations in the same order either way - AVX2 without FMA,
 // and the file is built with -ffp-contract=off - so both give the same bits; the AVX2 one runs
-// the 8 corners in one vector. Other architectures build the one version.
+// the 8 corners in one vector (and a pair of lookups' 16 corners in two: preparePair,
+// finishPair). Other architectures build the one version.
 // (Inlining both halves into a cloned sampleBatch, to save the two calls through the ifunc a
 // lookup, made the lookups slower: studies/results/2026-12-04-bake-own-work-4.md.)
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
@@ -36,6 +37,21 @@ typedef float Float8 __attribute__((vector_size(32)));
 typedef int Int8 __attribute__((vector_size(32)));
 inline Float4 splat(float x) {
     return Float4{x, x, x, x};
+}
+// A lookup's 8 corners into 8 lanes of a wider array, as one vector store each (8 scalar
+// stores read back as one vector stall on store forwarding). Pointers in and out: a function
+// taking or returning an 8-float vector would have two ABIs, with and without AVX.
+[[gnu::always_inline]] inline void minus8(float* out, const float* a, float b) {
+    for (int i = 0; i < 8; ++i)
+        out[i] = a[i] - b;
+}
+[[gnu::always_inline]] inline void minus8(float* out, float a, const float* b) {
+    for (int i = 0; i < 8; ++i)
+        out[i] = a - b[i];
+}
+[[gnu::always_inline]] inline void splat8(float* out, float x) {
+    for (int i = 0; i < 8; ++i)
+        out[i] = x;
 }
 // load4 of an irradiance texel's RGB reads one float past it: the tile arrays keep that much
 // padding after the last tile.
@@ -332,6 +348,7 @@ struct ProbeSampler::Lookup {
     const Frame* frame = nullptr;
     const Cell* cell = nullptr;
     glm::vec3 p, n, alpha;
+    glm::vec3 biased; // p moved off the surface (step 3): the point the corners see
     glm::vec2 irrCoord;
     float fade = 0.0f;
     // The behind-surface fade (kBehindRampCells): 1 / width (world units) and floor; 0 and 0
@@ -366,17 +383,34 @@ int ProbeSampler::volumeOfKey(std::uint32_t key) const {
 
 void ProbeSampler::sampleBatch(const SampleQuery* q, std::size_t count, IrradianceSample* out,
                                SampleOptions opt, const std::uint32_t* keys) const {
-    // Query i is prepared (addresses computed, tiles prefetched) kAhead queries before it is
-    // finished, so its cache misses overlap the arithmetic of the queries in between.
+    // Queries are prepared (addresses computed, tiles prefetched) kAhead queries before they
+    // are finished, so that their cache misses overlap the arithmetic of the queries in
+    // between; and two at a time (preparePair, finishPair), so that two lookups' dependency
+    // chains overlap: one at a time, a lookup waited on its own square roots and divisions.
+    static_assert(kAhead % 2 == 0, "a pair's two lookups take two neighbouring ring slots");
     Lookup ring[kAhead];
     CellCache cells;
-    for (std::size_t i = 0; i < count + kAhead; ++i) {
-        Lookup& slot = ring[i % kAhead];
-        if (i >= kAhead) out[i - kAhead] = finish(slot);
-        if (i < count) {
-            const int volume = keys ? volumeOfKey(keys[i]) : selectVolume(q[i].pos);
-            prepare(volume, q[i].pos, q[i].normal, q[i].view, opt, slot, cells);
+    auto volumeOf = [&](std::size_t i) {
+        return keys ? volumeOfKey(keys[i]) : selectVolume(q[i].pos);
+    };
+    for (std::size_t i = 0; i < count + kAhead; i += 2) {
+        if (i >= kAhead) { // finish lookups j and j + 1
+            const std::size_t j = i - kAhead;
+            const Lookup& a = ring[j % kAhead];
+            if (j + 1 < count) {
+                const Lookup& b = ring[(j + 1) % kAhead];
+                if (!a.done && !b.done)
+                    finishPair(a, b, out + j);
+                else
+                    out[j] = finish(a), out[j + 1] = finish(b);
+            } else if (j < count)
+                out[j] = finish(a);
         }
+        if (i + 1 < count) { // prepare lookups i and i + 1
+            const int volumes[2] = {volumeOf(i), volumeOf(i + 1)};
+            preparePair(volumes, q + i, opt, ring[i % kAhead], ring[(i + 1) % kAhead], cells);
+        } else if (i < count)
+            prepare(volumeOf(i), q[i].pos, q[i].normal, q[i].view, opt, ring[i % kAhead], cells);
     }
 }
 
@@ -429,15 +463,103 @@ PB_SAMPLER_CLONES void ProbeSampler::buildCell(const Frame& f, int volume, const
     }
 }
 
-PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const glm::vec3& normal,
-                                             const glm::vec3& view, SampleOptions opt, Lookup& k,
-                                             CellCache& cells, SampleTrace* trace) const {
+namespace {
+
+// Prepare's per-corner step: toPoint = (tx, ty, tz) = biased - probe, dist = |toPoint|, dir =
+// toPoint / dist (n if 0), visibility coordinate = octInteriorCoord(dir, 14) + 1
+// (Octahedral.h, spelled out). Branch-free, so that a loop over corners vectorises.
+[[gnu::always_inline]] inline void cornerVisCoord(float tx, float ty, float tz, float nx, float ny,
+                                                  float nz, float& dist, float& vx, float& vy) {
+    const float interior = float(kVisibilityInterior);
+    const float d = std::sqrt(tx * tx + ty * ty + tz * tz);
+    dist = d;
+    const bool some = d > 0.0f;
+    // Divide unconditionally, then select: a conditional division would not vectorise.
+    const float ux = tx / d, uy = ty / d, uz = tz / d;
+    const float dx = some ? ux : nx, dy = some ? uy : ny, dz = some ? uz : nz;
+    const float l1 = std::abs(dx) + std::abs(dy) + std::abs(dz);
+    const float u = dx / l1, v = dz / l1;
+    const float fu = (1.0f - std::abs(v)) * (u >= 0.0f ? 1.0f : -1.0f);
+    const float fv = (1.0f - std::abs(u)) * (v >= 0.0f ? 1.0f : -1.0f);
+    const bool lower = dy < 0.0f;
+    vx = ((lower ? fu : u) * 0.5f + 0.5f) * interior + 1.0f;
+    vy = ((lower ? fv : v) * 0.5f + 0.5f) * interior + 1.0f;
+}
+
+// tileFootprint() of a visibility fetch at (vx, vy), the same operations: the bilinear
+// fractions and the float offset of its top-left texel in the tile.
+[[gnu::always_inline]] inline void visFootprint(float vx, float vy, float& fx, float& fy,
+                                                int& offset) {
+    const float a = vx - 0.5f, b = vy - 0.5f;
+    int x0 = int(a), y0 = int(b);
+    x0 = float(x0) > a ? x0 - 1 : x0;
+    y0 = float(y0) > b ? y0 - 1 : y0;
+    fx = a - float(x0);
+    fy = b - float(y0);
+    x0 = std::min(std::max(x0, 0), kVisibilityTile - 2);
+    y0 = std::min(std::max(y0, 0), kVisibilityTile - 2);
+    offset = (y0 * kVisibilityTile + x0) * 2;
+}
+
+// One corner's weight, finish's steps 4a - 4d: (qx, qy, qz) = probe - point, n the unit
+// normal, dist = |biased - probe|, (mean, meanSq) its visibility texel, visMask 0 for an
+// irradiance-only corner, the behind-surface fade (kBehindRampCells: 0, 0 is off) and the
+// trilinear factors. Written without branches (`&` on conditions, selects) so that a loop
+// over corners runs as vectors: with `&&` it stayed scalar, and its divisions and square
+// root were a third of a lookup.
+[[gnu::always_inline]] inline float cornerWeight(float qx, float qy, float qz, float nx, float ny,
+                                                 float nz, float dist, float invMaxDistance,
+                                                 float mean, float meanSq, int visMask,
+                                                 float behindInvWidth, float behindFloor,
+                                                 float triX, float triY, float triZ) {
+    // 4a. Wrap shading: probes behind the surface count less (never zero). dirToProbe =
+    //     normalize(probe - p), n when that has no length.
+    const float len = std::sqrt(qx * qx + qy * qy + qz * qz);
+    const bool some = (len > 0.0f) & (len <= std::numeric_limits<float>::max());
+    const float ux = qx / len, uy = qy / len, uz = qz / len;
+    const float dx = some ? ux : nx, dy = some ? uy : ny, dz = some ? uz : nz;
+    const float t = (dx * nx + dy * ny + dz * nz + 1.0f) * 0.5f;
+    float w = t * t + kWrapBias;
+
+    // 4b. Chebyshev visibility from the probe towards the biased point.
+    const float d01 = dist * invMaxDistance;
+    const float variance = std::max(meanSq - mean * mean, kVarianceFloor);
+    const float dd = d01 - mean;
+    const float cheb = variance / (variance + dd * dd);
+    const float chebW = std::max(cheb * cheb * cheb, kChebyshevFloor);
+    // An irradiance-only corner has no visibility: only free cells read it (ProbeState).
+    w = (d01 > mean) & (visMask != 0) ? w * chebW : w;
+
+    // 4c. Crush tiny weights (keeps a faint leak from dominating once normalised).
+    const float crushed = w * ((w * w) / (kCrushThreshold * kCrushThreshold));
+    w = w < kCrushThreshold ? crushed : w;
+
+    // 4c'. Rendered points: probes behind the surface's plane fade out over
+    //      kBehindRampCells (the height is finite: `len` 0 gives 0).
+    const float height = qx * nx + qy * ny + qz * nz;
+    const float ramp = std::min(std::max(1.0f + height * behindInvWidth, 0.0f), 1.0f);
+    w *= std::max(ramp, behindFloor);
+
+    // 4d. Trilinear.
+    const float tri = triX * triY * triZ;
+    return w * std::max(tri, kMinTrilinear);
+}
+
+} // namespace
+
+// Steps 1 - 3 and the cell of one lookup; false when it ends there (k.done, k.out final).
+[[gnu::always_inline]] inline bool ProbeSampler::prepareHead(int vi, const glm::vec3& pos,
+                                                             const glm::vec3& normal,
+                                                             const glm::vec3& view,
+                                                             SampleOptions opt, Lookup& k,
+                                                             CellCache& cells,
+                                                             SampleTrace* trace) const {
     k.out = {};
     k.done = true;
     if (trace) *trace = SampleTrace{};
-    if (vi < 0 || vi >= int(frames_.size())) return;
+    if (vi < 0 || vi >= int(frames_.size())) return false;
     const Frame& f = frames_[size_t(vi)];
-    if (!finite3(pos) || !finite3(normal) || !finite3(view)) return;
+    if (!finite3(pos) || !finite3(normal) || !finite3(view)) return false;
     k.out.volume = vi;
 
     // 1. Everything in the volume's local frame (rotation keeps lengths and dot products).
@@ -455,7 +577,7 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
                         : 0.0f;
     }
     if (!opt.edgeFade) fade = fade > 0.0f ? 1.0f : 0.0f;
-    if (fade <= 0.0f) return;
+    if (fade <= 0.0f) return false;
 
     // 3. Surface bias, base probe (unbiased point) and trilinear fractions (biased point).
     const glm::vec3 biased =
@@ -482,9 +604,8 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
         alpha[a] = std::min(std::max(gb, 0.0f), 1.0f);
     }
 
-    // 4. The 8 surrounding probes: their positions and texel addresses (the cell's, built
-    //    once per run of lookups in it), prefetching the tiles (the loads are the cost of a
-    //    lookup); finish() weights them in corner order.
+    // 4. The 8 surrounding probes (the cell's, built once per run of lookups in it);
+    //    prepareCorners computes their texel addresses.
     k.irrCoord = octInteriorCoord(n, kIrradianceInterior) + 1.0f;
     const Cell& c = cells.get(*this, f, vi, base);
     k.cell = &c;
@@ -495,164 +616,238 @@ PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const
             trace->corners[corner].inGrid = true;
             trace->corners[corner].valid = c.valid[corner];
         }
-    // Per corner: toPoint = biased - probe, dist = |toPoint|, dir = toPoint / dist (n if 0),
-    // visibility coordinate = octInteriorCoord(dir, 14) + 1 (Octahedral.h, spelled out).
-    const float interior = float(kVisibilityInterior);
-    for (int i = 0; i < 8; ++i) {
-        const float tx = biased.x - c.px[i], ty = biased.y - c.py[i], tz = biased.z - c.pz[i];
-        const float d = std::sqrt(tx * tx + ty * ty + tz * tz);
-        k.dist[i] = d;
-        const bool some = d > 0.0f;
-        // Divide unconditionally, then select: a conditional division would not vectorise.
-        const float ux = tx / d, uy = ty / d, uz = tz / d;
-        const float dx = some ? ux : n.x, dy = some ? uy : n.y, dz = some ? uz : n.z;
-        const float l1 = std::abs(dx) + std::abs(dy) + std::abs(dz);
-        const float u = dx / l1, v = dz / l1;
-        const float fu = (1.0f - std::abs(v)) * (u >= 0.0f ? 1.0f : -1.0f);
-        const float fv = (1.0f - std::abs(u)) * (v >= 0.0f ? 1.0f : -1.0f);
-        const bool lower = dy < 0.0f;
-        k.vx[i] = ((lower ? fu : u) * 0.5f + 0.5f) * interior + 1.0f;
-        k.vy[i] = ((lower ? fv : v) * 0.5f + 0.5f) * interior + 1.0f;
-    }
-    // tileFootprint() of the 8 visibility fetches (a SIMD loop: the same operations), and
-    // of the irradiance fetch once (its coordinate is the same in every corner's tile).
-    for (int i = 0; i < 8; ++i) {
-        const float a = k.vx[i] - 0.5f, b = k.vy[i] - 0.5f;
-        int x0 = int(a), y0 = int(b);
-        x0 = float(x0) > a ? x0 - 1 : x0;
-        y0 = float(y0) > b ? y0 - 1 : y0;
-        k.visFx[i] = a - float(x0);
-        k.visFy[i] = b - float(y0);
-        x0 = std::min(std::max(x0, 0), kVisibilityTile - 2);
-        y0 = std::min(std::max(y0, 0), kVisibilityTile - 2);
-        k.visOffset[i] = (y0 * kVisibilityTile + x0) * 2;
-    }
-    k.irrFoot = tileFootprint(k.irrCoord.x, k.irrCoord.y, kIrradianceTile);
-    const int irrOffset = (k.irrFoot.y0 * kIrradianceTile + k.irrFoot.x0) * 3;
-    for (int i = 0; i < 8; ++i) {
-        if (!c.live[i]) continue;
-        const float* v = c.visTile[i] + k.visOffset[i];
-        __builtin_prefetch(v);
-        __builtin_prefetch(v + kVisibilityTile * 2);
-        __builtin_prefetch(c.irrTile[i] + irrOffset);
-        __builtin_prefetch(c.irrTile[i] + irrOffset + kIrradianceTile * 3);
-        if (trace) recordFootprints(trace->corners[i], {k.vx[i], k.vy[i]}, k.irrCoord);
-    }
-    if (trace) trace->probesRead = true;
     k.frame = &f;
     k.p = p;
     k.n = n;
+    k.biased = biased;
     k.alpha = alpha;
     k.fade = fade;
     const bool rendered = opt.surfaceBias && !opt.bakeBias && opt.behindFade;
     k.behindInvWidth = rendered ? 1.0f / (kBehindRampCells * f.minCell) : 0.0f;
     k.behindFloor = rendered ? kBehindFloor : 0.0f;
     k.done = false;
+    return true;
+}
+
+// Step 4 of L prepared heads: the corners' visibility coordinates and the texel addresses,
+// prefetching the tiles (the loads are the cost of a lookup); finish() weights them in
+// corner order. One lookup computes straight into its arrays; two run their 16 corners as
+// one loop, so that their dependency chains overlap.
+template <int L>
+[[gnu::always_inline]] inline void ProbeSampler::prepareCorners(Lookup* const* ks,
+                                                                SampleTrace* trace) const {
+    constexpr int N = 8 * L;
+    alignas(32) float vx[N], vy[N];
+    if constexpr (L == 1) {
+        Lookup& k = *ks[0];
+        const Cell& c = *k.cell;
+        for (int i = 0; i < 8; ++i)
+            cornerVisCoord(k.biased.x - c.px[i], k.biased.y - c.py[i], k.biased.z - c.pz[i],
+                           k.n.x, k.n.y, k.n.z, k.dist[i], vx[i], vy[i]);
+        for (int i = 0; i < 8; ++i)
+            visFootprint(vx[i], vy[i], k.visFx[i], k.visFy[i], k.visOffset[i]);
+    } else {
+        alignas(32) float bx[N], by[N], bz[N], nx[N], ny[N], nz[N], dist[N];
+        for (int l = 0; l < L; ++l) {
+            const Lookup& k = *ks[l];
+            const Cell& c = *k.cell;
+            const int j = 8 * l;
+            minus8(bx + j, k.biased.x, c.px);
+            minus8(by + j, k.biased.y, c.py);
+            minus8(bz + j, k.biased.z, c.pz);
+            splat8(nx + j, k.n.x);
+            splat8(ny + j, k.n.y);
+            splat8(nz + j, k.n.z);
+        }
+        for (int i = 0; i < N; ++i)
+            cornerVisCoord(bx[i], by[i], bz[i], nx[i], ny[i], nz[i], dist[i], vx[i], vy[i]);
+        alignas(32) float visFx[N], visFy[N];
+        alignas(32) int visOffset[N];
+        for (int i = 0; i < N; ++i)
+            visFootprint(vx[i], vy[i], visFx[i], visFy[i], visOffset[i]);
+        for (int l = 0; l < L; ++l) {
+            Lookup& k = *ks[l];
+            std::memcpy(k.dist, dist + 8 * l, sizeof(k.dist));
+            std::memcpy(k.visFx, visFx + 8 * l, sizeof(k.visFx));
+            std::memcpy(k.visFy, visFy + 8 * l, sizeof(k.visFy));
+            std::memcpy(k.visOffset, visOffset + 8 * l, sizeof(k.visOffset));
+        }
+    }
+    // The irradiance fetch's footprint once a lookup (its coordinate is the same in every
+    // corner's tile), then the prefetches.
+    for (int l = 0; l < L; ++l) {
+        Lookup& k = *ks[l];
+        const Cell& c = *k.cell;
+        k.irrFoot = tileFootprint(k.irrCoord.x, k.irrCoord.y, kIrradianceTile);
+        const int irrOffset = (k.irrFoot.y0 * kIrradianceTile + k.irrFoot.x0) * 3;
+        for (int i = 0; i < 8; ++i) {
+            if (!c.live[i]) continue;
+            const float* v = c.visTile[i] + k.visOffset[i];
+            __builtin_prefetch(v);
+            __builtin_prefetch(v + kVisibilityTile * 2);
+            __builtin_prefetch(c.irrTile[i] + irrOffset);
+            __builtin_prefetch(c.irrTile[i] + irrOffset + kIrradianceTile * 3);
+            if (trace) recordFootprints(trace->corners[i], {vx[i], vy[i]}, k.irrCoord);
+        }
+    }
+    if (trace) trace->probesRead = true;
+}
+
+PB_SAMPLER_CLONES void ProbeSampler::prepare(int vi, const glm::vec3& pos, const glm::vec3& normal,
+                                             const glm::vec3& view, SampleOptions opt, Lookup& k,
+                                             CellCache& cells, SampleTrace* trace) const {
+    if (!prepareHead(vi, pos, normal, view, opt, k, cells, trace)) return;
+    Lookup* ks[1] = {&k};
+    prepareCorners<1>(ks, trace);
+}
+
+PB_SAMPLER_CLONES void ProbeSampler::preparePair(const int* vi, const SampleQuery* q,
+                                                 SampleOptions opt, Lookup& a, Lookup& b,
+                                                 CellCache& cells) const {
+    const bool liveA = prepareHead(vi[0], q[0].pos, q[0].normal, q[0].view, opt, a, cells, nullptr);
+    const bool liveB = prepareHead(vi[1], q[1].pos, q[1].normal, q[1].view, opt, b, cells, nullptr);
+    Lookup* ks[2] = {&a, &b};
+    if (liveA && liveB)
+        prepareCorners<2>(ks, nullptr);
+    else if (liveA || liveB)
+        prepareCorners<1>(ks + (liveA ? 0 : 1), nullptr);
+}
+
+// finish of L lookups (none done), always inlined into finish and finishPair: one lookup
+// weights its corners straight from its cell, two as one 16-lane loop (as prepareCorners).
+template <int L>
+[[gnu::always_inline]] inline void ProbeSampler::finishLanes(const Lookup* const* ks,
+                                                             IrradianceSample* outs) const {
+    constexpr int N = 8 * L;
+    // The texel fetches: GL_LINEAR inside the tile (TileFootprint), lane by lane on 4-float
+    // vectors: top/bottom row lerps along x, then along y (each lane computes exactly the
+    // scalar expression, so the bits are the same).
+    alignas(32) float mean[N], meanSq[N];
+    Float4 irr[N];
+    for (int l = 0; l < L; ++l) {
+        const Lookup& k = *ks[l];
+        const Cell& c = *k.cell;
+        const int irrOffset = (k.irrFoot.y0 * kIrradianceTile + k.irrFoot.x0) * 3;
+        const Float4 irrFx = splat(k.irrFoot.fx), irrFy = splat(k.irrFoot.fy);
+        for (int i = 0; i < 8; ++i) {
+            // Visibility: a row of the 2x2 footprint is 4 floats (mean, meanSq of x0, x0 + 1).
+            const float* v = c.visTile[i] + k.visOffset[i];
+            const Float4 r0 = load4(v), r1 = load4(v + kVisibilityTile * 2);
+            const Float4 left = __builtin_shufflevector(r0, r1, 0, 1, 4, 5);  // x0: top, bottom
+            const Float4 right = __builtin_shufflevector(r0, r1, 2, 3, 6, 7); // x0 + 1
+            const Float4 rows = left + (right - left) * splat(k.visFx[i]);    // top, bottom
+            const Float4 bottom = __builtin_shufflevector(rows, rows, 2, 3, 2, 3);
+            const Float4 vis = rows + (bottom - rows) * splat(k.visFy[i]);
+            mean[8 * l + i] = vis[0];
+            meanSq[8 * l + i] = vis[1];
+            // Irradiance: RGB of x0 at t, of x0 + 1 at t + 3 (lane 3 is a neighbour's, unused).
+            const float* t = c.irrTile[i] + irrOffset;
+            const Float4 t00 = load4(t), t10 = load4(t + 3);
+            const Float4 t01 = load4(t + kIrradianceTile * 3),
+                         t11 = load4(t + kIrradianceTile * 3 + 3);
+            const Float4 top = t00 + (t10 - t00) * irrFx;
+            const Float4 bot = t01 + (t11 - t01) * irrFx;
+            irr[8 * l + i] = top + (bot - top) * irrFy;
+        }
+    }
+
+    // The weights (cornerWeight), corner = x + 2y + 4z for the trilinear factors.
+    alignas(32) float weight[N];
+    auto trilinear = [](const Lookup& k, float* tx, float* ty, float* tz) {
+        const float ax0 = 1.0f - k.alpha.x, ax1 = k.alpha.x, ay0 = 1.0f - k.alpha.y,
+                    ay1 = k.alpha.y, az0 = 1.0f - k.alpha.z, az1 = k.alpha.z;
+        // Built in registers and stored whole (8 scalar stores read back as one vector
+        // would stall on store forwarding).
+        const Float8 x = {ax0, ax1, ax0, ax1, ax0, ax1, ax0, ax1};
+        const Float8 y = {ay0, ay0, ay1, ay1, ay0, ay0, ay1, ay1};
+        const Float8 z = {az0, az0, az0, az0, az1, az1, az1, az1};
+        std::memcpy(tx, &x, sizeof(x));
+        std::memcpy(ty, &y, sizeof(y));
+        std::memcpy(tz, &z, sizeof(z));
+    };
+    if constexpr (L == 1) {
+        const Lookup& k = *ks[0];
+        const Cell& c = *k.cell;
+        const glm::vec3 &p = k.p, &n = k.n;
+        const float invMax = k.frame->invMaxDistance;
+        alignas(32) float triX[8], triY[8], triZ[8];
+        trilinear(k, triX, triY, triZ);
+        for (int i = 0; i < 8; ++i)
+            weight[i] = cornerWeight(c.px[i] - p.x, c.py[i] - p.y, c.pz[i] - p.z, n.x, n.y, n.z,
+                                     k.dist[i], invMax, mean[i], meanSq[i], c.visMask[i],
+                                     k.behindInvWidth, k.behindFloor, triX[i], triY[i], triZ[i]);
+    } else {
+        // Per corner what the weights read: the probe relative to the point, and the
+        // lookup's normal and constants repeated in its 8 lanes.
+        alignas(32) float qx[N], qy[N], qz[N], nx[N], ny[N], nz[N], dist[N], invMax[N];
+        alignas(32) float behindInv[N], behindFloor[N], triX[N], triY[N], triZ[N];
+        alignas(32) int visMask[N];
+        for (int l = 0; l < L; ++l) {
+            const Lookup& k = *ks[l];
+            const Cell& c = *k.cell;
+            const int j = 8 * l;
+            minus8(qx + j, c.px, k.p.x);
+            minus8(qy + j, c.py, k.p.y);
+            minus8(qz + j, c.pz, k.p.z);
+            splat8(nx + j, k.n.x);
+            splat8(ny + j, k.n.y);
+            splat8(nz + j, k.n.z);
+            std::memcpy(dist + j, k.dist, sizeof(k.dist));
+            splat8(invMax + j, k.frame->invMaxDistance);
+            splat8(behindInv + j, k.behindInvWidth);
+            splat8(behindFloor + j, k.behindFloor);
+            trilinear(k, triX + j, triY + j, triZ + j);
+            std::memcpy(visMask + j, c.visMask, sizeof(c.visMask));
+        }
+        for (int i = 0; i < N; ++i)
+            weight[i] = cornerWeight(qx[i], qy[i], qz[i], nx[i], ny[i], nz[i], dist[i],
+                                     invMax[i], mean[i], meanSq[i], visMask[i], behindInv[i],
+                                     behindFloor[i], triX[i], triY[i], triZ[i]);
+    }
+
+    for (int l = 0; l < L; ++l) {
+        const Lookup& k = *ks[l];
+        const Cell& c = *k.cell;
+        IrradianceSample& out = outs[l];
+        out = k.out;
+        // 4e. Sum in corner order (the order fixes the rounding; per lane as glm's vec3 math).
+        Float4 sum4 = splat(0.0f);
+        float sumW = 0.0f;
+        for (int i = 0; i < 8; ++i) {
+            if (!c.live[i]) continue;
+            const float w = weight[8 * l + i];
+            sum4 += splat(w) * irr[8 * l + i];
+            sumW += w;
+            ++out.probes;
+            out.filled += c.filled[i] ? 1 : 0;
+            out.irradianceOnly += c.ownVis[i] ? 0 : 1;
+        }
+        const glm::vec3 sumE(sum4[0], sum4[1], sum4[2]);
+
+        // 5. Normalise, then apply the fade.
+        if (!(sumW > 0.0f)) {
+            out.probes = 0;
+            out.filled = 0;
+            out.irradianceOnly = 0;
+            continue;
+        }
+        out.irradiance = sumE / sumW * k.fade;
+        out.weight = k.fade;
+    }
 }
 
 PB_SAMPLER_CLONES IrradianceSample ProbeSampler::finish(const Lookup& k) const {
     if (k.done) return k.out;
-    IrradianceSample out = k.out;
-    const Frame& f = *k.frame;
-    const Cell& c = *k.cell;
-    const glm::vec3 &p = k.p, &n = k.n, &alpha = k.alpha;
-
-    // The texel fetches: GL_LINEAR inside the tile (TileFootprint), lane by lane on 4-float
-    // vectors: top/bottom row lerps along x, then along y (each lane
-    // computes exactly the scalar expression, so the bits are the same).
-    alignas(16) float mean[8], meanSq[8];
-    Float4 irr[8];
-    const int irrOffset = (k.irrFoot.y0 * kIrradianceTile + k.irrFoot.x0) * 3;
-    const Float4 irrFx = splat(k.irrFoot.fx), irrFy = splat(k.irrFoot.fy);
-    for (int i = 0; i < 8; ++i) {
-        // Visibility: a row of the 2x2 footprint is 4 floats (mean, meanSq of x0 and x0+1).
-        const float* v = c.visTile[i] + k.visOffset[i];
-        const Float4 r0 = load4(v), r1 = load4(v + kVisibilityTile * 2);
-        const Float4 left = __builtin_shufflevector(r0, r1, 0, 1, 4, 5);  // x0: top, bottom
-        const Float4 right = __builtin_shufflevector(r0, r1, 2, 3, 6, 7); // x0 + 1
-        const Float4 rows = left + (right - left) * splat(k.visFx[i]);    // top, bottom
-        const Float4 bottom = __builtin_shufflevector(rows, rows, 2, 3, 2, 3);
-        const Float4 vis = rows + (bottom - rows) * splat(k.visFy[i]);
-        mean[i] = vis[0];
-        meanSq[i] = vis[1];
-        // Irradiance: RGB of x0 at t, of x0 + 1 at t + 3 (lane 3 is a neighbour's, unused).
-        const float* t = c.irrTile[i] + irrOffset;
-        const Float4 t00 = load4(t), t10 = load4(t + 3);
-        const Float4 t01 = load4(t + kIrradianceTile * 3), t11 = load4(t + kIrradianceTile * 3 + 3);
-        const Float4 top = t00 + (t10 - t00) * irrFx;
-        const Float4 bot = t01 + (t11 - t01) * irrFx;
-        irr[i] = top + (bot - top) * irrFy;
-    }
-
-    // The weights, per corner. Written without branches (`&` on conditions, selects, the
-    // trilinear factors from arrays) so the compiler runs the 8 corners as one vector: with
-    // `&&` and `i & 1 ? :` it kept the loop scalar, and its divisions and square root were a
-    // third of a lookup.
-    const float ax[2] = {1.0f - alpha.x, alpha.x}, ay[2] = {1.0f - alpha.y, alpha.y},
-                az[2] = {1.0f - alpha.z, alpha.z};
-    alignas(32) const float triX[8] = {ax[0], ax[1], ax[0], ax[1], ax[0], ax[1], ax[0], ax[1]};
-    alignas(32) const float triY[8] = {ay[0], ay[0], ay[1], ay[1], ay[0], ay[0], ay[1], ay[1]};
-    alignas(32) const float triZ[8] = {az[0], az[0], az[0], az[0], az[1], az[1], az[1], az[1]};
-    alignas(32) float weight[8];
-    for (int i = 0; i < 8; ++i) {
-        // 4a. Wrap shading: probes behind the surface count less (never zero). dirToProbe =
-        //     normalize(probe - p), n when that has no length.
-        const float qx = c.px[i] - p.x, qy = c.py[i] - p.y, qz = c.pz[i] - p.z;
-        const float len = std::sqrt(qx * qx + qy * qy + qz * qz);
-        const bool some = (len > 0.0f) & (len <= std::numeric_limits<float>::max());
-        const float ux = qx / len, uy = qy / len, uz = qz / len;
-        const float dx = some ? ux : n.x, dy = some ? uy : n.y, dz = some ? uz : n.z;
-        const float t = (dx * n.x + dy * n.y + dz * n.z + 1.0f) * 0.5f;
-        float w = t * t + kWrapBias;
-
-        // 4b. Chebyshev visibility from the probe towards the biased point.
-        const float d01 = k.dist[i] * f.invMaxDistance;
-        const float variance = std::max(meanSq[i] - mean[i] * mean[i], kVarianceFloor);
-        const float dd = d01 - mean[i];
-        const float cheb = variance / (variance + dd * dd);
-        const float chebW = std::max(cheb * cheb * cheb, kChebyshevFloor);
-        // An irradiance-only corner has no visibility: only free cells read it (ProbeState).
-        w = (d01 > mean[i]) & (c.visMask[i] != 0) ? w * chebW : w;
-
-        // 4c. Crush tiny weights (keeps a faint leak from dominating once normalised).
-        const float crushed = w * ((w * w) / (kCrushThreshold * kCrushThreshold));
-        w = w < kCrushThreshold ? crushed : w;
-
-        // 4c'. Rendered points: probes behind the surface's plane fade out over
-        //      kBehindRampCells (the height is finite: `len` 0 gives 0).
-        const float height = qx * n.x + qy * n.y + qz * n.z;
-        const float ramp = std::min(std::max(1.0f + height * k.behindInvWidth, 0.0f), 1.0f);
-        w *= std::max(ramp, k.behindFloor);
-
-        // 4d. Trilinear.
-        const float tri = triX[i] * triY[i] * triZ[i];
-        weight[i] = w * std::max(tri, kMinTrilinear);
-    }
-
-    // 4e. Sum in corner order (the order fixes the rounding; per lane as glm's vec3 math).
-    Float4 sum4 = splat(0.0f);
-    float sumW = 0.0f;
-    for (int i = 0; i < 8; ++i) {
-        if (!c.live[i]) continue;
-        const float w = weight[i];
-        sum4 += splat(w) * irr[i];
-        sumW += w;
-        ++out.probes;
-        out.filled += c.filled[i] ? 1 : 0;
-        out.irradianceOnly += c.ownVis[i] ? 0 : 1;
-    }
-    const glm::vec3 sumE(sum4[0], sum4[1], sum4[2]);
-
-    // 5. Normalise, then apply the fade.
-    if (!(sumW > 0.0f)) {
-        out.probes = 0;
-        out.filled = 0;
-        out.irradianceOnly = 0;
-        return out;
-    }
-    out.irradiance = sumE / sumW * k.fade;
-    out.weight = k.fade;
+    const Lookup* ks[1] = {&k};
+    IrradianceSample out;
+    finishLanes<1>(ks, &out);
     return out;
+}
+
+PB_SAMPLER_CLONES void ProbeSampler::finishPair(const Lookup& a, const Lookup& b,
+                                                IrradianceSample* out) const {
+    const Lookup* ks[2] = {&a, &b};
+    finishLanes<2>(ks, out);
 }
 
 } // namespace pb::probes

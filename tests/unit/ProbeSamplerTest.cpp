@@ -275,6 +275,23 @@ TEST(ProbeSampler, BatchedLookupsEqualSingleLookupsBitForBit) {
         EXPECT_GT(inside, 1000); // the queries exercised real lookups
     }
     s.sampleBatch(q.data(), 0, nullptr); // an empty batch is fine
+    // sampleBatch runs the lookups in pairs: batches of every length from 1 to 9, so that
+    // one ends on a pair and one on a lone lookup, over the last queries, where lookups that
+    // end early (NaN, zero normal) sit beside full ones.
+    int early = 0;
+    for (std::size_t n = 1; n <= 9; ++n) {
+        const SampleQuery* tail = q.data() + q.size() - n;
+        std::vector<IrradianceSample> batch(n);
+        s.sampleBatch(tail, n, batch.data());
+        for (std::size_t i = 0; i < n; ++i) {
+            IrradianceSample one = s.sample(tail[i].pos, tail[i].normal, tail[i].view);
+            ASSERT_EQ(std::memcmp(&one.irradiance, &batch[i].irradiance, sizeof(glm::vec3)), 0)
+                << "batch of " << n << ", query " << i;
+            ASSERT_EQ(one.probes, batch[i].probes) << "batch of " << n << ", query " << i;
+            early += one.probes == 0;
+        }
+    }
+    EXPECT_GT(early, 0); // pairs with a lookup that ended early were among them
 }
 
 TEST(ProbeSampler, BatchedLookupsInRunsOfOneCellEqualSingleLookupsBitForBit) {
