@@ -548,12 +548,10 @@ namespace {
 } // namespace
 
 // Steps 1 - 3 and the cell of one lookup; false when it ends there (k.done, k.out final).
-[[gnu::always_inline]] inline bool ProbeSampler::prepareHead(int vi, const glm::vec3& pos,
-                                                             const glm::vec3& normal,
-                                                             const glm::vec3& view,
-                                                             SampleOptions opt, Lookup& k,
-                                                             CellCache& cells,
-                                                             SampleTrace* trace) const {
+[[gnu::always_inline]] inline bool
+ProbeSampler::prepareHead(int vi, const glm::vec3& pos, const glm::vec3& normal,
+                          const glm::vec3& view, SampleOptions opt, Lookup& k, CellCache& cells,
+                          SampleTrace* trace) const {
     k.out = {};
     k.done = true;
     if (trace) *trace = SampleTrace{};
@@ -642,8 +640,8 @@ template <int L>
         Lookup& k = *ks[0];
         const Cell& c = *k.cell;
         for (int i = 0; i < 8; ++i)
-            cornerVisCoord(k.biased.x - c.px[i], k.biased.y - c.py[i], k.biased.z - c.pz[i],
-                           k.n.x, k.n.y, k.n.z, k.dist[i], vx[i], vy[i]);
+            cornerVisCoord(k.biased.x - c.px[i], k.biased.y - c.py[i], k.biased.z - c.pz[i], k.n.x,
+                           k.n.y, k.n.z, k.dist[i], vx[i], vy[i]);
         for (int i = 0; i < 8; ++i)
             visFootprint(vx[i], vy[i], k.visFx[i], k.visFy[i], k.visOffset[i]);
     } else {
@@ -800,9 +798,9 @@ template <int L>
             std::memcpy(visMask + j, c.visMask, sizeof(c.visMask));
         }
         for (int i = 0; i < N; ++i)
-            weight[i] = cornerWeight(qx[i], qy[i], qz[i], nx[i], ny[i], nz[i], dist[i],
-                                     invMax[i], mean[i], meanSq[i], visMask[i], behindInv[i],
-                                     behindFloor[i], triX[i], triY[i], triZ[i]);
+            weight[i] = cornerWeight(qx[i], qy[i], qz[i], nx[i], ny[i], nz[i], dist[i], invMax[i],
+                                     mean[i], meanSq[i], visMask[i], behindInv[i], behindFloor[i],
+                                     triX[i], triY[i], triZ[i]);
     }
 
     for (int l = 0; l < L; ++l) {

@@ -214,23 +214,21 @@ private:
                  SampleOptions opt, Lookup& k, CellCache& cells,
                  SampleTrace* trace = nullptr) const;
     // prepare of two queries at once, the same bits as two prepare calls (as finishPair).
-    void preparePair(const int* volumes, const SampleQuery* queries, SampleOptions opt,
-                     Lookup& a, Lookup& b, CellCache& cells) const;
+    void preparePair(const int* volumes, const SampleQuery* queries, SampleOptions opt, Lookup& a,
+                     Lookup& b, CellCache& cells) const;
     // prepare's two steps: the lookup's own (false when it ends there), then its corners,
     // for L lookups at once.
     bool prepareHead(int volume, const glm::vec3& pos, const glm::vec3& normal,
                      const glm::vec3& view, SampleOptions opt, Lookup& k, CellCache& cells,
                      SampleTrace* trace) const;
-    template <int L>
-    void prepareCorners(Lookup* const* ks, SampleTrace* trace) const;
+    template <int L> void prepareCorners(Lookup* const* ks, SampleTrace* trace) const;
     void buildCell(const Frame& f, int volume, const glm::ivec3& base, Cell& c) const;
     IrradianceSample finish(const Lookup& k) const;
     // finish of two lookups at once (neither done), the same bits as two finish calls: their
     // 16 corners run as one set of vectors, so the two lookups' dependency chains overlap.
     void finishPair(const Lookup& a, const Lookup& b, IrradianceSample* out) const;
     // The body of both: L lookups, their 8L corners as one loop.
-    template <int L>
-    void finishLanes(const Lookup* const* ks, IrradianceSample* out) const;
+    template <int L> void finishLanes(const Lookup* const* ks, IrradianceSample* out) const;
     void init(const std::vector<SamplerVolume>& volumes);
     // selectVolume, and the point in the chosen volume's frame (unset when none is).
     int selectVolume(const glm::vec3& pos, glm::vec3& local) const;
