@@ -355,7 +355,6 @@ struct ProbeSampler::Lookup {
     // turn it off (the factor is then exactly 1).
     float behindInvWidth = 0.0f, behindFloor = 0.0f;
     alignas(16) float dist[8];             // |biased - probe|
-    alignas(16) float vx[8], vy[8];        // visibility tile coordinates
     // tileFootprint of each corner's visibility fetch (x0, y0 as a float offset in its tile)
     // and of the irradiance fetch (the same texel coordinate in every corner's tile).
     alignas(16) float visFx[8], visFy[8];
